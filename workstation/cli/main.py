@@ -1,0 +1,103 @@
+"""The ``ws`` / ``workstation`` command group.
+
+Commands are loaded lazily from the table below so ``ws --help`` starts fast; each lives in
+its own module of this package. Every command runs inside one error boundary
+(:func:`main`): deliberate errors become a message on stderr and exit code 1 (traceback with
+``-v``), usage errors exit 2.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+import click
+
+# command name -> (module:attribute, one-line help shown by `ws --help` without importing it)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
+    "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
+    "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+}
+
+
+class LazyGroup(click.Group):
+    """A click group that imports a command's module only when that command runs."""
+
+    def list_commands(self, ctx):
+        return sorted(COMMANDS)
+
+    def get_command(self, ctx, name):
+        if name not in COMMANDS:
+            return None
+        target, _ = COMMANDS[name]
+        mod, attr = target.split(":")
+        return getattr(importlib.import_module(mod), attr)
+
+    def format_commands(self, ctx, formatter):
+        rows = [(name, COMMANDS[name][1]) for name in self.list_commands(ctx)]
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
+@click.option("-v", "--verbose", count=True, help="More log output on stderr (-vv for debug); tracebacks on errors.")
+@click.option("-q", "--quiet", is_flag=True, help="Only errors on stderr.")
+@click.version_option(package_name="workstation")
+@click.pass_context
+def cli(ctx, verbose, quiet):
+    """workstation: point clouds, photogrammetry, LiDAR simulation, registration, DEMs and meshes.
+
+    Products go to files, logs and progress to stderr, --json results to stdout.
+    """
+    from workstation.core.log import configure
+
+    ctx.ensure_object(dict)
+    ctx.obj["verbose"] = verbose
+    configure(verbose, quiet)
+
+
+def main(argv=None) -> int:
+    """Entry point with the error boundary: exit 0 ok, 1 user error, 2 usage error."""
+    from workstation.core.errors import WorkstationError
+
+    argv = list(sys.argv[1:] if argv is None else argv)
+    verbose = any(a in ("-v", "--verbose") or (a.startswith("-v") and set(a[1:]) == {"v"}) for a in argv)
+    try:
+        cli.main(args=argv, prog_name="ws", standalone_mode=False)
+    except click.exceptions.Exit as e:
+        return e.exit_code
+    except click.exceptions.Abort:
+        click.echo("Aborted.", err=True)
+        return 1
+    except click.ClickException as e:
+        e.show()
+        return e.exit_code
+    except WorkstationError as e:
+        if verbose:
+            import traceback
+
+            traceback.print_exc()
+        click.echo(f"Error: {e.message}", err=True)
+        if e.hint:
+            click.echo(f"Hint: {e.hint}", err=True)
+        return 1
+    except (FileNotFoundError, PermissionError, IsADirectoryError) as e:
+        if verbose:
+            import traceback
+
+            traceback.print_exc()
+        click.echo(f"Error: {e.filename or ''}: {e.strerror or e}", err=True)
+        return 1
+    except KeyboardInterrupt:
+        click.echo("Interrupted.", err=True)
+        return 130
+    return 0
+
+
+def run() -> None:  # pragma: no cover - console script shim
+    sys.exit(main())
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

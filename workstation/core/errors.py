@@ -1,0 +1,75 @@
+"""The error hierarchy.
+
+Every error the package raises on purpose is a :class:`WorkstationError` and also the
+built-in a Python user would catch (``ValueError``, ``ImportError``, ``RuntimeError``,
+``FileExistsError``), so ``except ValueError`` keeps working. Each says what went wrong,
+where (file, field, stage) and what to do (``hint``).
+"""
+
+from __future__ import annotations
+
+
+class WorkstationError(Exception):
+    """Base class of every deliberate error of the package.
+
+    Parameters
+    ----------
+    message : str
+        What went wrong, naming the file, field or stage.
+    hint : str, optional
+        What the user can do about it.
+    """
+
+    def __init__(self, message: str, hint: str | None = None):
+        self.message = message
+        self.hint = hint
+        super().__init__(message if not hint else f"{message} (hint: {hint})")
+
+
+class InvalidInputError(WorkstationError, ValueError):
+    """Input data or arguments that cannot be used as given."""
+
+    def __init__(self, message: str, hint: str | None = None, *, path=None, field: str | None = None):
+        self.path = None if path is None else str(path)
+        self.field = field
+        prefix = ""
+        if self.path is not None:
+            prefix += f"{self.path}: "
+        if field is not None:
+            prefix += f"field '{field}': "
+        super().__init__(prefix + message, hint)
+
+
+class UnsupportedFormatError(InvalidInputError):
+    """A file extension or format variant the IO layer does not handle."""
+
+
+class OutputExistsError(WorkstationError, FileExistsError):
+    """An output file exists and ``overwrite`` was not given."""
+
+    def __init__(self, path, hint: str = "pass --overwrite (overwrite=True) to replace it"):
+        self.path = str(path)
+        super().__init__(f"{path}: output exists", hint)
+
+
+class MissingDependencyError(WorkstationError, ImportError):
+    """An optional heavy library is not installed; the hint is the install command."""
+
+    def __init__(self, package: str, purpose: str, install: str | None = None):
+        self.package = package
+        super().__init__(
+            f"{package} is needed for {purpose} but is not installed",
+            install or f"pip install {package}",
+        )
+
+
+class StageError(WorkstationError, RuntimeError):
+    """A stage ran but its result fails a post-condition (empty, not converged, ...)."""
+
+    def __init__(self, stage: str, message: str, hint: str | None = None):
+        self.stage = stage
+        super().__init__(f"{stage}: {message}", hint)
+
+
+class NotFittedError(WorkstationError, ValueError, AttributeError):
+    """A model was used before ``fit`` or ``load``."""
