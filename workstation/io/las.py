@@ -7,6 +7,9 @@ the extra-byte definition has scales), and everything needed to write the same f
 (version, point format, scales, offsets, VLRs, EVLRs, extra-byte definitions, header fields)
 goes into ``Cloud.meta["las"]`` so that read -> write -> read is exact.
 
+Known upstream limitation: lazrs 0.8 corrupts wave-packet fields of LAZ point formats 9 and
+10 when the scanner channel changes from one point to the next (plain LAS is exact).
+
 Writing chooses the point format and version from the attributes present unless told, or
 keeps the ones the cloud was read with when its attributes still fit.
 """
@@ -282,6 +285,34 @@ def _meta_and_crs(header, path):
     return meta, _crs_string(header, path)
 
 
+def _records(reader, path, n: int, chunk_size: int):
+    """Point records chunk by chunk; corrupt or truncated data becomes an InvalidInputError."""
+    got = 0
+    it = reader.chunk_iterator(chunk_size)
+    while True:
+        try:
+            rec = next(it)
+        except StopIteration:
+            break
+        except Exception as exc:
+            raise InvalidInputError(
+                f"point data unreadable after {got:,} of {n:,} points: {exc}",
+                "the file is truncated or corrupt; get a complete copy",
+                path=path,
+            ) from None
+        got += len(rec)
+        if got > n:
+            raise InvalidInputError(f"file holds more points than the header's {n:,}", path=path, field="point_count")
+        yield rec
+    if got != n:
+        raise InvalidInputError(
+            f"header says {n:,} points but only {got:,} could be read (truncated)",
+            "get a complete copy of the file",
+            path=path,
+            field="point_count",
+        )
+
+
 def read(path, *, chunk_size: int = CHUNK) -> Cloud:
     """Read a LAS or LAZ file.
 
@@ -304,26 +335,8 @@ def read(path, *, chunk_size: int = CHUNK) -> Cloud:
         n = int(header.point_count)
         filler = _Filler(header, n)
         got = 0
-        try:
-            for rec in reader.chunk_iterator(chunk_size):
-                if got + len(rec) > n:
-                    raise InvalidInputError(f"file holds more points than the header's {n:,}", path=path, field="point_count")
-                got = filler.fill(rec, got)
-        except InvalidInputError:
-            raise
-        except Exception as exc:
-            raise InvalidInputError(
-                f"point data unreadable after {got:,} of {n:,} points: {exc}",
-                "the file is truncated or corrupt; get a complete copy",
-                path=path,
-            ) from None
-        if got != n:
-            raise InvalidInputError(
-                f"header says {n:,} points but only {got:,} could be read (truncated)",
-                "get a complete copy of the file",
-                path=path,
-                field="point_count",
-            )
+        for rec in _records(reader, path, n, chunk_size):
+            got = filler.fill(rec, got)
         meta, crs = _meta_and_crs(header, path)
         if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0):
             evlrs = reader.evlrs if reader.evlrs is not None else []
@@ -361,7 +374,7 @@ def iter_chunks(path, chunk_size: int = 1_000_000) -> Iterator[Cloud]:
         _check_point_bytes(path, header)
         meta, crs = _meta_and_crs(header, path)
         meta["las"]["crs"] = crs
-        for rec in reader.chunk_iterator(chunk_size):
+        for rec in _records(reader, path, int(header.point_count), chunk_size):
             f = _Filler(header, len(rec))
             f.fill(rec, 0)
             yield Cloud(f.xyz, f.attrs, crs=crs, meta=meta, _trusted=False)
