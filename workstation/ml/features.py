@@ -84,7 +84,7 @@ class FeatureParams:
     ground_window: float = 40.0
     ground_slope: float = 0.15
     k_fine: int = 10
-    fine_voxel: float = 0.25
+    fine_voxel: float = 0.5
     k_coarse: int = 16
     coarse_voxel: float = 1.5
     workers: int = -1
@@ -213,11 +213,45 @@ def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv.ravel()
 
 
+def _eigvec(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
+    """Unit eigenvectors (m, 3) of symmetric 3x3 matrices for eigenvalues ``lam`` (m,):
+    the largest cross product of two rows of (A - lam I)."""
+    a = cov - lam[:, None, None] * np.eye(3)
+    c0 = np.cross(a[:, 0], a[:, 1])
+    c1 = np.cross(a[:, 0], a[:, 2])
+    c2 = np.cross(a[:, 1], a[:, 2])
+    n0, n1, n2 = (c0 * c0).sum(1), (c1 * c1).sum(1), (c2 * c2).sum(1)
+    v = np.where((n0 >= n1)[:, None], c0, c1)
+    nv = np.maximum(n0, n1)
+    v = np.where((n2 > nv)[:, None], c2, v)
+    nv = np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
+    return v / nv[:, None]
+
+
+def sym3_eigen(cov: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Eigenvalues l1 >= l2 >= l3 of symmetric 3x3 matrices (m, 3, 3), closed form
+    (O. K. Smith 1961, Eigenvalues of a symmetric 3x3 matrix, Comm. ACM 4(4):168)."""
+    a00, a11, a22 = cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2]
+    a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
+    q = (a00 + a11 + a22) / 3
+    p1 = a01 * a01 + a02 * a02 + a12 * a12
+    b00, b11, b22 = a00 - q, a11 - q, a22 - q
+    p2 = b00 * b00 + b11 * b11 + b22 * b22 + 2 * p1
+    p = np.sqrt(np.maximum(p2 / 6, 1e-30))
+    det = (b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02) + a02 * (a01 * a12 - b11 * a02))
+    r = np.clip(det / (2 * p ** 3), -1, 1)
+    phi = np.arccos(r) / 3
+    l1 = q + 2 * p * np.cos(phi)
+    l3 = q + 2 * p * np.cos(phi + 2 * np.pi / 3)
+    l2 = 3 * q - l1 - l3
+    return l1, l2, l3
+
+
 def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     """Eigenvalue features of the kNN covariance of each query point among reference points.
 
     Returns (m, 8) float32: linearity, planarity, scattering, verticality, |n_z|, z std,
-    z - kNN min z, kNN max z - z; and the mean horizontal neighbour distance (m,).
+    z - kNN min z, kNN max z - z; and the mean neighbour distance (m,).
     """
     from scipy.spatial import cKDTree
 
@@ -227,27 +261,29 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     if k == 1:
         j = j[:, None]
         d = d[:, None]
-    nb = xyz_ref[j].astype(np.float32)  # (m, k, 3)
-    mu = nb.mean(axis=1, keepdims=True)
-    q = nb - mu
-    cov = np.einsum("mki,mkj->mij", q, q) / k
-    cov += np.eye(3, dtype=np.float32) * 1e-6
-    w, v = np.linalg.eigh(cov)  # ascending
-    w = np.maximum(w, 1e-9)
-    l1, l2, l3 = w[:, 2], w[:, 1], w[:, 0]
-    nz = np.abs(v[:, 2, 0])
-    zq = xyz_q[:, 2].astype(np.float32)
+    nb = xyz_ref[j]  # (m, k, 3)
+    mu = nb.mean(axis=1)
+    q = (nb - mu[:, None, :]).astype(np.float32)
+    cov = np.einsum("mki,mkj->mij", q, q, optimize=False).astype(np.float64) / k
+    cov += np.eye(3) * 1e-8
+    l1, l2, l3 = sym3_eigen(cov)
+    l1 = np.maximum(l1, 1e-12)
+    l2 = np.clip(l2, 0, l1)
+    l3 = np.clip(l3, 0, l2)
+    nrm = _eigvec(cov, l3)
+    main = _eigvec(cov, l1)
+    zq = xyz_q[:, 2]
+    nz_ = nb[:, :, 2]
     out = np.empty((len(xyz_q), 8), np.float32)
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1
     out[:, 2] = l3 / l1
-    out[:, 3] = 1.0 - np.abs(v[:, 2, 2])  # verticality of the main direction
-    out[:, 4] = nz
+    out[:, 3] = 1.0 - np.abs(main[:, 2])  # verticality of the main direction
+    out[:, 4] = np.abs(nrm[:, 2])
     out[:, 5] = np.sqrt(np.maximum(cov[:, 2, 2], 0))
-    out[:, 6] = np.minimum(zq - nb[:, :, 2].min(axis=1), 30.0)
-    out[:, 7] = np.minimum(nb[:, :, 2].max(axis=1) - zq, 30.0)
-    dh = np.sqrt(((nb[:, :, :2] - xyz_q[:, None, :2].astype(np.float32)) ** 2).sum(-1)).mean(axis=1)
-    return out, dh
+    out[:, 6] = np.minimum(zq - nz_.min(axis=1), 30.0)
+    out[:, 7] = np.minimum(nz_.max(axis=1) - zq, 30.0)
+    return out, d.mean(axis=1)
 
 
 def _echo_features(cloud: Cloud) -> np.ndarray:
@@ -333,14 +369,20 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(np.hypot(gx, gy)[r, c], 3.0)
-    # fine eigen scale (on a voxel subsample for speed, queried by every point)
+    # fine eigen scale: one query per fine voxel among the voxel representatives, broadcast
     if p.fine_voxel > 0:
-        first, _ = _voxel_ids(xyz, p.fine_voxel)
-        ref = xyz[first]
+        ffirst, finv = _voxel_ids(xyz, p.fine_voxel)
+        ref = xyz[ffirst]
+        ef, dh = _eigen(ref, ref, p.k_fine, p.workers)
+        F[:, 10:16] = ef[finv, :6]
+        # extremes relative to each point's own height
+        zr = ref[:, 2]
+        F[:, 16] = np.clip(z - (zr[finv] - ef[finv, 6]), 0, 30)
+        F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
+        dh = dh[finv]
     else:
-        ref = xyz
-    ef, dh = _eigen(xyz, ref, p.k_fine, p.workers)
-    F[:, 10:18] = ef
+        ef, dh = _eigen(xyz, xyz, p.k_fine, p.workers)
+        F[:, 10:18] = ef
     # coarse eigen scale per voxel, broadcast
     first, inv = _voxel_ids(xyz, p.coarse_voxel)
     vx = xyz[first]
