@@ -197,6 +197,23 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     return np.where(bad, sm, g)
 
 
+def _despike_low(zmin: np.ndarray, threshold: float = 1.5) -> np.ndarray:
+    """Empty the cells of isolated low outliers: a cell lower by more than ``threshold`` (m)
+    than every other filled cell of its 5x5 neighbourhood (multipath, low noise), twice.
+    Empty cells are +inf on input and output."""
+    from scipy import ndimage
+
+    ring = np.ones((5, 5), bool)
+    ring[2, 2] = False
+    for _ in range(2):
+        nb = ndimage.minimum_filter(zmin, footprint=ring, mode="constant", cval=np.inf)
+        spike = np.isfinite(zmin) & np.isfinite(nb) & (zmin < nb - threshold)
+        if not spike.any():
+            break
+        zmin = np.where(spike, np.inf, zmin)
+    return zmin
+
+
 def _bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
     from workstation.ground.common import bilinear
 
@@ -350,7 +367,7 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F = np.empty((n, len(FEATURE_NAMES)), np.float32)
     cell = p.cell
     r, c, shape = _grid(xyz[:, :2], cell)
-    zmin = _grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
+    zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
     zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
     z = xyz[:, 2]
     for t, rad in enumerate(p.min_radii):

@@ -59,8 +59,6 @@ def dtm_rmse(xyz: np.ndarray, ref_ground: np.ndarray, pred_ground: np.ndarray, v
     Both TINs are sampled at the centres of ``cell``-metre cells (in metres, converted with the
     CRS factors); cells outside either TIN's hull are left out.
     """
-    from scipy.interpolate import LinearNDInterpolator
-
     lo = xyz[:, :2].min(axis=0)
     xy = (xyz[:, :2] - lo) * h_factor
     z = xyz[:, 2] * v_factor
@@ -69,10 +67,26 @@ def dtm_rmse(xyz: np.ndarray, ref_ground: np.ndarray, pred_ground: np.ndarray, v
     ext = xy.max(axis=0)
     gx, gy = np.meshgrid(np.arange(cell / 2, ext[0], cell), np.arange(cell / 2, ext[1], cell))
     q = np.column_stack([gx.ravel(), gy.ravel()])
-    a = LinearNDInterpolator(xy[ref_ground], z[ref_ground])(q)
-    b = LinearNDInterpolator(xy[pred_ground], z[pred_ground])(q)
+    a = _tin(xy[ref_ground], z[ref_ground], q)
+    b = _tin(xy[pred_ground], z[pred_ground], q)
     ok = np.isfinite(a) & np.isfinite(b)
     return float(np.sqrt(np.mean((a[ok] - b[ok]) ** 2))) if ok.any() else float("nan")
+
+
+def _tin(xy: np.ndarray, z: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Linear TIN interpolation at ``q`` (NaN outside the hull). matplotlib's trapezoid-map
+    triangle finder: scipy's ``find_simplex`` walks slowly on scan-line slivers."""
+    import matplotlib.tri as mtri
+
+    # one point per 1 cm (duplicates make Delaunay degenerate), lowest kept
+    key = np.round(xy * 100).astype(np.int64)
+    order = np.lexsort((z, key[:, 1], key[:, 0]))
+    k = key[order]
+    first = np.r_[True, (k[1:] != k[:-1]).any(axis=1)]
+    sel = order[first]
+    tri = mtri.Triangulation(xy[sel, 0], xy[sel, 1])
+    out = mtri.LinearTriInterpolator(tri, z[sel])(q[:, 0], q[:, 1])
+    return np.ma.filled(out.astype(np.float64), np.nan)
 
 
 def f1(ref: np.ndarray, pred: np.ndarray) -> float:
