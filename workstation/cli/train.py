@@ -22,5 +22,4 @@ def train(recipe, output, overwrite, baseline, as_json):
     click.echo(f"model {card['model_path']}: {card['epochs']} epochs, validation accuracy "
                f"{card['validation']['accuracy']:.4f}, {card['total_seconds']:.0f} s", err=True)
     if as_json:
-        card.pop("tile_draws", None)
         emit_json(card)
