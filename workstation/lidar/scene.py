@@ -777,6 +777,10 @@ def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Sc
     origin = np.array([recipe.origin[0], recipe.origin[1], 0.0])
     meta = {"recipe": recipe.name, "seed": int(seed), "objects": {str(k): v for k, v in b.kinds.items()},
             "extent": list(recipe.extent)}
+    if recipe.road:
+        meta["road"] = {"p": L.road.p.tolist(), "d": L.road.d.tolist(), "half_width": 3.5}
+    if recipe.stream:
+        meta["stream"] = {"p": L.stream.p.tolist(), "d": L.stream.d.tolist(), "half_width": L.stream_width / 2}
     log.info("scene %s seed %d: %d triangles, %d objects", recipe.name, seed, len(f), len(b.kinds))
     return Scene(v, f, cls, mat, obj, rgb, origin, recipe.crs, MATERIALS, meta)
 
