@@ -18,6 +18,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+    "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
+    "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
 }
 
 

@@ -18,7 +18,8 @@ ground speed :math:`v`, pulse rate :math:`F` (PRF), full field of view :math:`\t
   :func:`workstation.lidar.platforms.turn_length` at bank angle :math:`\varphi`
   (:math:`R = v^2 / (g \tan\varphi)`);
 * one pulse in the air (no multiple-pulses-in-air ambiguity): :math:`F \le c / (2 R_{max})`
-  with the slant range at the swath edge :math:`R_{max} = H / \cos(\theta/2)`.
+  with the slant range at the swath edge :math:`R_{max} = H / \cos(\theta/2)`; above that
+  ``pulses_in_air`` = :math:`\lceil 2 F R_{max} / c \rceil` pulses are in flight at once.
 
 The inverse: with a target density :math:`\rho` and two of :math:`H, v, F` fixed, the third
 follows from :math:`\rho = F / (2 H \tan(\theta/2)\, v)`.
@@ -116,6 +117,7 @@ class FlightPlan:
     turn_time_s: float
     total_time_s: float
     max_prf_one_pulse_in_air: float
+    pulses_in_air: int
     footprint_diameter: float | None
     params: dict
 
@@ -150,6 +152,7 @@ def plan_flight(p: FlightParams, divergence_mrad: float | None = None) -> Flight
         density_block=rho / (1 - p.overlap), nps=1 / math.sqrt(rho), flight_lines=n, line_spacing=spacing,
         line_length=L, turn_radius=R, turn_time_s=t_turn, total_time_s=total,
         max_prf_one_pulse_in_air=C_LIGHT / (2 * slant),
+        pulses_in_air=max(math.ceil(p.prf * 2 * slant / C_LIGHT), 1),
         footprint_diameter=None if divergence_mrad is None else p.altitude * divergence_mrad * 1e-3,
         params=asdict(p),
     )
@@ -159,7 +162,8 @@ def solve_for_density(target_density: float, p: FlightParams, solve: str = "prf"
     """The flight parameters that reach ``target_density`` (points/m^2 per pass).
 
     ``solve`` names the unknown: ``prf`` (Hz), ``speed`` (m/s) or ``altitude`` (m); the
-    others are taken from ``p``. Raises when the answer needs more than one pulse in the air.
+    others are taken from ``p``. Check ``pulses_in_air`` of the resulting plan: above 1 the
+    sensor must support multiple pulses in the air (MPiA).
 
     Examples
     --------
@@ -178,10 +182,6 @@ def solve_for_density(target_density: float, p: FlightParams, solve: str = "prf"
         q = FlightParams(**{**asdict(p), "altitude": p.prf / (target_density * k * p.speed)})
     else:
         raise InvalidInputError(f"cannot solve for '{solve}'", "prf, speed or altitude", field="solve")
-    plan = plan_flight(q)
-    if q.prf > plan.max_prf_one_pulse_in_air:
-        raise InvalidInputError(
-            f"PRF {q.prf:.0f} Hz at {q.altitude:.0f} m puts more than one pulse in the air "
-            f"(limit {plan.max_prf_one_pulse_in_air:.0f} Hz)",
-            "fly lower or slower, or narrow the field of view", field=solve)
+    if not all(math.isfinite(getattr(q, k)) and getattr(q, k) > 0 for k in ("prf", "speed", "altitude")):
+        raise InvalidInputError(f"no finite {solve} reaches {target_density} points/m^2", field=solve)
     return q

@@ -645,7 +645,7 @@ def _grass(b: _Builder, L: _Layout, rng, x, y):
     r = rad * np.sqrt(rng.uniform(0, 1, n))
     px, py = x + r * np.cos(a), y + r * np.sin(a)
     c = np.column_stack([px, py, L.height(px, py) + rng.uniform(0.1, 0.5, n)])
-    b.add(S.leaf_cloud(rng, c, 0.25), C.LOW_VEGETATION, M["grass"], b.new_object("low_vegetation"))
+    b.add(S.leaf_cloud(rng, c, 0.25), C.LOW_VEGETATION, M["grass_blades"], b.new_object("low_vegetation"))
 
 
 _CAR_COLOURS = np.array([[150, 30, 30], [30, 50, 140], [200, 200, 200], [30, 30, 30], [90, 90, 95], [210, 180, 40]], np.uint8)

@@ -263,6 +263,8 @@ class _Caster:
         self.spec = mats["specular"][scene.material].astype(np.float32)
         self.spec_w = mats["specular_width"][scene.material].astype(np.float32)
         self.has_spec = bool(np.any(self.spec > 0))
+        self.porosity = mats["porosity"][scene.material].astype(np.float32)
+        self.has_porous = bool(np.any(self.porosity > 0))
         self.cls = scene.classification
         self.obj = scene.object_id
         self.rgb = scene.face_rgb
@@ -281,6 +283,36 @@ def _power(c: _Caster, sensor: Sensor, t: np.ndarray, prim: np.ndarray, dirs: np
     return sensor.received_power(t, rho) * w
 
 
+def _cast(c: _Caster, rays: np.ndarray, rng, max_passes: int = 4) -> tuple[np.ndarray, np.ndarray]:
+    """First hits of ``rays`` (n, 6) f32, letting rays pass porous (foliage) triangles.
+
+    A ray that meets a triangle of porosity p goes on with probability p (a gap between
+    leaves smaller than the triangle), from just beyond the hit, up to ``max_passes`` times.
+    Returns the range from the ray origin (n,) f64 (inf = miss) and the triangle (n,) (-1).
+    """
+    t, prim = c.rc.cast_rays(rays)
+    t = t.astype(np.float64)
+    if not c.has_porous:
+        return t, prim
+    eps = 0.01
+    hit = np.flatnonzero(np.isfinite(t))
+    active = hit[c.porosity[prim[hit]] > 0]
+    for _ in range(max_passes):
+        if active.size == 0:
+            break
+        go = active[rng.random(active.size) < c.porosity[prim[active]]]
+        if go.size == 0:
+            break
+        r2 = rays[go].copy()
+        r2[:, :3] += r2[:, 3:] * (t[go] + eps)[:, None].astype(np.float32)
+        t2, p2 = c.rc.cast_rays(r2)
+        ok = np.isfinite(t2)
+        t[go] = np.where(ok, t[go] + eps + t2, np.inf)
+        prim[go] = p2
+        active = go[ok][c.porosity[p2[ok]] > 0]
+    return t, prim
+
+
 def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     """Cast the pulses' footprints and group sub-ray hits into returns.
 
@@ -290,10 +322,13 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     P = len(origins)
     N = sensor.subrays
     if N == 1:
-        t, prim = c.rc.cast(origins, dirs)
+        rays = np.empty((P, 6), np.float32)
+        rays[:, :3] = origins
+        rays[:, 3:] = dirs
+        t, prim = _cast(c, rays, rng)
         ok = np.isfinite(t) & (t >= sensor.min_range_m) & (t <= sensor.max_range_m)
         idx = np.flatnonzero(ok)
-        t = t[idx].astype(np.float64)
+        t = t[idx]
         prim = prim[idx]
         pw = _power(c, sensor, t, prim, dirs[idx], 1.0, rng)
         det = pw >= sensor.detection_threshold_w
@@ -313,7 +348,7 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     rays = np.empty((P, N, 6), np.float32)
     rays[:, :, :3] = origins[:, None, :]
     rays[:, :, 3:] = dirs[:, None, :] + ox[..., None] * u[:, None, :] + oy[..., None] * v[:, None, :]
-    t, prim = c.rc.cast_rays(rays.reshape(-1, 6))
+    t, prim = _cast(c, rays.reshape(-1, 6), rng)
     t = t.reshape(P, N)
     t = np.where((t >= sensor.min_range_m) & (t <= sensor.max_range_m), t, np.inf)
     order = np.argsort(t, axis=1)
@@ -330,7 +365,7 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
                 "return_number": e.astype(np.uint8), "number_of_returns": e.astype(np.uint8)}
     pulse = flat // N
     sub = order.ravel()[flat]
-    tf = ts.ravel()[flat].astype(np.float64)
+    tf = ts.ravel()[flat]
     pf = ps.ravel()[flat]
     dsub = rays.reshape(-1, 6)[pulse * N + sub, 3:]
     pw = _power(c, sensor, tf, pf, dsub, weights[sub], rng)
@@ -354,6 +389,11 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     count = np.bincount(rp, minlength=P)[rp]
     return {"pulse": rp, "range": rr, "prim": rprim, "power": rpow,
             "return_number": (rank + 1).astype(np.uint8), "number_of_returns": count.astype(np.uint8)}
+
+
+def _truth(ret: dict, origins: np.ndarray, dirs: np.ndarray, origin: np.ndarray) -> dict:
+    p = origins + ret["range"][:, None] * dirs + origin
+    return {"true_x": p[:, 0], "true_y": p[:, 1], "true_z": p[:, 2]}
 
 
 def _nav_errors(traj: Trajectory, errors: ErrorModel, rng: np.random.Generator) -> Trajectory:
@@ -395,6 +435,7 @@ def simulate(
     progress: Callable[[int], None] | None = None,
     roll_in_scan_angle: bool = True,
     with_nir: bool = False,
+    with_truth: bool = False,
 ) -> SimulationResult:
     """Simulate a survey of ``scene`` along ``trajectory`` with ``scanner`` and ``sensor``.
 
@@ -424,6 +465,9 @@ def simulate(
     with_nir : bool
         Also give ``nir`` (u16): the hit material's reflectance at the laser wavelength on a
         16-bit scale (LAS point format 8).
+    with_truth : bool
+        Also give ``true_x``, ``true_y``, ``true_z`` (f8, map coordinates): where the return
+        really is (power-weighted mean of its sub-ray hits), so every error is known per point.
 
     Returns
     -------
@@ -493,6 +537,7 @@ def simulate(
                 "rgb": caster.rgb[prim].astype(np.uint16) * 257,
                 "range": r_meas.astype(np.float32),
                 **({"nir": np.rint(caster.refl[prim] * 65535).astype(np.uint16)} if with_nir else {}),
+                **(_truth(ret, origins[j], dirs[j], scene.origin) if with_truth else {}),
             })
     if not parts:
         raise StageError("simulate", f"no returns from {n_pulses} pulses",
