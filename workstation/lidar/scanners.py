@@ -144,10 +144,9 @@ class ScanPattern:
             return ScanAngles(elev, az, up.astype(np.uint8), edge, ih)
         A = np.radians(self.fov_deg) / 2
         t = k / self.prf
-        dt = 1.0 / self.prf
-        lps = self.lines_per_second
-        line = np.floor(t * lps).astype(np.int64)
-        edge = (np.floor((t + dt) * lps).astype(np.int64) != line).astype(np.uint8)
+        step = self.lines_per_second / self.prf  # scan lines per pulse
+        line = np.floor(k * step + 1e-9).astype(np.int64)
+        edge = (np.floor((k + 1) * step + 1e-9).astype(np.int64) != line).astype(np.uint8)
         if self.kind == "zigzag":
             u = np.mod(t * self.scan_frequency, 1.0)
             up = u < 0.5

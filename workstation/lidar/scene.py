@@ -675,14 +675,14 @@ def _cars(b: _Builder, L: _Layout, rng):
 
 
 def _powerline(b: _Builder, L: _Layout, rng):
-    along = L.power.along(np.array([-L.hx, L.hx, L.hx, -L.hx]), np.array([-L.hy, -L.hy, L.hy, L.hy]))
-    span = 90.0
-    s = np.arange(along.min() + 15, along.max() - 15, span)
-    pts = L.power.point(s)
-    keep = (np.abs(pts[:, 0]) < L.hx - 5) & (np.abs(pts[:, 1]) < L.hy - 5)
-    pts = pts[keep]
-    if len(pts) < 2:
+    s_all = np.arange(-2 * (L.hx + L.hy), 2 * (L.hx + L.hy), 1.0)
+    p_all = L.power.point(s_all)
+    inside = (np.abs(p_all[:, 0]) < L.hx - 8) & (np.abs(p_all[:, 1]) < L.hy - 8)
+    if inside.sum() < 40:
         return
+    s_lo, s_hi = s_all[inside].min(), s_all[inside].max()
+    n_pyl = max(2, int(np.ceil((s_hi - s_lo) / 90.0)) + 1)  # spans of at most 90 m
+    pts = L.power.point(np.linspace(s_lo, s_hi, n_pyl))
     H = 24.0
     yaw = L.power.angle
     zs = L.height(pts[:, 0], pts[:, 1]) - 0.3
