@@ -169,7 +169,7 @@ def solve_for_density(target_density: float, p: FlightParams, solve: str = "prf"
     --------
     >>> q = solve_for_density(10.0, FlightParams(altitude=1000, speed=60, fov_deg=40), "prf")
     >>> round(q.prf)
-    436711
+    436764
     """
     if not target_density > 0:
         raise InvalidInputError(f"target density {target_density} must be positive", field="density")

@@ -819,6 +819,41 @@ def merge_scenes(a: Scene, b: Scene) -> Scene:
 HeightFn = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
 
+def save_scene(scene: Scene, path, overwrite: bool = False) -> Path:
+    """Write a scene losslessly as ``.npz`` (arrays, origin, CRS, meta and material table as JSON).
+
+    The photo renderer and tests read it back with :func:`load_scene`.
+    """
+    import json
+
+    from workstation.io import atomic_path
+
+    p = Path(path)
+    if p.suffix != ".npz":
+        raise InvalidInputError("scene files are .npz", "give a path ending in .npz", path=p)
+    meta = json.dumps({"crs": scene.crs, "meta": scene.meta, "materials": [dataclasses.asdict(m) for m in scene.materials]})
+    with atomic_path(p, overwrite=overwrite) as tmp:
+        with open(tmp, "wb") as fh:
+            np.savez_compressed(fh, vertices=scene.vertices, faces=scene.faces, classification=scene.classification,
+                                material=scene.material, object_id=scene.object_id, face_rgb=scene.face_rgb,
+                                origin=scene.origin, meta=np.array(meta))
+    return p
+
+
+def load_scene(path) -> Scene:
+    """Read a scene written by :func:`save_scene`."""
+    import json
+
+    p = Path(path)
+    if not p.exists():
+        raise InvalidInputError("scene file not found", path=p)
+    with np.load(p, allow_pickle=False) as z:
+        info = json.loads(str(z["meta"]))
+        mats = tuple(Material(**{**m, "albedo": tuple(m["albedo"])}) for m in info["materials"])
+        return Scene(z["vertices"], z["faces"], z["classification"], z["material"], z["object_id"], z["face_rgb"],
+                     z["origin"], info["crs"], mats, info["meta"])
+
+
 def scene_summary(scene: Scene) -> dict[str, Any]:
     """Triangle counts per class and object counts per kind (for logs and --json)."""
     cls, cnt = np.unique(scene.classification, return_counts=True)
