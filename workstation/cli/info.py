@@ -49,7 +49,7 @@ def info(file, columns, density_cell, as_json):
     if d:
         con.print(
             f"density     {d['density_occupied']:.3f} pts/m² over {d['occupied_cells']:,} occupied "
-            f"{d['cell_size']:g}-unit cells, {d['density_footprint']:.3f} pts/m² over the footprint "
+            f"{density_cell:g} m cells, {d['density_footprint']:.3f} pts/m² over the footprint "
             f"({d['footprint_area_m2']:.0f} m²)"
         )
         con.print(f"nps         {d['nps_m']:.3f} m")

@@ -7,6 +7,9 @@ the extra-byte definition has scales), and everything needed to write the same f
 (version, point format, scales, offsets, VLRs, EVLRs, extra-byte definitions, header fields)
 goes into ``Cloud.meta["las"]`` so that read -> write -> read is exact.
 
+Known upstream limitation: lazrs 0.8 corrupts wave-packet fields of LAZ point formats 9 and
+10 when the scanner channel changes from one point to the next (plain LAS is exact).
+
 Writing chooses the point format and version from the attributes present unless told, or
 keeps the ones the cloud was read with when its attributes still fit.
 """
@@ -25,7 +28,8 @@ from workstation.core.log import get_logger
 
 log = get_logger(__name__)
 
-CHUNK = 2_000_000
+CHUNK_LAS = 262_144  # uncompressed: small enough that per-field copies stay in cache
+CHUNK_LAZ = 1_048_576  # compressed: large enough for lazrs to decompress chunks in parallel
 SCAN_ANGLE_UNIT = 0.006  # degrees per unit of the LAS 1.4 (formats 6-10) scan angle
 _DEFAULT_SCALE = 0.001  # metres (or feet) for projected CRSs
 _GEOGRAPHIC_SCALE = 1e-7  # degrees
@@ -282,14 +286,43 @@ def _meta_and_crs(header, path):
     return meta, _crs_string(header, path)
 
 
-def read(path, *, chunk_size: int = CHUNK) -> Cloud:
+def _records(reader, path, n: int, chunk_size: int):
+    """Point records chunk by chunk; corrupt or truncated data becomes an InvalidInputError."""
+    got = 0
+    it = reader.chunk_iterator(chunk_size)
+    while True:
+        try:
+            rec = next(it)
+        except StopIteration:
+            break
+        except Exception as exc:
+            raise InvalidInputError(
+                f"point data unreadable after {got:,} of {n:,} points: {exc}",
+                "the file is truncated or corrupt; get a complete copy",
+                path=path,
+            ) from None
+        got += len(rec)
+        if got > n:
+            raise InvalidInputError(f"file holds more points than the header's {n:,}", path=path, field="point_count")
+        yield rec
+    if got != n:
+        raise InvalidInputError(
+            f"header says {n:,} points but only {got:,} could be read (truncated)",
+            "get a complete copy of the file",
+            path=path,
+            field="point_count",
+        )
+
+
+def read(path, *, chunk_size: int | None = None) -> Cloud:
     """Read a LAS or LAZ file.
 
     Parameters
     ----------
     path : path-like
-    chunk_size : int
-        Points decoded per step; bounds the temporary memory.
+    chunk_size : int, optional
+        Points decoded per step; bounds the temporary memory (default 262,144 for LAS,
+        1,048,576 for LAZ).
 
     Returns
     -------
@@ -302,34 +335,18 @@ def read(path, *, chunk_size: int = CHUNK) -> Cloud:
         header = reader.header
         _check_point_bytes(path, header)
         n = int(header.point_count)
+        if chunk_size is None:
+            chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
         filler = _Filler(header, n)
         got = 0
-        try:
-            for rec in reader.chunk_iterator(chunk_size):
-                if got + len(rec) > n:
-                    raise InvalidInputError(f"file holds more points than the header's {n:,}", path=path, field="point_count")
-                got = filler.fill(rec, got)
-        except InvalidInputError:
-            raise
-        except Exception as exc:
-            raise InvalidInputError(
-                f"point data unreadable after {got:,} of {n:,} points: {exc}",
-                "the file is truncated or corrupt; get a complete copy",
-                path=path,
-            ) from None
-        if got != n:
-            raise InvalidInputError(
-                f"header says {n:,} points but only {got:,} could be read (truncated)",
-                "get a complete copy of the file",
-                path=path,
-                field="point_count",
-            )
+        for rec in _records(reader, path, n, chunk_size):
+            got = filler.fill(rec, got)
         meta, crs = _meta_and_crs(header, path)
         if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0):
             evlrs = reader.evlrs if reader.evlrs is not None else []
             meta["las"]["evlrs"] = _vlr_records(evlrs)
     meta["las"]["crs"] = crs
-    return Cloud(filler.xyz, filler.attrs, crs=crs, meta=meta)
+    return Cloud.from_owned_arrays(filler.xyz, filler.attrs, crs=crs, meta=meta)
 
 
 def read_header(path) -> dict:
@@ -361,10 +378,10 @@ def iter_chunks(path, chunk_size: int = 1_000_000) -> Iterator[Cloud]:
         _check_point_bytes(path, header)
         meta, crs = _meta_and_crs(header, path)
         meta["las"]["crs"] = crs
-        for rec in reader.chunk_iterator(chunk_size):
+        for rec in _records(reader, path, int(header.point_count), chunk_size):
             f = _Filler(header, len(rec))
             f.fill(rec, 0)
-            yield Cloud(f.xyz, f.attrs, crs=crs, meta=meta, _trusted=False)
+            yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
 
 
 # ---------------------------------------------------------------------------------------
@@ -467,7 +484,7 @@ def write(
     scales=None,
     offsets=None,
     compress: bool | None = None,
-    chunk_size: int = CHUNK,
+    chunk_size: int | None = None,
 ) -> None:
     """Write a cloud as LAS or LAZ (by suffix unless ``compress`` says).
 
@@ -492,6 +509,8 @@ def write(
     scales, offsets = _scales_offsets(cloud, las_meta, scales, offsets)
     if compress is None:
         compress = path.suffix.lower() == ".laz"
+    if chunk_size is None:
+        chunk_size = CHUNK_LAZ if compress else CHUNK_LAS
 
     header = laspy.LasHeader(point_format=fmt, version=ver)
     header.scales = scales
