@@ -51,6 +51,7 @@ Photogramm. Remote Sens. 54(2-3):199-214.
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -268,6 +269,7 @@ class _Caster:
         self.cls = scene.classification
         self.obj = scene.object_id
         self.rgb = scene.face_rgb
+        self.rgb16 = scene.face_rgb.astype(np.uint16) * 257
 
 
 def _power(c: _Caster, sensor: Sensor, t: np.ndarray, prim: np.ndarray, dirs: np.ndarray, w, rng) -> np.ndarray:
@@ -436,6 +438,7 @@ def simulate(
     roll_in_scan_angle: bool = True,
     with_nir: bool = False,
     with_truth: bool = False,
+    threads: int | None = None,
 ) -> SimulationResult:
     """Simulate a survey of ``scene`` along ``trajectory`` with ``scanner`` and ``sensor``.
 
@@ -468,6 +471,9 @@ def simulate(
     with_truth : bool
         Also give ``true_x``, ``true_y``, ``true_z`` (f8, map coordinates): where the return
         really is (power-weighted mean of its sub-ray hits), so every error is known per point.
+    threads : int, optional
+        Batches processed at once (default: the number of cores, at most 4). The output does
+        not depend on it: every batch draws from its own random stream.
 
     Returns
     -------
@@ -480,8 +486,7 @@ def simulate(
     sensor = sensor or SENSOR_PRESETS["als"]
     errors = errors or ErrorModel()
     t_start = time.perf_counter()
-    ss = np.random.SeedSequence([int(seed), 0x51D])
-    nav_rng, pulse_rng = (np.random.default_rng(s) for s in ss.spawn(2))
+    nav_rng = np.random.default_rng([int(seed), 0x4E4156])
     caster = _Caster(scene, sensor)
     nav = _nav_errors(trajectory, errors, nav_rng)
     true_chain = GeorefChain(
@@ -493,57 +498,74 @@ def simulate(
     scale = 1.0 + errors.scan_angle_scale
     offset = np.radians(errors.scan_angle_offset_deg)
     per_batch = max(batch_rays // sensor.subrays, 1)
+    exact_angles = scale == 1.0 and offset == 0.0
+
+    def run_batch(job):
+        si, seg, k0, k1 = job
+        rng = np.random.default_rng([int(seed), 0x51D, si, k0])  # per batch: order-independent
+        k = np.arange(k0, k1, dtype=np.int64)
+        t = seg.t0 + k / scanner.prf
+        ang = scanner.angles(k)
+        d_true = scanner.directions(ang.primary * scale + offset if not exact_angles else ang.primary, ang.secondary)
+        pos, rpy = trajectory.interpolate(t)
+        trig = rpy_trig(rpy)
+        origins = pos + _to_map(rpy, np.broadcast_to(lever_true, (len(k), 3)), trig) if lever_true.any() else pos
+        dirs = _to_map(rpy, d_true @ R_bs_true.T if true_chain.boresight != (0.0, 0.0, 0.0) else d_true, trig)
+        ret = _returns(caster, sensor, origins, dirs, rng)
+        j = ret["pulse"]
+        if j.size == 0:
+            return len(k), None
+        r_meas = ret["range"] + (rng.normal(0, errors.range_noise_m, j.size) if errors.range_noise_m > 0 else 0.0)
+        d_enc = d_true[j] if exact_angles else scanner.directions(ang.primary[j], ang.secondary[j])
+        tp = t[j]
+        pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
+        xyz = mount.forward(r_meas, d_enc, pos_p, rpy_p)
+        prim = ret["prim"]
+        sa = scanner.scan_angle_deg(ang.primary[j])
+        if roll_in_scan_angle:
+            sa = sa + np.degrees(rpy_p[:, 0])
+        return len(k), {
+            "xyz": xyz,
+            "gps_time": start_gps_time + tp,
+            "classification": caster.cls[prim],
+            "return_number": ret["return_number"],
+            "number_of_returns": ret["number_of_returns"],
+            "intensity": np.minimum(np.rint(ret["power"] * (65535.0 / sensor.saturation_power_w)), 65535).astype(np.uint16),
+            "scan_angle": np.clip(sa, -180.0, 180.0).astype(np.float32),
+            "scan_direction_flag": ang.direction[j],
+            "edge_of_flight_line": ang.edge[j],
+            "point_source_id": np.full(j.size, seg.source_id, np.uint16),
+            "object_id": caster.obj[prim],
+            "rgb": caster.rgb16[prim],
+            "range": r_meas.astype(np.float32),
+            **({"nir": np.rint(caster.refl[prim] * 65535).astype(np.uint16)} if with_nir else {}),
+            **(_truth(ret, origins[j], dirs[j], scene.origin) if with_truth else {}),
+        }
+
+    jobs = [(si, seg, k0, min(k0 + per_batch, n_seg))
+            for si, seg in enumerate(trajectory.segments)
+            for n_seg in [scanner.pulses_in(seg.t1 - seg.t0)]
+            for k0 in range(0, n_seg, per_batch)]
     parts: list[dict] = []
     n_pulses = 0
-    for seg in trajectory.segments:
-        n_seg = scanner.pulses_in(seg.t1 - seg.t0)
-        for k0 in range(0, n_seg, per_batch):
-            k = np.arange(k0, min(k0 + per_batch, n_seg), dtype=np.int64)
-            t = seg.t0 + k / scanner.prf
-            ang = scanner.angles(k)
-            d_true = scanner.directions(ang.primary * scale + offset, ang.secondary)
-            pos, rpy = trajectory.interpolate(t)
-            trig = rpy_trig(rpy)
-            origins = pos + _to_map(rpy, np.broadcast_to(lever_true, (len(k), 3)), trig) if lever_true.any() else pos
-            dirs = _to_map(rpy, d_true @ R_bs_true.T, trig)
-            ret = _returns(caster, sensor, origins, dirs, pulse_rng)
-            j = ret["pulse"]
-            n_pulses += len(k)
+    workers = max(1, min(threads if threads else (os.cpu_count() or 1), 4))
+    from concurrent.futures import ThreadPoolExecutor
+
+    # numpy and Embree release the GIL on large arrays: batches overlap on several cores
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        for n_k, part in pool.map(run_batch, jobs):
+            n_pulses += n_k
             if progress:
-                progress(len(k))
-            if j.size == 0:
-                continue
-            r_meas = ret["range"] + (pulse_rng.normal(0, errors.range_noise_m, j.size) if errors.range_noise_m > 0 else 0.0)
-            d_enc = scanner.directions(ang.primary[j], ang.secondary[j])
-            tp = t[j]
-            pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
-            xyz = mount.forward(r_meas, d_enc, pos_p, rpy_p)
-            prim = ret["prim"]
-            sa = scanner.scan_angle_deg(ang.primary[j])
-            if roll_in_scan_angle:
-                sa = sa + np.degrees(rpy_p[:, 0])
-            parts.append({
-                "xyz": xyz,
-                "gps_time": start_gps_time + tp,
-                "classification": caster.cls[prim],
-                "return_number": ret["return_number"],
-                "number_of_returns": ret["number_of_returns"],
-                "intensity": np.clip(np.rint(ret["power"] / sensor.saturation_power_w * 65535.0), 0, 65535).astype(np.uint16),
-                "scan_angle": np.clip(sa, -180.0, 180.0).astype(np.float32),
-                "scan_direction_flag": ang.direction[j],
-                "edge_of_flight_line": ang.edge[j],
-                "point_source_id": np.full(j.size, seg.source_id, np.uint16),
-                "object_id": caster.obj[prim],
-                "rgb": caster.rgb[prim].astype(np.uint16) * 257,
-                "range": r_meas.astype(np.float32),
-                **({"nir": np.rint(caster.refl[prim] * 65535).astype(np.uint16)} if with_nir else {}),
-                **(_truth(ret, origins[j], dirs[j], scene.origin) if with_truth else {}),
-            })
+                progress(n_k)
+            if part is not None:
+                parts.append(part)
     if not parts:
         raise StageError("simulate", f"no returns from {n_pulses} pulses",
                          "check that the trajectory flies over the scene and the range gate / power allow returns")
-    xyz = np.concatenate([p.pop("xyz") for p in parts]) + scene.origin
-    attrs = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    xyz = np.concatenate([p.pop("xyz") for p in parts])
+    xyz += scene.origin
+    # one attribute at a time, freeing the batch arrays as they are joined (peak ~ output + 1 attribute)
+    attrs = {k: np.concatenate([p.pop(k) for p in parts]) for k in list(parts[0])}
     attrs["user_data"] = (attrs["object_id"] % 256).astype(np.uint8)
     seconds = time.perf_counter() - t_start
     n_ret = xyz.shape[0]
