@@ -54,7 +54,7 @@ def test_bad_params_raise():
         solve_for_density(-1, FlightParams())
 
 
-@pytest.mark.parametrize("pattern", ["zigzag", "polygon"])
+@pytest.mark.parametrize("pattern", ["zigzag", "polygon", "palmer"])
 def test_simulated_density_matches_plan_within_5_percent(pattern):
     H, v, prf, f, fov = 250.0, 40.0, 60_000.0, 30.0, 40.0
     plan = plan_flight(FlightParams(altitude=H, speed=v, prf=prf, scan_frequency=f, fov_deg=fov, pattern=pattern,

@@ -190,3 +190,25 @@ def test_same_seed_same_cloud_different_seed_different_scene():
     assert np.array_equal(a.xyz, b.xyz)
     assert all(np.array_equal(a.attrs[k], b.attrs[k]) for k in a.attrs)
     assert a.n != c.n or not np.array_equal(a.xyz, c.xyz)
+
+
+def test_mls_drive_sees_road_and_both_sides():
+    from dataclasses import replace
+
+    from workstation.lidar.survey import default_survey, run_survey
+
+    scene = build_scene("demo_small", 0)
+    road = scene.meta["road"]
+    p, d = np.array(road["p"]), np.array(road["d"])
+    cfg = default_survey("mls")
+    cfg = replace(cfg, waypoints=(tuple(p - 15 * d), tuple(p + 15 * d)), scanner=replace(cfg.scanner, prf=40_000.0))
+    res = run_survey(scene, cfg, seed=0)
+    a = res.cloud.attrs
+    assert ASPRSClass.ROAD_SURFACE in set(np.unique(a["classification"]).tolist())
+    assert np.all(a["point_source_id"] == 1) and np.abs(a["scan_angle"]).max() <= 180
+    # points on both sides of the road axis
+    xy = res.cloud.xyz[:, :2] - scene.origin[:2] - p
+    side = xy[:, 0] * -d[1] + xy[:, 1] * d[0]
+    assert (side > 5).sum() > 100 and (side < -5).sum() > 100
+    # the vehicle's own height above the road is the IMU height plus the lever arm (scanner 0.6 m higher)
+    assert res.true_trajectory.position[:, 2].min() > float(scene.vertices[:, 2].min())

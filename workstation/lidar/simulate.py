@@ -338,18 +338,26 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
         one = np.ones(len(idx), np.uint8)
         return {"pulse": idx, "range": t, "prim": prim, "power": pw, "return_number": one, "number_of_returns": one}
     offs, weights = subray_pattern(N)
-    half = sensor.divergence_mrad * 1e-3 / 2
-    ref = np.where(np.abs(dirs[:, 2:3]) < 0.9, np.array([[0.0, 0.0, 1.0]]), np.array([[1.0, 0.0, 0.0]]))
-    u = np.cross(dirs, ref)
-    u /= np.linalg.norm(u, axis=1, keepdims=True)
-    v = np.cross(dirs, u)
-    rot = rng.uniform(0, 2 * np.pi, P)
-    cr, sr = np.cos(rot), np.sin(rot)
-    ox = half * (cr[:, None] * offs[None, :, 0] - sr[:, None] * offs[None, :, 1])  # (P, N)
-    oy = half * (sr[:, None] * offs[None, :, 0] + cr[:, None] * offs[None, :, 1])
+    half = np.float32(sensor.divergence_mrad * 1e-3 / 2)
+    d = np.asarray(dirs, np.float32)
+    dx, dy, dz = d[:, 0], d[:, 1], d[:, 2]
+    # an orthonormal basis (u, v) across each beam: u = d x z (or d x x near vertical), v = d x u
+    steep = np.abs(dz) >= 0.9
+    ux = np.where(steep, np.float32(0), dy)
+    uy = np.where(steep, dz, -dx)
+    uz = np.where(steep, -dy, np.float32(0))
+    inv = np.float32(1) / np.sqrt(ux * ux + uy * uy + uz * uz)
+    ux, uy, uz = ux * inv, uy * inv, uz * inv
+    vx, vy, vz = dy * uz - dz * uy, dz * ux - dx * uz, dx * uy - dy * ux
+    rot = rng.random(P, dtype=np.float32) * np.float32(2 * np.pi)
+    cr, sr = np.cos(rot)[:, None], np.sin(rot)[:, None]
+    o0, o1 = offs[None, :, 0].astype(np.float32), offs[None, :, 1].astype(np.float32)
+    ox = half * (cr * o0 - sr * o1)  # (P, N) angular offsets (rad)
+    oy = half * (sr * o0 + cr * o1)
     rays = np.empty((P, N, 6), np.float32)
     rays[:, :, :3] = origins[:, None, :]
-    rays[:, :, 3:] = dirs[:, None, :] + ox[..., None] * u[:, None, :] + oy[..., None] * v[:, None, :]
+    for i, (dc, uc, vc) in enumerate(((dx, ux, vx), (dy, uy, vy), (dz, uz, vz))):
+        rays[:, :, 3 + i] = dc[:, None] + ox * uc[:, None] + oy * vc[:, None]
     t, prim = _cast(c, rays.reshape(-1, 6), rng)
     t = t.reshape(P, N)
     t = np.where((t >= sensor.min_range_m) & (t <= sensor.max_range_m), t, np.inf)
@@ -420,7 +428,11 @@ def _nav_errors(traj: Trajectory, errors: ErrorModel, rng: np.random.Generator) 
 def _to_map(rpy: np.ndarray, v_b: np.ndarray, trig=None) -> np.ndarray:
     """Body-frame vectors (n, 3) to map-frame (ENU) vectors for per-pulse attitudes (n, 3)."""
     v_n = rotate_rpy(rpy, v_b, trig=trig)
-    return v_n[:, [1, 0, 2]] * np.array([1.0, 1.0, -1.0])
+    out = np.empty_like(v_n)
+    out[:, 0] = v_n[:, 1]
+    out[:, 1] = v_n[:, 0]
+    out[:, 2] = -v_n[:, 2]
+    return out
 
 
 def simulate(
@@ -506,11 +518,13 @@ def simulate(
         k = np.arange(k0, k1, dtype=np.int64)
         t = seg.t0 + k / scanner.prf
         ang = scanner.angles(k)
-        d_true = scanner.directions(ang.primary * scale + offset if not exact_angles else ang.primary, ang.secondary)
+        # the true beam in float32 (the rays are float32): trig ~15x faster than float64 in numpy
+        d_true = scanner.directions(ang.primary * scale + offset if not exact_angles else ang.primary, ang.secondary,
+                                    np.float32)
         pos, rpy = trajectory.interpolate(t)
-        trig = rpy_trig(rpy)
-        origins = pos + _to_map(rpy, np.broadcast_to(lever_true, (len(k), 3)), trig) if lever_true.any() else pos
-        dirs = _to_map(rpy, d_true @ R_bs_true.T if true_chain.boresight != (0.0, 0.0, 0.0) else d_true, trig)
+        trig = rpy_trig(rpy, precise=False)
+        origins = pos + _to_map(rpy, np.broadcast_to(lever_true.astype(np.float32), (len(k), 3)), trig) if lever_true.any() else pos
+        dirs = _to_map(rpy, d_true @ R_bs_true.T.astype(np.float32) if true_chain.boresight != (0.0, 0.0, 0.0) else d_true, trig)
         ret = _returns(caster, sensor, origins, dirs, rng)
         j = ret["pulse"]
         if j.size == 0:
@@ -519,7 +533,7 @@ def simulate(
         d_enc = d_true[j] if exact_angles else scanner.directions(ang.primary[j], ang.secondary[j])
         tp = t[j]
         pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
-        xyz = mount.forward(r_meas, d_enc, pos_p, rpy_p)
+        xyz = mount.forward(r_meas, d_enc, pos_p, rpy_p, trig=rpy_trig(rpy_p, precise=False))
         prim = ret["prim"]
         sa = scanner.scan_angle_deg(ang.primary[j])
         if roll_in_scan_angle:
@@ -553,7 +567,7 @@ def simulate(
 
     # numpy and Embree release the GIL on large arrays: batches overlap on several cores
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        for n_k, part in pool.map(run_batch, jobs):
+        for n_k, part in (pool.map(run_batch, jobs) if workers > 1 else map(run_batch, jobs)):
             n_pulses += n_k
             if progress:
                 progress(n_k)
