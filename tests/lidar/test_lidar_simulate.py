@@ -140,6 +140,20 @@ def test_multiple_returns_under_trees_and_none_on_bare_ground():
     assert np.all(one.cloud.attrs["number_of_returns"] == 1)
 
 
+def test_beam_divergence_changes_the_hits():
+    scene = _tree_scene()
+
+    def share(div):
+        a = simulate(scene, _one_line(), SCAN, Sensor(subrays=5, divergence_mrad=div), ErrorModel.none(), seed=1).cloud.attrs
+        veg = np.isin(a["gps_time"], np.unique(a["gps_time"][a["classification"] == ASPRSClass.HIGH_VEGETATION]))
+        return np.mean(a["number_of_returns"][veg & (a["return_number"] == 1)] > 1)
+
+    # a 6 mm footprint (0.02 mrad at 300 m) is smaller than a leaf gap cell: few splits;
+    # a 30 cm footprint straddles many cells and leaf triangles
+    narrow, wide = share(0.02), share(1.0)
+    assert wide > 0.5 and narrow < 0.5 * wide
+
+
 def test_water_returns_are_sparse():
     ground = plane_scene(100, PLANE_Z, origin=(499950.0, 5000000.0))
     water = plane_scene(100, PLANE_Z, material="water", origin=(500050.0, 5000000.0), cls=ASPRSClass.WATER)

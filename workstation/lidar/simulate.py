@@ -285,12 +285,31 @@ def _power(c: _Caster, sensor: Sensor, t: np.ndarray, prim: np.ndarray, dirs: np
     return sensor.received_power(t, rho) * w
 
 
+#: Size (m) of the cells of the procedural gap pattern inside porous (foliage) triangles.
+GAP_CELL_M = 0.05
+
+
+def _gap_value(points: np.ndarray, prim: np.ndarray) -> np.ndarray:
+    """Uniform [0, 1) value per hit from a hash of its ``GAP_CELL_M`` cell and triangle.
+
+    A spatial pattern, not a per-ray coin toss: rays hitting the same leaf-sized cell share
+    the outcome, so a beam with a footprint smaller than a leaf passes or stops as a whole and
+    only a wider footprint (larger divergence or range) splits into several returns.
+    """
+    q = np.floor(points / GAP_CELL_M).astype(np.int64)
+    h = (q[:, 0] * 73856093) ^ (q[:, 1] * 19349663) ^ (q[:, 2] * 83492791) ^ (prim.astype(np.int64) * 2654435761)
+    h = (h ^ (h >> 13)) * 0x5BD1E995
+    h ^= h >> 15
+    return (h & 0xFFFFFF).astype(np.float32) / np.float32(1 << 24)
+
+
 def _cast(c: _Caster, rays: np.ndarray, rng, max_passes: int = 4) -> tuple[np.ndarray, np.ndarray]:
     """First hits of ``rays`` (n, 6) f32, letting rays pass porous (foliage) triangles.
 
-    A ray that meets a triangle of porosity p goes on with probability p (a gap between
-    leaves smaller than the triangle), from just beyond the hit, up to ``max_passes`` times.
-    Returns the range from the ray origin (n,) f64 (inf = miss) and the triangle (n,) (-1).
+    A triangle of porosity p stands for foliage with gaps smaller than the triangle: a ray
+    goes on through it where the procedural gap pattern (:func:`_gap_value`) at the hit is
+    below p, from just beyond the hit, up to ``max_passes`` times. Returns the range from the
+    ray origin (n,) f64 (inf = miss) and the triangle (n,) (-1).
     """
     t, prim = c.rc.cast_rays(rays)
     t = t.astype(np.float64)
@@ -302,7 +321,8 @@ def _cast(c: _Caster, rays: np.ndarray, rng, max_passes: int = 4) -> tuple[np.nd
     for _ in range(max_passes):
         if active.size == 0:
             break
-        go = active[rng.random(active.size) < c.porosity[prim[active]]]
+        pts = rays[active, :3].astype(np.float64) + rays[active, 3:] * t[active, None]
+        go = active[_gap_value(pts, prim[active]) < c.porosity[prim[active]]]
         if go.size == 0:
             break
         r2 = rays[go].copy()
