@@ -116,6 +116,14 @@ def mapped_attr(attrs: dict, types: dict, canonical: str, source_name: str, valu
     ``types`` receives ``{attr name: [source name, source type]}`` for the writer.
     """
     dt = DIMS[canonical].dtype
+    values = np.asarray(values)
+    if dt.kind == "f" and values.dtype.kind in "fiu":
+        with np.errstate(over="ignore"):
+            cast = values.astype(dt)  # a float dimension keeps its table precision
+        if np.array_equal(np.isfinite(cast), np.isfinite(values)):
+            attrs[canonical] = cast
+            types[canonical] = [source_name, source_type]
+            return
     if fits_exactly(values, dt):
         attrs[canonical] = np.asarray(values).astype(dt)
         types[canonical] = [source_name, source_type]
@@ -164,7 +172,7 @@ def loadtxt_error_line(message: str, first_line: int) -> int | None:
     if m is None:
         return None
     row = int(m.group(1))
-    return first_line + row - (1 if "columns changed" in message else 0)
+    return first_line + row - (0 if "could not convert" in message else 1)
 
 
 def number_format(dtype) -> str:
