@@ -158,3 +158,12 @@ def test_isprs_samp11(shared_data):
     plain = np.array([[float(v) for v in line.split()] for line in path.read_text().splitlines() if line.strip()])
     np.testing.assert_array_equal(c.xyz, plain[:, :3])
     np.testing.assert_array_equal(c.attrs["label"], plain[:, 3])
+
+
+def test_headerless_default_reads_back(tmp_path):
+    c = Cloud([[1.0, 2.0, 3.0]], {"intensity": [5], "rgb": [[257, 514, 771]], "classification": [2]})
+    text.write(c, tmp_path / "n.xyz")
+    assert (tmp_path / "n.xyz").read_text() == "1.0000 2.0000 3.0000 5 1 2 3\n"
+    back = text.read(tmp_path / "n.xyz")
+    np.testing.assert_array_equal(back.attrs["rgb"], c.attrs["rgb"])
+    assert back.attrs["intensity"][0] == 5 and "classification" not in back.attrs

@@ -148,15 +148,20 @@ def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
             path=path, field="points",
         )
     valid = np.ones(n, dtype=bool) if state is None else state == 0
+    all_valid = bool(valid.all())
     rot, trans = _pose(node)
-    xyz = xyz[valid] @ quaternion_matrix(*rot).T + trans
-    m = int(valid.sum())
+    if not all_valid:
+        xyz = xyz[valid]
+        data = {k: v[valid] for k, v in data.items()}
+    if not (np.array_equal(rot, [1.0, 0.0, 0.0, 0.0]) and not trans.any()):
+        xyz = xyz @ quaternion_matrix(*rot).T + trans
+    m = xyz.shape[0]
     attrs: dict[str, np.ndarray] = {"point_source_id": np.full(m, index, dtype=np.uint16)}
     ilim = _limits(node, "intensityLimits", "intensityMinimum", "intensityMaximum")
     if "intensity" in data:
-        inten = _scale(data["intensity"][valid], ilim, "intensity", path)
+        inten = _scale(data["intensity"], ilim, "intensity", path)
         if "isIntensityInvalid" in data:
-            inten[data["isIntensityInvalid"][valid] != 0] = 0
+            inten[data["isIntensityInvalid"] != 0] = 0
         attrs["intensity"] = inten
     clim = None
     if all(f"color{c}" in data for c in ("Red", "Green", "Blue")):
@@ -165,18 +170,18 @@ def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
         for c in ("Red", "Green", "Blue"):
             lim = _limits(node, "colorLimits", f"color{c}Minimum", f"color{c}Maximum")
             clim.append(lim)
-            chans.append(_scale(data[f"color{c}"][valid], lim, "colour", path))
+            chans.append(_scale(data[f"color{c}"], lim, "colour", path))
         rgb = np.column_stack(chans)
         if "isColorInvalid" in data:
-            rgb[data["isColorInvalid"][valid] != 0] = 0
+            rgb[data["isColorInvalid"] != 0] = 0
         attrs["rgb"] = rgb
     if "returnIndex" in data:
-        attrs["return_number"] = data["returnIndex"][valid] + 1
+        attrs["return_number"] = data["returnIndex"] + 1
     if "returnCount" in data:
-        attrs["number_of_returns"] = data["returnCount"][valid]
+        attrs["number_of_returns"] = data["returnCount"]
     for src, dst, dt in (("rowIndex", "row_index", np.int64), ("columnIndex", "column_index", np.int64), ("timeStamp", "time_stamp", np.float64)):
         if src in data:
-            attrs[dst] = data[src][valid].astype(dt)
+            attrs[dst] = data[src].astype(dt)
     name = _child(node, "name")
     guid = _child(node, "guid")
     info = {

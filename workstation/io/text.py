@@ -275,12 +275,19 @@ def _precision_from_meta(cloud: Cloud) -> int | None:
         return None
 
 
-def _default_columns(cloud: Cloud) -> list[str]:
+def _default_columns(cloud: Cloud, header: bool) -> list[str]:
     cols = ["x", "y", "z"]
     if "intensity" in cloud.attrs:
         cols.append("intensity")
     if "rgb" in cloud.attrs:
         cols += ["r", "g", "b"]
+    if not header:
+        # Without a header only the layouts the reader recognises by column count are written.
+        rest = [k for k in cloud.attrs if k not in ("intensity", "rgb")]
+        if rest:
+            log.info("a text file without header holds x,y,z[,intensity][,r,g,b]; not written: %s "
+                     "(write .csv/.txt or pass header=True to keep them)", ", ".join(rest))
+        return cols
     if "normal" in cloud.attrs:
         cols += ["nx", "ny", "nz"]
     for name, arr in cloud.attrs.items():
@@ -310,8 +317,9 @@ def write(
     path : path-like
     columns : str or sequence of str, optional
         Columns to write, names as for :func:`read` (``attr:NAME`` or the plain name for a
-        free attribute). Default: x, y, z, intensity, r, g, b, nx, ny, nz when present, then
-        every other scalar attribute.
+        free attribute). Default with a header: x, y, z, intensity, r, g, b, nx, ny, nz when
+        present, then every other scalar attribute; without a header only x, y, z,
+        intensity, r, g, b (the layouts :data:`DEFAULT_COLUMNS` reads back).
     header : bool, optional
         Write a header line of column names; default True for .csv and .txt, False for .xyz
         and .pts (a .pts file starts with its point count instead).
@@ -343,7 +351,7 @@ def write(
         coord_fmt = f"%.{precision}f"
     else:
         raise InvalidInputError(f"precision must be 0..17 or 'exact', got {precision!r}", field="precision")
-    names = _default_columns(cloud) if columns is None else (
+    names = _default_columns(cloud, header) if columns is None else (
         [c.strip() for c in columns.split(",")] if isinstance(columns, str) else [str(c) for c in columns]
     )
     rgb = cloud.attrs.get("rgb")
