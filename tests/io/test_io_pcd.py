@@ -182,3 +182,16 @@ def test_unknown_data_mode(tmp_path):
     p.write_text(_hdr(1, "zipped") + "1 2 3\n")
     with pytest.raises(UnsupportedFormatError, match="zipped"):
         pcd.read(p)
+
+
+@pytest.mark.parametrize("ascii", [False, True])
+def test_16bit_colour_kept_exactly(tmp_path, ascii):
+    rgb = np.array([[1, 2, 255], [0, 17, 30]])  # 8-bit colour held in 16-bit fields, as in many LAS files
+    c = Cloud(np.zeros((2, 3)), {"rgb": rgb})
+    pcd.write(c, tmp_path / "c.pcd", ascii=ascii)
+    back = pcd.read(tmp_path / "c.pcd")
+    np.testing.assert_array_equal(back.attrs["rgb"], rgb)
+    assert set(back.attrs) == {"rgb"}
+    wide = c.with_attrs(rgb=[[65535, 300, 0], [1000, 2, 3]])
+    pcd.write(wide, tmp_path / "w.pcd", ascii=ascii)
+    np.testing.assert_array_equal(pcd.read(tmp_path / "w.pcd").attrs["rgb"], wide.attrs["rgb"])

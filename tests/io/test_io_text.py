@@ -167,3 +167,11 @@ def test_headerless_default_reads_back(tmp_path):
     back = text.read(tmp_path / "n.xyz")
     np.testing.assert_array_equal(back.attrs["rgb"], c.attrs["rgb"])
     assert back.attrs["intensity"][0] == 5 and "classification" not in back.attrs
+
+
+def test_16bit_colours_below_256_read_back_exactly(tmp_path):
+    """LAS files often hold 8-bit values in the 16-bit fields: the header must say 16-bit."""
+    c = Cloud(np.zeros((2, 3)), {"rgb": [[1, 2, 255], [0, 17, 30]]})
+    text.write(c, tmp_path / "c.csv")
+    assert (tmp_path / "c.csv").read_text().splitlines()[0] == "x,y,z,r16,g16,b16"
+    np.testing.assert_array_equal(text.read(tmp_path / "c.csv").attrs["rgb"], c.attrs["rgb"])

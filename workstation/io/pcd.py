@@ -12,6 +12,7 @@ PCD field                                      ``Cloud``
 x, y, z                                        ``xyz`` (float64)
 rgb (packed F 4 or U 4), rgba (U 4)            ``rgb`` u16 (8-bit channels x 257); the alpha of
                                                ``rgba`` becomes the free attribute ``alpha``
+r16, g16, b16 (U 2, written by us)             ``rgb`` exactly, for colour that is not 8-bit
 normal_x, normal_y, normal_z                   ``normal`` f32
 intensity                                      ``intensity`` u16 when every value fits
 label                                          ``classification`` u8 when every value fits
@@ -313,6 +314,13 @@ def read(path) -> Cloud:
         v = np.asarray(v)
         return v[valid] if dropped else v
 
+    if all(f"{ch}16" in cols for ch in "rgb"):
+        attrs["rgb"] = np.column_stack([sel(cols[f"{ch}16"]).astype(np.uint16) for ch in "rgb"])
+        types["rgb"] = [["r16", "g16", "b16"], "U2"]
+        used.update(("r16", "g16", "b16", "rgb"))
+        if "rgba" in cols:
+            attrs["alpha"] = ((sel(cols["rgba"]).astype(np.uint32) >> 24) & 0xFF).astype(np.uint8)
+            used.add("rgba")
     for packed in ("rgb", "rgba"):
         if packed in cols and "rgb" not in attrs:
             p = sel(cols[packed])
@@ -376,9 +384,15 @@ def _fields(cloud: Cloud, xyz_type: str, ascii: bool):
     out = [(c, "F", size, cloud.xyz[:, i]) for i, c in enumerate("xyz")]
     for name, arr in cloud.attrs.items():
         if name == "rgb":
-            if np.any(arr % 257):
-                log.warning("PCD colours are 8-bit: 16-bit rgb is rounded to 8 bits")
-            c8 = np.round(arr / 257.0).astype(np.uint32)
+            exact8 = not np.any(arr % 257)
+            if exact8:
+                c8 = (arr // 257).astype(np.uint32)
+            else:
+                # PCL colour is 8-bit: pack what a viewer should show (values already below 256
+                # are 8-bit colour stored in 16-bit fields, as in many LAS files), and keep the
+                # exact 16-bit values in r16/g16/b16 fields that this reader prefers.
+                c8 = (arr if arr.max(initial=0) <= 255 else np.round(arr / 257.0)).astype(np.uint32)
+                out.extend((f"{ch}16", "U", 2, arr[:, i]) for i, ch in enumerate("rgb"))
             packed = (c8[:, 0] << 16) | (c8[:, 1] << 8) | c8[:, 2]
             if "alpha" in cloud.attrs and cloud.attrs["alpha"].ndim == 1:
                 packed |= cloud.attrs["alpha"].astype(np.uint32) << 24
@@ -429,11 +443,14 @@ def write(cloud: Cloud, path, *, ascii: bool = False, xyz_type: str = "auto") ->
 
     Notes
     -----
-    ``rgb`` is packed into the PCL ``rgb`` field (8 bits per channel; 16-bit colour is
-    rounded; F 4 in binary, U 4 so that the text holds the integer in ascii), or into ``rgba`` (U 4) with the ``alpha`` attribute; ``normal`` becomes
+    ``rgb`` is packed into the PCL ``rgb`` field (8 bits per channel; F 4 in binary, U 4 so
+    that the text holds the integer in ascii), or into ``rgba`` (U 4) with the ``alpha`` attribute; ``normal`` becomes
     normal_x/y/z; ``intensity`` F 4 and ``classification`` as ``label`` U 4 unless the source
     types are recorded in ``meta["pcd"]``; other attributes keep their name and dtype
     ((n, k) attributes as one field with COUNT k). The VIEWPOINT in ``meta["pcd"]`` is kept.
+    Colour that is not 8-bit (values not multiples of 257) is also written exactly as
+    ``r16 g16 b16`` (U 2) fields; the packed field then holds the values themselves when
+    all are below 256 (8-bit colour kept in 16-bit fields, common in LAS), else value / 257.
     """
     if xyz_type not in ("auto", "double", "float"):
         raise InvalidInputError(f"xyz_type must be 'auto', 'double' or 'float', got {xyz_type!r}", field="xyz_type")

@@ -16,6 +16,8 @@ name                               meaning
 x, y, z                            coordinates (required)
 r, g, b / red, green, blue         ``rgb``: 8-bit values (x 257) unless ``rgb_bits=16`` or a
                                    value exceeds 255
+r16, g16, b16                      ``rgb`` as 16-bit values (the writer's names for colour that
+                                   is not 8-bit, so a file reads back exactly)
 nx, ny, nz / normal_x ..           ``normal``
 intensity, classification,         the canonical attribute when every value fits its dtype,
 gps_time, return_number, ...       else a free float attribute (``intensity_raw``)
@@ -58,6 +60,7 @@ DEFAULT_COLUMNS = {
 }
 _XYZ = {"x": 0, "y": 1, "z": 2}
 _RGB = {"r": 0, "g": 1, "b": 2, "red": 0, "green": 1, "blue": 2}
+_RGB16 = {"r16": 0, "g16": 1, "b16": 2, "red16": 0, "green16": 1, "blue16": 2}
 _NORMAL = {"nx": 0, "ny": 1, "nz": 2, "normal_x": 0, "normal_y": 1, "normal_z": 2}
 _SKIP = {"skip", "_"}
 _SNIFF_BYTES = 1 << 16
@@ -81,6 +84,8 @@ def _resolve(name: str, *, strict: bool, path) -> tuple[str, object]:
         return "xyz", _XYZ[low]
     if low in _RGB:
         return "rgb", _RGB[low]
+    if low in _RGB16:
+        return "rgb16", _RGB16[low]
     if low in _NORMAL:
         return "normal", _NORMAL[low]
     if low == "label":
@@ -231,9 +236,11 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
         v = cols[i]
         if kind == "xyz":
             xyz[:, target] = v
-        elif kind == "rgb":
+        elif kind in ("rgb", "rgb16"):
             rgb[:, target] = v
             have_rgb.add(target)
+            if kind == "rgb16":
+                rgb_bits = 16
         elif kind == "normal":
             normal[:, target] = v
             have_normal.add(target)
@@ -332,7 +339,8 @@ def write(
 
     Notes
     -----
-    ``rgb`` is written as 8-bit values when every value is a multiple of 257, else as 16-bit.
+    ``rgb`` is written as 8-bit values (header r, g, b) when every value is a multiple of
+    257, else as 16-bit values (header r16, g16, b16).
     Attribute values are written exactly (integers as integers, float32 with 9 significant
     digits, float64 as the shortest exact text).
     """
@@ -364,12 +372,19 @@ def write(
         if kind == "xyz":
             arrays.append(cloud.xyz[:, target])
             formats.append(coord_fmt)
-        elif kind in ("rgb", "normal"):
-            src = cloud.attrs.get(kind)
+        elif kind in ("rgb", "rgb16", "normal"):
+            src = cloud.attrs.get("rgb" if kind == "rgb16" else kind)
             if src is None:
                 raise InvalidInputError(f"column '{name}' asked for but the cloud has no {kind}", field=name)
             v = src[:, target]
-            arrays.append(v // 257 if kind == "rgb" and rgb8 else v)
+            if kind != "normal":
+                if rgb8 and kind == "rgb":
+                    v = v // 257
+                else:
+                    name = "rgb"[target] + "16"  # 16-bit colour says so in the header
+                    if not header and v.size and v.max() <= 255:
+                        log.warning("16-bit colours below 256 in a text file without header read back as 8-bit")
+            arrays.append(v)
             formats.append(number_format(v.dtype))
         elif kind == "skip":
             raise InvalidInputError("'skip' is for reading; leave the column out", field=name)
