@@ -49,6 +49,9 @@ def main() -> None:
     normal /= np.linalg.norm(normal, axis=1, keepdims=True)
     full = Cloud(xyz, {"rgb": rgb8 * 257, "normal": normal})
     xyz_only = Cloud(xyz)
+    intensity = rng.integers(0, 65536, n)
+    xyzi = Cloud(xyz, {"intensity": intensity})
+    xyzi_np = np.column_stack([xyz, intensity])
     legacy = o3d.geometry.PointCloud()
     legacy.points = o3d.utility.Vector3dVector(xyz)
     legacy.colors = o3d.utility.Vector3dVector(rgb8 / 255.0)
@@ -86,8 +89,10 @@ def main() -> None:
              "open3d (xyz f4)", o3d_write(legacy, "o.pcd"), o3d_read("o.pcd")),
             ("xyz_text", "xyz, 3 decimals", lambda: text.write(xyz_only, d / "a.xyz", precision=3), lambda: text.read(d / "a.xyz"),
              "open3d", o3d_write(legacy_xyz, "o.xyz"), o3d_read("o.xyz")),
-            ("xyz_text", "xyz, 3 decimals", None, None,
-             "numpy savetxt/loadtxt", lambda: np.savetxt(d / "np.xyz", xyz, fmt="%.3f"), lambda: np.loadtxt(d / "np.xyz")),
+            ("txt_xyzi", "x y z intensity, 3 decimals", lambda: text.write(xyzi, d / "a.txt", precision=3, header=False),
+             lambda: text.read(d / "a.txt", columns="x,y,z,intensity"),
+             "numpy savetxt/loadtxt", lambda: np.savetxt(d / "np.txt", xyzi_np, fmt="%.3f %.3f %.3f %d"),
+             lambda: np.loadtxt(d / "a.txt")),
             ("e57", "xyz f8, rgb", lambda: e57.write(full.without_attrs("normal"), d / "a.e57"), lambda: e57.read(d / "a.e57"),
              "pye57", e57_anchor_write, e57_anchor_read),
         ]

@@ -153,6 +153,8 @@ def _header(n=2, fmt="ascii", props=("x", "y", "z")):
         ("nonnumeric", _header(2) + "1 2 3\n4 abc 6\n", "vertex", "(line 9)"),
         ("nan", _header(2) + "1 2 3\nnan 5 6\n", "xyz", "NaN"),
         ("noend", "ply\nformat ascii 1.0\nelement vertex 1\n", "header", "end_header"),
+        ("dup", _header(1, props=("x", "y", "z", "y")) + "1 2 3 4\n", "y", "appears twice"),
+        ("badtype", _header(1).replace("float z", "float128 z") + "1 2 3\n", "z", "unknown property type"),
     ],
 )
 def test_bad_input_names_file_and_field(tmp_path, name, content, field, words):

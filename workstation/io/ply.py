@@ -154,6 +154,11 @@ def _read_header(path: Path) -> _Header:
                         "PLY types are char uchar short ushort int uint float double (or int8..float64)",
                         path=path, field=prop.name,
                     )
+                if any(q.name == prop.name for q in elements[-1].props):
+                    raise InvalidInputError(
+                        f"property '{prop.name}' appears twice in element '{elements[-1].name}' (line {lineno})",
+                        "rename one of them", path=path, field=prop.name,
+                    )
                 elements[-1].props.append(prop)
             else:
                 raise ValueError(f"unknown keyword '{key}'")
