@@ -69,8 +69,8 @@ def lzf_decompress(src: bytes, out_len: int) -> bytes:
 
     Examples
     --------
-    >>> lzf_decompress(bytes([2]) + b"abc" + bytes([0xA0, 2]), 8)  # 'abc' then copy 7 from 3 back
-    b'abcabcab'
+    >>> lzf_decompress(bytes([2]) + b"abc" + bytes([0xA0, 2]), 10)  # 'abc', then 7 bytes from 3 back
+    b'abcabcabca'
     """
     out = bytearray(out_len)
     ip, op, n = 0, 0, len(src)
