@@ -190,3 +190,38 @@ def test_stanford_bunny_crlf(shared_data, name):
     np.testing.assert_array_equal(c.bounds[0], plain.min(axis=0))
     np.testing.assert_array_equal(c.bounds[1], plain.max(axis=0))
     np.testing.assert_array_equal(c.xyz, plain)
+
+
+@pytest.mark.parametrize("ascii", [False, True])
+def test_open3d_interchange(tmp_path, ascii):
+    """Files open3d writes read back here, and open3d reads what we write."""
+    o3d = pytest.importorskip("open3d")
+    rng = np.random.default_rng(11)
+    n = 200
+    xyz = rng.normal(size=(n, 3)) * 100
+    cols8 = rng.integers(0, 256, (n, 3))
+    normals = rng.normal(size=(n, 3))
+    p = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(xyz))
+    p.colors = o3d.utility.Vector3dVector(cols8 / 255.0)
+    p.normals = o3d.utility.Vector3dVector(normals)
+    theirs = tmp_path / "o3d.ply"
+    assert o3d.io.write_point_cloud(str(theirs), p, write_ascii=ascii)
+    c = ply.read(theirs)
+    np.testing.assert_allclose(c.xyz, xyz, rtol=1e-12 if not ascii else 1e-5)  # open3d ascii: 6 digits
+    np.testing.assert_array_equal(c.attrs["rgb"], cols8 * 257)
+    np.testing.assert_allclose(c.attrs["normal"], normals.astype(np.float32), rtol=1e-5 if ascii else 1e-7, atol=1e-6 if ascii else 0)
+    ours = tmp_path / "ours.ply"
+    ply.write(c, ours, ascii=ascii)
+    q = o3d.io.read_point_cloud(str(ours))
+    np.testing.assert_array_equal(np.asarray(q.points), c.xyz)
+    np.testing.assert_allclose(np.asarray(q.colors) * 255, cols8, atol=1e-9)
+
+
+def test_trimesh_mesh_ply_with_faces(tmp_path):
+    trimesh = pytest.importorskip("trimesh")
+    mesh = trimesh.creation.icosphere(subdivisions=2, radius=3.0)
+    path = tmp_path / "mesh.ply"
+    mesh.export(path)  # binary, vertex element then a face list element
+    c = ply.read(path)
+    np.testing.assert_allclose(c.xyz, mesh.vertices, rtol=1e-6)
+    assert c.meta["ply"]["elements"]["face"] == len(mesh.faces)
