@@ -195,3 +195,10 @@ def test_16bit_colour_kept_exactly(tmp_path, ascii):
     wide = c.with_attrs(rgb=[[65535, 300, 0], [1000, 2, 3]])
     pcd.write(wide, tmp_path / "w.pcd", ascii=ascii)
     np.testing.assert_array_equal(pcd.read(tmp_path / "w.pcd").attrs["rgb"], wide.attrs["rgb"])
+
+
+def test_crs_kept_in_a_comment(tmp_path):
+    c = Cloud(np.zeros((1, 3)), crs="EPSG:2056")
+    pcd.write(c, tmp_path / "c.pcd")
+    assert (tmp_path / "c.pcd").read_text().startswith("# .PCD")
+    assert pcd.read(tmp_path / "c.pcd").crs == "EPSG:2056"

@@ -225,3 +225,11 @@ def test_trimesh_mesh_ply_with_faces(tmp_path):
     c = ply.read(path)
     np.testing.assert_allclose(c.xyz, mesh.vertices, rtol=1e-6)
     assert c.meta["ply"]["elements"]["face"] == len(mesh.faces)
+
+
+def test_crs_kept_in_a_comment(tmp_path):
+    wkt = 'PROJCRS["WGS 84 / UTM zone 32N",\n  BASEGEOGCRS["WGS 84"]]'
+    for crs in ("EPSG:32632", wkt):
+        c = Cloud(np.zeros((1, 3)), crs=crs)
+        ply.write(c, tmp_path / "c.ply")
+        assert ply.read(tmp_path / "c.ply").crs == " ".join(crs.split())

@@ -98,16 +98,29 @@ def scalar_canonical(name: str) -> str | None:
     return low if low in SCALAR_DIMS else None
 
 
-def build_cloud(path, xyz, attrs, meta) -> Cloud:
+def build_cloud(path, xyz, attrs, meta, crs: str | None = None) -> Cloud:
     """Build a :class:`Cloud`, re-raising validation errors with the file named."""
     try:
-        return Cloud(xyz, attrs, meta=meta)
+        return Cloud(xyz, attrs, crs=crs, meta=meta)
     except InvalidInputError as e:
         if e.path is not None:
             raise
         err = InvalidInputError(e.message, e.hint, path=path)
         err.field = e.field
         raise err from None
+
+
+def crs_line(crs: str | None) -> str | None:
+    """The CRS as one line for a header comment (``crs EPSG:32632`` or flattened WKT)."""
+    if not crs:
+        return None
+    return "crs " + " ".join(crs.split())
+
+
+def crs_from_comment(comment: str) -> str | None:
+    """Inverse of :func:`crs_line` for a comment's text, else None."""
+    text = comment.strip()
+    return text[4:].strip() or None if text.startswith("crs ") else None
 
 
 def mapped_attr(attrs: dict, types: dict, canonical: str, source_name: str, values, source_type: str) -> None:

@@ -20,7 +20,8 @@ rowIndex, columnIndex, timeStamp  free attributes ``row_index``, ``column_index`
 ================================  =============================================================
 
 Points flagged ``isIntensityInvalid`` / ``isColorInvalid`` get 0 there. ``meta["e57"]``
-lists each scan's name, guid, point counts, pose and limits.
+lists each scan's name, guid, point counts, pose and limits, and the file's
+``coordinate_metadata`` string (the E57 CRS description, free text; not interpreted).
 """
 
 from __future__ import annotations
@@ -230,6 +231,8 @@ def read(path, *, scans=None) -> Cloud:
     except Exception as exc:  # noqa: BLE001 - libE57 raises E57Exception / RuntimeError variants
         raise InvalidInputError(f"cannot open as E57: {exc}", "check the file type; E57 files start with 'ASTM-E57'", path=path, field="magic") from None
     try:
+        node = _child(e.root, "coordinateMetadata")
+        coord_meta = node.value() if node is not None else ""
         count = e.scan_count
         idx = list(range(count)) if scans is None else [int(s) for s in scans]
         bad = [s for s in idx if not 0 <= s < count]
@@ -250,7 +253,7 @@ def read(path, *, scans=None) -> Cloud:
     finally:
         e.close()
     cloud = concatenate(parts) if len(parts) > 1 else parts[0]
-    return cloud.with_meta(format="e57", e57={"scans": infos, "scan_count": count})
+    return cloud.with_meta(format="e57", e57={"scans": infos, "scan_count": count, "coordinate_metadata": coord_meta})
 
 
 def write(cloud: Cloud, path, *, name: str = "scan 0") -> None:
@@ -274,6 +277,8 @@ def write(cloud: Cloud, path, *, name: str = "scan 0") -> None:
     pye57 = _pye57()
     from pye57 import libe57
 
+    if cloud.crs:
+        log.warning("%s: the CRS %s is not stored (pye57 cannot set the E57 coordinateMetadata)", Path(path).name, cloud.crs[:60])
     e = pye57.E57(str(path), mode="w")
     try:
         imf = e.image_file

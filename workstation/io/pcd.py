@@ -22,7 +22,8 @@ anything else (curvature, FPFH with COUNT 33)  a free attribute under its own na
 
 Points whose coordinates are NaN (PCL marks invalid points of organised clouds so,
 ``is_dense`` false) are dropped with a warning; ``meta["pcd"]["dropped_invalid"]`` counts
-them. ``VIEWPOINT``, ``WIDTH``, ``HEIGHT`` and the field types are kept in ``meta["pcd"]``.
+them. The CRS, which PCD has no field for, is written and read as a header comment
+``# crs EPSG:32632`` (PCL ignores comment lines). ``VIEWPOINT``, ``WIDTH``, ``HEIGHT`` and the field types are kept in ``meta["pcd"]``.
 """
 
 from __future__ import annotations
@@ -38,6 +39,8 @@ from workstation.core.log import get_logger
 
 from ._fields import (
     build_cloud,
+    crs_from_comment,
+    crs_line,
     fits_exactly,
     format_rows,
     loadtxt_error_line,
@@ -128,7 +131,12 @@ def _parse_header(path: Path):
         line = head[pos:nl].decode("ascii", errors="replace").strip()
         pos = nl + 1
         lineno += 1
-        if not line or line.startswith("#"):
+        if not line:
+            continue
+        if line.startswith("#"):
+            crs = crs_from_comment(line[1:])
+            if crs:
+                fields["#crs"] = [crs]
             continue
         tok = line.split()
         key = tok[0].upper()
@@ -361,7 +369,7 @@ def read(path) -> Cloud:
             "dropped_invalid": dropped,
         },
     }
-    return build_cloud(path, xyz, attrs, meta)
+    return build_cloud(path, xyz, attrs, meta, crs=(h.get("#crs") or [None])[0])
 
 
 def _field_type(dtype) -> tuple[str, int]:
@@ -459,6 +467,7 @@ def write(cloud: Cloud, path, *, ascii: bool = False, xyz_type: str = "auto") ->
     viewpoint = (cloud.meta.get("pcd") or {}).get("viewpoint") or [0, 0, 0, 1, 0, 0, 0]
     head = [
         "# .PCD v0.7 - Point Cloud Data file format (written by workstation)",
+        *([f"# {crs_line(cloud.crs)}"] if cloud.crs else []),
         "VERSION 0.7",
         "FIELDS " + " ".join(f[0] for f in fields),
         "SIZE " + " ".join(str(f[2]) for f in fields),

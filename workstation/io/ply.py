@@ -21,6 +21,8 @@ anything else                                      a free attribute under its ow
 
 A value that does not fit its canonical dtype (a float intensity in 0..1) is kept as a free
 attribute (``scalar_intensity``, or ``intensity_raw`` for a property named ``intensity``).
+The CRS, which PLY has no field for, is written and read as a header line
+``comment crs EPSG:32632`` (or one-line WKT); other programs ignore comments.
 ``meta["ply"]`` records the format, comments and the source name and type of every
 attribute, so that writing the cloud again gives the same property types (uchar colours stay
 uchar).
@@ -41,6 +43,8 @@ from workstation.core.log import get_logger
 
 from ._fields import (
     build_cloud,
+    crs_from_comment,
+    crs_line,
     fits_exactly,
     loadtxt_error_line,
     format_rows,
@@ -367,7 +371,8 @@ def read(path, *, keep_unknown: bool = True) -> Cloud:
             "types": types,
         },
     }
-    return build_cloud(path, xyz, attrs, meta)
+    crs = next((c for c in map(crs_from_comment, header.comments) if c), None)
+    return build_cloud(path, xyz, attrs, meta, crs=crs)
 
 
 def _ply_type(dtype) -> str:
@@ -453,6 +458,8 @@ def write(cloud: Cloud, path, *, ascii: bool = False, big_endian: bool = False, 
     cols = _columns(cloud, xyz_type)
     fmt = "ascii" if ascii else ("binary_big_endian" if big_endian else "binary_little_endian")
     head = ["ply", f"format {fmt} 1.0", "comment written by workstation"]
+    if cloud.crs:
+        head.append(f"comment {crs_line(cloud.crs)}")
     head.append(f"element vertex {cloud.n}")
     head.extend(f"property {t} {name}" for name, t, _ in cols)
     head.append("end_header")

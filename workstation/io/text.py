@@ -401,6 +401,8 @@ def write(
             arrays.append(v)
             formats.append(number_format(v.dtype))
         head.append(name)
+    if cloud.crs:
+        log.warning("%s: text point files have no place for a CRS; %s is not stored", path.name, cloud.crs[:60])
     with open(path, "w", encoding="utf-8", newline="\n") as f:
         if ext == ".pts" and not header:
             f.write(f"{cloud.n}\n")
