@@ -104,7 +104,9 @@ def test_usage_error_exit_2(capsys):
 
 
 @pytest.mark.realdata
-@pytest.mark.parametrize("name", ["Topography.laz", "autzen_trim.las", "lidarhd_extra_bytes.laz", "sample_c.las", "warsaw_small.las"])
+@pytest.mark.parametrize("name", ["Topography.laz", "MixedConifer.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las",
+                                  "warsaw_small.las", "lidarhd_extra_bytes.laz", "sample_c.las", "vegetation_1_3.las",
+                                  "fullwave.laz", "TreeLS_pine.laz"])
 def test_info_matches_laspy_on_real_files(shared_data, capsys, name):
     src = shared_data / "lidar" / name
     ref = laspy.read(src)
