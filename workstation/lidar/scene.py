@@ -23,7 +23,7 @@ import hashlib
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -814,9 +814,6 @@ def merge_scenes(a: Scene, b: Scene) -> Scene:
                  np.concatenate([a.classification, b.classification]), np.concatenate([a.material, b.material]),
                  np.concatenate([a.object_id, b.object_id + off]), np.vstack([a.face_rgb, b.face_rgb]),
                  a.origin, a.crs, a.materials, dict(a.meta))
-
-
-HeightFn = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
 
 def save_scene(scene: Scene, path, overwrite: bool = False) -> Path:

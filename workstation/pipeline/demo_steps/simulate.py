@@ -6,7 +6,6 @@ from __future__ import annotations
 from dataclasses import replace
 
 from workstation.io import write_cloud
-from workstation.lidar.scanners import ScanPattern
 from workstation.lidar.scene import build_scene, save_scene, scene_summary
 from workstation.lidar.simulate import write_trajectory_csv
 from workstation.lidar.survey import default_survey, run_survey
