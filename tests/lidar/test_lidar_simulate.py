@@ -85,6 +85,42 @@ def test_lever_arm_error_and_gnss_bias_shift_points_rigidly():
     assert d.std(axis=0).max() < 2e-3
 
 
+def test_time_bias_shifts_points_along_track_by_speed_times_bias():
+    dt, v = 0.01, 50.0
+    res = simulate(plane_scene(400, PLANE_Z), _one_line(heading=0.0, speed=v), SCAN, Sensor(subrays=1),
+                   ErrorModel.none(time_bias_s=dt), seed=3, with_truth=True)
+    a = res.cloud.attrs
+    d = res.cloud.xyz - np.column_stack([a["true_x"], a["true_y"], a["true_z"]])
+    # georeferenced with the pose dt later: the platform is v * dt further north
+    np.testing.assert_allclose(d[:, 1], v * dt, atol=2e-3)
+    np.testing.assert_allclose(d[:, [0, 2]], 0.0, atol=2e-3)
+
+
+def test_gnss_and_imu_noise_have_their_size():
+    res = simulate(plane_scene(400, PLANE_Z), _one_line(heading=0.0), SCAN, Sensor(subrays=1),
+                   ErrorModel.none(gnss_noise_m=(0.0, 0.0, 0.05), gnss_correlation_s=0.005), seed=3, with_truth=True)
+    dz = res.cloud.xyz[:, 2] - res.cloud.attrs["true_z"]
+    assert dz.std() == pytest.approx(0.05 * np.sqrt(2 / 3), rel=0.15)  # linear interpolation of white knots
+    res = simulate(plane_scene(400, PLANE_Z), _one_line(heading=0.0), SCAN, Sensor(subrays=1),
+                   ErrorModel.none(imu_noise_deg=(0.01, 0.0, 0.0)), seed=3, with_truth=True)
+    dx = res.cloud.xyz[:, 0] - res.cloud.attrs["true_x"]
+    # a roll error moves nadir points across track by about H * roll
+    assert dx.std() == pytest.approx(H * np.radians(0.01) * np.sqrt(2 / 3), rel=0.3)
+
+
+def test_range_walk_ranges_dark_targets_long():
+    dark = plane_scene(100, PLANE_Z, material="asphalt", origin=(499950.0, 5000000.0))
+    bright = plane_scene(100, PLANE_Z, material="plaster", origin=(500050.0, 5000000.0))
+    scene = merge_scenes(dark, bright)
+    sensor = Sensor(subrays=1)
+    res = simulate(scene, _one_line(area=(-100, 100, -40, 40)), SCAN, sensor, ErrorModel.none(range_walk_m=0.1), seed=2)
+    x = res.cloud.xyz[:, 0] - 500_000
+    z = res.cloud.xyz[:, 2] - PLANE_Z
+    near = np.abs(res.cloud.attrs["scan_angle"]) < 25
+    assert z[(x < -5) & near].mean() < z[(x > 5) & near].mean() - 0.01  # dark ranged longer -> lower
+    assert np.all(z < 1e-4) and z.min() > -0.1  # walk only lengthens ranges, at most 0.1 m
+
+
 def test_tls_scan_of_box_room_recovers_its_dimensions():
     lx, ly, lz = 12.0, 8.0, 3.5
     room = box_room_scene(lx, ly, lz)

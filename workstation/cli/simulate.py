@@ -64,16 +64,19 @@ def _xy(ctx, param, value):
 @click.option("--scan-angle-scale", type=float, default=None, help="Relative mirror-angle scale error (negative: smile).")
 @click.option("--scan-angle-offset", type=float, default=None, help="Mirror angle offset in degrees.")
 @click.option("--time-bias", type=float, default=None, help="Scanner-to-navigation clock offset in seconds.")
+@click.option("--range-walk", type=float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
 @click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
               help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
 @click.option("--trajectory", "trajectory_path", type=click.Path(dir_okay=False), default=None,
               help="Trajectory CSV to write (default: OUT with suffix .trajectory.csv).")
+@click.option("--save-scene", "scene_out", type=click.Path(dir_okay=False), default=None,
+              help="Also write the labelled scene mesh (.npz: triangles, class, material, object id, colour).")
 @overwrite_option
 @click.option("--json", "as_json", is_flag=True, help="Print a summary as JSON on stdout.")
 def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
              scan_frequency, fov, h_step, v_step, stations, subrays, divergence, wavelength, max_returns, no_errors,
              range_noise, gnss_noise, gnss_bias, imu_noise, lever_arm_error, boresight_error, scan_angle_scale,
-             scan_angle_offset, time_bias, point_format, trajectory_path, overwrite, as_json):
+             scan_angle_offset, time_bias, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
     """Simulate an ALS, ULS, MLS or TLS survey of a synthetic scene.
 
     Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
@@ -92,7 +95,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     from workstation.core.progress import progress_bar
     from workstation.io import check_output, format_of, write_cloud
     from workstation.lidar.platforms import Station
-    from workstation.lidar.scene import build_scene, scene_summary
+    from workstation.lidar.scene import build_scene, save_scene, scene_summary
     from workstation.lidar.simulate import ErrorModel, write_trajectory_csv
     from workstation.lidar.survey import count_pulses, default_survey, run_survey, survey_from_toml, survey_trajectory
 
@@ -102,6 +105,8 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     check_output(output, overwrite)
     traj_out = Path(trajectory_path) if trajectory_path else Path(output).with_suffix(".trajectory.csv")
     check_output(traj_out, overwrite)
+    if scene_out:
+        check_output(scene_out, overwrite)
     top: dict = {}
     if config_path:
         cfg, top = survey_from_toml(config_path, kind)
@@ -130,7 +135,8 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     for name, val in (("range_noise_m", range_noise), ("gnss_noise_m", gnss_noise), ("gnss_bias_m", gnss_bias),
                       ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
                       ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
-                      ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias)):
+                      ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
+                      ("range_walk_m", range_walk)):
         if val is not None:
             errors = replace(errors, **{name: val})
     vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle
@@ -149,6 +155,8 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     opts = {"point_format": int(point_format)} if format_of(output)[0] in ("las", "laz") else {}
     write_cloud(cloud, output, overwrite=overwrite, **opts)
     write_trajectory_csv(result, traj_out, overwrite=overwrite)
+    if scene_out:
+        save_scene(scene, scene_out, overwrite=overwrite)
     dt = time.perf_counter() - t0
     log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
     if as_json:
@@ -156,7 +164,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
 
         cls, cnt = np.unique(cloud.attrs["classification"], return_counts=True)
         emit_json({
-            "output": output, "trajectory": str(traj_out), "kind": kind, "scene": scene.meta.get("recipe"), "seed": seed,
+            "output": output, "trajectory": str(traj_out), "scene_mesh": scene_out, "kind": kind, "scene": scene.meta.get("recipe"), "seed": seed,
             "pulses": result.stats["pulses"], "point_count": cloud.n,
             "multiple_return_share": result.stats["multiple_return_share"],
             "flight_lines_or_stations": len(traj.segments),

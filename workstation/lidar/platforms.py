@@ -199,7 +199,8 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
 
     Lines run along ``spec.heading_deg`` (and back), spaced ``swath * (1 - overlap)`` apart
     and centred on the area; every line is a scanning :class:`Segment` with ``source_id`` 1,
-    2, ...; the turns between them are part of the trajectory but not scanned.
+    2, ...; the turns between them, and 2 s of straight flight before the first and after the
+    last line, are part of the trajectory but not scanned.
     """
     if spec.speed <= 0 or spec.altitude <= 0 or spec.swath <= 0 or not 0 <= spec.overlap < 1:
         raise InvalidInputError("speed, altitude and swath must be positive and overlap in [0, 1)", field="flight")
@@ -218,9 +219,12 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
     R = spec.speed ** 2 / (G * np.tan(np.radians(spec.bank_deg)))
     step = spec.speed / spec.imu_rate
     xy_parts, psi_parts, bank_parts, seg_bounds = [], [], [], []
-    pos = u0 * u + w_pos[0] * w
+    lead = 2.0 * spec.speed  # 2 s of unscanned straight flight before the first and after the last line
+    pos = (u0 - lead) * u + w_pos[0] * w
     heading = psi
-    s_total = 0.0
+    xy, ps, bk = _arc_or_straight(pos, heading, "S", lead, R, step)
+    xy_parts.append(xy[:-1]), psi_parts.append(ps[:-1]), bank_parts.append(bk[:-1])
+    pos, s_total = xy[-1], lead
     for i in range(n):
         xy, ps, bk = _arc_or_straight(pos, heading, "S", length, R, step)
         seg_bounds.append((s_total, s_total + length, i + 1))
@@ -228,7 +232,8 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
         s_total += length
         pos, heading = xy[-1], ps[-1]
         if i == n - 1:
-            xy_parts.append(xy[-1:]), psi_parts.append(ps[-1:]), bank_parts.append(bk[-1:])
+            xy, ps, bk = _arc_or_straight(pos, heading, "S", lead, R, step)
+            xy_parts.append(xy), psi_parts.append(ps), bank_parts.append(bk)
             break
         kind = "R" if i % 2 == 0 else "L"
         for k, L in _turn(kind, spacing, R):

@@ -198,6 +198,10 @@ class ErrorModel:
     time_bias_s : float
         Latency between the scanner clock and the navigation solution (s): points are
         georeferenced with the pose at ``t + time_bias``. Default 0.
+    range_walk_m : float
+        Amplitude-dependent range bias of leading-edge timing (range walk): a return at the
+        detection threshold is ranged ``range_walk_m`` too long, a saturated one not at all,
+        log-linear in received power in between. Default 0.02.
     """
 
     range_noise_m: float = 0.02
@@ -210,13 +214,14 @@ class ErrorModel:
     scan_angle_scale: float = 2e-4
     scan_angle_offset_deg: float = 0.0
     time_bias_s: float = 0.0
+    range_walk_m: float = 0.02
 
     @classmethod
     def none(cls, **overrides) -> "ErrorModel":
         """Every error off (perfect measurements), then ``overrides``."""
         z = dict(range_noise_m=0.0, gnss_noise_m=(0.0, 0.0, 0.0), gnss_bias_m=(0.0, 0.0, 0.0),
                  imu_noise_deg=(0.0, 0.0, 0.0), lever_arm_error_m=(0.0, 0.0, 0.0),
-                 boresight_error_deg=(0.0, 0.0, 0.0), scan_angle_scale=0.0, scan_angle_offset_deg=0.0, time_bias_s=0.0)
+                 boresight_error_deg=(0.0, 0.0, 0.0), scan_angle_scale=0.0, scan_angle_offset_deg=0.0, time_bias_s=0.0, range_walk_m=0.0)
         z.update(overrides)
         return cls(**z)
 
@@ -421,6 +426,12 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
             "return_number": (rank + 1).astype(np.uint8), "number_of_returns": count.astype(np.uint8)}
 
 
+def _walk_fraction(power: np.ndarray, sensor: Sensor) -> np.ndarray:
+    """Range-walk share (1 at the detection threshold, 0 at saturation, log-linear between)."""
+    lo, hi = np.log(sensor.detection_threshold_w), np.log(sensor.saturation_power_w)
+    return np.clip((hi - np.log(np.maximum(power, 1e-30))) / (hi - lo), 0.0, 1.0)
+
+
 def _truth(ret: dict, origins: np.ndarray, dirs: np.ndarray, origin: np.ndarray) -> dict:
     p = origins + ret["range"][:, None] * dirs + origin
     return {"true_x": p[:, 0], "true_y": p[:, 1], "true_z": p[:, 2]}
@@ -550,6 +561,8 @@ def simulate(
         if j.size == 0:
             return len(k), None
         r_meas = ret["range"] + (rng.normal(0, errors.range_noise_m, j.size) if errors.range_noise_m > 0 else 0.0)
+        if errors.range_walk_m:
+            r_meas = r_meas + errors.range_walk_m * _walk_fraction(ret["power"], sensor)
         d_enc = d_true[j] if exact_angles else scanner.directions(ang.primary[j], ang.secondary[j])
         tp = t[j]
         pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
