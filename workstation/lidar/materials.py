@@ -92,7 +92,7 @@ MATERIALS: tuple[Material, ...] = (
     _M(10, "leaves", 0.50, 0.30, albedo=(60, 120, 45), texture=8, porosity=0.4),
     _M(11, "needles", 0.40, 0.22, albedo=(40, 85, 40), texture=8, porosity=0.4),
     _M(12, "shrub", 0.42, 0.26, albedo=(80, 125, 55), texture=8, porosity=0.3),
-    _M(13, "water", 0.003, 0.001, specular=0.3, specular_width_deg=1.5, albedo=(45, 80, 110), texture=9),
+    _M(13, "water", 0.003, 0.001, specular=0.15, specular_width_deg=1.0, albedo=(45, 80, 110), texture=9),
     _M(14, "car_paint", 0.25, 0.22, specular=0.1, specular_width_deg=4.0, albedo=(150, 30, 30), texture=0),
     _M(15, "steel", 0.25, 0.20, albedo=(130, 130, 135), texture=10),
     _M(16, "plaster", 0.60, 0.55, albedo=(225, 215, 195), texture=0),

@@ -346,7 +346,6 @@ class _Layout:
         self.road = _Line(rng.uniform(-0.15, 0.15, 2) * ext, _unit(a_road))
         self.stream = _Line(self.road.p + rng.uniform(-0.3, 0.3) * ext * _unit(a_road), _unit(a_road + np.pi / 2 + rng.uniform(-0.4, 0.4)))
         self.stream_width = 7.0
-        self.stream_depth = 1.6
         self.levee_offset = 16.0
         self.ridge = _Line(rng.uniform(-0.5, 0.5, 2) * ext, _unit(rng.uniform(0, np.pi)))
         self.breakline = _Line(rng.uniform(-0.5, 0.5, 2) * ext, _unit(rng.uniform(0, np.pi)))
@@ -355,6 +354,8 @@ class _Layout:
         self.slope = t.slope_percent / 100.0 * _unit(rng.uniform(0, 2 * np.pi))
         self.pond_c = None
         self.pond_r = 0.0
+        self.pond_level = 0.0
+        self._wl = None
         # smooth relief and roughness as sums of random plane waves (deterministic, vectorised)
         k = 24
         self.waves_relief = (rng.uniform(0.004, 0.015, k), rng.uniform(0, 2 * np.pi, k), rng.uniform(0, 2 * np.pi, k))
@@ -388,17 +389,34 @@ class _Layout:
             d = np.abs(self.road.signed(x, y) - 7.5)
             z = z - t.ditch_depth * np.clip(1 - d / (t.ditch_width / 2), 0, None)
         if self.r.stream and with_water_cuts:
+            # carve the channel below the (level, downhill-only) water surface; 45 degree banks
             d = np.abs(self.stream.signed(x, y))
             hw = self.stream_width / 2
-            z = z - self.stream_depth * np.clip((hw + 2.0 - d) / 2.0, 0, 1)
+            lvl = self.stream_level(self.stream.along(x, y))
+            z = np.minimum(z, lvl + np.where(d <= hw, -1.0 + 0.8 * d / hw, -0.2 + (d - hw)))
             if t.embankment_height:
                 run = t.embankment_height / np.tan(np.radians(t.embankment_slope_deg))
                 de = np.abs(self.stream.signed(x, y) - self.levee_offset)
                 z = z + t.embankment_height * np.clip((2.0 + run - de) / run, 0, 1)
         if self.pond_c is not None and with_water_cuts:
             d = np.hypot(x - self.pond_c[0], y - self.pond_c[1])
-            z = z - 1.5 * np.clip((self.pond_r + 2.0 - d) / 4.0, 0, 1)
+            r = self.pond_r
+            z = np.minimum(z, self.pond_level + np.where(d <= r, -1.5 + 1.3 * d / r, -0.2 + (d - r)))
         return z
+
+    def _stream_profile(self) -> tuple[np.ndarray, np.ndarray]:
+        """Water level along the stream: the centreline ground 0.6 m down, never rising downstream."""
+        if self._wl is None:
+            s = np.arange(-2.0 * (self.hx + self.hy), 2.0 * (self.hx + self.hy) + 1.0, 1.0)
+            h0 = self.height(*self.stream.point(s).T, with_water_cuts=False) - 0.6
+            level = np.minimum.accumulate(h0) if h0[-1] < h0[0] else np.minimum.accumulate(h0[::-1])[::-1]
+            self._wl = (s, level)
+        return self._wl
+
+    def stream_level(self, s) -> np.ndarray:
+        """Water surface height (m) at along-stream positions ``s``."""
+        grid, level = self._stream_profile()
+        return np.interp(s, grid, level)
 
     def free(self, x: float, y: float, radius: float) -> bool:
         """Whether a disc is inside the scene and clear of roads, water, lines and objects."""
@@ -470,9 +488,9 @@ def _water(b: _Builder, L: _Layout, rng):
     if r.stream:
         along = L.stream.along(np.array([-L.hx, L.hx, L.hx, -L.hx]), np.array([-L.hy, -L.hy, L.hy, L.hy]))
         s = np.linspace(along.min() - 5, along.max() + 5, 60)
-        left = L.stream.point(s, L.stream_width / 2)
-        right = L.stream.point(s, -L.stream_width / 2)
-        zc = L.height(*L.stream.point(s).T, with_water_cuts=False) - L.stream_depth + 0.5
+        left = L.stream.point(s, L.stream_width / 2 + 0.2)
+        right = L.stream.point(s, -L.stream_width / 2 - 0.2)
+        zc = L.stream_level(s)
         v = np.vstack([np.column_stack([right, zc]), np.column_stack([left, zc])])
         v[:, 0] = np.clip(v[:, 0], -L.hx, L.hx)
         v[:, 1] = np.clip(v[:, 1], -L.hy, L.hy)
@@ -486,8 +504,11 @@ def _water(b: _Builder, L: _Layout, rng):
                 L.pond_c = c
                 break
         if L.pond_c is not None:
-            z = float(L.height(*L.pond_c, with_water_cuts=False)) - 0.6
-            v, f = S.disc(L.pond_r + 1.0, z, sides=32)
+            a = np.linspace(0, 2 * np.pi, 72, endpoint=False)
+            rim = L.pond_c + (L.pond_r + 2.0) * np.column_stack([np.cos(a), np.sin(a)])
+            L.pond_level = float(L.height(rim[:, 0], rim[:, 1], with_water_cuts=False).min()) - 0.3
+            z = L.pond_level
+            v, f = S.disc(L.pond_r + 0.2, z, sides=48)
             v[:, :2] += L.pond_c
             b.add((v, f), C.WATER, M["water"], b.new_object("pond"))
 

@@ -285,10 +285,14 @@ def _power(c: _Caster, sensor: Sensor, t: np.ndarray, prim: np.ndarray, dirs: np
         s = c.spec[prim]
         m = s > 0
         if np.any(m):
-            ang = np.arccos(np.clip(cosi[m], 0, 1)) + rng.normal(0, np.radians(2.0), int(m.sum()))
+            ang = np.arccos(np.clip(cosi[m], 0, 1)) + rng.normal(0, WAVE_SLOPE_RAD, int(m.sum()))
             rho[m] += s[m] * np.exp(-((ang / c.spec_w[prim[m]]) ** 2))
     return sensor.received_power(t, rho) * w
 
+
+#: 1-sigma random tilt of specular (water) surfaces: calm-water wave slopes (Cox & Munk 1954,
+#: J. Opt. Soc. Am. 44(11):838-850: sigma^2 = 0.003 + 0.00512 U for wind speed U m/s).
+WAVE_SLOPE_RAD = np.radians(3.0)
 
 #: Size (m) of the cells of the procedural gap pattern inside porous (foliage) triangles.
 GAP_CELL_M = 0.05
