@@ -18,8 +18,13 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+<<<<<<< HEAD
     "train": ("workstation.cli.train:train", "Train the point classifier on simulated LiDAR (recipe TOML)."),
     "classify": ("workstation.cli.classify:classify", "Classify points (ground, vegetation, building, water, other, noise)."),
+=======
+    "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
+    "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
+>>>>>>> sim
 }
 
 

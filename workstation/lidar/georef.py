@@ -80,15 +80,59 @@ def rpy_matrix(roll, pitch, yaw) -> np.ndarray:
 
     Written out element by element (no matrix products) so it is cheap for millions of pulses.
     """
-    roll, pitch, yaw = (np.asarray(a, float) for a in (roll, pitch, yaw))
+    roll, pitch, yaw = np.broadcast_arrays(*(np.asarray(a, float) for a in (roll, pitch, yaw)))
     cr, sr = np.cos(roll), np.sin(roll)
     cp, sp = np.cos(pitch), np.sin(pitch)
     cy, sy = np.cos(yaw), np.sin(yaw)
-    return np.stack([
-        np.stack([cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr], -1),
-        np.stack([sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr], -1),
-        np.stack([-sp, cp * sr, cp * cr], -1),
-    ], -2)
+    R = np.empty(roll.shape + (3, 3))
+    R[..., 0, 0] = cy * cp
+    R[..., 0, 1] = cy * sp * sr - sy * cr
+    R[..., 0, 2] = cy * sp * cr + sy * sr
+    R[..., 1, 0] = sy * cp
+    R[..., 1, 1] = sy * sp * sr + cy * cr
+    R[..., 1, 2] = sy * sp * cr - cy * sr
+    R[..., 2, 0] = -sp
+    R[..., 2, 1] = cp * sr
+    R[..., 2, 2] = cp * cr
+    return R
+
+
+def rpy_trig(rpy: np.ndarray, precise: bool = True) -> tuple:
+    """(cos, sin) of roll, pitch, yaw columns of (n, 3) angles, to share between rotations.
+
+    With ``precise=False`` they are computed in float32 (about 15 times faster in numpy) after
+    wrapping the yaw to [-pi, pi): errors below 1e-7 rad, 0.05 mm at 500 m range.
+    """
+    rpy = np.asarray(rpy, float)
+    if precise:
+        return tuple((np.cos(rpy[:, i]), np.sin(rpy[:, i])) for i in range(3))
+    out = []
+    for i in range(3):
+        a = rpy[:, i] if i < 2 else np.remainder(rpy[:, i] + np.pi, 2 * np.pi) - np.pi
+        a = a.astype(np.float32)
+        out.append((np.cos(a), np.sin(a)))
+    return tuple(out)
+
+
+def rotate_rpy(rpy: np.ndarray, v: np.ndarray, inverse: bool = False, trig: tuple | None = None) -> np.ndarray:
+    r"""Apply :math:`R^n_b = R_z R_y R_x` (or its transpose) of per-row angles ``rpy`` (n, 3)
+    to vectors ``v`` (n, 3), as three plane rotations (no 3x3 matrices are formed).
+
+    ``trig`` may hold :func:`rpy_trig` of ``rpy`` computed once for several rotations."""
+    (cr, sr), (cp, sp), (cy, sy) = trig if trig is not None else rpy_trig(rpy)
+    v = np.asarray(v)
+    x, y, z = (v[:, i] for i in range(3))
+    if not inverse:
+        y, z = cr * y - sr * z, sr * y + cr * z
+        x, z = cp * x + sp * z, -sp * x + cp * z
+        x, y = cy * x - sy * y, sy * x + cy * y
+    else:
+        x, y = cy * x + sy * y, -sy * x + cy * y
+        x, z = cp * x - sp * z, sp * x + cp * z
+        y, z = cr * y + sr * z, -sr * y + cr * z
+    out = np.empty((x.shape[0], 3), np.result_type(x, y, z))
+    out[:, 0], out[:, 1], out[:, 2] = x, y, z
+    return out
 
 
 def matrix_to_rpy(R: np.ndarray) -> np.ndarray:
@@ -118,18 +162,25 @@ def invert(T: np.ndarray) -> np.ndarray:
     return homogeneous(Rt, -np.einsum("...ij,...j->...i", Rt, T[..., :3, 3]))
 
 
-def beam_direction(across, along=0.0) -> np.ndarray:
+def beam_direction(across, along=0.0, dtype=np.float64) -> np.ndarray:
     r"""Scanner-frame beam directions (..., 3) for across-track and along-track deflections.
 
     :math:`\mathbf d_s = R_y(\beta) R_x(-\alpha) \mathbf e_z =
     (\sin\beta\cos\alpha,\ \sin\alpha,\ \cos\beta\cos\alpha)` with the across-track angle
     :math:`\alpha` (radians, positive to the right) and the along-track angle :math:`\beta`
-    (positive forward).
+    (positive forward). ``dtype`` float32 is faster where rays are float32 anyway.
     """
-    a = np.asarray(across, float)
-    b = np.asarray(along, float)
+    a, b = np.broadcast_arrays(np.asarray(across, dtype), np.asarray(along, dtype))
     ca = np.cos(a)
-    return np.stack(np.broadcast_arrays(np.sin(b) * ca, np.sin(a), np.cos(b) * ca), -1)
+    out = np.empty(a.shape + (3,), dtype)
+    if np.any(b):
+        out[..., 0] = np.sin(b) * ca
+        out[..., 2] = np.cos(b) * ca
+    else:
+        out[..., 0] = 0.0
+        out[..., 2] = ca
+    out[..., 1] = np.sin(a)
+    return out
 
 
 @dataclass(frozen=True)
@@ -180,24 +231,30 @@ class GeorefChain:
         """Full (..., 4, 4) scanner -> map transform :math:`T^m_n T^n_b T^b_s`."""
         return self.T_mn(position) @ self.T_nb(rpy) @ self.T_bs()
 
-    def forward(self, rng, d_s, position, rpy) -> np.ndarray:
+    def forward(self, rng, d_s, position, rpy, trig: tuple | None = None) -> np.ndarray:
         """Map coordinates (n, 3) of ranges ``rng`` (n,) along scanner-frame beams ``d_s`` (n, 3)
         measured from IMU positions (n, 3) with attitudes ``rpy`` (n, 3) (radians).
 
         Vectorised form of the chain: :math:`\\mathbf p + R^m_n R^n_b (R^b_s r \\mathbf d_s + \\mathbf a)`.
+        ``trig`` may hold :func:`rpy_trig` of ``rpy``.
         """
         rpy = np.asarray(rpy, float)
-        v_b = (np.asarray(rng, float)[:, None] * np.asarray(d_s, float)) @ self.R_bs.T + np.asarray(self.lever_arm)
-        R = rpy_matrix(rpy[:, 0], rpy[:, 1], rpy[:, 2])
-        v_n = np.einsum("nij,nj->ni", R, v_b)
-        return np.asarray(position, float) + v_n @ R_MAP_FROM_NED.T
+        v_b = np.asarray(rng, float)[:, None] * np.asarray(d_s, float)
+        if any(self.boresight):
+            v_b = v_b @ self.R_bs.T
+        v_b += np.asarray(self.lever_arm)
+        v_n = rotate_rpy(rpy, v_b, trig=trig)
+        out = np.asarray(position, float).copy()
+        out[:, 0] += v_n[:, 1]  # R^m_n: east = NED y, north = NED x, up = -NED z
+        out[:, 1] += v_n[:, 0]
+        out[:, 2] -= v_n[:, 2]
+        return out
 
     def inverse(self, points, position, rpy) -> tuple[np.ndarray, np.ndarray]:
         """Ranges (n,) and unit scanner-frame beam directions (n, 3) of map points (n, 3)."""
         rpy = np.asarray(rpy, float)
         v_n = (np.asarray(points, float) - np.asarray(position, float)) @ R_MAP_FROM_NED  # R^T applied row-wise
-        R = rpy_matrix(rpy[:, 0], rpy[:, 1], rpy[:, 2])
-        v_b = np.einsum("nji,nj->ni", R, v_n) - np.asarray(self.lever_arm)
+        v_b = rotate_rpy(rpy, v_n, inverse=True) - np.asarray(self.lever_arm)
         v_s = v_b @ self.R_bs
         r = np.linalg.norm(v_s, axis=1)
         return r, v_s / np.where(r > 0, r, 1.0)[:, None]

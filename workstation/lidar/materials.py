@@ -56,6 +56,10 @@ class Material:
         Visible colour (sRGB 0-255) for photos and point colours.
     texture : int
         Procedural texture id (key of :data:`TEXTURES`).
+    porosity : float
+        Probability (0-1) that a ray meeting a triangle of this material passes on through
+        gaps smaller than the triangle (foliage: leaves and needles are far smaller than the
+        leaf-cluster triangles that stand for them).
     """
 
     id: int
@@ -66,6 +70,7 @@ class Material:
     specular_width_deg: float = 3.0
     albedo: tuple = (128, 128, 128)
     texture: int = 0
+    porosity: float = 0.0
 
     def reflectance(self, wavelength_nm: float) -> float:
         """Diffuse reflectance at a wavelength, interpolated linearly between 1064 and 1550 nm."""
@@ -84,14 +89,15 @@ MATERIALS: tuple[Material, ...] = (
     _M(7, "roof_metal", 0.30, 0.28, specular=0.15, specular_width_deg=5.0, albedo=(95, 100, 110), texture=10),
     _M(8, "sandstone", 0.48, 0.52, albedo=(205, 185, 150), texture=6),
     _M(9, "bark", 0.35, 0.40, albedo=(90, 65, 45), texture=7),
-    _M(10, "leaves", 0.50, 0.30, albedo=(60, 120, 45), texture=8),
-    _M(11, "needles", 0.40, 0.22, albedo=(40, 85, 40), texture=8),
-    _M(12, "shrub", 0.42, 0.26, albedo=(80, 125, 55), texture=8),
-    _M(13, "water", 0.01, 0.002, specular=0.6, specular_width_deg=2.0, albedo=(45, 80, 110), texture=9),
+    _M(10, "leaves", 0.50, 0.30, albedo=(60, 120, 45), texture=8, porosity=0.4),
+    _M(11, "needles", 0.40, 0.22, albedo=(40, 85, 40), texture=8, porosity=0.4),
+    _M(12, "shrub", 0.42, 0.26, albedo=(80, 125, 55), texture=8, porosity=0.3),
+    _M(13, "water", 0.003, 0.001, specular=0.15, specular_width_deg=1.0, albedo=(45, 80, 110), texture=9),
     _M(14, "car_paint", 0.25, 0.22, specular=0.1, specular_width_deg=4.0, albedo=(150, 30, 30), texture=0),
     _M(15, "steel", 0.25, 0.20, albedo=(130, 130, 135), texture=10),
     _M(16, "plaster", 0.60, 0.55, albedo=(225, 215, 195), texture=0),
     _M(17, "rock", 0.32, 0.38, albedo=(120, 115, 105), texture=6),
+    _M(18, "grass_blades", 0.45, 0.28, albedo=(105, 150, 65), texture=1, porosity=0.3),
 )
 MATERIAL_ID: dict[str, int] = {m.name: m.id for m in MATERIALS}
 
@@ -103,7 +109,7 @@ def material_arrays(wavelength_nm: float, materials=MATERIALS) -> dict[str, np.n
     -------
     dict
         ``reflectance`` (k,) f8 at ``wavelength_nm``, ``specular`` (k,) f8,
-        ``specular_width`` (k,) f8 in radians, ``albedo`` (k, 3) u8.
+        ``specular_width`` (k,) f8 in radians, ``albedo`` (k, 3) u8, ``porosity`` (k,) f8.
     """
     if not 400.0 <= wavelength_nm <= 2000.0:
         raise InvalidInputError(f"wavelength {wavelength_nm} nm is outside 400-2000 nm", field="wavelength_nm")
@@ -112,4 +118,5 @@ def material_arrays(wavelength_nm: float, materials=MATERIALS) -> dict[str, np.n
         "specular": np.array([m.specular for m in materials]),
         "specular_width": np.radians([m.specular_width_deg for m in materials]),
         "albedo": np.array([m.albedo for m in materials], dtype=np.uint8),
+        "porosity": np.array([m.porosity for m in materials]),
     }

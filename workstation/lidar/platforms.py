@@ -67,12 +67,21 @@ class Trajectory:
     def interpolate(self, t) -> tuple[np.ndarray, np.ndarray]:
         """Position (n, 3) and roll/pitch/yaw (n, 3) at times ``t`` (n,), linear interpolation."""
         t = np.asarray(t, float)
+        cols = self._columns
         pos = np.empty((t.size, 3))
         rpy = np.empty((t.size, 3))
         for i in range(3):
-            pos[:, i] = np.interp(t, self.time, self.position[:, i])
-            rpy[:, i] = np.interp(t, self.time, self.rpy[:, i])
+            pos[:, i] = np.interp(t, self.time, cols[i])
+            rpy[:, i] = np.interp(t, self.time, cols[3 + i])
         return pos, rpy
+
+    @property
+    def _columns(self) -> list[np.ndarray]:
+        cols = self.__dict__.get("_cols")
+        if cols is None:
+            cols = [np.ascontiguousarray(a[:, i]) for a in (self.position, self.rpy) for i in range(3)]
+            object.__setattr__(self, "_cols", cols)
+        return cols
 
     def velocity(self) -> np.ndarray:
         """(k, 3) velocity (m/s) by central differences."""
@@ -134,6 +143,9 @@ class FlightSpec:
         Trajectory sample rate (Hz).
     n_lines : int or None
         Fly this many lines (centred on the area) instead of covering it.
+    min_lines : int
+        Fly at least this many lines (e.g. 2 to have an overlap to check strips).
+    oscillation : Oscillation
     """
 
     altitude: float = 800.0
@@ -145,6 +157,7 @@ class FlightSpec:
     bank_deg: float = 20.0
     imu_rate: float = 200.0
     n_lines: int | None = None
+    min_lines: int = 1
     oscillation: Oscillation = field(default_factory=Oscillation)
 
 
@@ -186,7 +199,8 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
 
     Lines run along ``spec.heading_deg`` (and back), spaced ``swath * (1 - overlap)`` apart
     and centred on the area; every line is a scanning :class:`Segment` with ``source_id`` 1,
-    2, ...; the turns between them are part of the trajectory but not scanned.
+    2, ...; the turns between them, and 2 s of straight flight before the first and after the
+    last line, are part of the trajectory but not scanned.
     """
     if spec.speed <= 0 or spec.altitude <= 0 or spec.swath <= 0 or not 0 <= spec.overlap < 1:
         raise InvalidInputError("speed, altitude and swath must be positive and overlap in [0, 1)", field="flight")
@@ -198,16 +212,19 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
     cu, cw = corners @ u, corners @ w
     width = cw.max() - cw.min()
     spacing = spec.swath * (1 - spec.overlap)
-    n = spec.n_lines or max(int(np.ceil(max(width - spec.swath, 0.0) / spacing)) + 1, 1)
+    n = spec.n_lines or max(int(np.ceil(max(width - spec.swath, 0.0) / spacing)) + 1, spec.min_lines, 1)
     w_pos = (cw.min() + cw.max()) / 2 + (np.arange(n) - (n - 1) / 2) * spacing
     length = cu.max() - cu.min() + 2 * spec.run_in
     u0 = cu.min() - spec.run_in
     R = spec.speed ** 2 / (G * np.tan(np.radians(spec.bank_deg)))
     step = spec.speed / spec.imu_rate
     xy_parts, psi_parts, bank_parts, seg_bounds = [], [], [], []
-    pos = u0 * u + w_pos[0] * w
+    lead = 2.0 * spec.speed  # 2 s of unscanned straight flight before the first and after the last line
+    pos = (u0 - lead) * u + w_pos[0] * w
     heading = psi
-    s_total = 0.0
+    xy, ps, bk = _arc_or_straight(pos, heading, "S", lead, R, step)
+    xy_parts.append(xy[:-1]), psi_parts.append(ps[:-1]), bank_parts.append(bk[:-1])
+    pos, s_total = xy[-1], lead
     for i in range(n):
         xy, ps, bk = _arc_or_straight(pos, heading, "S", length, R, step)
         seg_bounds.append((s_total, s_total + length, i + 1))
@@ -215,7 +232,8 @@ def flight_lines(area: tuple, ground_height: float, spec: FlightSpec, rng: np.ra
         s_total += length
         pos, heading = xy[-1], ps[-1]
         if i == n - 1:
-            xy_parts.append(xy[-1:]), psi_parts.append(ps[-1:]), bank_parts.append(bk[-1:])
+            xy, ps, bk = _arc_or_straight(pos, heading, "S", lead, R, step)
+            xy_parts.append(xy), psi_parts.append(ps), bank_parts.append(bk)
             break
         kind = "R" if i % 2 == 0 else "L"
         for k, L in _turn(kind, spacing, R):

@@ -144,10 +144,9 @@ class ScanPattern:
             return ScanAngles(elev, az, up.astype(np.uint8), edge, ih)
         A = np.radians(self.fov_deg) / 2
         t = k / self.prf
-        dt = 1.0 / self.prf
-        lps = self.lines_per_second
-        line = np.floor(t * lps).astype(np.int64)
-        edge = (np.floor((t + dt) * lps).astype(np.int64) != line).astype(np.uint8)
+        step = self.lines_per_second / self.prf  # scan lines per pulse
+        line = np.floor(k * step + 1e-9).astype(np.int64)
+        edge = (np.floor((k + 1) * step + 1e-9).astype(np.int64) != line).astype(np.uint8)
         if self.kind == "zigzag":
             u = np.mod(t * self.scan_frequency, 1.0)
             up = u < 0.5
@@ -163,12 +162,18 @@ class ScanPattern:
         b = np.radians(self.palmer_along_deg) * np.cos(w)
         return ScanAngles(a, b, (np.cos(w) >= 0).astype(np.uint8), edge, line)
 
-    def directions(self, primary: np.ndarray, secondary: np.ndarray) -> np.ndarray:
+    def directions(self, primary: np.ndarray, secondary: np.ndarray, dtype=np.float64) -> np.ndarray:
         """Unit beam vectors (n, 3) in the scanner frame for encoder (or true) angles."""
         if self.kind == "spherical":
-            ce = np.cos(primary)
-            return np.column_stack([ce * np.cos(secondary), ce * np.sin(secondary), -np.sin(primary)])
-        return beam_direction(primary, secondary)
+            p = np.asarray(primary, dtype)
+            q = np.asarray(secondary, dtype)
+            ce = np.cos(p)
+            out = np.empty(p.shape + (3,), dtype)
+            out[:, 0] = ce * np.cos(q)
+            out[:, 1] = ce * np.sin(q)
+            out[:, 2] = -np.sin(p)
+            return out
+        return beam_direction(primary, secondary, dtype)
 
     def scan_angle_deg(self, primary: np.ndarray) -> np.ndarray:
         """The LAS scan angle (degrees) before adding the platform roll."""

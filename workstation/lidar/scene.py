@@ -23,7 +23,7 @@ import hashlib
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -346,7 +346,6 @@ class _Layout:
         self.road = _Line(rng.uniform(-0.15, 0.15, 2) * ext, _unit(a_road))
         self.stream = _Line(self.road.p + rng.uniform(-0.3, 0.3) * ext * _unit(a_road), _unit(a_road + np.pi / 2 + rng.uniform(-0.4, 0.4)))
         self.stream_width = 7.0
-        self.stream_depth = 1.6
         self.levee_offset = 16.0
         self.ridge = _Line(rng.uniform(-0.5, 0.5, 2) * ext, _unit(rng.uniform(0, np.pi)))
         self.breakline = _Line(rng.uniform(-0.5, 0.5, 2) * ext, _unit(rng.uniform(0, np.pi)))
@@ -355,6 +354,8 @@ class _Layout:
         self.slope = t.slope_percent / 100.0 * _unit(rng.uniform(0, 2 * np.pi))
         self.pond_c = None
         self.pond_r = 0.0
+        self.pond_level = 0.0
+        self._wl = None
         # smooth relief and roughness as sums of random plane waves (deterministic, vectorised)
         k = 24
         self.waves_relief = (rng.uniform(0.004, 0.015, k), rng.uniform(0, 2 * np.pi, k), rng.uniform(0, 2 * np.pi, k))
@@ -388,17 +389,34 @@ class _Layout:
             d = np.abs(self.road.signed(x, y) - 7.5)
             z = z - t.ditch_depth * np.clip(1 - d / (t.ditch_width / 2), 0, None)
         if self.r.stream and with_water_cuts:
+            # carve the channel below the (level, downhill-only) water surface; 45 degree banks
             d = np.abs(self.stream.signed(x, y))
             hw = self.stream_width / 2
-            z = z - self.stream_depth * np.clip((hw + 2.0 - d) / 2.0, 0, 1)
+            lvl = self.stream_level(self.stream.along(x, y))
+            z = np.minimum(z, lvl + np.where(d <= hw, -1.0 + 0.8 * d / hw, -0.2 + (d - hw)))
             if t.embankment_height:
                 run = t.embankment_height / np.tan(np.radians(t.embankment_slope_deg))
                 de = np.abs(self.stream.signed(x, y) - self.levee_offset)
                 z = z + t.embankment_height * np.clip((2.0 + run - de) / run, 0, 1)
         if self.pond_c is not None and with_water_cuts:
             d = np.hypot(x - self.pond_c[0], y - self.pond_c[1])
-            z = z - 1.5 * np.clip((self.pond_r + 2.0 - d) / 4.0, 0, 1)
+            r = self.pond_r
+            z = np.minimum(z, self.pond_level + np.where(d <= r, -1.5 + 1.3 * d / r, -0.2 + (d - r)))
         return z
+
+    def _stream_profile(self) -> tuple[np.ndarray, np.ndarray]:
+        """Water level along the stream: the centreline ground 0.6 m down, never rising downstream."""
+        if self._wl is None:
+            s = np.arange(-2.0 * (self.hx + self.hy), 2.0 * (self.hx + self.hy) + 1.0, 1.0)
+            h0 = self.height(*self.stream.point(s).T, with_water_cuts=False) - 0.6
+            level = np.minimum.accumulate(h0) if h0[-1] < h0[0] else np.minimum.accumulate(h0[::-1])[::-1]
+            self._wl = (s, level)
+        return self._wl
+
+    def stream_level(self, s) -> np.ndarray:
+        """Water surface height (m) at along-stream positions ``s``."""
+        grid, level = self._stream_profile()
+        return np.interp(s, grid, level)
 
     def free(self, x: float, y: float, radius: float) -> bool:
         """Whether a disc is inside the scene and clear of roads, water, lines and objects."""
@@ -470,9 +488,9 @@ def _water(b: _Builder, L: _Layout, rng):
     if r.stream:
         along = L.stream.along(np.array([-L.hx, L.hx, L.hx, -L.hx]), np.array([-L.hy, -L.hy, L.hy, L.hy]))
         s = np.linspace(along.min() - 5, along.max() + 5, 60)
-        left = L.stream.point(s, L.stream_width / 2)
-        right = L.stream.point(s, -L.stream_width / 2)
-        zc = L.height(*L.stream.point(s).T, with_water_cuts=False) - L.stream_depth + 0.5
+        left = L.stream.point(s, L.stream_width / 2 + 0.2)
+        right = L.stream.point(s, -L.stream_width / 2 - 0.2)
+        zc = L.stream_level(s)
         v = np.vstack([np.column_stack([right, zc]), np.column_stack([left, zc])])
         v[:, 0] = np.clip(v[:, 0], -L.hx, L.hx)
         v[:, 1] = np.clip(v[:, 1], -L.hy, L.hy)
@@ -486,8 +504,11 @@ def _water(b: _Builder, L: _Layout, rng):
                 L.pond_c = c
                 break
         if L.pond_c is not None:
-            z = float(L.height(*L.pond_c, with_water_cuts=False)) - 0.6
-            v, f = S.disc(L.pond_r + 1.0, z, sides=32)
+            a = np.linspace(0, 2 * np.pi, 72, endpoint=False)
+            rim = L.pond_c + (L.pond_r + 2.0) * np.column_stack([np.cos(a), np.sin(a)])
+            L.pond_level = float(L.height(rim[:, 0], rim[:, 1], with_water_cuts=False).min()) - 0.3
+            z = L.pond_level
+            v, f = S.disc(L.pond_r + 0.2, z, sides=48)
             v[:, :2] += L.pond_c
             b.add((v, f), C.WATER, M["water"], b.new_object("pond"))
 
@@ -645,7 +666,7 @@ def _grass(b: _Builder, L: _Layout, rng, x, y):
     r = rad * np.sqrt(rng.uniform(0, 1, n))
     px, py = x + r * np.cos(a), y + r * np.sin(a)
     c = np.column_stack([px, py, L.height(px, py) + rng.uniform(0.1, 0.5, n)])
-    b.add(S.leaf_cloud(rng, c, 0.25), C.LOW_VEGETATION, M["grass"], b.new_object("low_vegetation"))
+    b.add(S.leaf_cloud(rng, c, 0.25), C.LOW_VEGETATION, M["grass_blades"], b.new_object("low_vegetation"))
 
 
 _CAR_COLOURS = np.array([[150, 30, 30], [30, 50, 140], [200, 200, 200], [30, 30, 30], [90, 90, 95], [210, 180, 40]], np.uint8)
@@ -675,14 +696,14 @@ def _cars(b: _Builder, L: _Layout, rng):
 
 
 def _powerline(b: _Builder, L: _Layout, rng):
-    along = L.power.along(np.array([-L.hx, L.hx, L.hx, -L.hx]), np.array([-L.hy, -L.hy, L.hy, L.hy]))
-    span = 90.0
-    s = np.arange(along.min() + 15, along.max() - 15, span)
-    pts = L.power.point(s)
-    keep = (np.abs(pts[:, 0]) < L.hx - 5) & (np.abs(pts[:, 1]) < L.hy - 5)
-    pts = pts[keep]
-    if len(pts) < 2:
+    s_all = np.arange(-2 * (L.hx + L.hy), 2 * (L.hx + L.hy), 1.0)
+    p_all = L.power.point(s_all)
+    inside = (np.abs(p_all[:, 0]) < L.hx - 8) & (np.abs(p_all[:, 1]) < L.hy - 8)
+    if inside.sum() < 40:
         return
+    s_lo, s_hi = s_all[inside].min(), s_all[inside].max()
+    n_pyl = max(2, int(np.ceil((s_hi - s_lo) / 90.0)) + 1)  # spans of at most 90 m
+    pts = L.power.point(np.linspace(s_lo, s_hi, n_pyl))
     H = 24.0
     yaw = L.power.angle
     zs = L.height(pts[:, 0], pts[:, 1]) - 0.3
@@ -777,6 +798,10 @@ def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Sc
     origin = np.array([recipe.origin[0], recipe.origin[1], 0.0])
     meta = {"recipe": recipe.name, "seed": int(seed), "objects": {str(k): v for k, v in b.kinds.items()},
             "extent": list(recipe.extent)}
+    if recipe.road:
+        meta["road"] = {"p": L.road.p.tolist(), "d": L.road.d.tolist(), "half_width": 3.5}
+    if recipe.stream:
+        meta["stream"] = {"p": L.stream.p.tolist(), "d": L.stream.d.tolist(), "half_width": L.stream_width / 2}
     log.info("scene %s seed %d: %d triangles, %d objects", recipe.name, seed, len(f), len(b.kinds))
     return Scene(v, f, cls, mat, obj, rgb, origin, recipe.crs, MATERIALS, meta)
 
@@ -812,7 +837,39 @@ def merge_scenes(a: Scene, b: Scene) -> Scene:
                  a.origin, a.crs, a.materials, dict(a.meta))
 
 
-HeightFn = Callable[[np.ndarray, np.ndarray], np.ndarray]
+def save_scene(scene: Scene, path, overwrite: bool = False) -> Path:
+    """Write a scene losslessly as ``.npz`` (arrays, origin, CRS, meta and material table as JSON).
+
+    The photo renderer and tests read it back with :func:`load_scene`.
+    """
+    import json
+
+    from workstation.io import atomic_path
+
+    p = Path(path)
+    if p.suffix != ".npz":
+        raise InvalidInputError("scene files are .npz", "give a path ending in .npz", path=p)
+    meta = json.dumps({"crs": scene.crs, "meta": scene.meta, "materials": [dataclasses.asdict(m) for m in scene.materials]})
+    with atomic_path(p, overwrite=overwrite) as tmp:
+        with open(tmp, "wb") as fh:
+            np.savez_compressed(fh, vertices=scene.vertices, faces=scene.faces, classification=scene.classification,
+                                material=scene.material, object_id=scene.object_id, face_rgb=scene.face_rgb,
+                                origin=scene.origin, meta=np.array(meta))
+    return p
+
+
+def load_scene(path) -> Scene:
+    """Read a scene written by :func:`save_scene`."""
+    import json
+
+    p = Path(path)
+    if not p.exists():
+        raise InvalidInputError("scene file not found", path=p)
+    with np.load(p, allow_pickle=False) as z:
+        info = json.loads(str(z["meta"]))
+        mats = tuple(Material(**{**m, "albedo": tuple(m["albedo"])}) for m in info["materials"])
+        return Scene(z["vertices"], z["faces"], z["classification"], z["material"], z["object_id"], z["face_rgb"],
+                     z["origin"], info["crs"], mats, info["meta"])
 
 
 def scene_summary(scene: Scene) -> dict[str, Any]:
