@@ -1,5 +1,7 @@
 """Textbook baselines for comparison: lowest point per cell, local minimum with a slope limit.
 
+Isolated low points (:mod:`workstation.ground.noise`) are set aside first in both.
+
 * ``lowest``: the lowest point of every ``cell`` and every point within ``threshold`` above
   it is ground (no object removal: roofs wider than a cell stay ground);
 * ``local_min``: the slope-based filter of Vosselman (2000, "Slope based filtering of laser
@@ -19,6 +21,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .noise import isolated_low_points
 
 STAGE_LOWEST = "ground.lowest"
 STAGE_LOCALMIN = "ground.local_min"
@@ -70,15 +73,17 @@ class LocalMinParams:
 
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
     """Ground flags (m,) bool: within ``threshold`` of the lowest point of the cell."""
+    low = isolated_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
-    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
-    return xyz[:, 2] - zmin[r, c] <= p.threshold
+    zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
+    return ~low & (xyz[:, 2] - zmin[r, c] <= p.threshold)
 
 
 def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     """Ground flags (m,) bool by the slope-based local minimum test on the min-grid."""
+    low = isolated_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
-    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
+    zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     filled = np.where(np.isnan(zmin), np.inf, zmin)
     # lowest allowed surface: min over rings k of (erosion by disk k) + slope·k·cell
     bound = filled.copy()
@@ -86,7 +91,7 @@ def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     for k in range(1, rad + 1):
         er = common._disk_filter(filled, k, True)
         np.minimum(bound, er + p.slope * k * p.cell, out=bound)
-    return xyz[:, 2] <= bound[r, c] + p.threshold
+    return ~low & (xyz[:, 2] <= bound[r, c] + p.threshold)
 
 
 def lowest(cloud: Cloud, params: LowestParams | None = None, **overrides) -> Cloud:
