@@ -17,6 +17,8 @@ import click
 COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
+    "ground": ("workstation.cli.ground:ground", "Classify ground (2) and non-ground (1): SMRF, CSF, PMF, PTD, auto, baselines."),
+    "evaluate": ("workstation.cli.evaluate:evaluate", "Confusion matrix, ISPRS Type I/II, total error and kappa against a reference."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
 <<<<<<< HEAD
     "train": ("workstation.cli.train:train", "Train the point classifier on simulated LiDAR (recipe TOML)."),

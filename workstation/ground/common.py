@@ -196,32 +196,85 @@ def fill_nearest(grid: np.ndarray) -> np.ndarray:
     return grid[tuple(idx)]
 
 
+def _one_blas_thread():
+    """Context limiting BLAS to one thread: find_simplex builds per-triangle transforms with
+    tiny LAPACK calls, which OpenBLAS worker threads make ~100x slower on a busy machine."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl comes with scikit-learn
+        import contextlib
+
+        return contextlib.nullcontext()
+    return threadpool_limits(1, user_api="blas")
+
+
+def tin_eval(tri, values: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Linear interpolation of vertex ``values`` over a scipy ``Delaunay`` at points ``q`` (k, 2).
+
+    NaN outside the triangulation.
+    """
+    with _one_blas_thread():
+        s = tri.find_simplex(q)
+    out = np.full(q.shape[0], np.nan)
+    ok = s >= 0
+    if ok.any():
+        v = tri.simplices[s[ok]]
+        a = tri.points[v[:, 0]]
+        b = tri.points[v[:, 1]]
+        c = tri.points[v[:, 2]]
+        p = q[ok]
+        # barycentric weights from signed areas (scipy's tri.transform is slow to build)
+        det = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])
+        det = np.where(det == 0, np.finfo(np.float64).tiny, det)
+        wb = ((p[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (p[:, 1] - a[:, 1])) / det
+        wc = ((b[:, 0] - a[:, 0]) * (p[:, 1] - a[:, 1]) - (p[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])) / det
+        out[ok] = (1.0 - wb - wc) * values[v[:, 0]] + wb * values[v[:, 1]] + wc * values[v[:, 2]]
+    return out
+
+
+def delaunay(pts: np.ndarray, jitter: float = 0.0):
+    """scipy Delaunay of (k, 2) points; ``jitter`` (same unit) breaks grid degeneracy, which
+    otherwise makes Qhull crawl on cell centres."""
+    from scipy.spatial import Delaunay
+
+    if jitter:
+        pts = pts + np.random.default_rng(0).uniform(-jitter, jitter, pts.shape)
+    return Delaunay(pts)
+
+
 def inpaint(grid: np.ndarray) -> np.ndarray:
-    """Fill NaN cells smoothly: linear interpolation over a Delaunay TIN of the filled cells,
-    nearest value outside their hull (the role of SMRF's image inpainting)."""
+    """Fill NaN cells smoothly: linear interpolation over a Delaunay TIN of the filled cells
+    that border an empty one, nearest value outside their hull (the role of SMRF's image
+    inpainting)."""
     mask = np.isnan(grid)
     if not mask.any():
         return grid
-    from scipy.interpolate import LinearNDInterpolator
-
-    rr, cc = np.nonzero(~mask)
-    if rr.size < 3:
-        return fill_nearest(grid)
-    # only filled cells next to an empty one matter for the interpolation: keep the TIN small
     from scipy import ndimage
 
     border = ~mask & ndimage.binary_dilation(mask, structure=np.ones((3, 3), bool))
     br, bc = np.nonzero(border)
     if br.size < 3:
         return fill_nearest(grid)
+    # a frame one cell outside the grid, valued by the nearest filled cell, puts every query
+    # inside the TIN (scipy's find_simplex falls back to brute force for points outside)
+    near = fill_nearest(grid)
+    rows, cols = grid.shape
+    fr = np.concatenate([np.full(cols + 2, -1), np.full(cols + 2, rows), np.arange(rows), np.arange(rows)])
+    fc = np.concatenate([np.arange(-1, cols + 1), np.arange(-1, cols + 1), np.full(rows, -1), np.full(rows, cols)])
+    fv = near[np.clip(fr, 0, rows - 1), np.clip(fc, 0, cols - 1)]
+    sr = np.concatenate([br, fr])
+    sc = np.concatenate([bc, fc])
+    sv = np.concatenate([grid[br, bc], fv])
     out = grid.copy()
     er, ec = np.nonzero(mask)
     try:
-        f = LinearNDInterpolator(np.column_stack([br, bc]).astype(np.float64), grid[br, bc])
-        out[er, ec] = f(np.column_stack([er, ec]).astype(np.float64))
-    except Exception:  # degenerate (collinear) support: fall back to nearest
-        return fill_nearest(grid)
-    return fill_nearest(out)
+        tri = delaunay(np.column_stack([sr, sc]).astype(np.float64), 1e-4)
+    except Exception:  # degenerate support: nearest
+        return near
+    out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))
+    nan = np.isnan(out)
+    out[nan] = near[nan]
+    return out
 
 
 def bilinear(grid: np.ndarray, xy: np.ndarray, cell: float, origin) -> np.ndarray:
@@ -242,17 +295,23 @@ def bilinear(grid: np.ndarray, xy: np.ndarray, cell: float, origin) -> np.ndarra
 
 
 def tin_interpolate(xy_known: np.ndarray, z_known: np.ndarray, xy_query: np.ndarray) -> np.ndarray:
-    """Linear interpolation on a Delaunay TIN; nearest known value outside the hull."""
-    from scipy.interpolate import LinearNDInterpolator
+    """Linear interpolation on a Delaunay TIN of (k, 2) points; nearest known value outside the hull."""
     from scipy.spatial import cKDTree
 
+    out = np.full(xy_query.shape[0], np.nan)
     if xy_known.shape[0] >= 3:
+        # four far corners (value NaN) keep every query inside the TIN, so find_simplex never
+        # falls back to brute force; queries in triangles touching them become nearest below
+        lo = np.minimum(xy_known.min(axis=0), xy_query.min(axis=0))
+        hi = np.maximum(xy_known.max(axis=0), xy_query.max(axis=0))
+        span = float(np.max(hi - lo)) + 1.0
+        corners = np.array([[lo[0] - span, lo[1] - span], [hi[0] + span, lo[1] - span],
+                            [hi[0] + span, hi[1] + span], [lo[0] - span, hi[1] + span]])
         try:
-            out = LinearNDInterpolator(xy_known, z_known)(xy_query)
+            tri = delaunay(np.vstack([xy_known, corners]))
+            out = tin_eval(tri, np.concatenate([z_known, np.full(4, np.nan)]), xy_query)
         except Exception:  # collinear support
-            out = np.full(xy_query.shape[0], np.nan)
-    else:
-        out = np.full(xy_query.shape[0], np.nan)
+            pass
     bad = np.isnan(out)
     if bad.any():
         _, j = cKDTree(xy_known).query(xy_query[bad])
@@ -283,3 +342,43 @@ def dilate_diamond(a: np.ndarray, radius: int) -> np.ndarray:
     for _ in range(int(radius)):
         a = _cross_step(a, np.maximum, -np.inf)
     return a
+
+
+def disk(radius: int) -> np.ndarray:
+    """Boolean disk footprint of ``radius`` cells (x² + y² ≤ r²); the 3x3 square for radius 1."""
+    r = int(radius)
+    if r <= 1:
+        return np.ones((3, 3), dtype=bool)
+    y, x = np.mgrid[-r : r + 1, -r : r + 1]
+    return x * x + y * y <= r * r
+
+
+def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
+    """Grey erosion/dilation by :func:`disk` as a union of its rows: one 1D running min/max per
+    distinct chord width plus shifted minima/maxima, O(cells · radius) instead of
+    O(cells · radius²)."""
+    from scipy import ndimage
+
+    fp = disk(radius)
+    r = fp.shape[0] // 2
+    f1d = ndimage.minimum_filter1d if erode else ndimage.maximum_filter1d
+    op = np.minimum if erode else np.maximum
+    fill = np.inf if erode else -np.inf
+    halfw = fp.sum(axis=1) // 2  # chord half-width per row offset
+    rows = {}
+    for w in np.unique(halfw):
+        rows[int(w)] = f1d(a, size=2 * int(w) + 1, axis=1, mode="nearest") if w > 0 else a
+    out = np.full(a.shape, fill)
+    n = a.shape[0]
+    for k, dy in enumerate(range(-r, r + 1)):
+        src = rows[int(halfw[k])]
+        # out[i] = op(out[i], src[i + dy]) where i + dy is inside the grid
+        lo, hi = max(0, -dy), min(n, n - dy)
+        if lo < hi:
+            op(out[lo:hi], src[lo + dy : hi + dy], out=out[lo:hi])
+    return out
+
+
+def open_disk(a: np.ndarray, radius: int) -> np.ndarray:
+    """Grey opening (erosion then dilation) by a disk of ``radius`` cells."""
+    return _disk_filter(_disk_filter(a, radius, True), radius, False)
