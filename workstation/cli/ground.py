@@ -10,7 +10,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.command()
 @click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
 @output_option
-@click.option("--method", type=click.Choice(["smrf", "csf", "pmf", "ptd", "auto", "lowest", "local_min"]),
+@click.option("--method", type=click.Choice(["smrf", "csf", "pmf", "ptd", "auto", "lowest", "local_min", "ml"]),
               default="smrf", show_default=True, help="Ground filter.")
 @click.option("--preset", type=click.Choice(["default", "flat", "urban", "forest", "steep"]), default="default",
               show_default=True, help="Parameter set for a kind of terrain.")
@@ -68,16 +68,21 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
         given["reclassify"] = True
     if all_returns:
         given["last_returns_only"] = False
-    try:
-        params = make_params(method, preset, **given)
-    except InvalidInputError as e:
-        raise click.UsageError(e.message) from None
+    if method == "ml":  # the shipped point classifier (workstation.ml.ground)
+        from workstation.ml.ground import MLGroundParams, ml_ground
+
+        params = MLGroundParams(reclassify=reclassify)
+    else:
+        try:
+            params = make_params(method, preset, **given)
+        except InvalidInputError as e:
+            raise click.UsageError(e.message) from None
     cloud = read_cloud(src, **({"columns": columns} if columns else {}))
     if noise:
         from workstation.ground.noise import classify_noise
 
         cloud = classify_noise(cloud)
-    out = methods()[method].func(cloud, params)
+    out = ml_ground(cloud, params) if method == "ml" else methods()[method].func(cloud, params)
     if hag:
         from workstation.ground.hag import height_above_ground
 

@@ -266,6 +266,8 @@ class PointClassifier:
                     bad += 1
                 if bad >= self.patience or time.perf_counter() - t0 > self.time_budget_s:
                     break
+        if best_state is None:
+            raise StageError("train", "the validation loss never became finite", "check the features for NaN or lower the learning rate")
         net.load_state_dict(best_state)
         net.eval()
         self.net_ = net.cpu()

@@ -88,6 +88,11 @@ class Randomisation:
         Square tile side (m).
     max_points : int
         Upper bound on points per tile (shrinks the tile at high density).
+    p_physical : float
+        Probability a tile is scanned by the full physical simulator of
+        :mod:`workstation.lidar.simulate` (beam footprint, range equation, navigation errors,
+        scan patterns) instead of the compact scanner here; both get the same randomised
+        post-processing (returns, intensity, outliers).
     """
 
     density: tuple = (0.15, 20.0)
@@ -102,6 +107,7 @@ class Randomisation:
     noise_rate: tuple = (0.0, 0.003)
     tile_size: tuple = (80.0, 300.0)
     max_points: int = 250_000
+    p_physical: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -275,7 +281,65 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
     rn = (np.arange(len(pid)) - first_idx[grp] + 1).astype(np.uint8)
     nr = counts[grp].astype(np.uint8)
     scan_angle = np.degrees(np.arctan2(d[pid, 0], -d[pid, 2])).astype(np.float32)
-    # outliers
+    return _finish_tile(xyz + scene.origin, cls, rn, nr, inten, scan_angle, rng, rnd, scene.crs,
+                        {"simulator": "compact", "density": density, "size": size, "altitude": H,
+                         "half_fov_deg": float(np.degrees(fov)), "max_returns": max_ret, "range_sigma": sigma})
+
+
+def simulate_tile_physical(scene, rng: np.random.Generator, rnd: Randomisation) -> Cloud:
+    """Scan a random square tile with the full simulator (:func:`workstation.lidar.survey.run_survey`)
+    under randomised flight and scanner settings, then apply the same randomised returns,
+    intensity and outlier treatment as :func:`simulate_tile`."""
+    import dataclasses
+
+    from workstation.lidar.survey import default_survey, run_survey
+
+    lo, hi = scene.bounds_local()
+    density = _loguniform(rng, *rnd.density)
+    size = float(rng.uniform(*rnd.tile_size))
+    size = min(size, np.sqrt(rnd.max_points / (density * 1.5)), hi[0] - lo[0] - 2, hi[1] - lo[1] - 2)
+    x0 = rng.uniform(lo[0] + 1, hi[0] - 1 - size)
+    y0 = rng.uniform(lo[1] + 1, hi[1] - 1 - size)
+    H = float(rng.uniform(*rnd.altitude))
+    fov = float(2 * rng.uniform(*rnd.half_fov_deg))
+    kind = str(rng.choice(["zigzag", "polygon", "palmer"]))
+    cfg = default_survey("als")
+    swath = 2 * H * np.tan(np.radians(fov / 2))
+    speed = float(rng.uniform(40, 80))
+    overlap = float(rng.uniform(0.2, 0.5))
+    # pulses per second for the wanted density: density * swath * speed / (1 - overlap) ... per line
+    prf = float(np.clip(density * swath * speed, 5_000, 2_000_000))
+    scan_f = float(np.clip(np.sqrt(prf * speed / max(swath, 1.0)) / 2, 10, 400))
+    cfg = dataclasses.replace(
+        cfg, area=(x0, x0 + size, y0, y0 + size),
+        scanner=dataclasses.replace(cfg.scanner, kind=kind, prf=prf, scan_frequency=scan_f, fov_deg=fov),
+        sensor=dataclasses.replace(cfg.sensor, max_returns=int(rng.integers(rnd.max_returns[0], rnd.max_returns[1] + 1)),
+                                   subrays=3),
+        errors=dataclasses.replace(cfg.errors, range_noise_m=float(rng.uniform(*rnd.range_sigma))),
+        flight=dataclasses.replace(cfg.flight, altitude=H, speed=speed, overlap=overlap,
+                                   heading_deg=float(rng.uniform(0, 180))))
+    res = run_survey(scene, cfg, seed=int(rng.integers(0, 2**31 - 1)))
+    c = res.cloud
+    xyz = np.asarray(c.xyz)
+    loc = xyz[:, :2] - scene.origin[:2]
+    inside = (loc[:, 0] >= x0) & (loc[:, 0] < x0 + size) & (loc[:, 1] >= y0) & (loc[:, 1] < y0 + size)
+    c = c[inside]
+    if c.n < 50:
+        raise InvalidInputError("physically simulated tile has too few points", "enlarge the tile or density")
+    xyz = np.asarray(c.xyz)
+    cls = np.asarray(c.attrs["classification"]).astype(np.uint8)
+    rn = np.asarray(c.attrs["return_number"])
+    nr = np.asarray(c.attrs["number_of_returns"])
+    inten = np.asarray(c.attrs["intensity"], np.float64) / 2000.0
+    scan_angle = np.asarray(c.attrs["scan_angle"], np.float32)
+    return _finish_tile(xyz, cls, rn, nr, inten, scan_angle, rng, rnd, scene.crs,
+                        {"simulator": "physical", "density": density, "size": size, "altitude": H, "half_fov_deg": fov / 2,
+                         "pattern": kind, "prf": prf, "max_returns": cfg.sensor.max_returns,
+                         "range_sigma": cfg.errors.range_noise_m})
+
+
+def _finish_tile(xyz, cls, rn, nr, inten, scan_angle, rng, rnd: Randomisation, crs, meta) -> Cloud:
+    """Outliers, vegetation split, randomly dropped returns / intensity, intensity gain."""
     n_noise = int(len(xyz) * rng.uniform(*rnd.noise_rate))
     if n_noise:
         src = rng.integers(0, len(xyz), n_noise)
@@ -300,10 +364,8 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
         gain = _loguniform(rng, *rnd.intensity_gain)
         i = inten * gain * 2000 * rng.lognormal(0, 0.15, len(inten)) + rng.uniform(0, 500)
         attrs["intensity"] = np.clip(i, 0, 65535).astype(np.uint16)
-    meta = {"sim": {"density": density, "size": size, "altitude": H, "half_fov_deg": float(np.degrees(fov)),
-                    "max_returns": max_ret, "range_sigma": sigma, "returns_kept": not no_ret,
-                    "intensity_kept": not no_int, "noise_points": n_noise}}
-    return Cloud(xyz + scene.origin, attrs, crs=scene.crs, meta=meta)
+    meta = {"sim": {**meta, "returns_kept": not no_ret, "intensity_kept": not no_int, "noise_points": n_noise}}
+    return Cloud(xyz, attrs, crs=crs, meta=meta)
 
 
 def _split_vegetation(xyz: np.ndarray, cls: np.ndarray, low_max: float = 0.5, medium_max: float = 2.0) -> np.ndarray:
@@ -404,7 +466,10 @@ def build_tileset(recipe: DatasetRecipe, feature_params=None, progress: bool = T
             cache[key] = (sc, RaycastScene(sc.vertices, sc.faces))
         sc, rc = cache[key]
         rng = np.random.default_rng([recipe.seed, t])
-        cloud = simulate_tile(sc, rng, recipe.randomisation, rc)
+        if rng.uniform() < recipe.randomisation.p_physical:
+            cloud = simulate_tile_physical(sc, rng, recipe.randomisation)
+        else:
+            cloud = simulate_tile(sc, rng, recipe.randomisation, rc)
         F = compute_features(cloud, fp)
         y = asprs_to_model(cloud.attrs["classification"])
         idx = sample_balanced(y, recipe.samples_per_tile, rng)

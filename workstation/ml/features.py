@@ -81,7 +81,7 @@ class FeatureParams:
 
     cell: float = 1.0
     min_radii: tuple = (2.5, 5.0, 10.0, 20.0, 40.0)
-    ground_window: float = 40.0
+    ground_window: float = 30.0
     ground_slope: float = 0.15
     k_fine: int = 10
     fine_voxel: float = 0.5
@@ -146,11 +146,10 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
                        zmin: np.ndarray | None = None, rc=None) -> np.ndarray:
     """A provisional bare-earth grid by a progressive morphological filter.
 
-    Openings of the minimum-elevation grid with square windows growing in powers of two up to
-    ``window``; a cell is flagged non-ground when it stands above the opening by more than the
-    slope allows for that window (``slope * radius + 0.3 m``), as in Zhang et al. (2003) and
-    Pingel et al. (2013); flagged and empty cells are inpainted from the nearest ground cells
-    and smoothed.
+    Square openings of the minimum-elevation grid with radii 1, 2, ... cells up to ``window``,
+    each opening the previous one; a cell is flagged non-ground when one step lowers it by more
+    than ``slope * cell * radius`` (Zhang et al. 2003; the progressive scheme of SMRF, Pingel et
+    al. 2013); flagged and empty cells take the nearest ground cell's value, smoothed.
 
     Parameters
     ----------
@@ -178,21 +177,20 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
         zmin = _grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
     empty = ~np.isfinite(zmin)
     z0 = _fill_nearest(zmin, empty)
+    # SMRF's progressive opening: each radius opens the previous opening; a cell is an object
+    # when one step lowers it by more than the slope allows for one cell of radius
     flagged = np.zeros(shape, bool)
-    w = 1
-    while w * cell <= window:
+    last = z0
+    for w in range(1, max(1, int(np.ceil(window / cell))) + 1):
         size = 2 * w + 1
-        op = ndimage.grey_opening(z0, size=(size, size), mode="nearest")
-        flagged |= (z0 - op) > (slope * w * cell + 0.3)
-        w *= 2
-    # never flag every cell: keep the lowest if all were flagged
+        op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
+        flagged |= (last - op) > slope * cell * w
+        last = op
     bad = flagged | empty
     if bad.all():
-        bad = empty.copy()
-        if bad.all():
-            return z0
+        return z0
     g = _fill_nearest(z0, bad)
-    # smooth the inpainted surface a little (3 cells), keeping ground cells as measured
+    # smooth the filled cells a little (3 cells), keeping ground cells as measured
     sm = ndimage.uniform_filter(g, size=3, mode="nearest")
     return np.where(bad, sm, g)
 
@@ -370,19 +368,20 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
     zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
     z = xyz[:, 2]
+    zmin_f = _fill_nearest(zmin, ~np.isfinite(zmin))  # despiked cells take their neighbours' value
     for t, rad in enumerate(p.min_radii):
         size = 2 * int(round(rad / cell)) + 1
-        m = ndimage.minimum_filter(zmin, size=size, mode="nearest")
+        m = ndimage.minimum_filter(zmin_f, size=size, mode="nearest")
         F[:, t] = np.minimum(z - m[r, c], 60.0)
     size = 2 * int(round(p.min_radii[0] / cell)) + 1
     mx = ndimage.maximum_filter(zmax, size=size, mode="nearest")
-    m0 = ndimage.minimum_filter(zmin, size=size, mode="nearest")
+    m0 = ndimage.minimum_filter(zmin_f, size=size, mode="nearest")
     F[:, 5] = np.minimum(mx[r, c] - m0[r, c], 60.0)
     F[:, 6] = np.minimum(mx[r, c] - z, 60.0)
     # provisional ground at two tolerances
     g = provisional_ground(xyz, cell, p.ground_window, p.ground_slope, zmin=zmin, rc=(r, c, shape))
     F[:, 7] = np.clip(z - _bilinear(g, xyz[:, :2], cell), -20, 60)
-    g2 = provisional_ground(xyz, cell, p.ground_window / 2, p.ground_slope * 3, zmin=zmin, rc=(r, c, shape))
+    g2 = provisional_ground(xyz, cell, p.ground_window * 0.4, p.ground_slope * 2, zmin=zmin, rc=(r, c, shape))
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(np.hypot(gx, gy)[r, c], 3.0)
@@ -409,4 +408,4 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 29:31] = _intensity_features(cloud)
     med = float(np.median(dh)) if n else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
-    return F
+    return np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
