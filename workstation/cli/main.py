@@ -20,13 +20,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "ground": ("workstation.cli.ground:ground", "Classify ground (2) and non-ground (1): SMRF, CSF, PMF, PTD, auto, baselines."),
     "evaluate": ("workstation.cli.evaluate:evaluate", "Confusion matrix, ISPRS Type I/II, total error and kappa against a reference."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
-<<<<<<< HEAD
     "train": ("workstation.cli.train:train", "Train the point classifier on simulated LiDAR (recipe TOML)."),
     "classify": ("workstation.cli.classify:classify", "Classify points (ground, vegetation, building, water, other, noise)."),
-=======
     "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
     "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
->>>>>>> sim
 }
 
 
