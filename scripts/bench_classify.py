@@ -82,10 +82,17 @@ def baseline():
     from workstation.ml.classifier import PointClassifier
     from workstation.ml.train import split_scores
 
+    from workstation.ml.dataset import load_dataset_recipe
+    from workstation.ml.features import FEATURE_NAMES
+
     ts = _tileset()
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
     vm = ts.val[ts.tile]
-    rf = PointClassifier(model="rf", seed=0)
-    rf.fit_arrays(ts.X[~vm], ts.y[~vm], ts.X[vm], ts.y[vm])
+    use = np.ones(len(ts.y), bool)
+    if recipe.train.get("drop_ground_above_m") is not None:  # the same rows as the shipped MLP
+        use = ~(~vm & (ts.y == 0) & (np.abs(ts.X[:, FEATURE_NAMES.index("hag_prov")]) > recipe.train["drop_ground_above_m"]))
+    rf = PointClassifier(model="rf", seed=0, ignore_features=recipe.train.get("ignore_features", ()))
+    rf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm])
     emit(bench="rf_fit", seconds=rf.report_.seconds, cpu_seconds=rf.report_.cpu_seconds, validation=split_scores(rf, ts.X[vm], ts.y[vm]))
     goals(rf, "rf")
 

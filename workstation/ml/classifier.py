@@ -100,13 +100,16 @@ class PointClassifier:
         Largest number of points classified in one tile (memory bound).
     veg_low_max, veg_medium_max : float
         Height above ground (m) splitting low / medium / high vegetation.
+    ignore_features : sequence of str
+        Feature names (:data:`FEATURE_NAMES`) set to zero, for inputs that do not transfer
+        from simulation to real scans.
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), epochs: int = 40, batch: int = 2048,
                  lr: float = 2e-3, patience: int = 5, time_budget_s: float = 3000.0,
                  n_estimators: int = 60, max_depth: int = 18, seed: int = 0, device: str = "auto",
                  feature_params: FeatureParams | None = None, tile_points: int = 3_000_000,
-                 veg_low_max: float = 0.5, veg_medium_max: float = 2.0):
+                 veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=()):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -124,6 +127,10 @@ class PointClassifier:
         self.tile_points = int(tile_points)
         self.veg_low_max = float(veg_low_max)
         self.veg_medium_max = float(veg_medium_max)
+        unknown = set(ignore_features) - set(FEATURE_NAMES)
+        if unknown:
+            raise InvalidInputError(f"unknown features {sorted(unknown)}", f"known: {', '.join(FEATURE_NAMES)}")
+        self.ignore_features = tuple(str(f) for f in ignore_features)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -140,7 +147,13 @@ class PointClassifier:
 
     def features(self, cloud: Cloud) -> np.ndarray:
         """Feature matrix (n, f) float32 of a cloud (see :mod:`workstation.ml.features`)."""
-        return compute_features(cloud, self.feature_params)
+        F = compute_features(cloud, self.feature_params)
+        return self._mask(F)
+
+    def _mask(self, F: np.ndarray) -> np.ndarray:
+        if self.ignore_features:
+            F[:, [FEATURE_NAMES.index(f) for f in self.ignore_features]] = 0
+        return F
 
     def fit(self, clouds, samples_per_cloud: int = 50_000, validation=None) -> "PointClassifier":
         """Fit on labelled clouds (their ``classification``).
@@ -178,7 +191,7 @@ class PointClassifier:
 
     def fit_arrays(self, X: np.ndarray, y: np.ndarray, X_val=None, y_val=None, progress: bool = True) -> "PointClassifier":
         """Fit on a feature matrix (m, f) float32 and model-class labels (m,) int."""
-        X = np.asarray(X, np.float32)
+        X = self._mask(np.array(X, np.float32))
         y = np.asarray(y, np.int64)
         if X.ndim != 2 or X.shape[1] != len(FEATURE_NAMES) or len(y) != len(X):
             raise InvalidInputError(f"X must be (m, {len(FEATURE_NAMES)}) with one label per row, got {X.shape} / {y.shape}")
@@ -190,7 +203,7 @@ class PointClassifier:
             nv = max(len(X) // 10, 1)
             X_val, y_val = X[perm[:nv]], y[perm[:nv]]
             X, y = X[perm[nv:]], y[perm[nv:]]
-        X_val = np.asarray(X_val, np.float32)
+        X_val = self._mask(np.array(X_val, np.float32))
         y_val = np.asarray(y_val, np.int64)
         t0, c0 = time.perf_counter(), time.process_time()
         if self.model == "rf":
@@ -370,7 +383,7 @@ class PointClassifier:
                 "n_estimators": self.n_estimators, "max_depth": self.max_depth, "seed": self.seed,
                 "device": self.device, "feature_params": self.feature_params.to_dict(),
                 "tile_points": self.tile_points, "veg_low_max": self.veg_low_max,
-                "veg_medium_max": self.veg_medium_max}
+                "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features)}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

@@ -18,12 +18,12 @@ from .dataset import MODEL_CLASSES, build_tileset, load_dataset_recipe
 log = get_logger(__name__)
 
 _TRAIN_KEYS = ("model", "hidden", "epochs", "batch", "lr", "patience", "time_budget_s", "n_estimators",
-               "max_depth", "seed", "device")
+               "max_depth", "seed", "device", "ignore_features")
 
 
 def split_scores(clf: PointClassifier, X: np.ndarray, y: np.ndarray) -> dict:
     """Accuracy, per-class F1 and ground/object total error (%) on feature rows."""
-    P = clf.predict_proba_features(X)
+    P = clf.predict_proba_features(clf._mask(np.array(X, np.float32)))
     k = P.argmax(1)
     out = {"rows": int(len(y)), "accuracy": float((k == y).mean())}
     f1 = {}
@@ -75,10 +75,19 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
     if not vm.any() or vm.all():
         vm = np.zeros(len(ts.y), bool)
         vm[ts.tile % 5 == 4] = True
+    use = np.ones(len(ts.y), bool)
+    drop_above = recipe.train.get("drop_ground_above_m")
+    if drop_above is not None:
+        # simulated ground rows far above the provisional surface (where that surface failed:
+        # ridges, embankments) teach the network to distrust its main cue; leave them out of
+        # training (never out of validation)
+        from .features import FEATURE_NAMES
+
+        use = ~(~vm & (ts.y == 0) & (np.abs(ts.X[:, FEATURE_NAMES.index("hag_prov")]) > float(drop_above)))
     kw = {k: recipe.train[k] for k in _TRAIN_KEYS if k in recipe.train}
     kw.setdefault("seed", recipe.seed)
     clf = PointClassifier(**kw)
-    clf.fit_arrays(ts.X[~vm], ts.y[~vm], ts.X[vm], ts.y[vm], progress=progress)
+    clf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm], progress=progress)
     rep = clf.report_
     card = {
         "recipe": str(recipe_path),
@@ -86,7 +95,8 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
         "classes": list(MODEL_CLASSES),
         "tiles": len(ts.info),
         "validation_tiles": int(ts.val.sum()),
-        "train_rows": int((~vm).sum()),
+        "train_rows": int((~vm & use).sum()),
+        "dropped_ground_rows": int((~use).sum()),
         "validation_rows": int(vm.sum()),
         "class_rows": np.bincount(ts.y, minlength=len(MODEL_CLASSES)).tolist(),
         "dataset_seconds": t_data,
@@ -103,8 +113,8 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
         "tile_draws": ts.info,
     }
     if baseline:
-        rf = PointClassifier(model="rf", seed=recipe.seed)
-        rf.fit_arrays(ts.X[~vm], ts.y[~vm], ts.X[vm], ts.y[vm])
+        rf = PointClassifier(model="rf", seed=recipe.seed, ignore_features=clf.ignore_features)
+        rf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm])
         card["baseline_rf"] = {"train_seconds": rf.report_.seconds, "validation": split_scores(rf, ts.X[vm], ts.y[vm])}
     clf.meta_ = {"summary": {"recipe": Path(recipe_path).name, "seed": recipe.seed}, "card": {
         k: card[k] for k in ("recipe", "seed", "tiles", "train_rows", "epochs", "best_epoch", "total_seconds")}}
