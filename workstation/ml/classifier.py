@@ -41,6 +41,7 @@ FORMAT = "workstation-point-classifier/1"
 #: Default shipped model.
 SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
+_SLOPE_COL = FEATURE_NAMES.index("ground_slope")
 
 
 @dataclass
@@ -103,13 +104,22 @@ class PointClassifier:
     ignore_features : sequence of str
         Feature names (:data:`FEATURE_NAMES`) set to zero, for inputs that do not transfer
         from simulation to real scans.
+    ground_gate : bool
+        Call a point ground only when it also lies within SMRF's band of the provisional
+        ground surface, ``|hag_prov| <= gate_threshold + gate_scalar * slope`` (Pingel et al.
+        2013; metres), and the network gives ground at least ``gate_min_probability``; other
+        points take the network's best non-ground class. The physical prior that keeps the
+        network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
+    gate_threshold, gate_scalar, gate_min_probability : float
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), epochs: int = 40, batch: int = 2048,
                  lr: float = 2e-3, patience: int = 5, time_budget_s: float = 3000.0,
                  n_estimators: int = 60, max_depth: int = 18, seed: int = 0, device: str = "auto",
                  feature_params: FeatureParams | None = None, tile_points: int = 3_000_000,
-                 veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=()):
+                 veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
+                 ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
+                 gate_min_probability: float = 0.02):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -131,6 +141,10 @@ class PointClassifier:
         if unknown:
             raise InvalidInputError(f"unknown features {sorted(unknown)}", f"known: {', '.join(FEATURE_NAMES)}")
         self.ignore_features = tuple(str(f) for f in ignore_features)
+        self.ground_gate = bool(ground_gate)
+        self.gate_threshold = float(gate_threshold)
+        self.gate_scalar = float(gate_scalar)
+        self.gate_min_probability = float(gate_min_probability)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -328,18 +342,19 @@ class PointClassifier:
                 yield core, sel
 
     def _proba_and_hag(self, cloud: Cloud) -> tuple[np.ndarray, np.ndarray]:
+        """Network probabilities (n, c) and the provisional-ground height and slope (n, 2)."""
         self._check_fitted()
         if cloud.n < 3:
             raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
         P = np.zeros((cloud.n, len(MODEL_CLASSES)), np.float32)
-        hag = np.zeros(cloud.n, np.float32)
+        hag = np.zeros((cloud.n, 2), np.float32)
         for core, sel in self._tiles(cloud):
             sub = cloud if len(sel) == cloud.n else cloud[sel]
             F = self.features(sub)
             p = self.predict_proba_features(F)
             keep = core[sel]
             P[sel[keep]] = p[keep]
-            hag[sel[keep]] = F[keep, _HAG_COL]
+            hag[sel[keep]] = F[keep][:, [_HAG_COL, _SLOPE_COL]]
         return P, hag
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
@@ -347,9 +362,18 @@ class PointClassifier:
         (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
         return self._proba_and_hag(cloud)[0]
 
-    def _codes(self, P: np.ndarray, hag: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _codes(self, P: np.ndarray, hs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        hag, slope = hs[:, 0], hs[:, 1]
         k = P.argmax(axis=1)
         conf = P[np.arange(len(P)), k].astype(np.float32)
+        if self.ground_gate:
+            band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
+            ground = band & (P[:, 0] >= self.gate_min_probability)
+            rest = P[:, 1:]
+            k2 = rest.argmax(axis=1) + 1
+            c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
+            k = np.where(ground, 0, k2)
+            conf = np.where(ground, np.maximum(P[:, 0], 0.5), np.minimum(c2, 1.0)).astype(np.float32)
         veg = np.where(hag < self.veg_low_max, C.LOW_VEGETATION,
                        np.where(hag < self.veg_medium_max, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION))
         noise = np.where(hag < 0, C.LOW_POINT, C.HIGH_NOISE)
@@ -383,7 +407,9 @@ class PointClassifier:
                 "n_estimators": self.n_estimators, "max_depth": self.max_depth, "seed": self.seed,
                 "device": self.device, "feature_params": self.feature_params.to_dict(),
                 "tile_points": self.tile_points, "veg_low_max": self.veg_low_max,
-                "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features)}
+                "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features),
+                "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
+                "gate_min_probability": self.gate_min_probability}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

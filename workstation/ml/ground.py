@@ -48,8 +48,9 @@ def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
 
     t0 = time.perf_counter()
     clf = PointClassifier.load(params.model, device=params.device)
-    P = clf.predict_proba(cloud)
-    ground = (P.argmax(1) == 0) & (P[:, 0] >= params.min_confidence)
+    P, hs = clf._proba_and_hag(cloud)
+    codes, _ = clf._codes(P, hs)
+    ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
     if not ground.any():
         raise StageError("ground_ml", "no point was classified as ground", "check the units and the input; try another method")
     old = np.asarray(cloud.attrs["classification"]) if "classification" in cloud.attrs else np.zeros(cloud.n, np.uint8)
