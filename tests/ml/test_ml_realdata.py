@@ -32,12 +32,12 @@ def test_isprs_mean_total_error(shipped, shared_data):
     assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.2
 
 
-@pytest.mark.parametrize("name, rmse_max", [("MixedConifer.laz", 0.12), ("autzen_trim.las", 0.22), ("Topography.laz", 0.34)])
+@pytest.mark.parametrize("name, rmse_max", [("MixedConifer.laz", 0.12), ("Topography.laz", 0.34)])
 def test_dtm_under_predicted_ground(shipped, shared_data, name, rmse_max):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / name)
-    # measured 0.084 m, 0.187 m (feet file, converted to metres), 0.304 m
+    # measured 0.084 m and 0.304 m (autzen_trim, a feet file: 0.187 m, in the benchmark)
     assert r["dtm_rmse_m"] <= rmse_max, r
 
 
