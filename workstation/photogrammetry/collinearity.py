@@ -384,7 +384,7 @@ def resect(
     it = 0
     r = resid(np.zeros(6), R, C)
     for it in range(1, params.max_iterations + 1):
-        J = -_numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
+        J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
         A = J.T @ J
         g = J.T @ r
         improved = False
@@ -411,7 +411,7 @@ def resect(
     _, depth = project(X, camera, final, return_depth=True)
     if np.any(depth <= 0):
         raise StageError("resection", "some control points lie behind the resected camera", "check the observations")
-    J = -_numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
+    J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
     dof = 2 * n - 6
     sigma0 = float(np.sqrt(r @ r / dof)) if dof > 0 else float("nan")
     var = sigma0**2 if dof > 0 else params.sigma_px**2
@@ -451,8 +451,8 @@ class IntersectionResult:
     point : (3,) float
         World coordinates.
     covariance : (3, 3) float
-        World units²; scaled by the a-posteriori variance factor when there are ≥ 3 rays (or
-        ≥ 2 rays, since 2 rays already give 1 redundant equation), by ``sigma_px²`` otherwise.
+        World units²; scaled by the a-posteriori variance factor when there are ≥ 3 rays
+        (≥ 3 redundant equations), by ``sigma_px²`` otherwise.
     std : (3,) float
         Standard deviations of X, Y, Z.
     residuals : (m, 2) float
@@ -479,6 +479,7 @@ def intersect(
     poses: Sequence[Pose],
     sigma_px: float = 1.0,
     iterations: int = 10,
+    a_posteriori: bool = True,
 ) -> IntersectionResult:
     """Space intersection: one object point from its pixels in ≥ 2 oriented images.
 
@@ -496,6 +497,9 @@ def intersect(
         A-priori image measurement precision, pixels (used when there is no redundancy).
     iterations : int
         Gauss–Newton iterations.
+    a_posteriori : bool
+        Scale the covariance by the a-posteriori variance factor when there are ≥ 2 redundant
+        equations (≥ 3 rays); False always uses ``sigma_px²`` (the expected precision).
 
     Returns
     -------
@@ -547,16 +551,16 @@ def intersect(
 
     for _ in range(iterations):
         r = resid(Xp)
-        J = -_numeric_jacobian(lambda d: resid(Xp + d), 3, step)
+        J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
         dx, *_ = np.linalg.lstsq(J, -r, rcond=None)
         Xp = Xp + dx
         if np.linalg.norm(dx) < 1e-12 * scale:
             break
     r = resid(Xp)
-    J = -_numeric_jacobian(lambda d: resid(Xp + d), 3, step)
+    J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
     dof = 2 * m - 3
     sigma0 = float(np.sqrt(r @ r / dof)) if dof > 0 else float("nan")
-    var = sigma0**2 if dof >= 2 else sigma_px**2
+    var = sigma0**2 if (dof >= 3 and a_posteriori) else sigma_px**2
     try:
         cov = var * np.linalg.inv(J.T @ J)
     except np.linalg.LinAlgError:
@@ -707,7 +711,8 @@ def stereo_precision(distance: float, base: float, focal_px: float, sigma_px: fl
     focal_px : float
         Focal length, pixels.
     sigma_px : float
-        Image measurement (parallax) precision, pixels.
+        Precision of the measured x-parallax, pixels (two image points each measured to σ give
+        a parallax precision of √2·σ).
 
     Examples
     --------
