@@ -78,6 +78,7 @@ def part_dlt(data: Path, trials: int = 50):
                 "noise_px": 0.1,
                 "pp_err_px_median": round(float(np.median(pp)), 4),
                 "pp_err_px_max": round(float(np.max(pp)), 4),
+                "pp_within_1px_pct": round(100 * float(np.mean(np.array(pp) <= 1.0)), 1),
                 "focal_err_pct_median": round(float(np.median(foc)), 4),
                 "focal_err_pct_max": round(float(np.max(foc)), 4),
                 "centre_err_pct_of_distance_median": round(float(np.median(cen)), 4),

@@ -35,16 +35,20 @@ def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
     cam = Camera(w, h, f, f * rng.uniform(0.995, 1.005), w / 2 + rng.uniform(-40, 40), h / 2 + rng.uniform(-40, 40))
     dist = rng.uniform(20, 60)
     width = dist * w / f * 0.8
-    while True:
-        om, ph, ka = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-np.pi, np.pi)
-        C = np.array([0.0, 0.0, dist]) + rng.normal(0, 0.5, 3)
-        pose = pose_from_opk(om, ph, ka, C)
+    om, ph, ka = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-np.pi, np.pi)
+    C = np.array([0.0, 0.0, dist]) + rng.normal(0, 0.5, 3)
+    pose = pose_from_opk(om, ph, ka, C)
+    kept = np.empty((0, 3))
+    while kept.shape[0] < n:
         X = np.column_stack(
-            [rng.uniform(-width / 2, width / 2, n), rng.uniform(-width / 2, width / 2, n), rng.uniform(-0.5, 0.5, n) * width]
+            [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
         )
         uv, z = project(X, cam, pose, return_depth=True)
-        if np.all(z > 0) and np.all((uv >= 0) & (uv < [w, h])):
-            return cam, pose, X, uv + rng.normal(0, noise_px, uv.shape), dist
+        ok = (z > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
+        kept = np.vstack([kept, X[ok]])
+    X = kept[:n]
+    uv = project(X, cam, pose)
+    return cam, pose, X, uv + rng.normal(0, noise_px, uv.shape), dist
 
 
 def gcp_scene(
