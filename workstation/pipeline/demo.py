@@ -20,6 +20,7 @@ log = get_logger(__name__)
 # (step title, "module:function")
 STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
+    ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),
 ]
 
 
