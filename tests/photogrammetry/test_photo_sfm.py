@@ -71,7 +71,20 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     cv2.imwrite(str(imgs / "zz_blank.png"), np.full((480, 640, 3), 128, np.uint8))
     K = gt[names[0]][0]
     write_camera(Camera(640, 480, K[0, 0], K[1, 1], K[0, 2], K[1, 2]), tmp_path / "cam.json")
-    rc = main(["sfm", str(imgs), "-o", str(tmp_path / "work"), "--camera", str(tmp_path / "cam.json"), "--json"])
+    # virtual GCPs in the ground-truth frame (metres), observed through the true cameras
+    rng = np.random.default_rng(0)
+    P = rng.uniform([-0.07, 0.02, -0.01], [0.03, 0.18, 0.06], (9, 3))
+    rows = ["name,X,Y,Z,role,image,u,v"]
+    for i, X in enumerate(P):
+        role = "control" if i < 5 else "check"
+        for n in names:
+            Kn, R, C = gt[n]
+            x = Kn @ (R @ (X - C))
+            rows.append(f"G{i},{X[0]:.9f},{X[1]:.9f},{X[2]:.9f},{role},{n},{x[0] / x[2]:.4f},{x[1] / x[2]:.4f}")
+    rows.append("G0,,,,,zz_missing.png,10,10")
+    (tmp_path / "gcp.csv").write_text("\n".join(rows) + "\n")
+    rc = main(["sfm", str(imgs), "-o", str(tmp_path / "work"), "--camera", str(tmp_path / "cam.json"),
+               "--gcp", str(tmp_path / "gcp.csv"), "--json"])
     out = capsys.readouterr()
     assert rc == 0, out.err
     doc = json.loads(out.out)
@@ -80,6 +93,11 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     assert doc["intrinsics"] == "fixed" and doc["cameras"]["1"]["fx"] == pytest.approx(K[0, 0])
     assert doc["mean_reprojection_error_px"] < 1.0 and doc["points"] > 100
     assert (tmp_path / "work/sparse/0/images.bin").exists() and (tmp_path / "work/database.db").exists()
+    geo = doc["georef"]["metrics"]
+    assert geo["control_n"] == 5 and geo["check_n"] == 4
+    assert geo["check_rmse_3d"] < 0.002, geo  # metres, on an object 0.16 m across
+    assert (tmp_path / "work/georef/0/images.bin").exists() and (tmp_path / "work/georef_report.json").exists()
+    assert "check points 4" in out.err
 
     import pycolmap
 
