@@ -92,6 +92,17 @@ def test_zhang_synthetic_recovers_camera_and_drops_outlier():
     assert r.rms < 0.2 and len(r.per_image) == 9 and r.std["fx"] > 0
 
 
+def test_zhang_estimates_skew_when_asked():
+    rng = np.random.default_rng(12)
+    cam = Camera(1280, 960, 1100.0, 1095.0, 645.0, 478.0, skew=4.0, dist=(-0.2, 0.08, 0.0, 0.0, 0.0))
+    obj, views = _board_views(cam, 8, rng, noise=0.05)
+    plain = cal.calibrate_zhang(obj, views, (1280, 960))
+    sk = cal.calibrate_zhang(obj, views, (1280, 960), cal.ZhangParams(estimate_skew=True))
+    assert sk.camera.skew == pytest.approx(4.0, abs=3 * sk.std["skew"] + 0.2)
+    assert sk.rms < plain.rms and sk.rms < 0.1
+    np.testing.assert_allclose([sk.camera.fx, sk.camera.cx, sk.camera.cy], [1100, 645, 478], atol=2.0)
+
+
 def test_zhang_needs_three_views():
     rng = np.random.default_rng(6)
     cam = Camera(1280, 960, 1100.0, 1100.0, 640.0, 480.0)

@@ -54,11 +54,12 @@ def calibrate():
 @click.option("--image-size", help="Image size WIDTHxHEIGHT in pixels (needed with --corners when the folder has no images).")
 @click.option("--free-k3", is_flag=True, help="Also estimate the 6th-order radial term k3 (wide-angle lenses).")
 @click.option("--no-tangential", is_flag=True, help="Hold the tangential terms p1, p2 at 0.")
+@click.option("--skew", "estimate_skew", is_flag=True, help="Also estimate the skew K[0,1] in pixels (joint refinement after OpenCV).")
 @click.option("--outlier-factor", type=float, default=3.0, show_default=True, help="Drop images whose RMS exceeds this multiple of the median per-image RMS.")
 @output_option
 @overwrite_option
 @json_option
-def zhang(images, board, square, model_file, corners_dir, image_size, free_k3, no_tangential, outlier_factor, output, overwrite, as_json):
+def zhang(images, board, square, model_file, corners_dir, image_size, free_k3, no_tangential, estimate_skew, outlier_factor, output, overwrite, as_json):
     """Zhang's method from >= 3 views of a planar target.
 
     Either IMAGES/ with --board COLSxROWS --square SIZE (checkerboard found by OpenCV and refined
@@ -75,7 +76,7 @@ def zhang(images, board, square, model_file, corners_dir, image_size, free_k3, n
     )
 
     check_output(output, overwrite)
-    params = ZhangParams(fix_k3=not free_k3, fix_tangential=no_tangential, outlier_factor=outlier_factor)
+    params = ZhangParams(fix_k3=not free_k3, fix_tangential=no_tangential, outlier_factor=outlier_factor, estimate_skew=estimate_skew)
     if model_file or corners_dir:
         if not (model_file and corners_dir):
             raise InvalidInputError("--model and --corners go together")

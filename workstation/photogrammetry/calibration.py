@@ -141,6 +141,9 @@ class ZhangParams:
         Half-size of the ``cornerSubPix`` search window, pixels.
     min_views : int
         Fewest usable views accepted (Zhang's method needs at least 3 for a full K).
+    estimate_skew : bool
+        After OpenCV (which has no skew), refine all parameters with the skew K[0, 1] free by
+        Levenberg–Marquardt on the collinearity equations (Zhang 2000, §3.3).
     """
 
     fix_k3: bool = True
@@ -150,6 +153,7 @@ class ZhangParams:
     max_rounds: int = 3
     subpix_window: int = 5
     min_views: int = 3
+    estimate_skew: bool = False
 
 
 def board_points(cols: int, rows: int, square: float) -> np.ndarray:
@@ -302,14 +306,9 @@ def calibrate_zhang(
         rounds += 1
         op = [o.astype(np.float32) for o in objs]
         ip = [v[1].astype(np.float32).reshape(-1, 1, 2) for v in views]
-        K0 = None
-        if params.fix_aspect:
-            K0 = np.eye(3)
-            flags_use = flags
-        else:
-            flags_use = flags
+        K0 = np.eye(3) if params.fix_aspect else None  # FIX_ASPECT_RATIO keeps the ratio of K0 (1)
         rms, K, dist, rvecs, tvecs, std_in, std_ex, per_view = cv2.calibrateCameraExtended(
-            op, ip, tuple(int(s) for s in image_size), K0, None, flags=flags_use, criteria=crit
+            op, ip, tuple(int(s) for s in image_size), K0, None, flags=flags, criteria=crit
         )
         per_view = np.asarray(per_view).ravel()
         med = float(np.median(per_view))
@@ -328,6 +327,13 @@ def calibrate_zhang(
     dist = np.asarray(dist, dtype=float).ravel()
     d5 = np.zeros(5)
     d5[: min(5, dist.size)] = dist[:5]
+    skew = 0.0
+    s_in = np.asarray(std_in, dtype=float).ravel()
+    std_skew = None
+    if params.estimate_skew:
+        K, skew, d5, rvecs, tvecs, rms, per_view, s_in, std_skew = _refine_with_skew(
+            objs, [v[1] for v in views], K, d5, rvecs, tvecs, params
+        )
     cam = Camera(
         width=int(image_size[0]),
         height=int(image_size[1]),
@@ -335,13 +341,14 @@ def calibrate_zhang(
         fy=float(K[1, 1]),
         cx=float(K[0, 2]),
         cy=float(K[1, 2]),
-        skew=float(K[0, 1]),
+        skew=float(skew),
         dist=tuple(float(x) for x in d5),
         model="OPENCV",
     )
-    s = np.asarray(std_in, dtype=float).ravel()
     names = ["fx", "fy", "cx", "cy", "k1", "k2", "p1", "p2", "k3"]
-    std = {n: float(s[i]) for i, n in enumerate(names) if i < s.size}
+    std = {n: float(s_in[i]) for i, n in enumerate(names) if i < s_in.size}
+    if std_skew is not None:
+        std["skew"] = float(std_skew)
     per_image, poses = [], {}
     for (name, pts), o, rv, tv, e in zip(views, objs, rvecs, tvecs, per_view):
         R, _ = cv2.Rodrigues(rv)
@@ -355,11 +362,73 @@ def calibrate_zhang(
         per_image=per_image,
         dropped=dropped,
         poses=poses,
-        meta={"views_used": len(views), "rounds": rounds, "fix_k3": params.fix_k3},
+        meta={"views_used": len(views), "rounds": rounds, "fix_k3": params.fix_k3, "skew_estimated": params.estimate_skew},
     )
     if not np.isfinite(rms) or cam.fx <= 0 or cam.fy <= 0:
         raise StageError("calibrate", "OpenCV returned an invalid camera", "check the board size and corner order")
     return result
+
+
+def _refine_with_skew(objs, pix, K, d5, rvecs, tvecs, params: ZhangParams):
+    """Joint LM refinement of fx, fy, cx, cy, skew, the free distortion terms and every view's
+    pose, started from OpenCV's solution (scipy ``least_squares``, MINPACK Levenberg–Marquardt)."""
+    from scipy.optimize import least_squares
+
+    from .collinearity import rotvec_to_matrix
+
+    free_d = [0, 1] + ([] if params.fix_tangential else [2, 3]) + ([] if params.fix_k3 else [4])
+    ni = 5 + len(free_d)
+    V = len(objs)
+    x0 = [K[0, 0], K[1, 1], K[0, 2], K[1, 2], 0.0] + [d5[i] for i in free_d]
+    for rv, tv in zip(rvecs, tvecs):
+        x0 += list(np.ravel(rv)) + list(np.ravel(tv))
+    x0 = np.array(x0, dtype=float)
+    counts = [len(o) for o in objs]
+
+    def unpack(x):
+        d = np.zeros(5)
+        d[free_d] = x[5:ni]
+        return Camera(1, 1, x[0], x[1], x[2], x[3], x[4], tuple(d))
+
+    def resid(x):
+        cam = unpack(x)
+        out = []
+        for k in range(V):
+            p = x[ni + 6 * k : ni + 6 * k + 6]
+            pose = Pose(rotvec_to_matrix(p[:3]), p[3:])
+            out.append((project(objs[k], cam, pose) - pix[k]).ravel())
+        return np.concatenate(out)
+
+    m = 2 * sum(counts)
+    if params.fix_aspect:
+        raise InvalidInputError("fix_aspect and estimate_skew cannot be combined", field="estimate_skew")
+    sol = least_squares(resid, x0, method="lm", xtol=1e-10, ftol=1e-10, max_nfev=200 * (ni + 6 * V))
+    x = sol.x
+    r = sol.fun
+    J = sol.jac.toarray() if hasattr(sol.jac, "toarray") else np.asarray(sol.jac)
+    dof = max(m - len(x), 1)
+    s0 = r @ r / dof
+    try:
+        sd = np.sqrt(np.clip(np.diag(s0 * np.linalg.inv(J.T @ J)), 0, None))
+    except np.linalg.LinAlgError:
+        sd = np.full(len(x), np.nan)
+    Kn = np.array([[x[0], x[4], x[2]], [0, x[1], x[3]], [0, 0, 1.0]])
+    d = np.zeros(5)
+    d[free_d] = x[5:ni]
+    s_in = np.zeros(9)
+    s_in[:4] = sd[:4]
+    order = [4, 5, 6, 7, 8]  # k1 k2 p1 p2 k3 slots after fx fy cx cy
+    for j, i in enumerate(free_d):
+        s_in[order[i]] = sd[5 + j]
+    rv = [x[ni + 6 * k : ni + 6 * k + 3] for k in range(V)]
+    tv = [x[ni + 6 * k + 3 : ni + 6 * k + 6] for k in range(V)]
+    per_view, r0 = [], 0
+    for c in counts:
+        rr = r[r0 : r0 + 2 * c].reshape(-1, 2)
+        per_view.append(float(np.sqrt(np.mean(np.sum(rr**2, axis=1)))))
+        r0 += 2 * c
+    rms = float(np.sqrt(np.mean(r.reshape(-1, 2) ** 2) * 2))
+    return Kn, float(x[4]), d, rv, tv, rms, np.array(per_view), s_in, float(sd[4])
 
 
 def calibrate_zhang_images(
