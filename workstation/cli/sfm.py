@@ -22,12 +22,13 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--max-image-size", type=int, default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
 @click.option("--max-features", type=int, default=8192, show_default=True, help="SIFT features per image.")
 @click.option("--camera-model", default="SIMPLE_RADIAL", show_default=True, help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...).")
-@click.option("--no-principal-point", is_flag=True, help="Skip the final bundle adjustment that frees the principal point.")
+@click.option("--no-principal-point", is_flag=True, help="Keep the principal point fixed in the final bundle adjustment.")
+@click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
 @click.option("--sigma-px", type=float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Random seed (-1 = random).")
 @overwrite_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, sigma_px, seed, overwrite, as_json):
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
@@ -64,7 +65,7 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
     params = SfMParams(
         matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
         camera_model=camera_model, refine_intrinsics=refine_intrinsics,
-        refine_principal_point=not no_principal_point, seed=seed,
+        refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
     )
     result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
     wd = Path(workdir)

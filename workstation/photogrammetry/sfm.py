@@ -60,7 +60,14 @@ class SfMParams:
     refine_intrinsics : bool
         With a given camera: refine it in the bundle adjustments instead of keeping it fixed.
     refine_principal_point : bool
-        Free the principal point in a final bundle adjustment when the intrinsics are refined.
+        Free the principal point in the final bundle adjustment when the intrinsics are refined.
+    final_ba : bool
+        Run one final bundle adjustment of the largest model with a robust loss (below), the
+        intrinsics free when self-calibrated (principal point included), fixed otherwise.
+    final_ba_loss : str
+        Ceres loss of the final adjustment: "CAUCHY", "SOFT_L1", "HUBER" or "TRIVIAL".
+    final_ba_loss_scale : float
+        Scale of the robust loss, pixels (residuals beyond it are down-weighted).
     seed : int
         Random seed (RANSAC, initial pair choice) for repeatable runs; -1 leaves it random.
     num_threads : int
@@ -77,6 +84,9 @@ class SfMParams:
     single_camera: bool = True
     refine_intrinsics: bool = False
     refine_principal_point: bool = True
+    final_ba: bool = True
+    final_ba_loss: str = "CAUCHY"
+    final_ba_loss_scale: float = 1.0
     seed: int = 0
     num_threads: int = -1
 
@@ -285,15 +295,23 @@ def run_sfm(
     ordered = sorted(recs.values(), key=lambda r: (r.num_reg_images(), r.num_points3D()), reverse=True)
     best = ordered[0]
 
-    # --- final bundle adjustment with the principal point ---------------------------------
+    # --- final robust bundle adjustment (principal point free when self-calibrating) ---------
     t0 = time.perf_counter()
-    if not fixed and params.refine_principal_point:
+    if params.final_ba:
         bopt = pycolmap.BundleAdjustmentOptions()
-        bopt.refine_principal_point = True
-        bopt.refine_focal_length = True
-        bopt.refine_extra_params = True
+        bopt.refine_focal_length = not fixed
+        bopt.refine_extra_params = not fixed
+        bopt.refine_principal_point = (not fixed) and params.refine_principal_point
         bopt.print_summary = False
-        log.info("final bundle adjustment with the principal point free")
+        try:
+            bopt.ceres.loss_function_type = getattr(pycolmap.LossFunctionType, params.final_ba_loss.upper())
+        except AttributeError:
+            raise InvalidInputError(f"unknown loss {params.final_ba_loss!r}", field="final_ba_loss") from None
+        bopt.ceres.loss_function_scale = float(params.final_ba_loss_scale)
+        log.info(
+            "final bundle adjustment (%s loss, %.2g px%s)",
+            params.final_ba_loss, params.final_ba_loss_scale, ", principal point free" if bopt.refine_principal_point else "",
+        )
         pycolmap.bundle_adjustment(best, bopt)
     timings["final_ba"] = time.perf_counter() - t0
 
