@@ -79,3 +79,15 @@ def test_materials_and_bad_recipe(tmp_path):
     bad.write_text('[scene]\nname = "x"\nbuildingz = 3\n')
     with pytest.raises(InvalidInputError, match="buildingz"):
         load_recipe(bad)
+
+
+def test_save_and_load_scene(tmp_path, demo_scene):
+    from workstation.lidar.scene import load_scene, save_scene
+
+    p = save_scene(demo_scene, tmp_path / "scene.npz")
+    back = load_scene(p)
+    for k in ("vertices", "faces", "classification", "material", "object_id", "face_rgb", "origin"):
+        assert np.array_equal(getattr(back, k), getattr(demo_scene, k)), k
+    assert back.meta["objects"] == demo_scene.meta["objects"] and back.materials == demo_scene.materials
+    with pytest.raises(InvalidInputError):
+        save_scene(demo_scene, tmp_path / "scene.ply")
