@@ -128,7 +128,7 @@ def write_raster(
     overviews : bool
         Build internal overviews (factors 2, 4, 8... until the smaller side is under one tile).
     photometric : str, optional
-        ``RGB`` for 3-band 8-bit images.
+        ``RGB`` for 3-band 8-bit images (a 4th band is written as alpha).
     """
     rasterio = _rasterio()
     from rasterio.enums import Resampling
@@ -158,6 +158,8 @@ def write_raster(
         profile["crs"] = rasterio.crs.CRS.from_user_input(raster.crs)
     if photometric:
         profile["photometric"] = photometric
+        if photometric.upper() == "RGB" and bands == 4:
+            profile["alpha"] = "YES"  # 4th band is an alpha mask (0 = no data)
     factors = []
     f = 2
     while overviews and min(rows, cols) / f >= blocksize / 2:
