@@ -102,7 +102,7 @@ class AerialScene:
         y = np.asarray(Y, float) - self.origin[1]
         n = self._value_noise(x, y, 3, 3.0)
         tiles = 0.5 + 0.5 * np.sin(2 * np.pi * y / 4.0)
-        return np.clip(np.stack([0.75 + 0.2 * n, 0.15 + 0.15 * tiles, 0.12 + 0.1 * n], -1), 0, 1)
+        return np.clip(np.stack([0.75 + 0.2 * n, 0.05 + 0.1 * tiles, 0.1 + 0.1 * n], -1), 0, 1)
 
     WALL = (0.35, 0.35, 0.38)
 

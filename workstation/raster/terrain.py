@@ -70,6 +70,9 @@ def horn_gradient(raster: Raster, z_factor: float = 1.0) -> tuple[np.ndarray, np
     gx = ((c + 2 * f + i) - (a + 2 * d + g)) / (8.0 * rx)
     # rows grow southwards: north minus south
     gy = ((a + 2 * b + c) - (g + 2 * h + i)) / (8.0 * ry)
+    hole = np.isnan(z)  # Horn's stencil skips the centre; a missing centre stays missing
+    gx[hole] = np.nan
+    gy[hole] = np.nan
     return gx, gy
 
 

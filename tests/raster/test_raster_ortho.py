@@ -1,0 +1,134 @@
+"""True orthophoto: projection, occlusion, and the synthetic-aerial goals (shift, colour, roof edges)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from workstation.core.products import Camera, Pose, Raster, Reconstruction
+from workstation.raster.ortho import OrthoParams, project_points, read_reconstruction, true_ortho
+from workstation.raster.synthetic_aerial import AerialRig, AerialScene, camera_rays, make_dataset, undistort
+
+SCENE = AerialScene(size=100.0, buildings=((25.0, 30.0, 45.0, 48.0, 12.0), (60.0, 55.0, 78.0, 80.0, 18.0)))
+RIG = AerialRig(height=60.0, width=160, height_px=120, focal_px=150.0)
+RES = 0.5
+
+
+@pytest.fixture(scope="module")
+def dataset(tmp_path_factory):
+    d = tmp_path_factory.mktemp("aerial")
+    js = make_dataset(d, SCENE, RIG)
+    return read_reconstruction(js), SCENE.true_dsm(RES)
+
+
+def roof_mask(rgb):
+    return (rgb[..., 0] > 150) & (rgb[..., 1] < 56)
+
+
+def test_project_points_matches_opencv(rng):
+    cv2 = pytest.importorskip("cv2")
+    cam = Camera(640, 480, 500.0, 510.0, 320.5, 239.0, 0.0, (-0.1, 0.02, 0.001, -0.002, 0.003))
+    rvec = np.array([0.1, -0.2, 0.05])
+    R = cv2.Rodrigues(rvec)[0]
+    t = np.array([0.3, -0.1, 5.0])
+    X = rng.uniform(-2, 2, (50, 3))
+    uv, depth = project_points(cam, Pose(R, t), X)
+    ref = cv2.projectPoints(X, rvec, t, cam.K, np.array(cam.dist))[0][:, 0]
+    np.testing.assert_allclose(uv, ref, atol=1e-6)
+    np.testing.assert_allclose(depth, (X @ R.T + t)[:, 2])
+    # the renderer's inverse model: undistort(project(X)) is the pinhole ray of X
+    xc = X @ R.T + t
+    np.testing.assert_allclose(undistort(cam, uv), xc[:, :2] / xc[:, 2:], atol=1e-7)
+
+
+def test_rig_has_the_planned_overlap():
+    poses = RIG.poses(SCENE)
+    centres = np.array([p.center for p in poses])
+    xs, ys = np.unique(centres[:, 0].round(3)), np.unique(centres[:, 1].round(3))
+    fw, fh = RIG.height * RIG.width / RIG.focal_px, RIG.height * RIG.height_px / RIG.focal_px
+    assert np.diff(xs).mean() == pytest.approx(0.4 * fw, rel=1e-6)  # 60 % forward overlap
+    assert np.diff(ys).mean() == pytest.approx(0.7 * fh, rel=1e-6)  # 30 % side overlap
+    d = camera_rays(RIG.camera(), 1)
+    assert d.shape == (RIG.height_px, RIG.width, 3) and np.allclose(np.linalg.norm(d, axis=2), 1)
+
+
+def test_true_ortho_goals(dataset):
+    from scipy.ndimage import binary_erosion, distance_transform_edt
+
+    rec, dsm = dataset
+    res = true_ortho(rec, dsm, OrthoParams())
+    o = res.ortho.array
+    assert o.shape[0] == 4 and o.dtype == np.uint8
+    seen = o[3] > 0
+    assert seen.mean() > 0.9
+    rgb = o[:3].transpose(1, 2, 0)
+    truth = SCENE.true_ortho(RES)
+    err = np.abs(rgb.astype(float) - truth)[seen].mean()
+    assert err <= 12.0  # mean colour error ≤ 12/255
+    cv2 = pytest.importorskip("cv2")
+    g1 = cv2.cvtColor(np.ascontiguousarray(rgb), cv2.COLOR_RGB2GRAY).astype(float) * seen
+    g2 = cv2.cvtColor(truth, cv2.COLOR_RGB2GRAY).astype(float) * seen
+    (dx, dy), _ = cv2.phaseCorrelate(g1, g2)
+    assert np.hypot(dx, dy) <= 1.0  # geometric shift ≤ 1 cell
+    # roof edges: the roof-coloured area matches the footprints within one cell
+    X, Y = dsm.cell_centers()
+    fp = SCENE.footprints(X, Y) >= 0
+    edge = fp ^ binary_erosion(fp)
+    dist = distance_transform_edt(~edge)
+    wrong = (roof_mask(rgb) ^ fp) & seen
+    assert dist[wrong].max(initial=0) <= 1.0
+    assert res.meta["accuracy_rms_m"] == 0.0  # exact DSM and orientation of the synthetic rig
+
+
+def test_ortho_over_terrain_only_leans_and_fails_the_edge_check(dataset):
+    """The edge check can fail: over a bare-terrain 'DSM' roofs are displaced (relief displacement)."""
+    from scipy.ndimage import binary_erosion, distance_transform_edt
+
+    rec, dsm = dataset
+    X, Y = dsm.cell_centers()
+    dtm = Raster(SCENE.terrain(X, Y).astype(np.float32), dsm.transform, dsm.crs)
+    o = true_ortho(rec, dtm, OrthoParams()).ortho.array
+    rgb = o[:3].transpose(1, 2, 0)
+    fp = SCENE.footprints(X, Y) >= 0
+    edge = fp ^ binary_erosion(fp)
+    dist = distance_transform_edt(~edge)
+    assert dist[(roof_mask(rgb) ^ fp) & (o[3] > 0)].max() > 2.0
+
+
+def test_occlusion_matches_exact_ray_casting(dataset):
+    rec, dsm = dataset
+    # one image far off-nadir of the tall building: its hidden ground must be nodata
+    k = max(rec.images, key=lambda i: -np.linalg.norm(rec.images[i].pose.center[:2] - [SCENE.origin[0] + 69, SCENE.origin[1] + 67.5]))
+    one = Reconstruction(rec.cameras, {k: rec.images[k]}, crs=rec.crs)
+    params = OrthoParams(max_off_nadir=80.0)
+    seen = true_ortho(one, dsm, params).ortho.array[3] > 0
+    ghost = true_ortho(one, dsm, OrthoParams(max_off_nadir=80.0, occlusion=False)).ortho.array[3] > 0
+    X, Y = dsm.cell_centers()
+    Z = dsm.array.astype(float)
+    P = np.column_stack([X.ravel(), Y.ravel(), Z.ravel() + 0.05])
+    C = rec.images[k].pose.center
+    d = C - P
+    dist = np.linalg.norm(d, axis=1)
+    hit, kind = SCENE.cast(P, d / dist[:, None])
+    hidden = ((kind >= 0) & (np.linalg.norm(hit - P, axis=1) < dist - 0.5)).reshape(X.shape)
+    inview = ghost  # cells inside the image footprint
+    assert hidden[inview].sum() > 100  # the building really hides ground in this view
+    agree = (seen == ~hidden)[inview].mean()
+    assert agree > 0.97
+    assert seen.sum() < ghost.sum()
+
+
+def test_cameras_json_round_trip(tmp_path, dataset):
+    from workstation.raster.ortho import write_reconstruction_json
+
+    rec, _ = dataset
+    p = write_reconstruction_json(rec, tmp_path / "cams.json")
+    back = read_reconstruction(p)
+    assert back.cameras[1] == rec.cameras[1]
+    k = next(iter(rec.images))
+    np.testing.assert_allclose(back.images[k].pose.R, rec.images[k].pose.R)
+    from workstation.core.errors import InvalidInputError
+
+    (tmp_path / "bad.json").write_text("{}")
+    with pytest.raises(InvalidInputError):
+        read_reconstruction(tmp_path / "bad.json")
