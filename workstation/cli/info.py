@@ -29,6 +29,10 @@ def info(file, columns, density_cell, as_json):
     spacing of FILE."""
     from workstation.qc.summary import summarize
 
+    from workstation.io import format_of
+
+    if columns and format_of(file)[0] not in ("xyz", "txt", "csv", "pts"):
+        raise click.UsageError("--columns applies to text inputs (.xyz, .txt, .csv, .pts) only")
     opts = {"columns": columns} if columns else {}
     s = summarize(file, density_cell_m=density_cell, **opts)
     if as_json:
