@@ -3,6 +3,7 @@
     PYTHONPATH=. python scripts/bench_raster.py [--only dtm10m,contours,synthetic,real,ortho] [--docs-img docs/img]
 
 * dtm10m    — 1 m DTM (linear TIN) from 10 million in-memory points (wall and CPU seconds, peak RSS).
+* stream    — the same from a 10M-point LAZ streamed in 1M-point chunks (child-process peak RSS).
 * contours  — contour lines of a 4000×4000 DEM (40 levels), and the GeoJSON write.
 * synthetic — DTM accuracy against an analytic terrain with Gaussian noise and box buildings.
 * real      — bcts_1 + bcts_2 (../shared/data/lidar): DTM from a ground filter vs DTM from the
@@ -59,6 +60,31 @@ def bench_dtm10m():
     emit(bench="dtm_10M_points_1m", points=n, ground_points=int((c.attrs["classification"] == 2).sum()),
          cells=int(r.array.size), wall_s=round(wall, 2), cpu_s=round(cpu, 2), peak_rss_mb=round(rss1, 0),
          rss_before_mb=round(rss0, 0), goal_s=15.0)
+
+
+def bench_stream(tmp: Path):
+    """DTM of a 10M-point LAZ streamed in 1M-point chunks, in a child process (its peak RSS)."""
+    import subprocess
+
+    from workstation.io import write_cloud
+
+    rng = np.random.default_rng(2)
+    n, w = 10_000_000, 1000.0
+    x, y = rng.uniform(0, w, n), rng.uniform(0, w, n)
+    z = 100 + 5 * np.sin(x / 60) + 3 * np.cos(y / 45) + rng.normal(0, 0.05, n)
+    cls = rng.choice(np.array([1, 2, 5], np.uint8), n, p=[0.2, 0.6, 0.2])
+    path = tmp / "ten_million.laz"
+    write_cloud(Cloud(np.column_stack([x + 500_000, y + 5_000_000, z]), {"classification": cls}, crs="EPSG:32632"), path)
+    del x, y, z, cls
+    code = (
+        "import time,resource,json;from workstation.raster.dem import build_dem,DemParams;"
+        f"t=time.perf_counter();r=build_dem('{path}',DemParams(resolution=1.0),chunk_size=1_000_000);"
+        "print(json.dumps({'wall_s':round(time.perf_counter()-t,2),'cpu_s':round(time.process_time(),2),"
+        "'cells':int(r.array.size),'peak_rss_mb':round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss/1024)}))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(REPO)})
+    res = json.loads(out.stdout.strip().splitlines()[-1]) if out.returncode == 0 else {"error": out.stderr[-500:]}
+    emit(bench="dtm_10M_points_streamed_laz", points=n, file_mb=round(path.stat().st_size / 2**20, 1), chunk_points=1_000_000, **res)
 
 
 def bench_contours(tmp: Path):
@@ -303,7 +329,7 @@ def bench_ortho(tmp: Path):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--only", default="dtm10m,contours,synthetic,real,ortho")
+    ap.add_argument("--only", default="dtm10m,stream,contours,synthetic,real,ortho")
     ap.add_argument("--docs-img", default=None)
     args = ap.parse_args()
     which = set(args.only.split(","))
@@ -319,6 +345,8 @@ def main():
             bench_contours(tmp)
         if "dtm10m" in which:
             bench_dtm10m()
+        if "stream" in which:
+            bench_stream(tmp)
 
 
 if __name__ == "__main__":

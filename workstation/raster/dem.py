@@ -241,8 +241,34 @@ class _Survey:
     vertical_rmse: float | None
 
 
+def _header_survey(source) -> _Survey | None:
+    """Bounds and CRS from LAS/LAZ headers alone (no point read), or None for other inputs."""
+    if isinstance(source, Cloud):
+        return None
+    paths = [source] if isinstance(source, (str, Path)) else list(source)
+    if not paths or not all(isinstance(p, (str, Path)) and Path(p).suffix.lower() in (".las", ".laz") for p in paths):
+        return None
+    from workstation.io.las import read_header
+
+    heads = [read_header(p) for p in paths]
+    lo = np.min([h["mins"] for h in heads], axis=0)
+    hi = np.max([h["maxs"] for h in heads], axis=0)
+    n = sum(h["point_count"] for h in heads)
+    if n == 0:
+        raise InvalidInputError("no points to grid", "check the input files")
+    crs = next((h["crs"] for h in heads if h["crs"]), None)
+    return _Survey((lo[0], lo[1], hi[0], hi[1]), n, 0, 0, 0.0, crs, None)
+
+
 def _survey(source, params: DemParams, chunk_size: int, need_area: bool = True) -> _Survey:
-    """One pass: bounds, counts and (``need_area``) occupied area (5 m coverage cells)."""
+    """One pass: bounds, counts and (``need_area``) occupied area (5 m coverage cells).
+
+    When only the bounds are needed and the inputs are LAS/LAZ files, the headers suffice.
+    """
+    if not need_area:
+        head = _header_survey(source)
+        if head is not None:
+            return head
     lo = np.full(3, np.inf)
     hi = np.full(3, -np.inf)
     n_all = n_first = n_ground = 0
