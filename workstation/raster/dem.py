@@ -99,7 +99,7 @@ class DemParams:
     pit_free_thresholds: tuple = (0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0)
     pit_free_max_edge: float | None = None
     ground_classes: tuple = (int(ASPRSClass.GROUND),)
-    tile: int = 1024
+    tile: int = 512
 
     def __post_init__(self):
         if self.kind not in KINDS:
