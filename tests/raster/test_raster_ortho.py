@@ -132,3 +132,23 @@ def test_cameras_json_round_trip(tmp_path, dataset):
     (tmp_path / "bad.json").write_text("{}")
     with pytest.raises(InvalidInputError):
         read_reconstruction(tmp_path / "bad.json")
+
+
+def test_colmap_model_reader_matches_pycolmap_projection(tmp_path, rng):
+    pycolmap = pytest.importorskip("pycolmap")
+    rec = pycolmap.Reconstruction()
+    cam = pycolmap.Camera.create_from_model_name(1, "OPENCV", 500.0, 640, 480)
+    cam.params = [500, 510, 320, 240, -0.1, 0.01, 0.001, -0.002]
+    rec.add_camera_with_trivial_rig(cam)
+    im = pycolmap.Image(name="a.png", camera_id=1, image_id=1)
+    rec.add_image_with_trivial_frame(im, pycolmap.Rigid3d(pycolmap.Rotation3d(np.array([0.1, 0.2, 0.3])), np.array([1.0, 2.0, 3.0])))
+    model = tmp_path / "work" / "sparse" / "0"
+    model.mkdir(parents=True)
+    (tmp_path / "work" / "images").mkdir()
+    rec.write(str(model))
+    ours = read_reconstruction(tmp_path / "work")
+    X = rng.uniform(-1, 1, (10, 3))
+    uv, _ = project_points(ours.cameras[1], ours.images[1].pose, X)
+    ref = np.array([rec.images[1].project_point(x) for x in X])
+    np.testing.assert_allclose(uv, ref - 0.5, atol=1e-6)  # COLMAP pixel centres sit at +0.5
+    assert ours.images[1].path == str(tmp_path / "work" / "images" / "a.png")
