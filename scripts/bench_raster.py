@@ -116,7 +116,7 @@ def bench_synthetic():
         cls[m] = int(ASPRSClass.BUILDING)
     xyz = np.column_stack([x, y, z + rng.normal(0, noise, n)])
     clean = np.column_stack([x, y, z])
-    for method in ("tin", "idw"):
+    for method in ("tin", "nn", "idw"):
         r = build_dem(Cloud(xyz, {"classification": cls}), DemParams(kind="dtm", resolution=1.0, method=method))
         r0 = build_dem(Cloud(clean, {"classification": cls}), DemParams(kind="dtm", resolution=1.0, method=method))
         X, Y = r.cell_centers()

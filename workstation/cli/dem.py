@@ -26,8 +26,8 @@ def _resolution(value: str):
               help="Surface: DSM (highest returns), DTM (ground TIN), CHM (DSM - DTM).")
 @click.option("--resolution", default="auto", show_default=True,
               help="Cell size in metres, or 'auto' (from the point spacing and the 3x vertical-RMSE rule).")
-@click.option("--method", type=click.Choice(["tin", "idw", "highest"]), default=None,
-              help="DTM: tin (default) or idw; DSM/CHM: highest (default) or tin (TIN of first returns).")
+@click.option("--method", type=click.Choice(["tin", "nn", "idw", "highest"]), default=None,
+              help="DTM: tin (default), nn (natural neighbour) or idw; DSM/CHM: highest (default) or tin (TIN of first returns).")
 @click.option("--vertical-rmse", type=float, default=None,
               help="Known vertical RMSE of the points in metres (3x rule for auto cells; contour default).")
 @click.option("--max-edge", type=float, default=None,

@@ -11,8 +11,9 @@ Methods
   averages the range noise — and interpolated linearly in a triangulated irregular network at
   every cell centre (lidR ``rasterize_terrain(tin())``, LAStools ``blast2dem``); holes left by
   buildings and water inside the hull are filled by the same TIN (see
-  :mod:`workstation.raster.grid`). ``method="idw"``: inverse-distance weighting of the k
-  nearest representatives (Shepard 1968), over the same cells the TIN covers.
+  :mod:`workstation.raster.grid`). ``method="nn"``: natural-neighbour interpolation by the
+  discrete Sibson algorithm (Park et al. 2006). ``method="idw"``: inverse-distance weighting
+  of the k nearest representatives (Shepard 1968). Both cover the same cells as the TIN.
 * CHM = DSM − DTM, clipped at 0. ``pit_free=True``: the pit-free algorithm of Khosravipour et
   al. (2014, PE&RS 80(9)): first returns normalised by the DTM, partial TINs of the returns
   above 0, 2, 5, 10, 15 ... m with triangles longer than a freeze distance dropped, and the
@@ -64,7 +65,8 @@ class DemParams:
         Cell size in CRS units (metres). None chooses it from the point spacing and the
         vertical RMSE (see :func:`auto_resolution`).
     method : str
-        DTM: ``"tin"`` (linear TIN, default) or ``"idw"``. DSM: ``"highest"`` (default) or
+        DTM: ``"tin"`` (linear TIN, default), ``"nn"`` (discrete Sibson natural neighbour)
+        or ``"idw"``. DSM: ``"highest"`` (default) or
         ``"tin"`` (TIN of first returns). CHM uses the DSM and DTM defaults.
     vertical_rmse : float or None
         Known vertical RMSE of the points in metres (for the 3× cell-size rule; stored in the
@@ -76,6 +78,9 @@ class DemParams:
         Exponent of inverse-distance weights (dimensionless).
     idw_k : int
         Neighbours for IDW.
+    nn_max_radius : float
+        Natural neighbour: cells farther than this many cells from every point take the TIN
+        value (bounds the O(r²) scatter of the discrete algorithm).
     pit_free : bool
         CHM by the pit-free algorithm instead of DSM − DTM.
     pit_free_thresholds : tuple of float
@@ -95,6 +100,7 @@ class DemParams:
     max_edge: float | None = None
     idw_power: float = 2.0
     idw_k: int = 8
+    nn_max_radius: float = 24.0
     pit_free: bool = False
     pit_free_thresholds: tuple = (0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0)
     pit_free_max_edge: float | None = None
@@ -104,11 +110,11 @@ class DemParams:
     def __post_init__(self):
         if self.kind not in KINDS:
             raise InvalidInputError(f"unknown kind '{self.kind}'", "use dsm, dtm or chm", field="kind")
-        ok = {"dsm": (None, "highest", "tin"), "dtm": (None, "tin", "idw"), "chm": (None, "highest", "tin")}
+        ok = {"dsm": (None, "highest", "tin"), "dtm": (None, "tin", "nn", "idw"), "chm": (None, "highest", "tin")}
         if self.method not in ok[self.kind]:
             raise InvalidInputError(
                 f"method '{self.method}' does not apply to a {self.kind}",
-                "DTM: tin or idw; DSM/CHM: highest or tin", field="method",
+                "DTM: tin, nn or idw; DSM/CHM: highest or tin", field="method",
             )
         if self.resolution is not None and not (self.resolution > 0):
             raise InvalidInputError("resolution must be positive", field="resolution")
@@ -374,12 +380,70 @@ def _idw(du, dv, z, valid, cells: np.ndarray, k: int, power: float) -> np.ndarra
     return out
 
 
+def _discrete_sibson(du, dv, z, valid, cells: np.ndarray, fallback: np.ndarray, max_radius: float) -> np.ndarray:
+    """Discrete Sibson (natural-neighbour) interpolation of Park et al. (2006, IEEE TVCG 12(2)).
+
+    Every cell takes the value of its nearest data point and scatters it to all cells within
+    the distance to that point; a cell's value is the mean of what it receives. This equals
+    Sibson's area-stealing weights in the limit of fine cells. Cells farther than
+    ``max_radius`` cells from any point keep ``fallback`` (the TIN) and scatter only that far.
+    """
+    from scipy.spatial import cKDTree
+
+    R, C = z.shape
+    ii, jj = np.nonzero(valid)
+    tree = cKDTree(np.column_stack([jj + du[ii, jj], ii + dv[ii, jj]]))
+    qi, qj = np.nonzero(cells)
+    d, nb = tree.query(np.column_stack([qj, qi]).astype(float))
+    val = z[ii[nb], jj[nb]]
+    n = R * C
+    flat = qi * C + qj
+    total = np.bincount(flat, val, minlength=n)
+    count = np.bincount(flat, minlength=n).astype(float)
+    far = d > max_radius
+    order = np.argsort(-np.minimum(d, max_radius))
+    ds = np.minimum(d, max_radius)[order]
+    r = int(math.floor(ds[0])) if len(ds) else 0
+    oi, oj = np.mgrid[-r : r + 1, -r : r + 1]
+    L = np.hypot(oi, oj).ravel()
+    keep = (L > 0) & (L <= r)
+    offs = sorted(zip(L[keep], oi.ravel()[keep], oj.ravel()[keep]))
+    bt, bv = [], []
+    pending = 0
+    for length, di, dj in offs:
+        m = int(np.searchsorted(-ds, -length, side="right"))  # cells whose disc reaches this offset
+        if m == 0:
+            continue
+        src = order[:m]
+        ti, tj = qi[src] + di, qj[src] + dj
+        ok = (ti >= 0) & (ti < R) & (tj >= 0) & (tj < C)
+        bt.append(ti[ok] * C + tj[ok])
+        bv.append(val[src][ok])
+        pending += int(ok.sum())
+        if pending > 4_000_000:
+            t, v = np.concatenate(bt), np.concatenate(bv)
+            total += np.bincount(t, v, minlength=n)
+            count += np.bincount(t, minlength=n)
+            bt, bv, pending = [], [], 0
+    if bt:
+        t, v = np.concatenate(bt), np.concatenate(bv)
+        total += np.bincount(t, v, minlength=n)
+        count += np.bincount(t, minlength=n)
+    out = np.full(n, np.nan)
+    out[flat] = total[flat] / count[flat]
+    out = out.reshape(R, C)
+    out[qi[far], qj[far]] = fallback[qi[far], qj[far]]
+    return out
+
+
 def _surface(acc, method: str, params: DemParams, res: float) -> np.ndarray:
     du, dv, z, valid = acc.reps()
     max_edge = None if params.max_edge is None else params.max_edge / res
     tin = tin_surface(du, dv, z, valid, max_edge, params.tile)
     if method == "idw":
         return _idw(du, dv, z, valid, np.isfinite(tin), params.idw_k, params.idw_power)
+    if method == "nn":
+        return _discrete_sibson(du, dv, z, valid, np.isfinite(tin), tin, params.nn_max_radius)
     return tin
 
 
