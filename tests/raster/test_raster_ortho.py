@@ -152,3 +152,21 @@ def test_colmap_model_reader_matches_pycolmap_projection(tmp_path, rng):
     ref = np.array([rec.images[1].project_point(x) for x in X])
     np.testing.assert_allclose(uv, ref - 0.5, atol=1e-6)  # COLMAP pixel centres sit at +0.5
     assert ours.images[1].path == str(tmp_path / "work" / "images" / "a.png")
+
+
+def test_points_folded_back_by_distortion_are_not_seen():
+    from workstation.raster.ortho import _max_radius2, _project
+
+    from workstation.core.errors import StageError
+    from workstation.core.products import Image
+
+    cam = Camera(200, 200, 200.0, 200.0, 99.5, 99.5, 0.0, (-0.1, 0.0, 0.0, 0.0, 0.0))
+    pose = Pose(np.eye(3), np.zeros(3))
+    X = np.array([[3.0, 0.0, 1.0]])  # 72° off-axis: r - 0.1 r³ = 0.3 maps it back inside the image
+    uv, depth, r2 = _project(cam, pose, X)
+    assert 0 <= uv[0, 0] <= 199 and depth[0] > 0
+    assert r2[0] > 1.1 * _max_radius2(cam)  # ...so true_ortho rejects it
+    rec = Reconstruction({1: cam}, {1: Image("a", 1, Pose(np.diag([1.0, -1.0, -1.0]), np.array([0.0, 0.0, 1.0])))})
+    dsm = Raster(np.zeros((4, 4), np.float32), (0.25, 0, 2.5, 0, -0.25, 0.5))  # X 2.5-3.5: folded or outside
+    with pytest.raises(StageError, match="no DSM cell is seen"):
+        true_ortho(rec, dsm, OrthoParams(max_off_nadir=89.0), images={1: np.zeros((200, 200, 3), np.uint8)})

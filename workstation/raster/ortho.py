@@ -73,6 +73,12 @@ def project_points(camera: Camera, pose: Pose, X: np.ndarray) -> tuple[np.ndarra
     >>> uv.round(2).tolist(), d.tolist()
     ([[49.5, 49.5], [59.5, 49.5]], [10.0, 10.0])
     """
+    uv, z, _ = _project(camera, pose, X)
+    return uv, z
+
+
+def _project(camera: Camera, pose: Pose, X: np.ndarray):
+    """:func:`project_points` plus the squared radius of the undistorted normalised point."""
     X = np.asarray(X, dtype=np.float64)
     xc = X @ np.asarray(pose.R, float).T + np.asarray(pose.t, float)
     z = xc[:, 2]
@@ -86,7 +92,36 @@ def project_points(camera: Camera, pose: Pose, X: np.ndarray) -> tuple[np.ndarra
     yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y
     u = camera.fx * xd + camera.skew * yd + camera.cx
     v = camera.fy * yd + camera.cy
-    return np.column_stack([u, v]), z
+    return np.column_stack([u, v]), z, r2
+
+
+def undistort(camera: Camera, uv: np.ndarray, iterations: int = 20) -> np.ndarray:
+    """Normalised image coordinates (n, 2) of distorted pixels (fixed-point inversion of the
+    OpenCV model, as ``cv2.undistortPoints``; converges for the moderate distortion of
+    mapping cameras)."""
+    k1, k2, p1, p2, k3 = (tuple(camera.dist) + (0.0,) * 5)[:5]
+    yd = (uv[:, 1] - camera.cy) / camera.fy
+    xd = (uv[:, 0] - camera.cx - camera.skew * yd) / camera.fx
+    x, y = xd.copy(), yd.copy()
+    for _ in range(iterations):
+        r2 = x * x + y * y
+        radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3))
+        dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x)
+        dy = p1 * (r2 + 2 * y * y) + 2 * p2 * x * y
+        x = (xd - dx) / radial
+        y = (yd - dy) / radial
+    return np.column_stack([x, y])
+
+
+def _max_radius2(camera: Camera) -> float:
+    """Squared normalised radius of the farthest image border point: beyond it the distortion
+    polynomial may fold points back into the image, so they are treated as unseen."""
+    w, h = camera.width - 1, camera.height - 1
+    t = np.linspace(0, 1, 9)
+    border = np.vstack([np.column_stack([t * w, np.zeros(9)]), np.column_stack([t * w, np.full(9, h)]),
+                        np.column_stack([np.zeros(9), t * h]), np.column_stack([np.full(9, w), t * h])])
+    xy = undistort(camera, border)
+    return float((xy ** 2).sum(1).max())
 
 
 # --------------------------------------------------------------------------- reconstruction IO
@@ -217,7 +252,7 @@ class OrthoParams:
         RMS orientation/reprojection error in pixels (default the reconstruction's
         ``reprojection_rmse_px`` meta, else 0.5 px).
     tile : int
-        Ortho tile size in cells (bounds memory).
+        Ortho tile size in cells (bounds memory); images that cannot see a tile are skipped.
     """
 
     resolution: float | None = None
@@ -227,7 +262,7 @@ class OrthoParams:
     max_off_nadir: float = 45.0
     dsm_rmse: float | None = None
     orientation_px: float | None = None
-    tile: int = 1024
+    tile: int = 512
 
 
 @dataclass(frozen=True)
@@ -293,6 +328,16 @@ def _occluded(P: np.ndarray, C: np.ndarray, dsm: np.ndarray, grid: GridSpec, zma
     return occ
 
 
+def _misses(cam: Camera, pose: Pose, box: np.ndarray) -> bool:
+    """True when the 8 corners of a tile's (X, Y, Z) box all project to one side outside the
+    image (the tile cannot be seen); False when unsure (a corner behind the camera)."""
+    uv, depth = project_points(cam, pose, box)
+    if (depth <= 0).any():
+        return False
+    u, v = uv[:, 0], uv[:, 1]
+    return bool((u < 0).all() or (u > cam.width - 1).all() or (v < 0).all() or (v > cam.height - 1).all())
+
+
 def _bilinear_sample(img: np.ndarray, uv: np.ndarray) -> np.ndarray:
     import cv2
 
@@ -350,6 +395,7 @@ def true_ortho(rec: Reconstruction, dsm: Raster, params: OrthoParams = OrthoPara
     used = set()
     cache: dict = dict(images or {})
     centres = {k: im.pose.center for k, im in rec.images.items()}
+    rmax2 = {cid: _max_radius2(cam) for cid, cam in rec.cameras.items()}
     cos_max = math.cos(math.radians(params.max_off_nadir))
     T = params.tile
     for r0 in range(0, og.rows, T):
@@ -365,15 +411,19 @@ def true_ortho(rec: Reconstruction, dsm: Raster, params: OrthoParams = OrthoPara
             if len(idx) == 0:
                 continue
             P = np.column_stack([X[idx], Y[idx], Z[idx]])
+            box = np.array([[x, y, z] for x in (P[:, 0].min(), P[:, 0].max()) for y in (P[:, 1].min(), P[:, 1].max())
+                            for z in (P[:, 2].min(), P[:, 2].max())])
             views = []
             for k, im in rec.images.items():
                 cam = rec.cameras[im.camera_id]
-                uv, depth = project_points(cam, im.pose, P)
+                if _misses(cam, im.pose, box):
+                    continue
+                uv, depth, r2 = _project(cam, im.pose, P)
                 C = centres[k]
                 d = C[None, :] - P
                 cos_t = d[:, 2] / np.linalg.norm(d, axis=1)
                 vis = (depth > 0) & (uv[:, 0] >= 0) & (uv[:, 0] <= cam.width - 1) & (uv[:, 1] >= 0) & (uv[:, 1] <= cam.height - 1)
-                vis &= cos_t >= cos_max
+                vis &= (cos_t >= cos_max) & (r2 <= 1.1 * rmax2[im.camera_id])
                 if not vis.any():
                     continue
                 sel = np.flatnonzero(vis)

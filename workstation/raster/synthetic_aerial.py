@@ -21,6 +21,7 @@ import numpy as np
 from workstation.core.products import Camera, Image, Pose, Raster, Reconstruction
 
 from .grid import GridSpec
+from .ortho import undistort
 
 
 @dataclass(frozen=True)
@@ -275,24 +276,6 @@ def camera_rays(camera: Camera, supersample: int = 1) -> np.ndarray:
     d = np.column_stack([und, np.ones(len(und))])
     d /= np.linalg.norm(d, axis=1, keepdims=True)
     return d.reshape(camera.height * s, camera.width * s, 3)
-
-
-def undistort(camera: Camera, uv: np.ndarray, iterations: int = 20) -> np.ndarray:
-    """Normalised image coordinates (n, 2) of distorted pixels (fixed-point inversion of the
-    OpenCV model, as ``cv2.undistortPoints``; converges for the moderate distortion of
-    mapping cameras)."""
-    k1, k2, p1, p2, k3 = (tuple(camera.dist) + (0.0,) * 5)[:5]
-    yd = (uv[:, 1] - camera.cy) / camera.fy
-    xd = (uv[:, 0] - camera.cx - camera.skew * yd) / camera.fx
-    x, y = xd.copy(), yd.copy()
-    for _ in range(iterations):
-        r2 = x * x + y * y
-        radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3))
-        dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x)
-        dy = p1 * (r2 + 2 * y * y) + 2 * p2 * x * y
-        x = (xd - dx) / radial
-        y = (yd - dy) / radial
-    return np.column_stack([x, y])
 
 
 def render_image(scene: AerialScene, camera: Camera, pose: Pose, supersample: int = 2, caster=None, rays=None) -> np.ndarray:
