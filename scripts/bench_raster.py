@@ -63,7 +63,9 @@ def bench_dtm10m():
 
 
 def bench_stream(tmp: Path):
-    """DTM of a 10M-point LAZ streamed in 1M-point chunks, in a child process (its peak RSS)."""
+    """DTM of a 10M-point LAZ streamed in 1M-point chunks, in a child process.
+
+    Peak memory is the child's VmHWM (reset at exec; ``ru_maxrss`` would carry the parent's)."""
     import subprocess
 
     from workstation.io import write_cloud
@@ -77,10 +79,11 @@ def bench_stream(tmp: Path):
     write_cloud(Cloud(np.column_stack([x + 500_000, y + 5_000_000, z]), {"classification": cls}, crs="EPSG:32632"), path)
     del x, y, z, cls
     code = (
-        "import time,resource,json;from workstation.raster.dem import build_dem,DemParams;"
+        "import time,json;from workstation.raster.dem import build_dem,DemParams;"
         f"t=time.perf_counter();r=build_dem('{path}',DemParams(resolution=1.0),chunk_size=1_000_000);"
         "print(json.dumps({'wall_s':round(time.perf_counter()-t,2),'cpu_s':round(time.process_time(),2),"
-        "'cells':int(r.array.size),'peak_rss_mb':round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss/1024)}))"
+        "'cells':int(r.array.size),'peak_rss_mb':[round(int(l.split()[1])/1024) for l in open('/proc/self/status')"
+        " if l.startswith('VmHWM')][0]}))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(REPO)})
     res = json.loads(out.stdout.strip().splitlines()[-1]) if out.returncode == 0 else {"error": out.stderr[-500:]}
