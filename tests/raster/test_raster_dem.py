@@ -153,6 +153,11 @@ def test_dsm_chm_and_pit_free(rng):
     row, col, _ = g.cell_index(c.xyz[:, 0], c.xyz[:, 1])
     k = np.flatnonzero((row == 30) & (col == 80))
     assert dsm.array[30, 80] == pytest.approx(c.xyz[k, 2].max(), abs=1e-4)
+    tin = build_dem(c.with_attrs(return_number=np.ones(c.n, np.uint8)), DemParams(kind="dsm", resolution=1.0, method="tin"))
+    assert abs(np.nanmedian(tin.array[roof]) - top) < 0.1 and np.isfinite(tin.array[roof]).all()
+    # --max-edge: voids wider than the limit stay nodata (no made-up ground under buildings)
+    holes = build_dem(c, DemParams(kind="dtm", resolution=1.0, max_edge=5.0)).array
+    assert np.isnan(holes[roof]).all() and np.isfinite(holes[~building_mask(X, Y)]).mean() > 0.99
     chm = build_dem(c, DemParams(kind="chm", resolution=1.0))
     assert abs(np.nanmedian(chm.array[roof]) - 20) < 0.3
     assert np.nanmin(chm.array) >= 0 and np.nanmedian(chm.array[~building_mask(X, Y)]) < 0.1
