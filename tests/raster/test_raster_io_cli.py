@@ -30,6 +30,7 @@ def test_geotiff_round_trip_layout(tmp_path):
         assert src.profile["tiled"] and src.profile["blockxsize"] == 256
         assert src.compression.name.lower() == "deflate"
         assert src.overviews(1) == [2, 4]
+        assert src.tags(ns="IMAGE_STRUCTURE").get("LAYOUT") == "COG"
         assert src.read(1)[3, 4] == -9999.0
     with pytest.raises(OutputExistsError):
         write_raster(r, p)

@@ -116,6 +116,8 @@ class DemParams:
                 f"method '{self.method}' does not apply to a {self.kind}",
                 "DTM: tin, nn or idw; DSM/CHM: highest or tin", field="method",
             )
+        if self.pit_free and self.kind != "chm":
+            raise InvalidInputError("the pit-free algorithm makes a CHM", "use --kind chm", field="pit_free")
         if self.resolution is not None and not (self.resolution > 0):
             raise InvalidInputError("resolution must be positive", field="resolution")
 
