@@ -539,7 +539,73 @@ def _pit_free(source, grid: GridSpec, dtm: np.ndarray, params: DemParams, chunk_
     return np.maximum(chm, 0.0)
 
 
-def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None) -> Raster:
+_REC = np.dtype([("x", "f8"), ("y", "f8"), ("z", "f8"), ("cls", "u1"), ("rn", "u1")])
+
+
+def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, tile: int, buffer: int) -> tuple[np.ndarray, int]:
+    """Out-of-core gridding: points are spilled to one temporary file per tile (with a
+    ``buffer``-cell overlap) in a single streaming pass, then each tile is gridded on its own
+    and its core written into the output. Memory: one tile's points and grids, plus the
+    float32 output. The TIN of a cell depends on its neighbourhood only (lattice) and on the
+    rims of the voids around it, so tiles agree with the untiled result wherever voids are
+    smaller than the buffer."""
+    import tempfile
+
+    tiles = [(r0, min(r0 + tile, grid.rows), c0, min(c0 + tile, grid.cols))
+             for r0 in range(0, grid.rows, tile) for c0 in range(0, grid.cols, tile)]
+    out = np.full(grid.shape, np.nan, np.float32)
+    n_used = 0
+    has_cls = has_rn = False
+    with tempfile.TemporaryDirectory(prefix="ws_dem_tiles_") as tmp:
+        files = [Path(tmp) / f"t{k}.bin" for k in range(len(tiles))]
+        for c in _iter_clouds(source, chunk_size):
+            if c.n == 0:
+                continue
+            keep = _noise_free(c)
+            cls_a, rn_a = c.get("classification"), c.get("return_number")
+            has_cls |= cls_a is not None
+            has_rn |= rn_a is not None
+            rec = np.empty(int(keep.sum()), _REC)
+            xyz = c.xyz[keep]
+            rec["x"], rec["y"], rec["z"] = xyz[:, 0], xyz[:, 1], xyz[:, 2]
+            rec["cls"] = cls_a[keep] if cls_a is not None else 0
+            rec["rn"] = rn_a[keep] if rn_a is not None else 1
+            row, col, inside = grid.cell_index(rec["x"], rec["y"])
+            for k, (r0, r1, c0, c1) in enumerate(tiles):
+                m = inside & (row >= r0 - buffer) & (row < r1 + buffer) & (col >= c0 - buffer) & (col < c1 + buffer)
+                if m.any():
+                    with open(files[k], "ab") as f:
+                        rec[m].tofile(f)
+        for k, (r0, r1, c0, c1) in enumerate(tiles):
+            if not files[k].exists():
+                continue
+            rec = np.fromfile(files[k], _REC)
+            files[k].unlink()
+            attrs = {}
+            if has_cls:
+                attrs["classification"] = rec["cls"]
+            if has_rn:
+                attrs["return_number"] = rec["rn"]
+            ra, rb = max(r0 - buffer, 0), min(r1 + buffer, grid.rows)
+            ca, cb = max(c0 - buffer, 0), min(c1 + buffer, grid.cols)
+            sub = GridSpec(grid.x0 + ca * grid.res, grid.y1 - ra * grid.res, grid.res, rb - ra, cb - ca)
+            cloud = Cloud(np.column_stack([rec["x"], rec["y"], rec["z"]]), attrs)
+            try:
+                r = build_dem(cloud, params, chunk_size=chunk_size, grid=sub, tile_cells=0)
+            except StageError:
+                continue  # no ground or no valid cell in this tile: it stays nodata
+            out[r0:r1, c0:c1] = r.array[r0 - ra : r1 - ra, c0 - ca : c1 - ca]
+            n_used += int(r.meta["points"])
+    if (params.kind in ("dtm", "chm")) and not has_cls:
+        raise InvalidInputError(
+            "the cloud has no classification, so ground points are unknown",
+            "classify ground first (ws ground IN -o OUT) or build a DSM", field="classification",
+        )
+    return out, n_used
+
+
+def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None,
+              tile_cells: int = 4096, buffer_cells: int = 128) -> Raster:
     """Grid a DSM, DTM or CHM from a cloud, a file or several files (one mosaic).
 
     Parameters
@@ -549,6 +615,12 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     params : DemParams
     grid : GridSpec, optional
         Output grid; default: aligned to multiples of the cell size over the data bounds.
+    tile_cells : int
+        File inputs whose grid has more than ``tile_cells``² cells are gridded out of core by
+        tiles of that many cells a side, overlapping by ``buffer_cells`` (0: never tile).
+    buffer_cells : int
+        Overlap of the tiles in cells; voids (buildings, lakes) narrower than this are filled
+        exactly as in a single pass.
 
     Returns
     -------
@@ -588,13 +660,26 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         raise InvalidInputError(
             f"grid of {grid.rows}×{grid.cols} cells is too large", "use a coarser --resolution or split the input"
         )
+    crs = survey.crs if survey else None
+    if tile_cells and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells:
+        arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
+        if not np.isfinite(arr).any():
+            raise StageError("dem", f"the {kind} has no valid cell", "check the input extent and resolution")
+        meta = {
+            "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
+            "resolution": res, "resolution_reason": reason, "points": n_used, "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
+            "seconds": round(time.perf_counter() - t0, 3),
+            "params": {k: v for k, v in asdict(params).items() if v is not None},
+        }
+        if vrmse:
+            meta["vertical_rmse"] = float(vrmse)
+        return Raster(arr, grid.transform, crs, -9999.0, meta)
     need_ground = kind in ("dtm", "chm")
     need_top = kind in ("dsm", "chm") and not (kind == "chm" and params.pit_free)
     top_first = method == "tin"
     gacc = _MeanAcc(grid) if need_ground else None
     tacc = _MaxAcc(grid) if need_top else None
     n_used = 0
-    crs = survey.crs if survey else None
     for c in _iter_clouds(source, chunk_size):
         if c.n == 0:
             continue
