@@ -27,7 +27,10 @@ Methods
 
 Large inputs are streamed in chunks (``workstation.io.iter_chunks``): each chunk is reduced
 into per-cell accumulators (count and sums, or the maximum and its position), so memory is
-bounded by the raster, not by the point count; the TIN is then built tile by tile.
+bounded by the raster, not by the point count; the TIN is then built tile by tile. Grids of
+more than ``tile_cells``² cells from files are built out of core: one pass spills the points
+into per-tile temporary files (tiles overlap by ``buffer_cells``), then each tile is gridded
+alone, so memory is bounded by the tile.
 """
 
 from __future__ import annotations
