@@ -21,6 +21,7 @@ log = get_logger(__name__)
 STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
     ("LiDAR simulation: ALS flight and TLS stations", "workstation.pipeline.demo_steps.simulate:step"),
+    ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
 ]
 
 
