@@ -93,6 +93,10 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     assert doc["intrinsics"] == "fixed" and doc["cameras"]["1"]["fx"] == pytest.approx(K[0, 0])
     assert doc["mean_reprojection_error_px"] < 1.0 and doc["points"] > 100
     assert (tmp_path / "work/sparse/0/images.bin").exists() and (tmp_path / "work/database.db").exists()
+    from workstation.io import read_cloud
+
+    cloud = read_cloud(doc["sparse_cloud"])
+    assert cloud.n == doc["points"] and cloud.attrs["rgb"].max() > 0
     geo = doc["georef"]["metrics"]
     assert geo["control_n"] == 5 and geo["check_n"] == 4
     assert geo["check_rmse_3d"] < 0.002, geo  # metres, on an object 0.16 m across

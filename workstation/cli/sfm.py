@@ -32,17 +32,15 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
-    reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud when
-    PLY output is available) and WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
+    reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud) and
+    WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
     model in the survey frame) and WORKDIR/georef_report.json (control and check residuals,
     RMSE, CE90/LE90, DEM cell size and contour interval supported).
     """
     from workstation.core.errors import InvalidInputError
-    from workstation.core.log import get_logger
     from workstation.io.atomic import atomic_path
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
 
-    log = get_logger("workstation.cli.sfm")
     camera = None
     if camera_file:
         from workstation.io.camera import read_camera
@@ -70,13 +68,10 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
     result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
     wd = Path(workdir)
     out = result.to_dict()
-    try:
-        from workstation.io import write_cloud
+    from workstation.io import write_cloud
 
-        write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
-        out["sparse_cloud"] = str(wd / "sparse.ply")
-    except Exception as e:  # noqa: BLE001 - PLY writer may not be on this branch yet
-        log.warning("sparse cloud not written as PLY (%s); the model is in sparse/0", e)
+    write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
+    out["sparse_cloud"] = str(wd / "sparse.ply")
     s = result.summary
     click.echo(
         f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
