@@ -68,6 +68,10 @@ class SfMParams:
         Ceres loss of the final adjustment: "CAUCHY", "SOFT_L1", "HUBER" or "TRIVIAL".
     final_ba_loss_scale : float
         Scale of the robust loss, pixels (residuals beyond it are down-weighted).
+    max_principal_point_shift : float
+        Largest accepted move of the principal point from the image centre in the final
+        adjustment, as a fraction of the longer image side; beyond it the geometry is too weak
+        (few or narrow views) and the adjustment is repeated with the principal point fixed.
     seed : int
         Random seed (RANSAC, initial pair choice) for repeatable runs; -1 leaves it random.
     num_threads : int
@@ -87,6 +91,7 @@ class SfMParams:
     final_ba: bool = True
     final_ba_loss: str = "CAUCHY"
     final_ba_loss_scale: float = 1.0
+    max_principal_point_shift: float = 0.1
     seed: int = 0
     num_threads: int = -1
 
@@ -295,6 +300,7 @@ def run_sfm(
     ordered = sorted(recs.values(), key=lambda r: (r.num_reg_images(), r.num_points3D()), reverse=True)
     best = ordered[0]
 
+    summary_notes: list[str] = []
     # --- final robust bundle adjustment (principal point free when self-calibrating) ---------
     t0 = time.perf_counter()
     if params.final_ba:
@@ -312,7 +318,21 @@ def run_sfm(
             "final bundle adjustment (%s loss, %.2g px%s)",
             params.final_ba_loss, params.final_ba_loss_scale, ", principal point free" if bopt.refine_principal_point else "",
         )
+        backup = pycolmap.Reconstruction(best) if bopt.refine_principal_point else None
         pycolmap.bundle_adjustment(best, bopt)
+        if backup is not None:
+            drift = _principal_point_drift(best)
+            if drift > params.max_principal_point_shift:
+                # too few or too narrow views constrain the principal point: keep it central
+                log.warning(
+                    "principal point moved %.1f %% of the image size in the final adjustment (limit %.1f %%): "
+                    "weak geometry; kept at the centre instead",
+                    100 * drift, 100 * params.max_principal_point_shift,
+                )
+                best = backup
+                bopt.refine_principal_point = False
+                pycolmap.bundle_adjustment(best, bopt)
+                summary_notes.append("principal point not estimated (weakly constrained)")
     timings["final_ba"] = time.perf_counter() - t0
 
     # --- write in COLMAP layout: sparse/0 = largest ---------------------------------------
@@ -346,10 +366,21 @@ def run_sfm(
         "intrinsics": "fixed" if fixed else ("refined from given" if camera is not None else "self-calibrated"),
         "cameras": {str(k): _camera_summary(c) for k, c in rec.cameras.items()},
         "timings_s": timings,
+        "notes": summary_notes,
     }
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
+
+
+def _principal_point_drift(rec) -> float:
+    """Largest distance of a camera's principal point from its image centre, as a fraction of
+    the longer image side (COLMAP pixel convention: centre at width/2, height/2)."""
+    worst = 0.0
+    for c in rec.cameras.values():
+        d = np.hypot(c.principal_point_x - c.width / 2, c.principal_point_y - c.height / 2) / max(c.width, c.height)
+        worst = max(worst, float(d))
+    return worst
 
 
 def _camera_summary(c: Camera) -> dict:
