@@ -1,0 +1,598 @@
+"""LAS / LAZ 1.0-1.4, point formats 0-10, through laspy (+ lazrs for LAZ).
+
+Reading streams the file in chunks into preallocated arrays, so peak memory is the output
+arrays plus one chunk. Every standard dimension becomes a canonical attribute (see
+:mod:`workstation.core.dims`), extra-byte dimensions keep their own names (scaled values when
+the extra-byte definition has scales), and everything needed to write the same file again
+(version, point format, scales, offsets, VLRs, EVLRs, extra-byte definitions, header fields)
+goes into ``Cloud.meta["las"]`` so that read -> write -> read is exact.
+
+Known upstream limitation: lazrs 0.8 corrupts wave-packet fields of LAZ point formats 9 and
+10 when the scanner channel changes from one point to the next (plain LAS is exact).
+
+Writing chooses the point format and version from the attributes present unless told, or
+keeps the ones the cloud was read with when its attributes still fit.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Iterator
+
+import numpy as np
+
+from workstation.core.cloud import Cloud
+from workstation.core.dims import DIMS, LAS_FLAGS
+from workstation.core.errors import InvalidInputError
+from workstation.core.log import get_logger
+
+log = get_logger(__name__)
+
+CHUNK_LAS = 262_144  # uncompressed: small enough that per-field copies stay in cache
+CHUNK_LAZ = 1_048_576  # compressed: large enough for lazrs to decompress chunks in parallel
+SCAN_ANGLE_UNIT = 0.006  # degrees per unit of the LAS 1.4 (formats 6-10) scan angle
+_DEFAULT_SCALE = 0.001  # metres (or feet) for projected CRSs
+_GEOGRAPHIC_SCALE = 1e-7  # degrees
+
+# LAS dimension name -> canonical attribute name (per-point scalar dims only; rgb handled apart)
+_LAS_TO_ATTR = {d.las[0]: d.name for d in DIMS.values() if len(d.las) == 1}
+_LAS_TO_ATTR["scan_angle_rank"] = "scan_angle"
+_SKIP = {"X", "Y", "Z", "red", "green", "blue"}
+
+# Standard dims each point format carries, as canonical names.
+_RGB_FORMATS = {2, 3, 5, 7, 8, 10}
+_GPS_FORMATS = {1, 3, 4, 5, 6, 7, 8, 9, 10}
+_NIR_FORMATS = {8, 10}
+_WAVE_FORMATS = {4, 5, 9, 10}
+_WAVE_ATTRS = ("wavepacket_index", "wavepacket_offset", "wavepacket_size", "return_point_wave_location", "x_t", "y_t", "z_t")
+
+
+def _laspy():
+    import laspy
+
+    return laspy
+
+
+def _format_attrs(fmt: int) -> set[str]:
+    """Canonical attribute names a point format stores natively."""
+    names = {
+        "intensity", "return_number", "number_of_returns", "scan_direction_flag", "edge_of_flight_line",
+        "classification", "synthetic", "key_point", "withheld", "scan_angle", "user_data", "point_source_id",
+    }
+    if fmt >= 6:
+        names |= {"overlap", "scanner_channel"}
+    if fmt in _GPS_FORMATS:
+        names.add("gps_time")
+    if fmt in _RGB_FORMATS:
+        names.add("rgb")
+    if fmt in _NIR_FORMATS:
+        names.add("nir")
+    if fmt in _WAVE_FORMATS:
+        names |= set(_WAVE_ATTRS)
+    return names
+
+
+def choose_point_format(attrs, legacy: bool = False) -> int:
+    """Smallest point format that stores the attributes natively.
+
+    LAS 1.4 formats (6-10) unless ``legacy`` (then 0-5 for LAS 1.2/1.3 readers).
+
+    Examples
+    --------
+    >>> choose_point_format({"intensity"}), choose_point_format({"rgb"}), choose_point_format({"rgb", "nir"})
+    (6, 7, 8)
+    >>> choose_point_format({"gps_time", "rgb"}, legacy=True)
+    3
+    """
+    attrs = set(attrs)
+    wave = bool(attrs & set(_WAVE_ATTRS))
+    if legacy and not attrs & {"nir", "overlap", "scanner_channel"}:
+        rgb, gps = "rgb" in attrs, "gps_time" in attrs
+        if wave:
+            return 5 if rgb else 4
+        return {(False, False): 0, (False, True): 1, (True, False): 2, (True, True): 3}[(rgb, gps)]
+    if wave:
+        return 10 if attrs & {"rgb", "nir"} else 9
+    if "nir" in attrs:
+        return 8
+    return 7 if "rgb" in attrs else 6
+
+
+def _version_for(fmt: int, wanted: str | None) -> str:
+    minimum = "1.4" if fmt >= 6 else ("1.3" if fmt in (4, 5) else ("1.2" if fmt in (2, 3) else "1.0"))
+    if wanted is None:
+        return "1.4" if fmt >= 6 else max(minimum, "1.2")
+    if wanted < minimum:
+        return minimum
+    return wanted
+
+
+# ---------------------------------------------------------------------------------------
+# reading
+
+
+def _wrap_open_error(path, exc) -> InvalidInputError:
+    text = str(exc)
+    if "signature" in text.lower() or "LASF" in text:
+        return InvalidInputError(
+            "not a LAS/LAZ file (the first 4 bytes are not 'LASF')", "check that the file is LAS or LAZ and not renamed", path=path
+        )
+    return InvalidInputError(f"cannot read the LAS header: {text}", "the file may be truncated or corrupt", path=path)
+
+
+def _check_point_bytes(path: Path, header) -> None:
+    """For uncompressed LAS, compare the header's point count with the bytes present."""
+    if header.are_points_compressed:
+        return
+    size = path.stat().st_size
+    rl = header.point_format.size
+    end = size
+    if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0) and header.start_of_first_evlr:
+        end = min(size, header.start_of_first_evlr)
+    available = max(0, end - header.offset_to_point_data) // rl
+    n = header.point_count
+    if available < n:
+        raise InvalidInputError(
+            f"header says {n:,} points but the file holds only {available:,} (truncated)",
+            "get a complete copy of the file",
+            path=path,
+            field="point_count",
+        )
+    if available > n:
+        raise InvalidInputError(
+            f"header says {n:,} points but the file holds {available:,}",
+            "the header is inconsistent; repair it (e.g. rewrite the file with a LAS tool) so no points are lost",
+            path=path,
+            field="point_count",
+        )
+
+
+def _vlr_records(vlrs) -> list[dict]:
+    out = []
+    for v in vlrs:
+        try:
+            data = v.record_data_bytes() if hasattr(v, "record_data_bytes") else bytes(v.record_data)
+        except Exception:  # a VLR laspy cannot serialise back: keep nothing rather than garbage
+            log.warning("VLR %s/%s could not be kept", v.user_id, v.record_id)
+            continue
+        out.append({"user_id": v.user_id, "record_id": int(v.record_id), "description": v.description, "data": data})
+    return out
+
+
+def _crs_string(header, path) -> str | None:
+    try:
+        crs = header.parse_crs()
+    except Exception as exc:  # malformed CRS records: keep the points, say so
+        log.warning("%s: CRS records could not be parsed (%s); CRS left unset", path, exc)
+        return None
+    if crs is None:
+        return None
+    epsg = crs.to_epsg(min_confidence=100)
+    return f"EPSG:{epsg}" if epsg else crs.to_wkt()
+
+
+def _extra_defs(header) -> list[dict]:
+    defs = []
+    for d in header.point_format.extra_dimensions:
+        dt = d.dtype
+        base = dt.base if dt.shape else dt
+        defs.append(
+            {
+                "name": d.name,
+                "type": (f"{dt.shape[0]}{base.str[1:]}" if dt.shape else base.str[1:]),
+                "description": d.description or "",
+                "scales": None if d.scales is None else np.asarray(d.scales, dtype=float).tolist(),
+                "offsets": None if d.offsets is None else np.asarray(d.offsets, dtype=float).tolist(),
+                "no_data": None if getattr(d, "no_data", None) is None else np.asarray(d.no_data).tolist(),
+            }
+        )
+    return defs
+
+
+def _header_meta(header, path) -> dict:
+    return {
+        "version": str(header.version),
+        "point_format": int(header.point_format.id),
+        "scales": [float(s) for s in header.scales],
+        "offsets": [float(o) for o in header.offsets],
+        "vlrs": _vlr_records([v for v in header.vlrs if not _is_managed_vlr(v)]),
+        "extra_dims": _extra_defs(header),
+        "system_identifier": header.system_identifier,
+        "generating_software": header.generating_software,
+        "file_source_id": int(header.file_source_id),
+        "creation_date": None if header.creation_date is None else header.creation_date.isoformat(),
+        "global_encoding_gps_standard": bool(header.global_encoding.gps_time_type.value),
+        "compressed": bool(header.are_points_compressed),
+        "header_point_count": int(header.point_count),
+    }
+
+
+def _is_managed_vlr(v) -> bool:
+    """VLRs laspy writes itself (extra bytes, LASzip)."""
+    return (v.user_id == "LASF_Spec" and v.record_id == 4) or v.user_id == "laszip encoded"
+
+
+def _is_crs_vlr(rec: dict) -> bool:
+    return rec["user_id"] == "LASF_Projection" and rec["record_id"] in (34735, 34736, 34737, 2111, 2112)
+
+
+class _Filler:
+    """Preallocated output arrays filled chunk by chunk."""
+
+    def __init__(self, header, n: int):
+        pf = header.point_format
+        self.fmt = pf.id
+        self.scales = np.asarray(header.scales, dtype=np.float64)
+        self.offsets = np.asarray(header.offsets, dtype=np.float64)
+        self.xyz = np.empty((n, 3), dtype=np.float64)
+        self.attrs: dict[str, np.ndarray] = {}
+        self.std = []
+        for name in pf.standard_dimension_names:
+            if name in _SKIP:
+                continue
+            canon = _LAS_TO_ATTR.get(name, name)
+            dt = DIMS[canon].dtype if canon in DIMS else np.dtype("f8")
+            self.attrs[canon] = np.empty(n, dtype=dt)
+            self.std.append((name, canon))
+        if "red" in set(pf.standard_dimension_names):
+            self.attrs["rgb"] = np.empty((n, 3), dtype=np.uint16)
+        self.extra = []
+        for d in pf.extra_dimensions:
+            scaled = d.scales is not None
+            dt = d.dtype
+            shape = dt.shape
+            base = np.dtype("f8") if scaled else (dt.base if shape else dt)
+            key = d.name
+            if key in self.attrs:
+                key = f"extra_{d.name}"
+            self.attrs[key] = np.empty((n, *shape), dtype=base)
+            self.extra.append((d.name, key, scaled))
+
+    def fill(self, rec, start: int) -> int:
+        arr = rec.array
+        m = len(arr)
+        end = start + m
+        for i, c in enumerate("XYZ"):
+            np.multiply(arr[c], self.scales[i], out=self.xyz[start:end, i])
+            self.xyz[start:end, i] += self.offsets[i]
+        for las_name, canon in self.std:
+            out = self.attrs[canon][start:end]
+            if las_name == "scan_angle":
+                np.multiply(arr["scan_angle"], SCAN_ANGLE_UNIT, out=out, casting="unsafe")
+            else:
+                out[...] = rec[las_name]
+        if "rgb" in self.attrs:
+            rgb = self.attrs["rgb"]
+            rgb[start:end, 0] = arr["red"]
+            rgb[start:end, 1] = arr["green"]
+            rgb[start:end, 2] = arr["blue"]
+        for las_name, key, scaled in self.extra:
+            self.attrs[key][start:end] = rec[las_name] if scaled else arr[las_name]
+        return end
+
+
+def _open(path):
+    laspy = _laspy()
+    try:
+        return laspy.open(str(path))
+    except laspy.errors.LaspyException as exc:
+        raise _wrap_open_error(path, exc) from None
+    except (ValueError, OSError, EOFError) as exc:
+        raise _wrap_open_error(path, exc) from None
+
+
+def _meta_and_crs(header, path):
+    meta = {"las": _header_meta(header, path), "format": "laz" if header.are_points_compressed else "las"}
+    return meta, _crs_string(header, path)
+
+
+def _records(reader, path, n: int, chunk_size: int):
+    """Point records chunk by chunk; corrupt or truncated data becomes an InvalidInputError."""
+    got = 0
+    it = reader.chunk_iterator(chunk_size)
+    while True:
+        try:
+            rec = next(it)
+        except StopIteration:
+            break
+        except Exception as exc:
+            raise InvalidInputError(
+                f"point data unreadable after {got:,} of {n:,} points: {exc}",
+                "the file is truncated or corrupt; get a complete copy",
+                path=path,
+            ) from None
+        got += len(rec)
+        if got > n:
+            raise InvalidInputError(f"file holds more points than the header's {n:,}", path=path, field="point_count")
+        yield rec
+    if got != n:
+        raise InvalidInputError(
+            f"header says {n:,} points but only {got:,} could be read (truncated)",
+            "get a complete copy of the file",
+            path=path,
+            field="point_count",
+        )
+
+
+def read(path, *, chunk_size: int | None = None) -> Cloud:
+    """Read a LAS or LAZ file.
+
+    Parameters
+    ----------
+    path : path-like
+    chunk_size : int, optional
+        Points decoded per step; bounds the temporary memory (default 262,144 for LAS,
+        1,048,576 for LAZ).
+
+    Returns
+    -------
+    Cloud
+        ``xyz`` absolute float64; attributes under canonical names; ``meta["las"]`` with
+        everything needed to write the file back exactly.
+    """
+    path = Path(path)
+    with _open(path) as reader:
+        header = reader.header
+        _check_point_bytes(path, header)
+        n = int(header.point_count)
+        if chunk_size is None:
+            chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
+        filler = _Filler(header, n)
+        got = 0
+        for rec in _records(reader, path, n, chunk_size):
+            got = filler.fill(rec, got)
+        meta, crs = _meta_and_crs(header, path)
+        if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0):
+            evlrs = reader.evlrs if reader.evlrs is not None else []
+            meta["las"]["evlrs"] = _vlr_records(evlrs)
+    meta["las"]["crs"] = crs
+    return Cloud.from_owned_arrays(filler.xyz, filler.attrs, crs=crs, meta=meta)
+
+
+def read_header(path) -> dict:
+    """Header facts without reading points: version, format, count, bounds, CRS, dims."""
+    path = Path(path)
+    with _open(path) as reader:
+        h = reader.header
+        return {
+            "version": str(h.version),
+            "point_format": int(h.point_format.id),
+            "point_count": int(h.point_count),
+            "mins": [float(v) for v in h.mins],
+            "maxs": [float(v) for v in h.maxs],
+            "scales": [float(v) for v in h.scales],
+            "offsets": [float(v) for v in h.offsets],
+            "compressed": bool(h.are_points_compressed),
+            "crs": _crs_string(h, path),
+            "dimensions": list(h.point_format.dimension_names),
+            "generating_software": h.generating_software,
+            "system_identifier": h.system_identifier,
+        }
+
+
+def iter_chunks(path, chunk_size: int = 1_000_000) -> Iterator[Cloud]:
+    """Stream a LAS/LAZ file as clouds of at most ``chunk_size`` points (memory: one chunk)."""
+    path = Path(path)
+    with _open(path) as reader:
+        header = reader.header
+        _check_point_bytes(path, header)
+        meta, crs = _meta_and_crs(header, path)
+        meta["las"]["crs"] = crs
+        for rec in _records(reader, path, int(header.point_count), chunk_size):
+            f = _Filler(header, len(rec))
+            f.fill(rec, 0)
+            yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
+
+
+# ---------------------------------------------------------------------------------------
+# writing
+
+
+def _is_geographic(crs: str | None) -> bool:
+    if not crs:
+        return False
+    try:
+        import pyproj
+
+        return pyproj.CRS.from_user_input(crs).is_geographic
+    except Exception:
+        return False
+
+
+def _fits(xyz_min, xyz_max, scales, offsets) -> bool:
+    lo = (xyz_min - offsets) / scales
+    hi = (xyz_max - offsets) / scales
+    lim = 2**31 - 1
+    return bool(np.all(lo >= -lim) and np.all(hi <= lim))
+
+
+def _scales_offsets(cloud: Cloud, las_meta: dict, scales, offsets):
+    if cloud.n:
+        lo, hi = cloud.xyz.min(axis=0), cloud.xyz.max(axis=0)
+    else:
+        lo = hi = np.zeros(3)
+    if scales is None:
+        scales = las_meta.get("scales") or [(_GEOGRAPHIC_SCALE if _is_geographic(cloud.crs) else _DEFAULT_SCALE)] * 3
+    scales = np.asarray(scales, dtype=np.float64).reshape(3)
+    if offsets is None:
+        offsets = las_meta.get("offsets")
+        if offsets is None or not _fits(lo, hi, scales, np.asarray(offsets, dtype=float)):
+            offsets = np.floor(lo / 1000.0) * 1000.0 if cloud.n else np.zeros(3)
+    offsets = np.asarray(offsets, dtype=np.float64).reshape(3)
+    if not _fits(lo, hi, scales, offsets):
+        raise InvalidInputError(
+            "coordinates do not fit LAS 32-bit integers at this scale",
+            f"use a coarser scale than {scales.tolist()}",
+            field="xyz",
+        )
+    return scales, offsets
+
+
+def _extra_params(laspy, cloud: Cloud, native: set, las_meta: dict):
+    defs = {d["name"]: d for d in las_meta.get("extra_dims", [])}
+    params = []
+    for name, arr in cloud.attrs.items():
+        if name in native:
+            continue
+        las_name = name[len("extra_"):] if name.startswith("extra_") and name[len("extra_"):] in defs else name
+        d = defs.get(las_name)
+        shape = arr.shape[1:]
+        if len(shape) > 1 or (shape and shape[0] > 3):
+            raise InvalidInputError(f"per-point shape {shape} cannot be a LAS extra-byte dimension", field=name)
+        if d is not None:
+            p = laspy.ExtraBytesParams(
+                name=las_name, type=d["type"], description=d["description"],
+                offsets=None if d["offsets"] is None else np.asarray(d["offsets"]),
+                scales=None if d["scales"] is None else np.asarray(d["scales"]),
+            )
+        else:
+            dt = arr.dtype
+            if dt.kind == "b":
+                dt = np.dtype("u1")
+            if dt.kind not in "iuf":
+                raise InvalidInputError(f"dtype {dt} cannot be a LAS extra-byte dimension", field=name)
+            typ = f"{shape[0]}{dt.str[1:]}" if shape else dt.str[1:]
+            p = laspy.ExtraBytesParams(name=las_name, type=typ, description=name[:31])
+        params.append((name, las_name, p))
+    return params
+
+
+def _resolve_format(cloud: Cloud, las_meta: dict, point_format, version):
+    attrs = set(cloud.attrs)
+    known_std = {a for a in attrs if a in DIMS and DIMS[a].las}
+    if point_format is None:
+        old = las_meta.get("point_format")
+        if old is not None and known_std <= _format_attrs(old):
+            point_format = old
+        else:
+            legacy = old is not None and old < 6
+            point_format = choose_point_format(known_std, legacy=legacy)
+    point_format = int(point_format)
+    if not 0 <= point_format <= 10:
+        raise InvalidInputError(f"LAS point format {point_format} does not exist (0-10)", field="point_format")
+    if version is None:
+        version = las_meta.get("version")
+    return point_format, _version_for(point_format, version)
+
+
+def write(
+    cloud: Cloud,
+    path,
+    *,
+    point_format: int | None = None,
+    version: str | None = None,
+    scales=None,
+    offsets=None,
+    compress: bool | None = None,
+    chunk_size: int | None = None,
+) -> None:
+    """Write a cloud as LAS or LAZ (by suffix unless ``compress`` says).
+
+    Parameters
+    ----------
+    point_format : int, optional
+        0-10; default: the format the cloud was read with when its attributes fit, else the
+        smallest LAS 1.4 format holding them (:func:`choose_point_format`).
+    version : str, optional
+        "1.0"-"1.4"; raised to what the point format needs.
+    scales, offsets : (3,) floats, optional
+        Coordinate quantisation; default: those read, else 0.001 (1e-7 for geographic CRSs)
+        and offsets rounded down to 1000 units.
+    compress : bool, optional
+        LAZ when True; default from the suffix of ``path`` (the registry writes to a
+        temporary path with the same suffix).
+    """
+    laspy = _laspy()
+    path = Path(path)
+    las_meta = dict(cloud.meta.get("las", {}))
+    fmt, ver = _resolve_format(cloud, las_meta, point_format, version)
+    scales, offsets = _scales_offsets(cloud, las_meta, scales, offsets)
+    if compress is None:
+        compress = path.suffix.lower() == ".laz"
+    if chunk_size is None:
+        chunk_size = CHUNK_LAZ if compress else CHUNK_LAS
+
+    header = laspy.LasHeader(point_format=fmt, version=ver)
+    header.scales = scales
+    header.offsets = offsets
+    native = _format_attrs(fmt)
+    extras = _extra_params(laspy, cloud, native, las_meta)
+    if extras:
+        header.add_extra_dims([p for _, _, p in extras])
+    for key in ("system_identifier", "generating_software"):
+        if las_meta.get(key):
+            setattr(header, key, las_meta[key][:32])
+    if not las_meta.get("generating_software"):
+        header.generating_software = "workstation"
+    if las_meta.get("file_source_id"):
+        header.file_source_id = int(las_meta["file_source_id"])
+    if las_meta.get("global_encoding_gps_standard"):
+        header.global_encoding.gps_time_type = laspy.header.GpsTimeType.STANDARD
+    if las_meta.get("creation_date"):
+        import datetime as _dt
+
+        header.creation_date = _dt.date.fromisoformat(las_meta["creation_date"])
+
+    crs_same = cloud.crs is not None and cloud.crs == las_meta.get("crs")
+    for rec in las_meta.get("vlrs", []):
+        if _is_crs_vlr(rec) and not crs_same:
+            continue
+        header.vlrs.append(laspy.VLR(rec["user_id"], rec["record_id"], rec["description"], rec["data"]))
+    if cloud.crs and not crs_same:
+        import pyproj
+
+        try:
+            header.add_crs(pyproj.CRS.from_user_input(cloud.crs))
+        except Exception as exc:
+            raise InvalidInputError(f"CRS cannot be written: {exc}", "give an EPSG code or WKT", field="crs") from None
+    evlrs = [laspy.VLR(r["user_id"], r["record_id"], r["description"], r["data"]) for r in las_meta.get("evlrs", [])]
+    if evlrs and ver == "1.4":
+        header.evlrs = laspy.VLRList(evlrs) if hasattr(laspy, "VLRList") else evlrs
+
+    classification = cloud.attrs.get("classification")
+    if fmt < 6 and classification is not None and classification.size and classification.max() > 31:
+        raise InvalidInputError(
+            f"class code {int(classification.max())} does not fit point format {fmt} (0-31)",
+            "write point format 6 or later (LAS 1.4)",
+            field="classification",
+        )
+
+    with laspy.open(str(path), mode="w", header=header, do_compress=compress) as writer:
+        for start in range(0, cloud.n, chunk_size):
+            end = min(cloud.n, start + chunk_size)
+            writer.write_points(_record(laspy, header, cloud, start, end, fmt, native, extras))
+
+
+def _record(laspy, header, cloud: Cloud, start: int, end: int, fmt: int, native: set, extras):
+    rec = laspy.ScaleAwarePointRecord.zeros(end - start, header=header)
+    arr = rec.array
+    xyz = cloud.xyz[start:end]
+    for i, c in enumerate("XYZ"):
+        arr[c] = np.round((xyz[:, i] - header.offsets[i]) / header.scales[i])
+    for name, values in cloud.attrs.items():
+        if name not in native:
+            continue
+        v = values[start:end]
+        if name == "rgb":
+            arr["red"], arr["green"], arr["blue"] = v[:, 0], v[:, 1], v[:, 2]
+        elif name == "scan_angle":
+            if fmt >= 6:
+                arr["scan_angle"] = np.clip(np.round(v / SCAN_ANGLE_UNIT), -32768, 32767)
+            else:
+                rec["scan_angle_rank"] = np.clip(np.round(v), -128, 127).astype(np.int8)
+        elif name in ("return_number", "number_of_returns"):
+            limit = 15 if fmt >= 6 else 7
+            if v.size and v.max() > limit:
+                raise InvalidInputError(
+                    f"value {int(v.max())} does not fit point format {fmt} (max {limit})",
+                    "write point format 6 or later" if fmt < 6 else "clip the value",
+                    field=name,
+                )
+            rec[name] = v
+        elif name in LAS_FLAGS or name in ("scan_direction_flag", "edge_of_flight_line"):
+            rec[name] = v.astype(bool) if name in LAS_FLAGS else v
+        else:
+            rec[name] = v
+    for name, las_name, p in extras:
+        rec[las_name] = cloud.attrs[name][start:end]
+    return rec

@@ -1,0 +1,103 @@
+"""Point density and nominal point spacing (ASPRS Positional Accuracy Standards 2014, §C.3).
+
+Density is given two ways: over occupied cells of a grid (default 1 m; voids and the area
+outside the data do not count, as the ASPRS aggregate nominal point density ANPD over the
+non-voided area) and over the footprint (the 2-D convex hull). The nominal point spacing is
+NPS = sqrt(1 / ANPD).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass
+class DensityAccumulator:
+    """Accumulates occupied cells and hull points over chunks of a large file.
+
+    Parameters
+    ----------
+    cell : float
+        Grid cell size in CRS units (1 m expressed in those units by the caller).
+    metres_per_unit : float
+        To express areas in m².
+    """
+
+    cell: float
+    metres_per_unit: float = 1.0
+    origin: np.ndarray | None = None
+    n: int = 0
+
+    def __post_init__(self):
+        self._keys = np.empty(0, dtype=np.int64)
+        self._hull = np.empty((0, 2))
+
+    def add(self, xy: np.ndarray) -> None:
+        """Add (m, 2) plan coordinates."""
+        if len(xy) == 0:
+            return
+        if self.origin is None:
+            self.origin = np.floor(xy.min(axis=0) / self.cell) * self.cell - 2**20 * self.cell
+        ij = np.floor((xy - self.origin) / self.cell).astype(np.int64)
+        keys = np.unique((ij[:, 0] << 32) + ij[:, 1])
+        self._keys = np.union1d(self._keys, keys)
+        self._hull = _hull_points(np.vstack([self._hull, xy]))
+        self.n += len(xy)
+
+    def result(self) -> dict:
+        """{points, occupied_cells, cell_size, occupied_area_m2, footprint_area_m2,
+        density_occupied, density_footprint, nps} with densities in points/m² and NPS in
+        CRS units."""
+        m2 = self.metres_per_unit**2
+        occ_area = self._keys.size * self.cell**2 * m2
+        hull_area = _hull_area(self._hull) * m2
+        d_occ = self.n / occ_area if occ_area > 0 else float("nan")
+        d_fp = self.n / hull_area if hull_area > 0 else float("nan")
+        nps_m = float(np.sqrt(1.0 / d_occ)) if d_occ > 0 else float("nan")
+        return {
+            "points": int(self.n),
+            "cell_size": float(self.cell),
+            "occupied_cells": int(self._keys.size),
+            "occupied_area_m2": float(occ_area),
+            "footprint_area_m2": float(hull_area),
+            "density_occupied": float(d_occ),
+            "density_footprint": float(d_fp),
+            "nps_m": nps_m,
+            "nps": nps_m / self.metres_per_unit if np.isfinite(nps_m) else float("nan"),
+        }
+
+
+def _hull_points(xy: np.ndarray) -> np.ndarray:
+    if len(xy) < 3:
+        return xy
+    from scipy.spatial import ConvexHull, QhullError
+
+    try:
+        h = ConvexHull(xy)
+    except (QhullError, ValueError):
+        return xy[[xy[:, 0].argmin(), xy[:, 0].argmax(), xy[:, 1].argmin(), xy[:, 1].argmax()]]
+    return xy[h.vertices]
+
+
+def _hull_area(hull: np.ndarray) -> float:
+    if len(hull) < 3:
+        return 0.0
+    x, y = hull[:, 0], hull[:, 1]
+    return float(0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+def density(xy: np.ndarray, cell: float = 1.0, metres_per_unit: float = 1.0) -> dict:
+    """Density figures for plan coordinates (n, 2) in one call (see :class:`DensityAccumulator`).
+
+    Examples
+    --------
+    >>> g = np.stack(np.meshgrid(np.arange(0, 10, 0.5), np.arange(0, 10, 0.5)), -1).reshape(-1, 2)
+    >>> r = density(g + 0.25)
+    >>> r["density_occupied"], r["nps"]
+    (4.0, 0.5)
+    """
+    acc = DensityAccumulator(cell, metres_per_unit)
+    acc.add(np.asarray(xy, dtype=np.float64)[:, :2])
+    return acc.result()

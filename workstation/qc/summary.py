@@ -1,0 +1,127 @@
+"""One pass over a point cloud file: what ``ws info`` shows.
+
+Streams the file in chunks (LAS/LAZ), so memory is bounded by one chunk plus the set of
+occupied density cells, whatever the file size.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from workstation.core.classes import class_name
+from workstation.io.crs import crs_info
+from workstation.io.registry import format_of, iter_chunks
+
+from .density import DensityAccumulator
+
+
+class _Range:
+    def __init__(self):
+        self.lo = None
+        self.hi = None
+
+    def add(self, a: np.ndarray):
+        if a.size == 0:
+            return
+        a2 = a.reshape(len(a), -1)
+        if a2.dtype.kind == "f":
+            lo, hi = np.nanmin(a2, axis=0), np.nanmax(a2, axis=0)
+        else:
+            lo, hi = a2.min(axis=0), a2.max(axis=0)
+        self.lo = lo if self.lo is None else np.minimum(self.lo, lo)
+        self.hi = hi if self.hi is None else np.maximum(self.hi, hi)
+
+
+def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0, **read_opts) -> dict:
+    """Header-level facts and statistics of a point cloud file.
+
+    Returns
+    -------
+    dict
+        ``format``, ``point_count``, ``bounds`` ({min, max}), ``crs`` ({name, epsg, unit} or
+        None), ``dimensions`` ({name: {dtype, min, max}}), ``classification``
+        ({code: count}, string codes), ``classification_names``, ``returns``
+        ({"r/n": count}), ``density`` (see :func:`workstation.qc.density.density`), ``nps``
+        (CRS units), plus ``las`` header facts for LAS/LAZ.
+    """
+    path = Path(path)
+    fmt, _ = format_of(path)
+    count = 0
+    lo = hi = None
+    ranges: dict[str, _Range] = {}
+    dtypes: dict[str, str] = {}
+    classes = np.zeros(256, dtype=np.int64)
+    returns: dict[str, int] = {}
+    acc = None
+    crs = None
+    meta = {}
+    for chunk in iter_chunks(path, chunk_size, **read_opts):
+        if acc is None:
+            crs = chunk.crs
+            meta = dict(chunk.meta)
+            info = crs_info(crs)
+            mpu = info.metres_per_unit if info else 1.0
+            acc = DensityAccumulator(density_cell_m / mpu, mpu)
+        if chunk.n == 0:
+            continue
+        count += chunk.n
+        clo, chi = chunk.xyz.min(axis=0), chunk.xyz.max(axis=0)
+        lo = clo if lo is None else np.minimum(lo, clo)
+        hi = chi if hi is None else np.maximum(hi, chi)
+        acc.add(chunk.xyz[:, :2])
+        for name, arr in chunk.attrs.items():
+            ranges.setdefault(name, _Range()).add(arr)
+            dtypes[name] = str(arr.dtype) + ("" if arr.ndim == 1 else f"x{arr.shape[1]}")
+        if "classification" in chunk.attrs:
+            classes += np.bincount(chunk.attrs["classification"], minlength=256)
+        if "return_number" in chunk.attrs and "number_of_returns" in chunk.attrs:
+            key = chunk.attrs["return_number"].astype(np.int32) * 256 + chunk.attrs["number_of_returns"]
+            k, c = np.unique(key, return_counts=True)
+            for kk, cc in zip(k.tolist(), c.tolist()):
+                s = f"{kk // 256}/{kk % 256}"
+                returns[s] = returns.get(s, 0) + cc
+    info = crs_info(crs)
+    dens = acc.result() if acc is not None and count else None
+    out = {
+        "file": str(path),
+        "format": fmt,
+        "point_count": int(count),
+        "bounds": None if lo is None else {"min": lo.tolist(), "max": hi.tolist()},
+        "crs": None if info is None else {"name": info.name, "epsg": info.epsg, "unit": info.unit},
+        "dimensions": {
+            k: {"dtype": dtypes[k], "min": _py(r.lo), "max": _py(r.hi)} for k, r in ranges.items()
+        },
+        "classification": {str(i): int(c) for i, c in enumerate(classes) if c},
+        "classification_names": {str(i): class_name(i) for i, c in enumerate(classes) if c},
+        "returns": dict(sorted(returns.items())),
+        "density": dens,
+        "nps": None if dens is None else dens["nps"],
+    }
+    las = meta.get("las")
+    if las:
+        out["las"] = {
+            "version": las.get("version"),
+            "point_format": las.get("point_format"),
+            "scales": las.get("scales"),
+            "offsets": las.get("offsets"),
+            "compressed": las.get("compressed"),
+            "generating_software": las.get("generating_software"),
+            "vlrs": [f"{v['user_id']}/{v['record_id']}" for v in las.get("vlrs", [])],
+            "extra_dims": [d["name"] for d in las.get("extra_dims", [])],
+        }
+        out["format_version"] = f"{'LAZ' if las.get('compressed') else 'LAS'} {las.get('version')} PDRF {las.get('point_format')}"
+    else:
+        out["format_version"] = fmt.upper()
+    return out
+
+
+def _py(a):
+    if a is None:
+        return None
+    a = np.asarray(a)
+    vals = a.tolist()
+    if a.size == 1:
+        vals = a.reshape(-1)[0].item()
+    return vals
