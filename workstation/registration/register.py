@@ -180,13 +180,15 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     elif fine_method == "voxel_plane":
         src_pts = xs if ps is None else np.asarray(ps.full.points)
         tgt_pts = xt if pt is None else np.asarray(pt.full.points)
-        plane_voxel = max(voxel / 2.0, 2.0 * estimate_spacing(tgt_pts))
+        plane_voxel = max(voxel / 2.0, 4.0 * estimate_spacing(tgt_pts))
         res = voxel_plane_icp(src_pts, tgt_pts, plane_voxel, T0, params.fine)
         src_full = points_to_legacy(src_pts)
         tgt_full = points_to_legacy(tgt_pts)
         res = _with_information(res, src_full, tgt_full, params.fine.schedule[-1] * voxel)
     else:
         res = refine(ps.full, pt.full, voxel, T0, params.fine)
+    if ps is not None:
+        res = _overlap(res, ps.full, pt.full, params.fine.schedule[0] * voxel)
     timings["fine"] = time.perf_counter() - t0
     timings["total"] = time.perf_counter() - t_start
 
@@ -199,6 +201,19 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     check_result(out, voxel, params)
     log.info("registered: fitness %.3f, rmse %.4g, %.1f s", out.fitness, out.inlier_rmse, timings["total"])
     return out
+
+
+def _overlap(res: RegistrationResult, src, tgt, d: float) -> RegistrationResult:
+    """Fitness as the share of source points with a target point within ``d`` (the widest ICP
+    distance): an overlap measure that does not depend on how densely both clouds sample the
+    surface, unlike the fitness at the finest ICP distance (kept in ``meta["fine_fitness"]``)."""
+    from workstation.interop.open3d import require_open3d
+
+    o3d = require_open3d()
+    ev = o3d.pipelines.registration.evaluate_registration(src, tgt, float(d), res.transform)
+    meta = dict(res.meta)
+    meta.update({"fine_fitness": res.fitness, "fitness_distance": float(d)})
+    return replace(res, fitness=float(ev.fitness), meta=meta)
 
 
 def _with_information(res: RegistrationResult, src, tgt, d: float) -> RegistrationResult:

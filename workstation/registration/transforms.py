@@ -52,15 +52,23 @@ def rotation_angle_deg(R: np.ndarray) -> float:
     return float(np.degrees(np.arccos(np.clip(c, -1.0, 1.0))))
 
 
-def transform_error(T_est: np.ndarray, T_true: np.ndarray) -> tuple[float, float]:
+def transform_error(T_est: np.ndarray, T_true: np.ndarray, center=None) -> tuple[float, float]:
     """(rotation error in degrees, translation error in units) between two transforms.
 
     The rotation error is the angle of ``R_true^T R_est``; the translation error is
-    ``|t_est - t_true|``, the usual convention of registration benchmarks (3DMatch, ETH).
+    ``|t_est - t_true|``, the usual convention of registration benchmarks (3DMatch, ETH), for
+    clouds near their frame's origin. With ``center`` (3,) it is the distance between the two
+    images of that point, ``|T_est(c) - T_true(c)|``: use the data's centroid for
+    georeferenced coordinates, where a tiny rotation error moves ``t`` by metres.
     """
     Re, te, _ = split_transform(T_est)
     Rt, tt, _ = split_transform(T_true)
-    return rotation_angle_deg(Rt.T @ Re), float(np.linalg.norm(te - tt))
+    if center is None:
+        terr = float(np.linalg.norm(te - tt))
+    else:
+        c = np.asarray(center, dtype=np.float64).reshape(1, 3)
+        terr = float(np.linalg.norm(apply_transform(T_est, c) - apply_transform(T_true, c)))
+    return rotation_angle_deg(Rt.T @ Re), terr
 
 
 def random_rotation(rng: np.random.Generator, max_angle_deg: float = 180.0) -> np.ndarray:
