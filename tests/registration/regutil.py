@@ -21,13 +21,19 @@ def shape_points(n: int = 6000, seed: int = 0) -> np.ndarray:
 
 
 def wavy_scene(n: int = 20000, seed: int = 0, size: float = 20.0) -> np.ndarray:
-    """A terrain-like surface with two box buildings (metres), for multi-scan tests."""
+    """A terrain of Gaussian hills with six box buildings of different sizes and heights
+    (metres); the geometry is fixed, ``seed`` only changes the sampling."""
     rng = np.random.default_rng(seed)
     x = rng.uniform(0, size, n)
     y = rng.uniform(0, size, n)
-    z = 0.6 * np.sin(x / 2.5) * np.cos(y / 3.0) + 0.2 * np.sin(x * y / 15.0)
-    b1 = (np.abs(x - 6) < 2) & (np.abs(y - 7) < 3)
-    b2 = (np.abs(x - 14) < 2.5) & (np.abs(y - 13) < 1.5)
-    z = np.where(b1, 3.0, z)
-    z = np.where(b2, 5.0 + 0.3 * (x - 14), z)
+    geo = np.random.default_rng(1234)
+    z = np.zeros(n)
+    for _ in range(8):
+        cx, cy = geo.uniform(0, size, 2)
+        h, s = geo.uniform(-1.0, 1.5), geo.uniform(1.5, 4.0)
+        z += h * np.exp(-((x - cx) ** 2 + (y - cy) ** 2) / (2 * s * s))
+    for cx, cy, hx, hy, h in [(4, 5, 1.5, 2.5, 3.0), (14, 4, 2.5, 1.0, 5.0), (10, 11, 1.0, 1.0, 7.0),
+                              (5, 15, 2.0, 1.2, 4.0), (16, 15, 1.2, 2.2, 2.5), (9, 2, 0.8, 0.8, 6.0)]:
+        inside = (np.abs(x - cx) < hx) & (np.abs(y - cy) < hy)
+        z = np.where(inside, h + 0.15 * (x - cx), z)
     return np.column_stack([x, y, z])

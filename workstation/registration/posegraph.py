@@ -91,6 +91,9 @@ class MultiwayParams:
         Open3D line-process threshold below which a loop edge is pruned.
     reference : int
         Index of the scan whose frame the poses are expressed in.
+    initial_poses : list of (4, 4) float, optional
+        Rough pose of every scan (scan -> one common frame, e.g. from GNSS or a field sketch):
+        pairs are then refined by ICP from ``inv(P_j) P_i`` instead of global registration.
     """
 
     pair: RegisterParams = field(default_factory=RegisterParams)
@@ -98,6 +101,7 @@ class MultiwayParams:
     loop_min_fitness: float = 0.3
     edge_prune_threshold: float = 0.25
     reference: int = 0
+    initial_poses: tuple | None = None
 
 
 def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayParams()) -> MultiwayResult:
@@ -125,6 +129,8 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     n = len(clouds)
     if n < 2:
         raise InvalidInputError(f"{n} scan(s) given; multi-scan registration needs 2 or more")
+    if params.initial_poses is not None and len(params.initial_poses) != n:
+        raise InvalidInputError(f"{len(params.initial_poses)} initial poses for {n} scans", field="initial_poses")
     if not 0 <= params.reference < n:
         raise InvalidInputError(f"reference {params.reference} out of range", field="reference")
     edges: list[EdgeRecord] = []
@@ -135,8 +141,12 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
             if not odo and not params.loop_closure:
                 continue
             p = params.pair if odo else replace(params.pair, min_fitness=params.loop_min_fitness)
+            init = None
+            if params.initial_poses is not None:
+                init = invert(np.asarray(params.initial_poses[j], float)) @ np.asarray(params.initial_poses[i], float)
+                p = replace(p, method="icp")
             try:
-                r = register(clouds[i], clouds[j], p)
+                r = register(clouds[i], clouds[j], p, init=init)
             except StageError as e:
                 if odo:
                     raise StageError(STAGE, f"scans {i} and {j} could not be registered: {e.message}", e.hint) from None

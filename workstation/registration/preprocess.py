@@ -166,8 +166,8 @@ def prepare(xyz_local: np.ndarray, radii: Radii, *, features: bool = True, color
     remove_outliers : bool
         Statistical outlier removal (20 neighbours, 2 sigma) on the downsampled cloud.
     viewpoint : (3,) float, optional
-        Scanner position (local frame): normals are turned to face it. Without one they point
-        away from the centroid. FPFH depends on the normal sign, so a consistent orientation in
+        Scanner position (local frame): normals are turned to face it. Without one see
+        :func:`orient_normals`. FPFH depends on the normal sign, so a consistent orientation in
         both clouds multiplies the share of correct feature matches (about 6x on the 90 degree
         bunny pair).
     """
@@ -193,8 +193,14 @@ def prepare(xyz_local: np.ndarray, radii: Radii, *, features: bool = True, color
 
 
 def orient_normals(pcd, viewpoint: np.ndarray | None = None) -> None:
-    """Flip the normals of a legacy PointCloud (made here, so mutation is local) to face
-    ``viewpoint``, or away from the centroid when no viewpoint is given. Vectorised."""
+    """Flip the normals of a legacy PointCloud (made here, so mutation is local), vectorised.
+
+    With ``viewpoint`` (the scanner position) normals face it. Without one: a flat scene
+    (vertical extent under 0.6 of the horizontal one, as for levelled TLS/ALS/MLS data)
+    gets normals pointing up (``n_z >= 0``), with near-vertical ones (``|n_z| < 0.3``) turned
+    towards the centroid's vertical axis; any other cloud (an object) gets normals pointing
+    away from its centroid.
+    """
     if not pcd.has_normals() or len(pcd.points) == 0:
         return
     from workstation.interop.open3d import require_open3d
@@ -202,9 +208,15 @@ def orient_normals(pcd, viewpoint: np.ndarray | None = None) -> None:
     o3d = require_open3d()
     p = np.asarray(pcd.points)
     nrm = np.asarray(pcd.normals)
-    if viewpoint is None:
-        sign = np.einsum("ij,ij->i", nrm, p - p.mean(axis=0)) < 0
+    if viewpoint is not None:
+        flip = np.einsum("ij,ij->i", nrm, np.asarray(viewpoint, dtype=np.float64) - p) < 0
     else:
-        sign = np.einsum("ij,ij->i", nrm, np.asarray(viewpoint, dtype=np.float64) - p) < 0
-    nrm = np.where(sign[:, None], -nrm, nrm)
-    pcd.normals = o3d.utility.Vector3dVector(nrm)
+        ext = p.max(axis=0) - p.min(axis=0)
+        c = p.mean(axis=0)
+        if ext[2] < 0.6 * max(ext[0], ext[1]):
+            to_axis = c - p
+            to_axis[:, 2] = 0.0
+            flip = np.where(np.abs(nrm[:, 2]) >= 0.3, nrm[:, 2] < 0, np.einsum("ij,ij->i", nrm, to_axis) < 0)
+        else:
+            flip = np.einsum("ij,ij->i", nrm, p - c) < 0
+    pcd.normals = o3d.utility.Vector3dVector(np.where(flip[:, None], -nrm, nrm))

@@ -62,7 +62,8 @@ class RegisterParams:
     max_rmse : float
         Largest accepted inlier RMSE as a multiple of the voxel size.
     viewpoint_source, viewpoint_target : (3,) float, optional
-        Scanner positions (world coordinates) to orient normals; see
+        Scanner positions (world coordinates) to orient normals (default: the clouds'
+        ``meta["scanner_position"]`` when present); see
         :func:`~workstation.registration.preprocess.prepare`.
     remove_outliers : bool
         Statistical outlier removal on the downsampled clouds.
@@ -143,8 +144,10 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     xt = target.xyz - origin
     voxel = float(params.voxel_size) if params.voxel_size else estimate_voxel_size(xt)
     radii = Radii(voxel)
-    vs = None if params.viewpoint_source is None else np.asarray(params.viewpoint_source, float) - origin
-    vt = None if params.viewpoint_target is None else np.asarray(params.viewpoint_target, float) - origin
+    vps = params.viewpoint_source if params.viewpoint_source is not None else source.meta.get("scanner_position")
+    vpt = params.viewpoint_target if params.viewpoint_target is not None else target.meta.get("scanner_position")
+    vs = None if vps is None else np.asarray(vps, float) - origin
+    vt = None if vpt is None else np.asarray(vpt, float) - origin
     fine_voxel = params.fine_voxel
     if fine_voxel is None and max(source.n, target.n) > params.fine_max_points:
         fine_voxel = voxel / 3.0
