@@ -20,6 +20,7 @@ log = get_logger(__name__)
 # (step title, "module:function")
 STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
+    ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
 ]
 
 

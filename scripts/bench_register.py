@@ -1,0 +1,118 @@
+"""Registration benchmarks; prints one JSON line per result.
+
+  PYTHONPATH=. python scripts/bench_register.py [--data ../shared/data] [--skip-bunny] [--o3d-iterations 3]
+
+1. Stanford bunny bun045 -> bun000 and bun090 -> bun000 from identity (``ws register`` defaults):
+   rotation / translation error against bun.conf, wall and CPU seconds.
+2. ICP on 1 million points, 30 iterations: our voxel-plane point-to-plane ICP beside Open3D's
+   plain point-to-point and point-to-plane ICP on the same clouds. Open3D runs
+   ``--o3d-iterations`` iterations and its time is also scaled to 30 (per-iteration cost is
+   constant once correspondences settle), so a shared machine is not held for minutes.
+Wall times on a shared machine are contended: CPU seconds (process_time) are given beside them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "registration"))
+
+
+def emit(d):
+    print(json.dumps(d), flush=True)
+
+
+def bench_bunny(data: Path):
+    from test_reg_bunny import bunny_truth, read_bunny_ply
+
+    from workstation.core.cloud import Cloud
+    from workstation.registration.register import RegisterParams, register
+    from workstation.registration.transforms import transform_error
+
+    d = data / "registration"
+    truth = bunny_truth(d / "bun.conf")
+    tgt = Cloud(read_bunny_ply(d / "bun000.ply"))
+    for scan in ("bun045.ply", "bun090.ply"):
+        src = Cloud(read_bunny_ply(d / scan))
+        w0, c0 = time.perf_counter(), time.process_time()
+        r = register(src, tgt, RegisterParams())
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        rot, tr = transform_error(r.transform, truth[scan])
+        emit({"bench": "bunny", "pair": f"{scan}->bun000.ply", "rotation_error_deg": round(rot, 4),
+              "translation_error_mm": round(tr * 1000, 4), "fitness": round(r.fitness, 4),
+              "coarse": r.meta.get("coarse_method"), "wall_s": round(wall, 2), "cpu_s": round(cpu, 2),
+              "load1": os.getloadavg()[0]})
+
+
+def terrain(n, rng):
+    x = rng.uniform(-25, 25, (n, 2))
+    z = np.sin(x[:, 0] / 3) * np.cos(x[:, 1] / 4) * 2 + 0.3 * np.sin(x[:, 0] * x[:, 1] / 40)
+    return np.column_stack([x, z])
+
+
+def bench_icp(n: int, o3d_iterations: int):
+    import open3d as o3d
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.registration.transforms import apply_transform, invert, make_transform, random_rotation, transform_error
+    from workstation.registration.voxelmap import VoxelPlanes, point_to_plane_voxel
+
+    rng = np.random.default_rng(0)
+    tgt = terrain(n, rng)
+    T = make_transform(random_rotation(rng, 2.0), [0.15, -0.1, 0.05])
+    src = apply_transform(invert(T), terrain(n, rng))
+    voxel = 0.2
+    w0, c0 = time.perf_counter(), time.process_time()
+    planes = [VoxelPlanes.build(tgt, voxel * f) for f in (4.0, 2.0, 1.0)]
+    wb, cb = time.perf_counter() - w0, time.process_time() - c0
+    w0, c0 = time.perf_counter(), time.process_time()
+    r = point_to_plane_voxel(src, tgt, voxel, iterations=30, planes=planes, tolerance=0.0)
+    wi, ci = time.perf_counter() - w0, time.process_time() - c0
+    rot, tr = transform_error(r.transform, T)
+    emit({"bench": "icp_1M", "impl": "workstation voxel_plane (point-to-plane)", "points": n, "iterations": r.iterations,
+          "build_wall_s": round(wb, 3), "build_cpu_s": round(cb, 3), "icp_wall_s": round(wi, 3), "icp_cpu_s": round(ci, 3),
+          "rotation_error_deg": round(rot, 5), "translation_error_m": round(tr, 5), "load1": os.getloadavg()[0]})
+    reg = o3d.pipelines.registration
+    s = points_to_legacy(src)
+    t = points_to_legacy(tgt)
+    w0, c0 = time.perf_counter(), time.process_time()
+    t.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=0.3, max_nn=20))
+    wn, cn = time.perf_counter() - w0, time.process_time() - c0
+    for name, est in (("point_to_point", reg.TransformationEstimationPointToPoint()),
+                      ("point_to_plane", reg.TransformationEstimationPointToPlane())):
+        w0, c0 = time.perf_counter(), time.process_time()
+        res = reg.registration_icp(s, t, 1.0, np.eye(4), est, reg.ICPConvergenceCriteria(0.0, 0.0, o3d_iterations))
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        rot, tr = transform_error(np.asarray(res.transformation), T)
+        emit({"bench": "icp_1M", "impl": f"open3d {name}", "points": n, "iterations": o3d_iterations,
+              "wall_s": round(w, 2), "cpu_s": round(c, 2), "wall_s_per_30_it": round(w * 30 / o3d_iterations, 1),
+              "cpu_s_per_30_it": round(c * 30 / o3d_iterations, 1),
+              "normals_wall_s": round(wn, 2) if name == "point_to_plane" else None,
+              "rotation_error_deg": round(rot, 4), "translation_error_m": round(tr, 4), "load1": os.getloadavg()[0]})
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
+    ap.add_argument("--points", type=int, default=1_000_000)
+    ap.add_argument("--o3d-iterations", type=int, default=3)
+    ap.add_argument("--skip-bunny", action="store_true")
+    ap.add_argument("--skip-icp", action="store_true")
+    a = ap.parse_args()
+    emit({"bench": "machine", "cpus": os.cpu_count(), "load1": os.getloadavg()[0]})
+    if not a.skip_bunny and (a.data / "registration").is_dir():
+        bench_bunny(a.data)
+    if not a.skip_icp:
+        bench_icp(a.points, a.o3d_iterations)
+
+
+if __name__ == "__main__":
+    main()
