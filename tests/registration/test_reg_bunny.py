@@ -43,11 +43,11 @@ def test_bunny_from_identity(shared_data, scan):
     truth = bunny_truth(d / "bun.conf")
     src = Cloud(read_bunny_ply(d / scan))
     tgt = Cloud(read_bunny_ply(d / "bun000.ply"))
-    t0 = time.perf_counter()
+    c0 = time.process_time()
     res = register(src, tgt, RegisterParams())
-    seconds = time.perf_counter() - t0
+    cpu_seconds = time.process_time() - c0  # CPU time: wall time on a shared machine is contended
     rot, tr = transform_error(res.transform, truth[scan])
     assert rot <= 0.5, rot
     assert tr <= 0.001, tr
     assert res.converged and res.fitness > 0.4
-    assert seconds < 60  # the goal is 30 s on 2 idle cores; a shared machine gets slack
+    assert cpu_seconds < 30  # goal: 30 s on 2 cores (about 4 s of CPU measured)
