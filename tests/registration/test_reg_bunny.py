@@ -15,11 +15,10 @@ from workstation.registration.transforms import make_transform, transform_error
 
 
 def read_bunny_ply(path) -> np.ndarray:
-    """Vertices of an ASCII PLY with CRLF line endings (the io PLY reader is not on main yet)."""
-    lines = path.read_bytes().split(b"\n")
-    end = next(i for i, ln in enumerate(lines) if ln.strip() == b"end_header")
-    nv = next(int(ln.split()[2]) for ln in lines[:end] if ln.startswith(b"element vertex"))
-    return np.array([ln.split()[:3] for ln in lines[end + 1:end + 1 + nv]], dtype=np.float64)
+    """Vertices of the CRLF ASCII PLY through the io layer (workstation.io.ply)."""
+    from workstation.io import read_cloud
+
+    return np.array(read_cloud(path).xyz)
 
 
 def bunny_truth(conf_path) -> dict:
