@@ -1,3 +1,5 @@
+import json
+
 import numpy as np
 import pytest
 
@@ -99,3 +101,38 @@ def test_best_views_are_blended_and_nothing_seen_raises():
     away = Reconstruction({1: cam}, {1: Image("r", 1, Pose(np.diag([1.0, -1.0, -1.0]), np.zeros(3)))})
     with pytest.raises(StageError):
         colorize(Cloud(xyz), away, images={1: red})
+
+
+def test_ws_colorize_reads_a_colmap_text_model(tmp_path, capsys):
+    import cv2
+
+    from workstation.cli.main import main
+    from workstation.io import read_cloud, write_cloud
+
+    xyz, truth, is_front = _scene()
+    cam = Camera(320, 240, 250.0, 250.0, 159.5, 119.5, dist=(-0.05, 0.01, 0.0, 0.0, 0.0))
+    # camera 0.5 m to the right of the origin, looking along +z: x_cam = X + t with t = (-0.5, 0, 0)
+    pose = Pose(np.eye(3), np.array([-0.5, 0.0, 0.0]))
+    img = _render(xyz, truth.astype(np.uint8), cam, pose)
+    model = tmp_path / "work" / "sparse" / "0"
+    model.mkdir(parents=True)
+    (model / "cameras.txt").write_text("1 OPENCV 320 240 250 250 159.5 119.5 -0.05 0.01 0 0\n")
+    (model / "images.txt").write_text("1 1 0 0 0 -0.5 0 0 1 view.png\n\n")
+    (model / "points3D.txt").write_text("")
+    (tmp_path / "work" / "images").mkdir()
+    cv2.imwrite(str(tmp_path / "work" / "images" / "view.png"), img[:, :, ::-1])
+    write_cloud(Cloud(xyz), tmp_path / "walls.laz")
+    rc = main(["colorize", str(tmp_path / "walls.laz"), "--reconstruction", str(tmp_path / "work"),
+               "-o", str(tmp_path / "out.laz"), "--json"])
+    assert rc == 0
+    out = read_cloud(tmp_path / "out.laz")
+    painted = out.attrs["colorized"].astype(bool)
+    # seen from x = 0.5, the front wall (|x| <= 1 at 5 m) hides back-wall x in (-1.1, 2.1) roughly
+    u, v, z = project(xyz, cam, pose)
+    hidden = ~is_front & (np.abs((xyz[:, 0] - 0.5) * 5.0 / 8.0) < 0.45) & (np.abs(xyz[:, 1] * 5.0 / 8.0) < 0.95)
+    assert hidden.sum() > 500 and not painted[hidden].any()
+    front_seen = is_front & painted
+    assert front_seen.sum() > 0.9 * is_front.sum()
+    err = np.abs(out.attrs["rgb"][front_seen] / 257.0 - truth[front_seen]).mean()
+    assert err < 10.0
+    assert json.loads(capsys.readouterr().out)["painted"] == int(painted.sum())
