@@ -87,12 +87,26 @@ def fgr(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> 
     return _result(res.transformation, res.fitness, res.inlier_rmse, len(res.correspondence_set), "fgr")
 
 
+def _nearest(a: np.ndarray, b: np.ndarray, block: int = 2048) -> np.ndarray:
+    """Index of the nearest row of ``b`` for every row of ``a`` (brute force, float32 BLAS,
+    in row blocks: a KD-tree is no faster than this in 33 dimensions)."""
+    from threadpoolctl import threadpool_limits
+
+    a = np.asarray(a, dtype=np.float32)
+    b = np.asarray(b, dtype=np.float32)
+    bb = np.einsum("ij,ij->i", b, b)
+    out = np.empty(a.shape[0], dtype=np.int64)
+    with threadpool_limits(1):  # idle BLAS threads spinning on a shared machine cost more than they gain
+        for s in range(0, a.shape[0], block):
+            d = bb[None, :] - 2.0 * (a[s:s + block] @ b.T)
+            out[s:s + block] = np.argmin(d, axis=1)
+    return out
+
+
 def mutual_matches(f_src: np.ndarray, f_tgt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Indices ``(i, j)`` of mutual nearest neighbours between two feature sets (n, d), (m, d)."""
-    from scipy.spatial import cKDTree
-
-    _, j = cKDTree(f_tgt).query(f_src, workers=-1)
-    _, i = cKDTree(f_src).query(f_tgt, workers=-1)
+    j = _nearest(f_src, f_tgt)
+    i = _nearest(f_tgt, f_src)
     keep = np.flatnonzero(i[j] == np.arange(j.size))
     return keep, j[keep]
 

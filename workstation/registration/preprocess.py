@@ -87,12 +87,22 @@ def estimate_spacing(xyz: np.ndarray, sample: int = 2000, seed: int = 0) -> floa
     return float(np.median(d))
 
 
+def _voxel_count(xyz: np.ndarray, voxel: float) -> int:
+    keys = np.floor((xyz - xyz.min(axis=0)) / voxel).astype(np.int64)
+    span = keys.max(axis=0) + 1
+    flat = (keys[:, 0] * span[1] + keys[:, 1]) * span[2] + keys[:, 2]
+    return int(np.unique(flat).size)
+
+
 def estimate_voxel_size(xyz: np.ndarray, target_points: int = 4000) -> float:
     """Voxel size for the coarse stage, estimated from the data.
 
-    The surface area is about ``n * spacing**2``; a voxel of ``sqrt(area / target_points)``
-    leaves roughly ``target_points`` points after downsampling, which keeps FPFH and RANSAC
-    fast while their radii (``5 * voxel``) still see the shape. Never below ``2 * spacing``.
+    Starts from ``spacing * sqrt(n / target_points)`` (the surface area is about
+    ``n * spacing**2``) and corrects it twice by the square root of the ratio between the
+    occupied voxels and ``target_points``, since TLS spacing varies with range. The result
+    leaves roughly ``target_points`` points after downsampling, which keeps FPFH and the
+    coarse estimators fast while their radii (``5 * voxel``) still see the shape. Never below
+    ``2 * spacing``.
 
     Returns
     -------
@@ -103,6 +113,11 @@ def estimate_voxel_size(xyz: np.ndarray, target_points: int = 4000) -> float:
     s = estimate_spacing(xyz)
     n = xyz.shape[0]
     v = max(2.0 * s, s * np.sqrt(n / float(target_points)))
+    for _ in range(3):
+        m = _voxel_count(xyz, v)
+        if 0.7 * target_points <= m <= 1.4 * target_points:
+            break
+        v = max(2.0 * s, v * np.sqrt(m / float(target_points)))
     log.info("estimated spacing %.4g, voxel size %.4g", s, v)
     return float(v)
 

@@ -235,7 +235,8 @@ def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, di
     quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     cands = []
     for name in ("clique", "fpfh_ransac", "fgr"):
-        if name == "fgr" and cands and max(c[1] for c in cands) >= max(0.5, params.min_fitness):
+        # a hypothesis explaining this share of the downsampled source is accepted as is
+        if cands and max(c[1] for c in cands) >= max(0.4 if name == "fpfh_ransac" else 0.5, params.min_fitness):
             break
         try:
             r = COARSE_METHODS[name](ps, pt, params.coarse)
