@@ -1,8 +1,10 @@
 """Demo step of registration: two overlapping stations registered, merged, result written.
 
-Uses the simulated TLS stations (``ctx.products["tls_laz"]``, a list or a single path) when an
-earlier step made them; otherwise two synthetic stations of a small built-up block are made
-here (ground, box buildings with walls and roofs), the second in its own rotated frame,
+With the simulated TLS survey of an earlier step (``ctx.products["tls_laz"]``, stations told
+apart by ``point_source_id``), the second station is moved into its own frame (40 degrees
+about z, 7 m away) and registered globally onto the first from the identity. Without it, two
+synthetic stations of a small built-up block are made here (ground, box buildings with walls
+and roofs), the second in its own rotated frame,
 with a rough station pose (3 degrees and 0.5 m off, as from a field sketch or GNSS) refined
 by ICP. (Global registration of these synthetic stations is not reliable yet: every box face
 is sampled, including faces a real scanner would not see, which defeats FPFH's normal
@@ -75,6 +77,16 @@ def synthetic_stations(seed: int = 0, density: float = 15.0) -> tuple[Cloud, Clo
     return cb, ca, invert(G)
 
 
+def _tls_stations(cloud: Cloud):
+    """The first two stations of a multi-station TLS cloud (by ``point_source_id``), or None."""
+    if "point_source_id" not in cloud.attrs:
+        return None
+    ids = np.unique(cloud.attrs["point_source_id"])
+    if ids.size < 2:
+        return None
+    return [cloud[cloud.attrs["point_source_id"] == i] for i in ids[:2]]
+
+
 def step(ctx) -> dict:
     from workstation.io import atomic_path, read_cloud, write_cloud
     from workstation.registration.merge import merge_clouds, transform_cloud
@@ -85,8 +97,13 @@ def step(ctx) -> dict:
     tls = ctx.products.get("tls_laz")
     truth = init = None
     params = RegisterParams()
-    if isinstance(tls, (list, tuple)) and len(tls) >= 2:
-        source, target = read_cloud(tls[1]), read_cloud(tls[0])
+    stations = _tls_stations(read_cloud(tls)) if tls else None
+    if stations is not None:
+        from workstation.registration.transforms import invert, make_transform
+
+        G = make_transform(_rz(40.0), [5.0, -4.0, 0.2])
+        target, source = stations[0], transform_cloud(stations[1], G)
+        truth = invert(G)
     else:
         from workstation.registration.transforms import make_transform
 
