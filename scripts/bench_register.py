@@ -8,6 +8,8 @@
    plain point-to-point and point-to-plane ICP on the same clouds. Open3D runs
    ``--o3d-iterations`` iterations and its time is also scaled to 30 (per-iteration cost is
    constant once correspondences settle), so a shared machine is not held for minutes.
+3. ``--tls-laz``: every pair of stations of a simulated TLS survey, each station in a random
+   frame, and a pose graph over all of them from the identity.
 Wall times on a shared machine are contended: CPU seconds (process_time) are given beside them.
 """
 
@@ -99,6 +101,41 @@ def bench_icp(n: int, o3d_iterations: int):
               "rotation_error_deg": round(rot, 4), "translation_error_m": round(tr, 4), "load1": os.getloadavg()[0]})
 
 
+def bench_tls(path: Path, seed: int = 0):
+    """Stations of a simulated TLS survey (``point_source_id`` per station), each moved into its
+    own frame by a random pose (up to 180 degrees about z, +-10 m, +-0.5 m in z), registered
+    pairwise (every pair) and closed by a pose graph from the identity."""
+    from workstation.io import read_cloud
+    from workstation.registration.merge import transform_cloud
+    from workstation.registration.posegraph import MultiwayParams, register_multiway
+    from workstation.registration.transforms import invert, make_transform, transform_error
+
+    cloud = read_cloud(path)
+    ids = np.unique(cloud.attrs["point_source_id"])
+    rng = np.random.default_rng(seed)
+    scans, G = [], []
+    for i in ids:
+        a = np.radians(rng.uniform(-180, 180))
+        R = np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+        g = make_transform(R, np.append(rng.uniform(-10, 10, 2), rng.uniform(-0.5, 0.5)))
+        scans.append(transform_cloud(cloud[cloud.attrs["point_source_id"] == i], g))
+        G.append(g)
+    w0, c0 = time.perf_counter(), time.process_time()
+    mw = register_multiway(scans, MultiwayParams())
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    for e in mw.edges:
+        rot, tr = transform_error(e.transform, G[e.target] @ invert(G[e.source]), center=scans[e.source].xyz.mean(axis=0))
+        emit({"bench": "tls_pair", "source": int(e.source), "target": int(e.target), "kind": e.kind,
+              "points": [scans[e.source].n, scans[e.target].n], "fitness": round(e.fitness, 4),
+              "rotation_error_deg": round(rot, 4), "translation_error_m": round(tr, 4), "kept_in_graph": e.kept})
+    errs = [transform_error(mw.poses[k], G[0] @ invert(G[k]), center=scans[k].xyz.mean(axis=0)) for k in range(len(scans))]
+    n = len(scans)
+    emit({"bench": "tls_pose_graph", "stations": n, "pairs_tried": n * (n - 1) // 2, "edges": len(mw.edges),
+          "max_rotation_error_deg": round(max(e[0] for e in errs), 4),
+          "max_translation_drift_m": round(max(e[1] for e in errs), 4), "wall_s": round(wall, 1),
+          "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
@@ -106,10 +143,14 @@ def main():
     ap.add_argument("--o3d-iterations", type=int, default=3)
     ap.add_argument("--skip-bunny", action="store_true")
     ap.add_argument("--skip-icp", action="store_true")
+    ap.add_argument("--tls-laz", type=Path, default=None,
+                    help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
     a = ap.parse_args()
     emit({"bench": "machine", "cpus": os.cpu_count(), "load1": os.getloadavg()[0]})
     if not a.skip_bunny and (a.data / "registration").is_dir():
         bench_bunny(a.data)
+    if a.tls_laz is not None:
+        bench_tls(a.tls_laz)
     if not a.skip_icp:
         bench_icp(a.points, a.o3d_iterations)
 

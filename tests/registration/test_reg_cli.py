@@ -74,3 +74,24 @@ def test_ws_merge_and_low_overlap_error(tmp_path, capsys):
     err = capsys.readouterr().err
     assert rc == 1 and "Hint" in err
     assert not (tmp_path / "x.laz").exists()
+
+
+def test_ws_merge_with_poses_file_and_with_pose_graph(tmp_path, capsys):
+    T_true, src = _pair(tmp_path)
+    (tmp_path / "poses.json").write_text(json.dumps({"poses": [T_true.tolist(), np.eye(4).tolist()]}))
+    rc = main(["merge", str(tmp_path / "src.laz"), str(tmp_path / "tgt.laz"), "-o", str(tmp_path / "m.laz"),
+               "--poses", str(tmp_path / "poses.json"), "--duplicate-distance", "0.005"])
+    assert rc == 0
+    m = read_cloud(tmp_path / "m.laz")
+    s1 = m.attrs["point_source_id"] == 1
+    assert np.abs(m.xyz[s1] - apply_transform(T_true, src.xyz)).max() < 0.002
+    assert m.n < 12000  # overlapping points of the second input were thinned
+    capsys.readouterr()
+    rc = main(["merge", str(tmp_path / "tgt.laz"), str(tmp_path / "src.laz"), "-o", str(tmp_path / "g.laz"),
+               "--register", "--poses-out", str(tmp_path / "graph.json"), "--json"])
+    assert rc == 0
+    graph = json.loads((tmp_path / "graph.json").read_text())
+    pose_src = np.array(graph["poses"][1])  # src -> tgt frame
+    rot, tr = transform_error(pose_src, T_true, center=src.xyz.mean(axis=0))
+    assert rot < 0.5 and tr < 0.01
+    assert graph["edges"][0]["kind"] == "odometry"
