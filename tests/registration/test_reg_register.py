@@ -105,3 +105,17 @@ def test_inputs_are_not_modified():
     before = a.xyz.copy()
     register(a, b, RegisterParams(method="icp", voxel_size=0.03))
     assert np.array_equal(a.xyz, before)
+
+
+def test_wrong_alignment_on_a_surface_is_refused():
+    """Smooth terrain turned by 180 degrees still overlaps itself, but not on its planes."""
+    sys.path.insert(0, str(Path(__file__).parent))
+    from regutil import wavy_scene
+
+    pts = wavy_scene(20000, seed=1)
+    pts = pts[(pts[:, 0] < 15) & (pts[:, 1] < 15)]
+    R = np.array([[-1.0, 0, 0], [0, -1.0, 0], [0, 0, 1.0]])
+    c = pts.mean(axis=0)
+    wrong = make_transform(R, c - R @ c)  # a 180-degree turn about the centre: a wrong start
+    with pytest.raises(StageError, match="surface|overlap"):
+        register(Cloud(pts), Cloud(wavy_scene(20000, seed=2)), RegisterParams(method="icp", voxel_size=0.3), init=wrong)
