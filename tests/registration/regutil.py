@@ -37,3 +37,37 @@ def wavy_scene(n: int = 20000, seed: int = 0, size: float = 20.0) -> np.ndarray:
         inside = (np.abs(x - cx) < hx) & (np.abs(y - cy) < hy)
         z = np.where(inside, h + 0.15 * (x - cx), z)
     return np.column_stack([x, y, z])
+
+
+def block_mesh():
+    """A small built-up block as one triangle mesh: ground 80 m x 60 m, six buildings, a tower."""
+    import trimesh
+
+    T = trimesh.transformations.translation_matrix
+    parts = [trimesh.creation.box(extents=(80, 60, 0.2), transform=T((40, 30, -0.1)))]
+    for (x, y, lx, ly, h, yaw) in [(15, 12, 10, 7, 8, 0.0), (32, 10, 6, 12, 12, 0.3), (50, 14, 14, 6, 6, -0.2),
+                                   (20, 40, 8, 12, 15, 0.1), (45, 42, 10, 10, 9, 0.6), (62, 30, 6, 16, 5, 0.0)]:
+        M = trimesh.transformations.rotation_matrix(yaw, (0, 0, 1))
+        M[:3, 3] = (x, y, h / 2)
+        parts.append(trimesh.creation.box(extents=(lx, ly, h), transform=M))
+    parts.append(trimesh.creation.cylinder(radius=1.5, height=20, transform=T((36, 27, 10))))
+    return trimesh.util.concatenate(parts)
+
+
+def tls_station(mesh, position, step_deg: float = 0.5, max_range: float = 60.0, noise: float = 0.003,
+                seed: int = 0) -> np.ndarray:
+    """Points a terrestrial scanner at ``position`` sees on ``mesh`` (Open3D ray casting),
+    with Gaussian range noise (metres)."""
+    import open3d as o3d
+
+    scene = o3d.t.geometry.RaycastingScene()
+    scene.add_triangles(o3d.core.Tensor(np.asarray(mesh.vertices, np.float32)),
+                        o3d.core.Tensor(np.asarray(mesh.faces, np.uint32)))
+    az, el = np.meshgrid(np.radians(np.arange(0, 360, step_deg)), np.radians(np.arange(-60, 60, step_deg)))
+    d = np.column_stack([(np.cos(el) * np.cos(az)).ravel(), (np.cos(el) * np.sin(az)).ravel(), np.sin(el).ravel()])
+    rays = np.hstack([np.tile(np.asarray(position, np.float32), (d.shape[0], 1)), d]).astype(np.float32)
+    t = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
+    ok = np.isfinite(t) & (t < max_range)
+    rng = np.random.default_rng(seed)
+    r = t[ok] + rng.normal(0, noise, ok.sum())
+    return np.asarray(position, float) + d[ok] * r[:, None]
