@@ -119,3 +119,24 @@ def test_wrong_alignment_on_a_surface_is_refused():
     wrong = make_transform(R, c - R @ c)  # a 180-degree turn about the centre: a wrong start
     with pytest.raises(StageError, match="surface|overlap"):
         register(Cloud(pts), Cloud(wavy_scene(20000, seed=2)), RegisterParams(method="icp", voxel_size=0.3), init=wrong)
+
+
+def test_two_raycast_tls_stations_from_a_rough_pose():
+    """Two ray-cast stations of a box block (partial overlap, 3 mm range noise), the second in
+    its own frame, refined from a field-sketch pose (3 degrees, 1 m off)."""
+    sys.path.insert(0, str(Path(__file__).parent))
+    from regutil import block_mesh, tls_station
+
+    mesh = block_mesh()
+    a = tls_station(mesh, (26, 22, 1.6), step_deg=0.8, seed=1)
+    b = tls_station(mesh, (38, 24, 1.6), step_deg=0.8, seed=2)
+    ang = np.radians(130.0)
+    R = np.array([[np.cos(ang), -np.sin(ang), 0], [np.sin(ang), np.cos(ang), 0], [0, 0, 1]])
+    G = make_transform(R, [4.0, -7.0, 0.3])  # block frame -> station B frame
+    src = Cloud(apply_transform(G, b))
+    truth = np.linalg.inv(G)
+    rough = truth @ make_transform(random_rotation(np.random.default_rng(0), 3.0), [0.7, -0.7, 0.1])
+    res = register(src, Cloud(a), RegisterParams(method="icp", voxel_size=0.5), init=rough)
+    rot, tr = transform_error(res.transform, truth, center=src.xyz.mean(axis=0))
+    assert rot < 0.2 and tr < 0.02, (rot, tr)
+    assert res.meta["plane_inlier_share"] > 0.9
