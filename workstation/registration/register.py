@@ -11,6 +11,10 @@ and FPFH + RANSAC (and Fast Global Registration when both look poor), scores eac
 a short point-to-plane ICP on the downsampled clouds and keeps the best. This is the
 "several hypotheses verified by ICP" strategy recommended when single RANSAC runs are
 unreliable (e.g. Choi, Zhou & Koltun 2015, "Robust reconstruction of indoor scenes", CVPR).
+
+Known limit: scenes made only of flat boxes (walls, flat roofs, flat ground) give FPFH too few
+distinctive matches; a wrong alignment there can pass the overlap and plane checks. Give an
+initial transform (``init``) or point pairs for such scenes.
 """
 
 from __future__ import annotations
