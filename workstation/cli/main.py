@@ -21,6 +21,12 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "merge": ("workstation.cli.merge:merge", "Merge registered clouds keeping every attribute; optional pose graph."),
     "colorize": ("workstation.cli.colorize:colorize", "Colour a cloud from oriented photos with occlusion tests."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+    "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
+    "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
+    "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),
+    "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
+    "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),
+    "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
 }
 
 
