@@ -20,6 +20,7 @@ import json
 import os
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -177,6 +178,99 @@ def bench_tls(path: Path, seed: int = 0):
           "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
 
 
+def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
+    """Colour one simulated TLS station of the demo scene from 8 synthetic photos (exact pinhole
+    renders by ray casting the scene mesh: each pixel takes the colour of the face it sees),
+    then compare with the true face colours and check that no point hidden from every camera
+    (ray cast from the camera to the point) was painted."""
+    import open3d as o3d
+
+    from workstation.core.products import Camera, Image, Pose, Reconstruction
+    from workstation.lidar.scene import build_scene
+    from workstation.lidar.survey import default_stations, default_survey, run_survey
+    from workstation.registration.colorize import ColorizeParams, colorize, project
+
+    scene = build_scene("demo_small", seed)
+    st = default_stations(scene, 3)
+    cfg = default_survey("tls")
+    cfg = replace(cfg, scanner=replace(cfg.scanner, h_step_deg=step_deg, v_step_deg=step_deg), stations=st)
+    cloud = run_survey(scene, cfg, seed=seed).cloud
+    cloud = cloud[cloud.attrs["point_source_id"] == np.unique(cloud.attrs["point_source_id"])[0]]
+    cloud = cloud.without_attrs("rgb")
+    o = np.asarray(scene.origin, float)
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor(scene.vertices.astype(np.float32)), o3d.core.Tensor(scene.faces.astype(np.uint32)))
+    local = cloud.xyz - o
+    near = np.linalg.norm(local[:, :2] - [st[0].x, st[0].y], axis=1) < 3.0
+    ground = float(np.median(local[near, 2])) if near.any() else 0.0
+    cam = Camera(800, 600, 500.0, 500.0, 399.5, 299.5)
+    images, recon_images, depths = {}, {}, {}
+    sky = np.array([135, 206, 235], np.uint8)
+    k = 0
+    for dx in (0.0, 5.0):
+        C = np.array([st[0].x + dx, st[0].y + 2.0, ground + 1.7])
+        for yaw in (0, 90, 180, 270):
+            a = np.radians(yaw)
+            fwd, right = np.array([np.cos(a), np.sin(a), 0.0]), np.array([np.sin(a), -np.cos(a), 0.0])
+            R = np.vstack([right, [0.0, 0.0, -1.0], fwd])
+            uu, vv = np.meshgrid(np.arange(cam.width), np.arange(cam.height))
+            dirs_cam = np.column_stack([((uu - cam.cx) / cam.fx).ravel(), ((vv - cam.cy) / cam.fy).ravel(), np.ones(uu.size)])
+            dirs = dirs_cam @ R
+            rays = np.hstack([np.tile(C, (dirs.shape[0], 1)), dirs]).astype(np.float32)
+            hit = rs.cast_rays(o3d.core.Tensor(rays))
+            prim = hit["primitive_ids"].numpy().astype(np.int64)
+            ok = np.isfinite(hit["t_hit"].numpy())
+            img = np.tile(sky, (uu.size, 1))
+            img[ok] = scene.face_rgb[prim[ok]]
+            k += 1
+            images[k] = img.reshape(cam.height, cam.width, 3)
+            # ray directions have a unit optical-axis component, so t_hit is the depth
+            depths[k] = np.where(ok, hit["t_hit"].numpy(), np.nan).reshape(cam.height, cam.width)
+            Cw = C + o
+            recon_images[k] = Image(f"v{k}.png", 1, Pose(R, -R @ Cw))
+    rec = Reconstruction({1: cam}, recon_images)
+    for mode in ("zbuffer", "depth_maps"):
+        w0, c0 = time.perf_counter(), time.process_time()
+        out = colorize(cloud, rec, ColorizeParams(), images=images, depth_maps=depths if mode == "depth_maps" else None)
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, len(images), wall, cpu)
+
+
+def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, wall, cpu):
+    import open3d as o3d
+
+    from workstation.registration.colorize import project
+
+    recon_images = rec.images
+    truth_face = rs.compute_closest_points(o3d.core.Tensor(local.astype(np.float32)))["primitive_ids"].numpy()
+    truth = scene.face_rgb[truth_face.astype(np.int64)].astype(float)
+    painted = out.attrs["colorized"].astype(bool)
+    seen_any = np.zeros(cloud.n, bool)
+    behind = np.full(cloud.n, np.inf)  # least depth by which a point is hidden in any camera
+    for kk, im in recon_images.items():
+        u, v, z = project(cloud.xyz, cam, im.pose)
+        inside = (z > 0) & (u >= 0) & (u <= cam.width - 1) & (v >= 0) & (v <= cam.height - 1)
+        C = im.pose.center - o
+        d = local[inside] - C
+        dist = np.linalg.norm(d, axis=1)
+        rays = np.hstack([np.tile(C, (d.shape[0], 1)), d / dist[:, None]]).astype(np.float32)
+        t = rs.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
+        vis = np.zeros(cloud.n, bool)
+        vis[np.flatnonzero(inside)] = t >= dist - 0.05
+        seen_any |= vis
+        ii = np.flatnonzero(inside)
+        behind[ii] = np.minimum(behind[ii], np.where(np.isfinite(t), dist - t, np.inf))
+    err = np.abs(out.attrs["rgb"][painted] / 257.0 - truth[painted]).mean(axis=1)
+    bad = painted & ~seen_any
+    cls = cloud.attrs["classification"][bad] if "classification" in cloud.attrs else np.zeros(0, int)
+    bad_classes = {int(c): int(n) for c, n in zip(*np.unique(cls, return_counts=True))}
+    emit({"bench": "colorize_sim_tls", "visibility": mode, "painted_but_hidden_by_class": bad_classes, "points": cloud.n, "images": n_images, "painted": int(painted.sum()),
+          "truly_visible": int(seen_any.sum()),
+          "hidden_painted_depth_behind_m_p50_p90": [round(float(x), 3) for x in np.percentile(behind[bad], [50, 90])] if bad.any() else None, "painted_but_hidden_from_all": int((painted & ~seen_any).sum()),
+          "mean_colour_error_255": round(float(err.mean()), 2), "median_colour_error_255": round(float(np.median(err)), 2),
+          "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
@@ -184,6 +278,7 @@ def main():
     ap.add_argument("--o3d-iterations", type=int, default=3)
     ap.add_argument("--skip-bunny", action="store_true")
     ap.add_argument("--skip-icp", action="store_true")
+    ap.add_argument("--colorize-sim", action="store_true", help="colour a simulated TLS station from synthetic photos")
     ap.add_argument("--tls-laz", type=Path, default=None,
                     help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
     a = ap.parse_args()
@@ -192,6 +287,8 @@ def main():
         bench_bunny(a.data)
         for v in (0.002, 0.003, 0.004):
             bench_bunny_open3d(a.data, v)
+    if a.colorize_sim:
+        bench_colorize_sim()
     if a.tls_laz is not None:
         bench_tls(a.tls_laz)
     if not a.skip_icp:

@@ -48,6 +48,9 @@ class ColorizeParams:
         Views seeing the surface at a cosine below this (grazing) are ignored (needs normals).
     border_px : float
         Pixels near the image border that are not used.
+    fill_holes : bool
+        Close one- or two-cell gaps of the z-buffer with a 3 x 3 median (see
+        :func:`_zbuffer_visible`).
     """
 
     max_views: int = 3
@@ -56,6 +59,7 @@ class ColorizeParams:
     depth_tolerance_rel: float = 0.005
     min_cos: float = 0.1
     border_px: float = 1.0
+    fill_holes: bool = True
 
 
 def project(xyz: np.ndarray, camera: Camera, pose: Pose) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -111,13 +115,25 @@ def bilinear(image: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
     return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy
 
 
-def _zbuffer_visible(u, v, z, idx, w, h, cell: int, tol: np.ndarray) -> np.ndarray:
-    """Visibility of the projected points ``idx`` by a z-buffer of ``cell``-pixel cells."""
+def _zbuffer_visible(u, v, z, idx, w, h, cell: int, tol: np.ndarray, fill_holes: bool = True) -> np.ndarray:
+    """Visibility of the projected points ``idx`` by a z-buffer of ``cell``-pixel cells.
+
+    With ``fill_holes`` each cell takes the median depth of its 3 x 3 neighbourhood when that is
+    nearer: a gap of one or two cells in a nearer surface (where a farther surface shows
+    through between sparse points) is closed, while slopes and silhouette edges, where the
+    median is the cell's own depth, are kept (screen-space hole filling in the spirit of
+    Pintus, Gobbetti & Agus 2011, "Real-time rendering of massive unstructured raw point
+    clouds using screen-space operators")."""
     cw = (w + cell - 1) // cell
     ch = (h + cell - 1) // cell
     cid = (np.floor(v / cell).astype(np.int64) * cw + np.floor(u / cell).astype(np.int64))
     zb = np.full(cw * ch, np.inf)
     np.minimum.at(zb, cid, z)
+    if fill_holes:
+        from scipy.ndimage import median_filter
+
+        g = np.where(np.isfinite(zb), zb, 1e30).reshape(ch, cw)
+        zb = np.minimum(g, median_filter(g, size=3, mode="nearest")).ravel()
     return z <= zb[cid] + tol
 
 
@@ -199,7 +215,7 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
         else:
             f = 0.5 * (cam.fx + cam.fy)
             cell = int(np.clip(np.ceil(2.0 * f * spacing / np.median(zi)), 1, 64))
-            vis = _zbuffer_visible(ui, vi, zi, idx, cam.width, cam.height, cell, tol)
+            vis = _zbuffer_visible(ui, vi, zi, idx, cam.width, cam.height, cell, tol, params.fill_holes)
         idx, ui, vi = idx[vis], ui[vis], vi[vis]
         ray = xyz[idx] - im.pose.center
         dist2 = np.einsum("ij,ij->i", ray, ray)
