@@ -3,6 +3,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
 from regutil import shape_points  # noqa: E402
@@ -28,6 +29,7 @@ def _pair(tmp_path):
     return o @ T @ np.linalg.inv(o), src
 
 
+@pytest.mark.slow
 def test_ws_register_json_and_matrix(tmp_path, capsys):
     T_true, src = _pair(tmp_path)
     rc = main(["register", str(tmp_path / "src.laz"), str(tmp_path / "tgt.laz"), "-o", str(tmp_path / "out.laz"),
