@@ -90,13 +90,19 @@ def fgr(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> 
 def _nearest(a: np.ndarray, b: np.ndarray, block: int = 2048) -> np.ndarray:
     """Index of the nearest row of ``b`` for every row of ``a`` (brute force, float32 BLAS,
     in row blocks: a KD-tree is no faster than this in 33 dimensions)."""
-    from threadpoolctl import threadpool_limits
+    import contextlib
+
+    try:  # threadpoolctl comes with scikit-learn
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover
+        threadpool_limits = None
 
     a = np.asarray(a, dtype=np.float32)
     b = np.asarray(b, dtype=np.float32)
     bb = np.einsum("ij,ij->i", b, b)
     out = np.empty(a.shape[0], dtype=np.int64)
-    with threadpool_limits(1):  # idle BLAS threads spinning on a shared machine cost more than they gain
+    limit = threadpool_limits(1) if threadpool_limits else contextlib.nullcontext()
+    with limit:  # idle BLAS threads spinning on a shared machine cost more than they gain
         for s in range(0, a.shape[0], block):
             d = bb[None, :] - 2.0 * (a[s:s + block] @ b.T)
             out[s:s + block] = np.argmin(d, axis=1)
