@@ -42,11 +42,20 @@ def test_simulate_tls_cli_writes_las_and_trajectory(tmp_path, capsys):
     assert c.meta["las"]["point_format"] == 7
     assert set(np.unique(c.attrs["point_source_id"])) == {1, 2}
     assert np.array_equal(c.attrs["user_data"], (c.attrs["object_id"] % 256).astype(np.uint8))
+
     assert c.crs and "32632" in c.crs
     traj = (tmp_path / "tls.trajectory.csv").read_text().splitlines()
     assert traj[0].startswith("gps_time,easting,northing,height,roll_deg,pitch_deg,heading_deg")
     # refuses to overwrite
     assert main(["simulate", "tls", "-o", str(out), "--scene", "demo_small", "--h-step", "5", "--v-step", "5"]) == 1
+    # same seed -> identical file; the LAS header's creation day is the only field allowed to
+    # differ (bytes 90-93), so a run across midnight still passes
+    again = tmp_path / "tls_again.laz"
+    assert main(["simulate", "tls", "-o", str(again), "--scene", "demo_small", "--h-step", "2", "--v-step", "2",
+                 "--station", "0,0", "--station", "20,10"]) == 0
+    a, b = bytearray(again.read_bytes()), bytearray(out.read_bytes())
+    a[90:94] = b[90:94]
+    assert a == b
 
 
 def test_simulate_als_cli_config_file(tmp_path, capsys):
@@ -67,6 +76,10 @@ def test_simulate_als_cli_config_file(tmp_path, capsys):
 
     c = read_cloud(out)
     assert c.meta["las"]["point_format"] == 8 and "nir" in c.attrs
+    from workstation.lidar.scene import PART_ID
+
+    roof = c.attrs["part"] == PART_ID["roof"]
+    assert roof.sum() > 50 and np.all(c.attrs["classification"][roof] == 6)
     bad = tmp_path / "bad.toml"
     bad.write_text("[flight]\naltitud = 3\n")
     assert main(["simulate", "als", "-o", str(tmp_path / "x.laz"), "--config", str(bad)]) == 1

@@ -79,3 +79,31 @@ def test_materials_and_bad_recipe(tmp_path):
     bad.write_text('[scene]\nname = "x"\nbuildingz = 3\n')
     with pytest.raises(InvalidInputError, match="buildingz"):
         load_recipe(bad)
+
+
+def test_save_and_load_scene(tmp_path, demo_scene):
+    from workstation.lidar.scene import load_scene, save_scene
+
+    p = save_scene(demo_scene, tmp_path / "scene.npz")
+    back = load_scene(p)
+    for k in ("vertices", "faces", "classification", "material", "object_id", "face_rgb", "origin"):
+        assert np.array_equal(getattr(back, k), getattr(demo_scene, k)), k
+    assert back.meta["objects"] == demo_scene.meta["objects"] and back.materials == demo_scene.materials
+    with pytest.raises(InvalidInputError):
+        save_scene(demo_scene, tmp_path / "scene.ply")
+
+
+def test_face_parts_split_roofs_walls_trunks_crowns(demo_scene):
+    from workstation.lidar.scene import PART_ID
+
+    s = demo_scene
+    part = s.part
+    bld = s.classification == C.BUILDING
+    assert set(np.unique(part[bld]).tolist()) == {PART_ID["roof"], PART_ID["wall"]}
+    tri = s.vertices[s.faces[bld & (part == PART_ID["wall"])]]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    assert np.all(np.abs(n[:, 2]) / np.linalg.norm(n, axis=1) <= 0.3 + 1e-9)  # walls are steep
+    hv = s.classification == C.HIGH_VEGETATION
+    assert {PART_ID["trunk"], PART_ID["crown"]} == set(np.unique(part[hv]).tolist())
+    assert np.all(s.classification[part == PART_ID["vehicle"]] == C.UNCLASSIFIED)
+    assert "part" in s.to_mesh().face_attrs

@@ -82,8 +82,8 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
     heritage church, trees, a road with cars, a stream with a bridge, a pond, a power line) is
     flown with two overlapping ALS lines, or scanned from three TLS stations. The cloud carries
-    the scene's class, object id (user_data and extra dimension object_id), return numbers,
-    intensity from the laser range equation, GPS time, scan angle and flags; the trajectory is
+    the scene's class, object id (user_data and extra dimension object_id), part (roof, wall,
+    trunk, crown, vehicle, ...), return numbers, intensity from the laser range equation, GPS time, scan angle and flags; the trajectory is
     written beside it as CSV.
     """
     import time

@@ -184,6 +184,38 @@ def recipe_names() -> list[str]:
 # ---------------------------------------------------------------------------------------------
 # scene
 # ---------------------------------------------------------------------------------------------
+#: Finer per-face labels than the ASPRS class (``part`` face attribute and point dimension).
+PARTS: dict[int, str] = {
+    0: "other", 1: "terrain", 2: "road", 3: "roof", 4: "wall", 5: "trunk", 6: "crown", 7: "shrub",
+    8: "grass", 9: "water", 10: "bridge", 11: "wire", 12: "pylon", 13: "vehicle",
+}
+PART_ID: dict[str, int] = {v: k for k, v in PARTS.items()}
+
+
+def face_parts(vertices: np.ndarray, faces: np.ndarray, classification: np.ndarray, material: np.ndarray) -> np.ndarray:
+    """Part code (:data:`PARTS`) of each face from its class, material and orientation.
+
+    Building faces facing up (normal z > 0.3, roofs and flat tops) are ``roof``, the others
+    ``wall``; high vegetation is ``trunk`` (bark) or ``crown``; unclassified car paint is a
+    ``vehicle``.
+    """
+    tri = vertices[faces]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    nz = n[:, 2] / np.maximum(np.linalg.norm(n, axis=1), 1e-12)
+    cls = classification
+    out = np.zeros(len(faces), np.uint8)
+    table = {C.GROUND: "terrain", C.ROAD_SURFACE: "road", C.MEDIUM_VEGETATION: "shrub", C.LOW_VEGETATION: "grass",
+             C.WATER: "water", C.BRIDGE_DECK: "bridge", C.WIRE_CONDUCTOR: "wire", C.TRANSMISSION_TOWER: "pylon"}
+    for c, name in table.items():
+        out[cls == c] = PART_ID[name]
+    bld = cls == C.BUILDING
+    out[bld] = np.where(np.abs(nz[bld]) > 0.3, PART_ID["roof"], PART_ID["wall"])
+    hv = cls == C.HIGH_VEGETATION
+    out[hv] = np.where(material[hv] == M["bark"], PART_ID["trunk"], PART_ID["crown"])
+    out[(cls == C.UNCLASSIFIED) & (material == M["car_paint"])] = PART_ID["vehicle"]
+    return out
+
+
 @dataclass(frozen=True)
 class Scene:
     """A labelled triangle mesh in local coordinates plus its map origin.
@@ -224,22 +256,33 @@ class Scene:
     def n_faces(self) -> int:
         return int(self.faces.shape[0])
 
+    @property
+    def part(self) -> np.ndarray:
+        """(m,) uint8 part code per face (:data:`PARTS`), computed on first use."""
+        p = self.__dict__.get("_part")
+        if p is None:
+            p = face_parts(self.vertices, self.faces, self.classification, self.material)
+            object.__setattr__(self, "_part", p)
+        return p
+
     def bounds_local(self) -> tuple[np.ndarray, np.ndarray]:
         return self.vertices.min(axis=0), self.vertices.max(axis=0)
 
     def to_mesh(self) -> Mesh:
         """The scene as a core :class:`Mesh` in map coordinates.
 
-        ``face_attrs``: ``classification`` u8, ``material`` u16, ``object_id`` u32, ``rgb``
-        (m, 3) u8; ``meta`` holds the material table and the recipe/seed.
+        ``face_attrs``: ``classification`` u8, ``material`` u16, ``object_id`` u32, ``part``
+        u8 (:data:`PARTS`), ``rgb`` (m, 3) u8; ``meta`` holds the material table, the part
+        names and the recipe/seed.
         """
         return Mesh(
             self.vertices + self.origin,
             self.faces,
             face_attrs={"classification": self.classification, "material": self.material,
-                        "object_id": self.object_id, "rgb": self.face_rgb},
+                        "object_id": self.object_id, "part": self.part, "rgb": self.face_rgb},
             crs=self.crs,
-            meta={**self.meta, "materials": [dataclasses.asdict(m) for m in self.materials]},
+            meta={**self.meta, "materials": [dataclasses.asdict(m) for m in self.materials],
+                  "parts": {str(k): v for k, v in PARTS.items()}},
         )
 
     @classmethod

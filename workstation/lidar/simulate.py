@@ -273,6 +273,7 @@ class _Caster:
         self.has_porous = bool(np.any(self.porosity > 0))
         self.cls = scene.classification
         self.obj = scene.object_id
+        self.part = scene.part
         self.rgb = scene.face_rgb
         self.rgb16 = scene.face_rgb.astype(np.uint16) * 257
 
@@ -528,7 +529,8 @@ def simulate(
         ``cloud`` in map coordinates (scene CRS) with ``classification``, ``return_number``,
         ``number_of_returns``, ``intensity``, ``gps_time``, ``scan_angle``,
         ``scan_direction_flag``, ``edge_of_flight_line``, ``point_source_id``, ``user_data``
-        (object id mod 256), ``object_id`` (u32), ``rgb`` and ``range`` (f4, m).
+        (object id mod 256), ``object_id`` (u32), ``part`` (u8, roof / wall / trunk / crown /
+        vehicle ... see :data:`workstation.lidar.scene.PARTS`), ``rgb`` and ``range`` (f4, m).
     """
     sensor = sensor or SENSOR_PRESETS["als"]
     errors = errors or ErrorModel()
@@ -587,6 +589,7 @@ def simulate(
             "edge_of_flight_line": ang.edge[j],
             "point_source_id": np.full(j.size, seg.source_id, np.uint16),
             "object_id": caster.obj[prim],
+            "part": caster.part[prim],
             "rgb": caster.rgb16[prim],
             "range": r_meas.astype(np.float32),
             **({"nir": np.rint(caster.refl[prim] * 65535).astype(np.uint16)} if with_nir else {}),
