@@ -63,3 +63,16 @@ def test_classify_missing_model_is_a_user_error(tmp_path):
     src = tmp_path / "in.laz"
     write_cloud(two_class_scene(3), src)
     assert main(["classify", str(src), "-o", str(tmp_path / "o.laz"), "--model", str(tmp_path / "nope.pt")]) == 1
+
+
+def test_ground_method_ml_with_the_shipped_model(tmp_path, capsys):
+    src = tmp_path / "in.laz"
+    write_cloud(two_class_scene(4), src)
+    out = tmp_path / "g.laz"
+    assert main(["ground", str(src), "-o", str(out), "--method", "ml", "--reclassify", "--json"]) == 0
+    res = json.loads(capsys.readouterr().out)
+    ref = np.asarray(read_cloud(src).attrs["classification"])
+    cls = np.asarray(read_cloud(out).attrs["classification"])
+    assert set(np.unique(cls)) <= {1, 2}
+    assert res["ground_count"] == int((cls == 2).sum())
+    assert ((cls == 2) == (ref == 2)).mean() > 0.95
