@@ -20,6 +20,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "ground": ("workstation.cli.ground:ground", "Classify ground (2) and non-ground (1): SMRF, CSF, PMF, PTD, auto, baselines."),
     "evaluate": ("workstation.cli.evaluate:evaluate", "Confusion matrix, ISPRS Type I/II, total error and kappa against a reference."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+    "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),
+    "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
+    "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),
+    "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
 }
 
 

@@ -21,6 +21,7 @@ log = get_logger(__name__)
 STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
     ("ground filtering (SMRF), height above ground, evaluation", "workstation.pipeline.demo_steps.ground:step"),
+    ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
 ]
 
 
