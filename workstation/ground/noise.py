@@ -80,10 +80,12 @@ def isolated_low_points(xyz: np.ndarray, depth: float = 1.5, k: int = 10) -> np.
     return xyz[:, 2] < ref - depth
 
 
-def grid_low_points(xyz: np.ndarray, cell: float = 1.0, depth: float = 2.0) -> np.ndarray:
+def grid_low_points(xyz: np.ndarray, cell: float = 1.0, depth: float = 5.0) -> np.ndarray:
     """(m,) bool: points more than ``depth`` below the 5x5-cell median of the lowest-point grid.
 
-    A grid version of :func:`isolated_low_points`: O(m), for the fast grid filters.
+    A grid version of :func:`isolated_low_points`: O(m), for the fast grid filters; the
+    5 m default is SMRF's low-outlier depth (2 m flags ground on steep slopes: PMF 7.8 % -> 8.9 %
+    mean total error on the six ISPRS samples).
 
     Parameters
     ----------
