@@ -110,7 +110,7 @@ def write_mesh(mesh: Mesh, path, *, overwrite: bool = False, inputs=()) -> Path:
         ``rgb`` vertex colours (u8 or u16) and ``normal`` travel where the format allows.
     path : path-like
         .ply, .obj (+ .mtl and .png when textured), .glb, .gltf (single file, buffers
-        embedded), .stl, .off.
+        embedded), .off.
     overwrite : bool
         Replace existing files.
 
@@ -170,7 +170,7 @@ def _ply_has_normals(path: Path) -> bool:
 
 
 def read_mesh(path) -> Mesh:
-    """Read a mesh file (PLY, OBJ, GLB/glTF, STL, OFF) into a :class:`Mesh`.
+    """Read a mesh file (PLY, OBJ, GLB/glTF, OFF) into a :class:`Mesh`.
 
     Vertex colours become ``rgb`` (n, 3) uint8; a texture becomes ``uv`` and
     ``meta["texture"]``. Scenes are flattened with their node transforms applied.
