@@ -34,7 +34,7 @@ def _trimesh():
     return trimesh
 
 
-def _ext(path) -> str:
+def check_mesh_extension(path) -> str:
     ext = Path(path).suffix.lower()
     if ext not in MESH_EXTENSIONS:
         raise UnsupportedFormatError(f"unknown mesh extension '{ext or '(none)'}'",
@@ -118,7 +118,7 @@ def write_mesh(mesh: Mesh, path, *, overwrite: bool = False, inputs=()) -> Path:
     -------
     Path
     """
-    ext = _ext(path)
+    ext = check_mesh_extension(path)
     p = Path(path)
     if mesh.n_faces == 0:
         raise InvalidInputError("the mesh has no faces", "meshing failed upstream", path=p)
@@ -176,7 +176,7 @@ def read_mesh(path) -> Mesh:
     ``meta["texture"]``. Scenes are flattened with their node transforms applied.
     """
     p = Path(path)
-    _ext(p)
+    check_mesh_extension(p)
     if not p.exists():
         raise InvalidInputError("file not found", "check the path", path=p)
     trimesh = _trimesh()
