@@ -70,7 +70,7 @@ def clean(mesh: Mesh, params: CleanParams = CleanParams()) -> tuple[Mesh, StepRe
     Returns
     -------
     (Mesh, StepRecord)
-        ``summary`` has per-filter face/vertex counts removed, ``self_intersecting_faces``,
+        ``summary["removed"]`` has, per filter, the faces and vertices it removed; ``self_intersecting_faces``,
         ``holes_closed_faces`` and the final ``non_manifold_edges``.
     """
     pml = import_pymeshlab()
@@ -78,7 +78,7 @@ def clean(mesh: Mesh, params: CleanParams = CleanParams()) -> tuple[Mesh, StepRe
 
     if mesh.n_faces == 0:
         raise InvalidInputError("the mesh has no faces to clean")
-    removed: dict[str, int] = {}
+    removed: dict[str, dict] = {}
     summary: dict = {}
     with Timer() as t:
         m, origin = mesh_to_pymeshlab(mesh)
@@ -88,8 +88,9 @@ def clean(mesh: Mesh, params: CleanParams = CleanParams()) -> tuple[Mesh, StepRe
             before = _counts(ms)
             fn(**kw)
             after = _counts(ms)
-            removed[name] = before["faces"] - after["faces"]
-            removed[name + "_vertices"] = before["vertices"] - after["vertices"]
+            prev = removed.get(name, {"faces": 0, "vertices": 0})
+            removed[name] = {"faces": prev["faces"] + before["faces"] - after["faces"],
+                             "vertices": prev["vertices"] + before["vertices"] - after["vertices"]}
 
         if params.remove_duplicates:
             run("duplicate_vertices", ms.meshing_remove_duplicate_vertices)
@@ -127,7 +128,8 @@ def clean(mesh: Mesh, params: CleanParams = CleanParams()) -> tuple[Mesh, StepRe
         summary["non_manifold_vertices"] = int(topo["non_two_manifold_vertices"])
         out = pymeshlab_to_mesh(ms.current_mesh(), origin, crs=mesh.crs, meta=mesh.meta,
                                 quality_name="quality" if "quality" in mesh.vertex_attrs else None)
-        unchanged = out.n_faces == mesh.n_faces and not any(removed.values()) and not summary.get("holes_closed_faces")
+        unchanged = (out.n_faces == mesh.n_faces and not any(r["faces"] or r["vertices"] for r in removed.values())
+                     and not summary.get("holes_closed_faces"))
         if unchanged and mesh.face_attrs:
             out = Mesh(out.vertices, out.faces, out.vertex_attrs, mesh.face_attrs, crs=out.crs, meta=out.meta)
     summary["removed"] = removed
