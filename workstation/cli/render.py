@@ -26,7 +26,7 @@ def _size(ctx, param, value):
 @click.option("--background", default="white", show_default=True, help="Background colour (name or #rrggbb).")
 @click.option("--point-size", type=float, default=0.0, show_default=True,
               help="Point diameter in pixels (0 = from the point density).")
-@click.option("--edl/--no-edl", default=None, help="Eye-dome lighting for clouds [default: on except top view].")
+@click.option("--edl", is_flag=True, help="Eye-dome lighting for clouds (shades depth edges).")
 @click.option("--no-legend", is_flag=True, help="No class legend or scalar bar.")
 @click.option("--max-points", type=int, default=0, show_default=True,
               help="Draw a seeded random subset of at most this many points (0 = all).")

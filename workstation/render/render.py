@@ -46,9 +46,10 @@ class RenderParams:
     point_size : float
         Point diameter in pixels (clouds); 0 = from the density, so that points about cover
         the object's footprint (1-8 px).
-    edl : bool or None
-        Eye-dome lighting for clouds; None = on except in the ``top`` view (where it only
-        outlines every point).
+    edl : bool
+        Eye-dome lighting for clouds: shades depth discontinuities so shapes read without
+        normals (best on dense clouds seen from the side; on sparse clouds it outlines every
+        point).
     legend : bool
         Class legend (class colouring) or scalar bar (scalar colouring).
     scale_bar : bool
@@ -68,7 +69,7 @@ class RenderParams:
     view: str = "iso"
     background: str = "white"
     point_size: float = 0.0
-    edl: bool | None = None
+    edl: bool = False
     legend: bool = True
     scale_bar: bool = True
     cmap: str | None = None
@@ -333,8 +334,9 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
             pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(lo), float(hi)], **kw)
             if params.legend:
                 fg = "white" if bg.mean() < 0.5 else "black"
-                pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.88, position_y=0.1,
-                                  width=0.06, height=0.6, n_labels=5, fmt="%.4g")
+                pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.8, position_y=0.1,
+                                  width=0.05, height=0.7, n_labels=5, fmt="%.4g",
+                                  title_font_size=max(6, size[1] // 40), label_font_size=max(6, size[1] // 45))
         else:
             pl.add_mesh(poly, color="lightgray", **kw)
         if kind.startswith("class") and params.legend and legend:
@@ -350,8 +352,7 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
                 centre = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
                 _draw_scale_bar(pl, pv, upp, size, centre, float(pts[:, 2].max()), _units(obj.crs),
                                 bg.mean() < 0.5)
-        edl = params.edl if params.edl is not None else (camera is not None or params.view != "top")
-        if is_cloud and edl:
+        if is_cloud and params.edl:
             pl.enable_eye_dome_lighting()
         img = pl.screenshot(return_img=True)
     finally:
