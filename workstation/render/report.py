@@ -3,8 +3,9 @@
 Everything is inlined (images as base64 PNG, no scripts, no external files), so the page can
 be mailed or archived. Sections, in order: products found (clouds, meshes, rasters, JSON),
 stages (from ``run.json``, other ``*.json`` records and the clouds' ``history``), renders of
-clouds (top view) and meshes (iso view), and plots: class histograms, confusion matrices
-found in JSON files, hillshades of elevation rasters and error maps.
+clouds (top view) and meshes (iso view), plots (class histograms, confusion matrices
+found in JSON files, hillshades of elevation rasters and error maps), and the PNG images
+already in the folder.
 """
 
 from __future__ import annotations
@@ -305,8 +306,9 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         title = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>"
         if srows:
             stage_html.append(title + _table(srows, ("stage", "seconds", "parameters", "summary")))
-        flat = [(k, v) for k, v in _flatten(doc) if not isinstance(v, (dict,))]
-        if flat and not srows:
+        rest = {k: v for k, v in doc.items() if k not in ("stages", "steps", "history")} if isinstance(doc, dict) else doc
+        flat = [(k, v) for k, v in _flatten(rest) if not isinstance(v, (dict,))]
+        if flat:
             stage_html.append(title + f"<details><summary>{len(flat)} figures</summary>"
                               + _table(flat, ("figure", "value")) + "</details>")
         cm = _confusion(doc)
@@ -370,6 +372,11 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
             raster_html.append(_img(r[1], r[0]))
     if raster_html:
         parts.append("<h2>Rasters</h2>" + "".join(raster_html))
+    pngs = [p for p in _find(root, (".png",), params.max_depth) if p.stat().st_size <= 2_000_000]
+    if pngs:
+        parts.append("<h2>Images in the folder</h2>" + "".join(
+            _img(base64.b64encode(p.read_bytes()).decode("ascii"), str(p.relative_to(root)))
+            for p in pngs[: params.max_files]))
     return ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
             f"<title>Report: {html.escape(root.resolve().name)}</title><style>{CSS}</style></head><body>"
             + "\n".join(parts) + "</body></html>\n")
