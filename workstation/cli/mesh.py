@@ -20,7 +20,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Poisson screening weight (0 = unscreened).")
 @click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
-@click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores).")
+@click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
 @click.option("--radius", type=float, default=None,
               help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")
 @click.option("--max-edge", type=float, default=None,

@@ -14,7 +14,6 @@
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,7 +23,7 @@ from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Mesh
 
-from .steps import StepRecord, Timer, import_pymeshlab, point_spacing
+from .steps import StepRecord, Timer, import_pymeshlab, openmp_threads, point_spacing
 
 log = get_logger(__name__)
 
@@ -51,7 +50,8 @@ class PoissonParams:
         Vertices whose density is below this quantile of the output vertices' densities are
         removed, with their faces (fraction in [0, 1); 0 = keep the closed surface).
     threads : int
-        OpenMP threads of the solver (count; 0 = all cores of this machine).
+        OpenMP threads of the solver (count; 0 = all cores, or 1 when OpenMP would spin:
+        see :func:`workstation.mesh.steps.openmp_threads`).
     """
 
     depth: int = 9
@@ -118,10 +118,6 @@ def _check_mesh(stage: str, mesh: Mesh) -> Mesh:
     return mesh
 
 
-def _threads(n: int) -> int:
-    return int(n) if n and n > 0 else max(1, os.cpu_count() or 1)
-
-
 def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh, StepRecord]:
     """Screened Poisson surface of an oriented cloud (needs ``normal``).
 
@@ -137,7 +133,7 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
     import_pymeshlab()
     from workstation.interop.pymeshlab import cloud_to_pymeshlab, meshset_with, pymeshlab_to_mesh
 
-    threads = _threads(params.threads)
+    threads = openmp_threads(params.threads)
     with Timer() as t:
         m, origin = cloud_to_pymeshlab(cloud.without_attrs("rgb") if "rgb" in cloud.attrs else cloud)
         ms = meshset_with(m)

@@ -150,17 +150,17 @@ def _scalar_colors(obj, params: RenderParams):
     return c, None, a.astype(np.float64), title
 
 
-def _point_size(params: RenderParams, pts: np.ndarray, size) -> float:
+def _point_size(params: RenderParams, lo: np.ndarray, hi: np.ndarray, n: int, size) -> float:
     """Point diameter in pixels: given, or about sqrt(footprint pixels / points)."""
     if params.point_size > 0:
         return float(params.point_size)
-    ext = np.ptp(pts, axis=0)
+    ext = hi - lo
     w, h = size
     # share of the frame the XY footprint fills in a fitted view (an upper bound for others)
     aspect = max(ext[0], 1e-9) / max(ext[1], 1e-9)
     fill = (aspect / (w / h)) if aspect < w / h else ((w / h) / aspect)
     footprint_px = w * h * fill * 0.8
-    return float(np.clip(1.5 * math.sqrt(footprint_px / max(len(pts), 1)), 1.0, 8.0))
+    return float(np.clip(1.5 * math.sqrt(footprint_px / max(n, 1)), 1.0, 8.0))
 
 
 def _subset(cloud: Cloud, max_points: int) -> Cloud:
@@ -196,15 +196,16 @@ def _vtk_matrix(m: np.ndarray):
     return vm
 
 
-def _set_pinhole(pl, camera: Camera, pose: Pose, origin: np.ndarray, pts: np.ndarray) -> None:
+def _set_pinhole(pl, camera: Camera, pose: Pose, origin: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
     R = np.asarray(pose.R, dtype=np.float64)
     C = np.asarray(pose.center, dtype=np.float64) - origin
-    depth = (pts - C) @ R[2]
-    front = depth[depth > 0]
-    if front.size == 0:
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    depth = (corners - C) @ R[2]
+    if depth.max() <= 0:
         raise InvalidInputError("the object is behind the camera", "check the pose (world -> camera)", field="pose")
-    near = max(float(front.min()) * 0.5, 1e-6 * float(front.max()))
-    far = float(front.max()) * 1.5
+    # clipping planes from the bounding box (the camera may stand inside it)
+    far = float(depth.max()) * 1.05
+    near = max(float(depth.min()) * 0.95, far * 1e-4)
     cam = pl.camera
     cam.position = tuple(C)
     cam.focal_point = tuple(C + R[2])
@@ -303,18 +304,19 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     if is_cloud:
         obj = _subset(obj, params.max_points)
     kind, rgb, scalars, legend = _scalar_colors(obj, params)
-    if is_cloud:
-        poly, origin = cloud_to_polydata(obj)
-    else:
-        poly, origin = mesh_to_polydata(obj)
-    pts = np.asarray(poly.points, dtype=np.float64)
+    xyz = obj.xyz if is_cloud else obj.vertices
+    lo, hi = xyz.min(axis=0), xyz.max(axis=0)  # once, in float64
+    origin = np.round(0.5 * (lo + hi))
+    lo, hi = lo - origin, hi - origin
+    poly, _ = cloud_to_polydata(obj, origin) if is_cloud else mesh_to_polydata(obj, origin)
+    n_points = obj.n if is_cloud else obj.n_vertices
     pl = pv.Plotter(off_screen=True, window_size=list(size), lighting=None if is_cloud else "light kit")
     try:
         pl.set_background(params.background)
         bg = np.asarray(pv.Color(params.background).float_rgb)
         kw = dict(lighting=not is_cloud, show_scalar_bar=False)
         if is_cloud:
-            kw.update(style="points", point_size=_point_size(params, pts, size), render_points_as_spheres=False)
+            kw.update(style="points", point_size=_point_size(params, lo, hi, n_points, size), render_points_as_spheres=False)
         else:
             kw.update(smooth_shading=True)
         if rgb is not None:
@@ -324,14 +326,16 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
                 poly.point_data["_rgb"] = rgb
             pl.add_mesh(poly, scalars="_rgb", rgb=True, **kw)
         elif scalars is not None:
-            finite = scalars[np.isfinite(scalars)]
-            lo, hi = (np.percentile(finite, [params.clip_percent, 100 - params.clip_percent]) if finite.size
+            sample = scalars if scalars.size <= 1_000_000 else scalars[
+                np.random.default_rng(0).choice(scalars.size, 1_000_000, replace=False)]
+            finite = sample[np.isfinite(sample)]
+            vmin, vmax = (np.percentile(finite, [params.clip_percent, 100 - params.clip_percent]) if finite.size
                       else (0.0, 1.0))
-            if hi <= lo:
-                hi = lo + 1.0
+            if vmax <= vmin:
+                vmax = vmin + 1.0
             poly.point_data["_s"] = scalars
             cmap = params.cmap or ("gray" if kind == "intensity" else "viridis")
-            pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(lo), float(hi)], **kw)
+            pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(vmin), float(vmax)], **kw)
             if params.legend:
                 fg = "white" if bg.mean() < 0.5 else "black"
                 pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.8, position_y=0.1,
@@ -345,12 +349,11 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
                                   loc="upper right", size=(lw, lh), face="rectangle")
             actor.SetPosition(1 - lw - 0.01, 1 - lh - 0.01)  # pyvista places it as if 0.2 wide
         if camera is not None:
-            _set_pinhole(pl, camera[0], camera[1], origin, pts)
+            _set_pinhole(pl, camera[0], camera[1], origin, lo, hi)
         else:
-            upp = _fit_view(pl, params.view, pts.min(axis=0), pts.max(axis=0), size, params.margin)
+            upp = _fit_view(pl, params.view, lo, hi, size, params.margin)
             if params.view == "top" and params.scale_bar and upp:
-                centre = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
-                _draw_scale_bar(pl, pv, upp, size, centre, float(pts[:, 2].max()), _units(obj.crs),
+                _draw_scale_bar(pl, pv, upp, size, 0.5 * (lo + hi), float(hi[2]), _units(obj.crs),
                                 bg.mean() < 0.5)
         if is_cloud and params.edl:
             pl.enable_eye_dome_lighting()
