@@ -104,7 +104,9 @@ def test_usage_error_exit_2(capsys):
 
 
 @pytest.mark.realdata
-@pytest.mark.parametrize("name", ["Topography.laz", "autzen_trim.las", "lidarhd_extra_bytes.laz", "sample_c.las", "warsaw_small.las"])
+@pytest.mark.parametrize("name", ["Topography.laz", "MixedConifer.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las",
+                                  "warsaw_small.las", "lidarhd_extra_bytes.laz", "sample_c.las", "vegetation_1_3.las",
+                                  "fullwave.laz", "TreeLS_pine.laz"])
 def test_info_matches_laspy_on_real_files(shared_data, capsys, name):
     src = shared_data / "lidar" / name
     ref = laspy.read(src)
@@ -116,3 +118,52 @@ def test_info_matches_laspy_on_real_files(shared_data, capsys, name):
     np.testing.assert_allclose(s["bounds"]["max"], [ref.x.max(), ref.y.max(), ref.z.max()])
     cls, cnt = np.unique(np.asarray(ref.classification), return_counts=True)
     assert s["classification"] == {str(k): int(v) for k, v in zip(cls, cnt)}
+
+
+def test_columns_rejected_for_non_text_input(tmp_path, capsys, small_cloud):
+    src = tmp_path / "a.las"
+    write_cloud(small_cloud, src)
+    rc, _, err = _run(capsys, "convert", str(src), str(tmp_path / "b.ply"), "--columns", "x,y,z")
+    assert rc == 2 and "text inputs" in err
+    rc, _, err = _run(capsys, "info", str(src), "--columns", "x,y,z")
+    assert rc == 2
+
+
+def test_text_input_with_nan_and_missing_column(tmp_path, capsys):
+    bad = tmp_path / "nan.xyz"
+    bad.write_text("1 2 3\n4 nan 6\n")
+    rc, _, err = _run(capsys, "info", str(bad))
+    assert rc == 1 and "nan.xyz" in err and "Traceback" not in err
+    ok = tmp_path / "three.txt"
+    ok.write_text("1 2 3\n4 5 6\n")
+    rc, _, err = _run(capsys, "convert", str(ok), str(tmp_path / "o.las"), "--columns", "x,y,z,label")
+    assert rc == 1 and "label" in err
+    assert not (tmp_path / "o.las").exists()
+
+
+@pytest.mark.realdata
+def test_convert_isprs_text_to_laz_keeps_labels(shared_data, tmp_path, capsys):
+    out = tmp_path / "samp11.laz"
+    rc, _, err = _run(capsys, "convert", str(shared_data / "isprs" / "samp11.txt"), str(out), "--columns", "x,y,z,label")
+    assert rc == 0, err
+    c = read_cloud(out)
+    ref = np.loadtxt(shared_data / "isprs" / "samp11.txt")
+    assert c.n == 38010
+    np.testing.assert_allclose(c.xyz, ref[:, :3], atol=5e-4)
+    np.testing.assert_array_equal(c.attrs["label"], ref[:, 3])
+
+
+@pytest.mark.realdata
+def test_info_e57_matches_pye57(shared_data, capsys):
+    import pye57
+
+    src = shared_data / "lidar" / "pumpAVisualReferenceImage.e57"
+    rc, out, _ = _run(capsys, "info", str(src), "--json")
+    assert rc == 0
+    s = json.loads(out)
+    e = pye57.E57(str(src))
+    total = 0
+    for i in range(e.scan_count):
+        d = e.read_scan(i, ignore_missing_fields=True)
+        total += len(d["cartesianX"])
+    assert s["point_count"] == total

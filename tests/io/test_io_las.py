@@ -219,3 +219,14 @@ def test_real_file_matches_laspy_and_round_trips(shared_data, tmp_path, name):
     h0, h1 = laspy.open(src).header, laspy.open(las).header
     assert h1.point_format.id == h0.point_format.id and h1.version == h0.version
     np.testing.assert_array_equal(h1.scales, h0.scales)
+
+
+def test_outputs_get_normal_permissions(tmp_path, small_cloud):
+    import os
+    import stat
+
+    out = tmp_path / "perm.laz"
+    write_cloud(small_cloud, out)
+    mask = os.umask(0o022)
+    os.umask(mask)
+    assert stat.S_IMODE(out.stat().st_mode) == 0o666 & ~mask

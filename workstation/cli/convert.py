@@ -32,6 +32,8 @@ def convert(src, dst, crs, to_crs, columns, out_columns, point_format, las_versi
     format_of(src)
     format_of(dst)
     check_output(dst, overwrite, inputs=[src])
+    if columns and format_of(src)[0] not in ("xyz", "txt", "csv", "pts"):
+        raise click.UsageError("--columns applies to text inputs (.xyz, .txt, .csv, .pts) only")
     cloud = read_cloud(src, **({"columns": columns} if columns else {}))
     if crs:
         parse_crs(crs, "crs")

@@ -11,7 +11,7 @@ def _fmt(v) -> str:
     if v is None:
         return "-"
     if isinstance(v, float):
-        return f"{v:.6g}"
+        return f"{v:.10g}"
     if isinstance(v, list):
         return "[" + ", ".join(_fmt(x) for x in v) + "]"
     return str(v)
@@ -29,6 +29,10 @@ def info(file, columns, density_cell, as_json):
     spacing of FILE."""
     from workstation.qc.summary import summarize
 
+    from workstation.io import format_of
+
+    if columns and format_of(file)[0] not in ("xyz", "txt", "csv", "pts"):
+        raise click.UsageError("--columns applies to text inputs (.xyz, .txt, .csv, .pts) only")
     opts = {"columns": columns} if columns else {}
     s = summarize(file, density_cell_m=density_cell, **opts)
     if as_json:

@@ -149,6 +149,24 @@ class Cloud:
         self._meta = MappingProxyType(dict(meta or {}))
         self.history = tuple(history)
 
+    @classmethod
+    def from_owned_arrays(cls, xyz: np.ndarray, attrs: Mapping[str, np.ndarray], crs=None, meta=None, history=()) -> "Cloud":
+        """Build a cloud from arrays an IO reader has just made and owns (no copy, no scan).
+
+        For readers whose formats cannot hold NaN coordinates (integer LAS coordinates) and
+        which allocate arrays with the table dtypes: skips the validation pass over every
+        point, checks shapes, and marks the arrays read-only in place.
+        """
+        n = xyz.shape[0]
+        if xyz.dtype != np.float64 or xyz.shape != (n, 3):
+            raise InvalidInputError(f"xyz must be (n, 3) float64, got {xyz.shape} {xyz.dtype}", field="xyz")
+        for k, a in attrs.items():
+            if a.shape[0] != n:
+                raise InvalidInputError(f"has {a.shape[0]} values for {n} points", field=k)
+            a.flags.writeable = False
+        xyz.flags.writeable = False
+        return cls(xyz, attrs, crs=crs, meta=meta, history=history, _trusted=True)
+
     # -- access -------------------------------------------------------------------------
     @property
     def xyz(self) -> np.ndarray:

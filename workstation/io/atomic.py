@@ -44,6 +44,18 @@ def check_output(path, overwrite: bool = False, inputs=()) -> Path:
     return p
 
 
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def _publish(tmp: Path, final: Path) -> None:
+    """Give the finished temporary file normal permissions (mkstemp makes it 0600) and rename."""
+    os.chmod(tmp, 0o666 & ~_umask())
+    os.replace(tmp, final)
+
+
 @contextlib.contextmanager
 def atomic_path(path, overwrite: bool = False, inputs=()) -> Iterator[Path]:
     """Yield a temporary path beside ``path``; rename it onto ``path`` if the block succeeds.
@@ -65,7 +77,7 @@ def atomic_path(path, overwrite: bool = False, inputs=()) -> Iterator[Path]:
     tmp_path = Path(tmp)
     try:
         yield tmp_path
-        os.replace(tmp_path, p)
+        _publish(tmp_path, p)
     finally:
         if tmp_path.exists():
             tmp_path.unlink()
@@ -85,6 +97,7 @@ def atomic_dir(path, overwrite: bool = False) -> Iterator[Path]:
         yield tmp
         if p.exists():
             shutil.rmtree(p) if p.is_dir() else p.unlink()
+        os.chmod(tmp, 0o777 & ~_umask())
         os.replace(tmp, p)
     finally:
         if tmp.exists():

@@ -28,7 +28,8 @@ from workstation.core.log import get_logger
 
 log = get_logger(__name__)
 
-CHUNK = 2_000_000
+CHUNK_LAS = 262_144  # uncompressed: small enough that per-field copies stay in cache
+CHUNK_LAZ = 1_048_576  # compressed: large enough for lazrs to decompress chunks in parallel
 SCAN_ANGLE_UNIT = 0.006  # degrees per unit of the LAS 1.4 (formats 6-10) scan angle
 _DEFAULT_SCALE = 0.001  # metres (or feet) for projected CRSs
 _GEOGRAPHIC_SCALE = 1e-7  # degrees
@@ -313,14 +314,15 @@ def _records(reader, path, n: int, chunk_size: int):
         )
 
 
-def read(path, *, chunk_size: int = CHUNK) -> Cloud:
+def read(path, *, chunk_size: int | None = None) -> Cloud:
     """Read a LAS or LAZ file.
 
     Parameters
     ----------
     path : path-like
-    chunk_size : int
-        Points decoded per step; bounds the temporary memory.
+    chunk_size : int, optional
+        Points decoded per step; bounds the temporary memory (default 262,144 for LAS,
+        1,048,576 for LAZ).
 
     Returns
     -------
@@ -333,6 +335,8 @@ def read(path, *, chunk_size: int = CHUNK) -> Cloud:
         header = reader.header
         _check_point_bytes(path, header)
         n = int(header.point_count)
+        if chunk_size is None:
+            chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
         filler = _Filler(header, n)
         got = 0
         for rec in _records(reader, path, n, chunk_size):
@@ -342,7 +346,7 @@ def read(path, *, chunk_size: int = CHUNK) -> Cloud:
             evlrs = reader.evlrs if reader.evlrs is not None else []
             meta["las"]["evlrs"] = _vlr_records(evlrs)
     meta["las"]["crs"] = crs
-    return Cloud(filler.xyz, filler.attrs, crs=crs, meta=meta)
+    return Cloud.from_owned_arrays(filler.xyz, filler.attrs, crs=crs, meta=meta)
 
 
 def read_header(path) -> dict:
@@ -377,7 +381,7 @@ def iter_chunks(path, chunk_size: int = 1_000_000) -> Iterator[Cloud]:
         for rec in _records(reader, path, int(header.point_count), chunk_size):
             f = _Filler(header, len(rec))
             f.fill(rec, 0)
-            yield Cloud(f.xyz, f.attrs, crs=crs, meta=meta, _trusted=False)
+            yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
 
 
 # ---------------------------------------------------------------------------------------
@@ -480,7 +484,7 @@ def write(
     scales=None,
     offsets=None,
     compress: bool | None = None,
-    chunk_size: int = CHUNK,
+    chunk_size: int | None = None,
 ) -> None:
     """Write a cloud as LAS or LAZ (by suffix unless ``compress`` says).
 
@@ -505,6 +509,8 @@ def write(
     scales, offsets = _scales_offsets(cloud, las_meta, scales, offsets)
     if compress is None:
         compress = path.suffix.lower() == ".laz"
+    if chunk_size is None:
+        chunk_size = CHUNK_LAZ if compress else CHUNK_LAS
 
     header = laspy.LasHeader(point_format=fmt, version=ver)
     header.scales = scales

@@ -1,0 +1,48 @@
+"""`ws hillshade DEM.tif -o OUT.tif`: shaded relief (and slope/aspect) of a DEM."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option, output_option, overwrite_option
+
+
+@click.command()
+@click.argument("dem", type=click.Path(exists=True, dir_okay=False))
+@output_option
+@click.option("--azimuth", default=315.0, show_default=True, type=float, help="Light direction, degrees clockwise from north.")
+@click.option("--altitude", default=45.0, show_default=True, type=float, help="Light elevation above the horizon, degrees.")
+@click.option("--z-factor", default=1.0, show_default=True, type=float, help="Vertical exaggeration (dimensionless).")
+@click.option("--product", type=click.Choice(["hillshade", "slope", "aspect"]), default="hillshade", show_default=True,
+              help="hillshade (0-255), slope (degrees) or aspect (degrees from north).")
+@click.option("--png", type=click.Path(dir_okay=False), default=None, help="Also write a PNG preview of the result.")
+@overwrite_option
+@json_option
+def hillshade(dem, output, azimuth, altitude, z_factor, product, png, overwrite, as_json):
+    """Hillshade, slope or aspect of DEM by Horn (1981) gradients, as a GeoTIFF."""
+    import numpy as np
+
+    from workstation.io.geotiff import read_raster, write_raster
+    from workstation.raster import terrain
+
+    r = read_raster(dem, band=1)
+    if product == "hillshade":
+        out = terrain.hillshade(r, terrain.HillshadeParams(azimuth, altitude, z_factor))
+    elif product == "slope":
+        out = terrain.slope(r, z_factor)
+    else:
+        out = terrain.aspect(r)
+    write_raster(out, output, overwrite=overwrite, inputs=[dem])
+    if png:
+        from workstation.io import atomic_path
+
+        a = np.asarray(out.array, float)
+        if product != "hillshade":
+            lo, hi = np.nanpercentile(a, [1, 99])
+            a = np.nan_to_num((a - lo) / max(hi - lo, 1e-9) * 255, nan=0)
+        import cv2
+
+        with atomic_path(png, overwrite=overwrite) as tmp:
+            cv2.imwrite(str(tmp), np.clip(a, 0, 255).astype(np.uint8))
+    if as_json:
+        emit_json({"output": output, "product": product, "rows": out.shape[0], "cols": out.shape[1], **out.meta})

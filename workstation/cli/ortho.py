@@ -1,0 +1,42 @@
+"""`ws ortho WORKDIR --dsm DSM.tif -o ORTHO.tif --resolution R`: true orthophoto."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option, output_option, overwrite_option
+
+
+@click.command()
+@click.argument("workdir", type=click.Path(exists=True))
+@click.option("--dsm", required=True, type=click.Path(exists=True, dir_okay=False), help="Surface model GeoTIFF (same CRS as the cameras).")
+@output_option
+@click.option("--resolution", type=float, default=None, help="Ortho cell size in metres (default: the DSM's).")
+@click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
+              help="Image folder when it is not WORKDIR/images.")
+@click.option("--blend-angle", type=float, default=2.0, show_default=True,
+              help="Degrees: views within about this of the most nadir one are blended across seams.")
+@click.option("--no-occlusion", is_flag=True, help="Skip the visibility test (a conventional, not true, orthophoto).")
+@click.option("--accuracy", "accuracy_out", type=click.Path(dir_okay=False), default=None,
+              help="Also write the estimated planimetric accuracy (metres) as a GeoTIFF.")
+@click.option("--dsm-rmse", type=float, default=None, help="Vertical RMSE of the DSM in metres (accuracy estimate).")
+@overwrite_option
+@json_option
+def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion, accuracy_out, dsm_rmse, overwrite, as_json):
+    """True orthophoto of WORKDIR (COLMAP workdir/model folder, or a cameras JSON) over DSM:
+    backward projection with distortion, occlusion test against the DSM, bilinear sampling,
+    most-nadir view with seam blending. RGBA GeoTIFF, alpha 0 where no image sees the ground."""
+    from workstation.io.geotiff import read_raster, write_raster
+    from workstation.raster.ortho import OrthoParams, read_reconstruction, true_ortho
+
+    rec = read_reconstruction(workdir, image_dir)
+    d = read_raster(dsm, band=1)
+    res = true_ortho(rec, d, OrthoParams(resolution=resolution, blend_angle=blend_angle, occlusion=not no_occlusion,
+                                         dsm_rmse=dsm_rmse))
+    write_raster(res.ortho, output, overwrite=overwrite, inputs=[dsm], photometric="RGB")
+    if accuracy_out:
+        write_raster(res.accuracy, accuracy_out, overwrite=overwrite, inputs=[dsm])
+    click.echo(f"coverage {100 * res.meta['coverage']:.1f} %, {res.meta['images_used']} images, "
+               f"estimated accuracy {res.meta['accuracy_rms_m']:.3f} m RMS", err=True)
+    if as_json:
+        emit_json({"output": output, **res.meta})

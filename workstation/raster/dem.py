@@ -1,0 +1,735 @@
+"""DSM, DTM and CHM from point clouds; heights above a DTM raster.
+
+Methods
+-------
+* DSM, ``method="highest"``: the highest non-noise return in each cell (lidR ``p2r``, PDAL
+  ``writers.gdal`` ``output_type=max``); empty cells are filled by the TIN of the neighbouring
+  cell maxima. ``method="tin"``: a TIN of the highest first return per cell (lidR
+  ``dsmtin``).
+* DTM, ``method="tin"``: ground points (ASPRS class 2 by default) are reduced to one
+  representative per cell — the centroid (mean x, y, z), which is exact on planar ground and
+  averages the range noise — and interpolated linearly in a triangulated irregular network at
+  every cell centre (lidR ``rasterize_terrain(tin())``, LAStools ``blast2dem``); holes left by
+  buildings and water inside the hull are filled by the same TIN (see
+  :mod:`workstation.raster.grid`). ``method="nn"``: natural-neighbour interpolation by the
+  discrete Sibson algorithm (Park et al. 2006). ``method="idw"``: inverse-distance weighting
+  of the k nearest representatives (Shepard 1968). Both cover the same cells as the TIN.
+* CHM = DSM − DTM, clipped at 0. ``pit_free=True``: the pit-free algorithm of Khosravipour et
+  al. (2014, PE&RS 80(9)): first returns normalised by the DTM, partial TINs of the returns
+  above 0, 2, 5, 10, 15 ... m with triangles longer than a freeze distance dropped, and the
+  cell-wise maximum of the partial CHMs.
+* ``resolution=None`` (``--resolution auto``): the cell is at least the nominal point spacing
+  of the points used, rounded up to a round value (USGS Lidar Base Specification: QL2 data
+  with an aggregate nominal pulse spacing ≤ 0.71 m gives a 1 m DEM, QL1 ≤ 0.35 m gives 0.5 m),
+  and, when the vertical RMSE is known, at least three times that RMSE: a height error of ±σ
+  then stays inside one cell (the "3σ" rule of the photogrammetric products lecture; the same
+  factor links vertical RMSE and contour interval in ASPRS 1990 class 1 maps, RMSEz = CI/3).
+
+Large inputs are streamed in chunks (``workstation.io.iter_chunks``): each chunk is reduced
+into per-cell accumulators (count and sums, or the maximum and its position), so memory is
+bounded by the raster, not by the point count; the TIN is then built tile by tile. Grids of
+more than ``tile_cells``² cells from files are built out of core: one pass spills the points
+into per-tile temporary files (tiles overlap by ``buffer_cells``), then each tile is gridded
+alone, so memory is bounded by the tile.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Iterator
+
+import numpy as np
+
+from workstation.core.classes import NOISE, ASPRSClass
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.log import get_logger
+from workstation.core.products import Raster
+
+from .grid import GridSpec, fill_voids_tin, tin_surface
+
+log = get_logger(__name__)
+
+KINDS = ("dsm", "dtm", "chm")
+NICE_CELLS = (0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 2.5, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0)
+
+
+@dataclass(frozen=True)
+class DemParams:
+    """Parameters of :func:`build_dem`.
+
+    Attributes
+    ----------
+    kind : {"dsm", "dtm", "chm"}
+    resolution : float or None
+        Cell size in CRS units (metres). None chooses it from the point spacing and the
+        vertical RMSE (see :func:`auto_resolution`).
+    method : str
+        DTM: ``"tin"`` (linear TIN, default), ``"nn"`` (discrete Sibson natural neighbour)
+        or ``"idw"``. DSM: ``"highest"`` (default) or
+        ``"tin"`` (TIN of first returns). CHM uses the DSM and DTM defaults.
+    vertical_rmse : float or None
+        Known vertical RMSE of the points in metres (for the 3× cell-size rule; stored in the
+        raster's meta as ``vertical_rmse`` for contour intervals).
+    max_edge : float or None
+        Triangles with an edge longer than this (metres) are not interpolated, leaving NaN;
+        None fills every void inside the convex hull of the points (buildings, water).
+    idw_power : float
+        Exponent of inverse-distance weights (dimensionless).
+    idw_k : int
+        Neighbours for IDW.
+    nn_max_radius : float
+        Natural neighbour: cells farther than this many cells from every point take the TIN
+        value (bounds the O(r²) scatter of the discrete algorithm).
+    pit_free : bool
+        CHM by the pit-free algorithm instead of DSM − DTM.
+    pit_free_thresholds : tuple of float
+        Height layers of the pit-free CHM in metres.
+    pit_free_max_edge : float or None
+        Freeze distance of the pit-free partial TINs in metres (default 3 cells).
+    ground_classes : tuple of int
+        Classes used as ground for the DTM.
+    tile : int
+        Tile size in cells for the TIN step (bounds temporary memory).
+    """
+
+    kind: str = "dtm"
+    resolution: float | None = 1.0
+    method: str | None = None
+    vertical_rmse: float | None = None
+    max_edge: float | None = None
+    idw_power: float = 2.0
+    idw_k: int = 8
+    nn_max_radius: float = 24.0
+    pit_free: bool = False
+    pit_free_thresholds: tuple = (0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0)
+    pit_free_max_edge: float | None = None
+    ground_classes: tuple = (int(ASPRSClass.GROUND),)
+    tile: int = 512
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise InvalidInputError(f"unknown kind '{self.kind}'", "use dsm, dtm or chm", field="kind")
+        ok = {"dsm": (None, "highest", "tin"), "dtm": (None, "tin", "nn", "idw"), "chm": (None, "highest", "tin")}
+        if self.method not in ok[self.kind]:
+            raise InvalidInputError(
+                f"method '{self.method}' does not apply to a {self.kind}",
+                "DTM: tin, nn or idw; DSM/CHM: highest or tin", field="method",
+            )
+        if self.pit_free and self.kind != "chm":
+            raise InvalidInputError("the pit-free algorithm makes a CHM", "use --kind chm", field="pit_free")
+        if self.resolution is not None and not (self.resolution > 0):
+            raise InvalidInputError("resolution must be positive", field="resolution")
+
+
+# --------------------------------------------------------------------------- accumulators
+class _MeanAcc:
+    """Per-cell count and sums of offsets (cells) and z: gives the centroid of each cell."""
+
+    def __init__(self, grid: GridSpec):
+        n = grid.rows * grid.cols
+        self.grid = grid
+        self.count = np.zeros(n, np.int64)
+        self.su = np.zeros(n)
+        self.sv = np.zeros(n)
+        self.sz = np.zeros(n)
+
+    def add(self, x, y, z):
+        row, col, inside = self.grid.cell_index(x, y)
+        if not inside.all():
+            row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
+        if len(z) == 0:
+            return
+        u, v = self.grid.to_uv(x, y)
+        idx = row * self.grid.cols + col
+        n = self.count.size
+        if n <= 4 * len(idx):
+            self.count += np.bincount(idx, minlength=n)
+            self.su += np.bincount(idx, u - col, minlength=n)
+            self.sv += np.bincount(idx, v - row, minlength=n)
+            self.sz += np.bincount(idx, z, minlength=n)
+        else:
+            uq, inv = np.unique(idx, return_inverse=True)
+            self.count[uq] += np.bincount(inv)
+            self.su[uq] += np.bincount(inv, u - col)
+            self.sv[uq] += np.bincount(inv, v - row)
+            self.sz[uq] += np.bincount(inv, z)
+
+    def reps(self):
+        shape = self.grid.shape
+        valid = self.count > 0
+        c = np.maximum(self.count, 1)
+        du, dv, z = self.su / c, self.sv / c, np.where(valid, self.sz / c, np.nan)
+        return du.reshape(shape), dv.reshape(shape), z.reshape(shape), valid.reshape(shape)
+
+
+class _MaxAcc:
+    """Per-cell maximum z and the position of the point that holds it."""
+
+    def __init__(self, grid: GridSpec):
+        n = grid.rows * grid.cols
+        self.grid = grid
+        self.z = np.full(n, -np.inf)
+        self.du = np.zeros(n)
+        self.dv = np.zeros(n)
+
+    def add(self, x, y, z):
+        row, col, inside = self.grid.cell_index(x, y)
+        if not inside.all():
+            row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
+        if len(z) == 0:
+            return
+        idx = row * self.grid.cols + col
+        order = np.lexsort((z, idx))
+        s = idx[order]
+        last = np.ones(len(s), bool)
+        last[:-1] = s[1:] != s[:-1]
+        sel = order[last]
+        cells = idx[sel]
+        better = z[sel] > self.z[cells]
+        sel, cells = sel[better], cells[better]
+        u, v = self.grid.to_uv(x[sel], y[sel])
+        self.z[cells] = z[sel]
+        self.du[cells] = u - col[sel]
+        self.dv[cells] = v - row[sel]
+
+    def reps(self):
+        shape = self.grid.shape
+        valid = np.isfinite(self.z)
+        z = np.where(valid, self.z, np.nan)
+        return self.du.reshape(shape), self.dv.reshape(shape), z.reshape(shape), valid.reshape(shape)
+
+
+# --------------------------------------------------------------------------- sources
+def _iter_clouds(source, chunk_size: int) -> Iterator[Cloud]:
+    if isinstance(source, Cloud):
+        yield source
+        return
+    paths = [source] if isinstance(source, (str, Path)) else list(source)
+    from workstation.io import iter_chunks
+
+    for p in paths:
+        if isinstance(p, Cloud):
+            yield p
+        else:
+            yield from iter_chunks(p, chunk_size)
+
+
+def _noise_free(c: Cloud) -> np.ndarray:
+    cls = c.get("classification")
+    if cls is None:
+        return np.ones(c.n, bool)
+    return ~np.isin(cls, [int(k) for k in NOISE])
+
+
+def _first_returns(c: Cloud) -> np.ndarray:
+    rn = c.get("return_number")
+    keep = _noise_free(c)
+    return keep if rn is None else keep & (rn <= 1)
+
+
+def _ground(c: Cloud, classes) -> np.ndarray:
+    cls = c.get("classification")
+    if cls is None:
+        raise InvalidInputError(
+            "the cloud has no classification, so ground points are unknown",
+            "classify ground first (ws ground IN -o OUT) or build a DSM", field="classification",
+        )
+    return np.isin(cls, list(classes))
+
+
+@dataclass(frozen=True)
+class _Survey:
+    bounds: tuple
+    n_all: int
+    n_first: int
+    n_ground: int
+    area: float
+    crs: str | None
+    vertical_rmse: float | None
+
+
+def _header_survey(source) -> _Survey | None:
+    """Bounds and CRS from LAS/LAZ headers alone (no point read), or None for other inputs."""
+    if isinstance(source, Cloud):
+        return None
+    paths = [source] if isinstance(source, (str, Path)) else list(source)
+    if not paths or not all(isinstance(p, (str, Path)) and Path(p).suffix.lower() in (".las", ".laz") for p in paths):
+        return None
+    from workstation.io.las import read_header
+
+    heads = [read_header(p) for p in paths]
+    lo = np.min([h["mins"] for h in heads], axis=0)
+    hi = np.max([h["maxs"] for h in heads], axis=0)
+    n = sum(h["point_count"] for h in heads)
+    if n == 0:
+        raise InvalidInputError("no points to grid", "check the input files")
+    crs = next((h["crs"] for h in heads if h["crs"]), None)
+    return _Survey((lo[0], lo[1], hi[0], hi[1]), n, 0, 0, 0.0, crs, None)
+
+
+def _survey(source, params: DemParams, chunk_size: int, need_area: bool = True) -> _Survey:
+    """One pass: bounds, counts and (``need_area``) occupied area (5 m coverage cells).
+
+    When only the bounds are needed and the inputs are LAS/LAZ files, the headers suffice.
+    """
+    if not need_area:
+        head = _header_survey(source)
+        if head is not None:
+            return head
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    n_all = n_first = n_ground = 0
+    keys = np.empty(0, np.int64)
+    crs = None
+    vrmse = None
+    cov = 5.0
+    for c in _iter_clouds(source, chunk_size):
+        if c.n == 0:
+            continue
+        crs = crs or c.crs
+        vrmse = vrmse or c.meta.get("vertical_rmse")
+        keep = _noise_free(c)
+        xyz = c.xyz[keep]
+        if len(xyz) == 0:
+            continue
+        lo = np.minimum(lo, xyz.min(0))
+        hi = np.maximum(hi, xyz.max(0))
+        n_all += len(xyz)
+        if not need_area:
+            continue
+        n_first += int(_first_returns(c).sum())
+        if c.get("classification") is not None:
+            n_ground += int(np.isin(c.get("classification"), list(params.ground_classes)).sum())
+        k = (np.floor(xyz[:, 0] / cov).astype(np.int64) << 32) + np.floor(xyz[:, 1] / cov).astype(np.int64)
+        keys = np.union1d(keys, np.unique(k))
+    if n_all == 0:
+        raise InvalidInputError("no points (after removing noise classes) to grid", "check the input file")
+    return _Survey((lo[0], lo[1], hi[0], hi[1]), n_all, n_first, n_ground, len(keys) * cov * cov, crs, vrmse)
+
+
+def nice_ceil(value: float) -> float:
+    """Smallest round cell size (0.1, 0.2, 0.25, 0.5, 1, 2, 2.5, 5 ... m) ≥ value."""
+    for v in NICE_CELLS:
+        if v >= value - 1e-9:
+            return v
+    return float(math.ceil(value))
+
+
+def auto_resolution(n_points: int, area: float, vertical_rmse: float | None = None) -> tuple[float, str]:
+    """Cell size from the nominal point spacing and, when known, the vertical RMSE.
+
+    Parameters
+    ----------
+    n_points : int
+        Points that define the surface (ground points for a DTM, first returns for a DSM).
+    area : float
+        Area they cover in square CRS units.
+    vertical_rmse : float, optional
+        Vertical RMSE of the points (CRS units).
+
+    Returns
+    -------
+    (float, str)
+        The cell size and the reason, in words.
+
+    Examples
+    --------
+    >>> auto_resolution(1_000_000, 1_000_000)[0]     # 1 pt/m² -> NPS 1 m -> 1 m cells
+    1.0
+    >>> auto_resolution(8_000_000, 1_000_000, vertical_rmse=0.15)[0]  # NPS 0.35 m, 3×0.15 m
+    0.5
+    """
+    if n_points <= 0 or area <= 0:
+        raise InvalidInputError("cannot choose a cell size without points", "give --resolution")
+    nps = math.sqrt(area / n_points)
+    res = nice_ceil(nps)
+    reason = f"nominal point spacing {nps:.2f} m ({n_points} points over {area:.0f} m²) -> cell ≥ NPS: {res:g} m"
+    if vertical_rmse:
+        acc = nice_ceil(3.0 * float(vertical_rmse))
+        reason += f"; 3 × vertical RMSE {vertical_rmse:g} m = {3 * vertical_rmse:.2f} m -> {acc:g} m"
+        if acc > res:
+            res = acc
+            reason += " (accuracy governs)"
+        else:
+            reason += " (point spacing governs)"
+    return res, reason
+
+
+# --------------------------------------------------------------------------- surfaces
+def _idw(du, dv, z, valid, cells: np.ndarray, k: int, power: float) -> np.ndarray:
+    from scipy.spatial import cKDTree
+
+    ii, jj = np.nonzero(valid)
+    pts = np.column_stack([jj + du[ii, jj], ii + dv[ii, jj]])
+    vals = z[ii, jj]
+    qi, qj = np.nonzero(cells)
+    out = np.full(z.shape, np.nan)
+    if len(pts) == 0 or len(qi) == 0:
+        return out
+    k = min(k, len(pts))
+    tree = cKDTree(pts)
+    res = np.empty(len(qi))
+    step = 1_000_000
+    for s in range(0, len(qi), step):
+        q = np.column_stack([qj[s : s + step], qi[s : s + step]]).astype(float)
+        d, nb = tree.query(q, k=k)
+        if k == 1:
+            d, nb = d[:, None], nb[:, None]
+        w = 1.0 / np.maximum(d, 1e-6) ** power
+        res[s : s + step] = (w * vals[nb]).sum(1) / w.sum(1)
+    out[qi, qj] = res
+    return out
+
+
+def _discrete_sibson(du, dv, z, valid, cells: np.ndarray, fallback: np.ndarray, max_radius: float) -> np.ndarray:
+    """Discrete Sibson (natural-neighbour) interpolation of Park et al. (2006, IEEE TVCG 12(2)).
+
+    Every cell takes the value of its nearest data point and scatters it to all cells within
+    the distance to that point; a cell's value is the mean of what it receives. This equals
+    Sibson's area-stealing weights in the limit of fine cells. Cells farther than
+    ``max_radius`` cells from any point keep ``fallback`` (the TIN) and scatter only that far.
+    """
+    from scipy.spatial import cKDTree
+
+    R, C = z.shape
+    ii, jj = np.nonzero(valid)
+    tree = cKDTree(np.column_stack([jj + du[ii, jj], ii + dv[ii, jj]]))
+    qi, qj = np.nonzero(cells)
+    d, nb = tree.query(np.column_stack([qj, qi]).astype(float))
+    val = z[ii[nb], jj[nb]]
+    n = R * C
+    flat = qi * C + qj
+    total = np.bincount(flat, val, minlength=n)
+    count = np.bincount(flat, minlength=n).astype(float)
+    far = d > max_radius
+    order = np.argsort(-np.minimum(d, max_radius))
+    ds = np.minimum(d, max_radius)[order]
+    r = int(math.floor(ds[0])) if len(ds) else 0
+    oi, oj = np.mgrid[-r : r + 1, -r : r + 1]
+    L = np.hypot(oi, oj).ravel()
+    keep = (L > 0) & (L <= r)
+    offs = sorted(zip(L[keep], oi.ravel()[keep], oj.ravel()[keep]))
+    bt, bv = [], []
+    pending = 0
+    for length, di, dj in offs:
+        m = int(np.searchsorted(-ds, -length, side="right"))  # cells whose disc reaches this offset
+        if m == 0:
+            continue
+        src = order[:m]
+        ti, tj = qi[src] + di, qj[src] + dj
+        ok = (ti >= 0) & (ti < R) & (tj >= 0) & (tj < C)
+        bt.append(ti[ok] * C + tj[ok])
+        bv.append(val[src][ok])
+        pending += int(ok.sum())
+        if pending > 4_000_000:
+            t, v = np.concatenate(bt), np.concatenate(bv)
+            total += np.bincount(t, v, minlength=n)
+            count += np.bincount(t, minlength=n)
+            bt, bv, pending = [], [], 0
+    if bt:
+        t, v = np.concatenate(bt), np.concatenate(bv)
+        total += np.bincount(t, v, minlength=n)
+        count += np.bincount(t, minlength=n)
+    out = np.full(n, np.nan)
+    out[flat] = total[flat] / count[flat]
+    out = out.reshape(R, C)
+    out[qi[far], qj[far]] = fallback[qi[far], qj[far]]
+    return out
+
+
+def _surface(acc, method: str, params: DemParams, res: float) -> np.ndarray:
+    du, dv, z, valid = acc.reps()
+    max_edge = None if params.max_edge is None else params.max_edge / res
+    tin = tin_surface(du, dv, z, valid, max_edge, params.tile)
+    if method == "idw":
+        return _idw(du, dv, z, valid, np.isfinite(tin), params.idw_k, params.idw_power)
+    if method == "nn":
+        return _discrete_sibson(du, dv, z, valid, np.isfinite(tin), tin, params.nn_max_radius)
+    return tin
+
+
+def _highest(acc: _MaxAcc, params: DemParams, res: float) -> np.ndarray:
+    du, dv, z, valid = acc.reps()
+    out = np.where(valid, z, np.nan)
+    max_edge = None if params.max_edge is None else params.max_edge / res
+    return fill_voids_tin(out, du, dv, z, valid, max_edge)
+
+
+def sample_bilinear(raster: Raster, x, y) -> np.ndarray:
+    """Bilinear interpolation of a single-band raster at world points.
+
+    Parameters
+    ----------
+    raster : Raster
+        North-up, square cells; NaN (or ``nodata``) cells are missing.
+    x, y : (n,) float
+        World coordinates in the raster's CRS.
+
+    Returns
+    -------
+    (n,) float64
+        Values; NaN outside the grid of cell centres' hull or next to a missing cell. Within
+        half a cell of the outer edge the nearest edge cells are used (clamped).
+    """
+    a = np.asarray(raster.array, dtype=np.float64)
+    if a.ndim == 3:
+        a = a[0]
+    if raster.nodata is not None and not np.isnan(raster.nodata):
+        a = np.where(a == raster.nodata, np.nan, a)
+    grid = GridSpec.from_transform(raster.transform, a.shape)
+    u, v = grid.to_uv(np.asarray(x, float), np.asarray(y, float))
+    R, C = a.shape
+    out = np.full(u.shape, np.nan)
+    inside = (u >= -0.5) & (u <= C - 0.5) & (v >= -0.5) & (v <= R - 0.5)
+    uc = np.clip(u[inside], 0, C - 1)
+    vc = np.clip(v[inside], 0, R - 1)
+    j0 = np.minimum(np.floor(uc).astype(np.int64), max(C - 2, 0))
+    i0 = np.minimum(np.floor(vc).astype(np.int64), max(R - 2, 0))
+    j1 = np.minimum(j0 + 1, C - 1)
+    i1 = np.minimum(i0 + 1, R - 1)
+    fu = uc - j0
+    fv = vc - i0
+    val = (a[i0, j0] * (1 - fu) * (1 - fv) + a[i0, j1] * fu * (1 - fv) + a[i1, j0] * (1 - fu) * fv + a[i1, j1] * fu * fv)
+    out[inside] = val
+    return out
+
+
+def height_above_ground(cloud: Cloud, dtm: Raster) -> Cloud:
+    """A new cloud with ``hag`` = z − DTM(x, y) (bilinear), NaN where the DTM has no value.
+
+    Use this when a DTM raster exists (fast, no triangulation); a TIN of ground points gives
+    heights of the same quality when the DTM cell is about the ground point spacing.
+    """
+    t0 = time.perf_counter()
+    ground = sample_bilinear(dtm, cloud.xyz[:, 0], cloud.xyz[:, 1])
+    hag = (cloud.xyz[:, 2] - ground).astype(np.float32)
+    missing = int(np.isnan(hag).sum())
+    if missing == cloud.n and cloud.n:
+        raise StageError("hag", "no point lies on the DTM", "check that the DTM covers the cloud and has the same CRS")
+    if missing:
+        log.warning("hag: %d of %d points are off the DTM (NaN)", missing, cloud.n)
+    return cloud.with_attrs(hag=hag).with_history("hag", {"dtm": str(dtm.meta.get("source", "raster"))}, time.perf_counter() - t0)
+
+
+def _pit_free(source, grid: GridSpec, dtm: np.ndarray, params: DemParams, chunk_size: int) -> np.ndarray:
+    """Khosravipour et al. (2014) pit-free CHM from first returns normalised by ``dtm``."""
+    dtm_r = Raster(dtm, grid.transform)
+    ths = sorted(params.pit_free_thresholds)
+    accs = [_MaxAcc(grid) for _ in ths]
+    for c in _iter_clouds(source, chunk_size):
+        keep = _first_returns(c)
+        xyz = c.xyz[keep]
+        if len(xyz) == 0:
+            continue
+        h = xyz[:, 2] - sample_bilinear(dtm_r, xyz[:, 0], xyz[:, 1])
+        ok = np.isfinite(h)
+        for t, acc in zip(ths, accs):
+            m = ok & (h >= t)
+            if m.any():
+                acc.add(xyz[m, 0], xyz[m, 1], h[m])
+    freeze = (params.pit_free_max_edge / grid.res) if params.pit_free_max_edge else 3.0
+    chm = np.full(grid.shape, np.nan)
+    for k, acc in enumerate(accs):
+        du, dv, z, valid = acc.reps()
+        if not valid.any():
+            break
+        layer = tin_surface(du, dv, z, valid, None if k == 0 else freeze, params.tile)
+        chm = np.fmax(chm, layer)
+    return np.maximum(chm, 0.0)
+
+
+_REC = np.dtype([("x", "f8"), ("y", "f8"), ("z", "f8"), ("cls", "u1"), ("rn", "u1")])
+
+
+def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, tile: int, buffer: int) -> tuple[np.ndarray, int]:
+    """Out-of-core gridding: points are spilled to one temporary file per tile (with a
+    ``buffer``-cell overlap) in a single streaming pass, then each tile is gridded on its own
+    and its core written into the output. Memory: one tile's points and grids, plus the
+    float32 output. The TIN of a cell depends on its neighbourhood only (lattice) and on the
+    rims of the voids around it, so tiles agree with the untiled result wherever voids are
+    smaller than the buffer."""
+    import tempfile
+
+    tiles = [(r0, min(r0 + tile, grid.rows), c0, min(c0 + tile, grid.cols))
+             for r0 in range(0, grid.rows, tile) for c0 in range(0, grid.cols, tile)]
+    out = np.full(grid.shape, np.nan, np.float32)
+    n_used = 0
+    has_cls = has_rn = False
+    with tempfile.TemporaryDirectory(prefix="ws_dem_tiles_") as tmp:
+        files = [Path(tmp) / f"t{k}.bin" for k in range(len(tiles))]
+        for c in _iter_clouds(source, chunk_size):
+            if c.n == 0:
+                continue
+            keep = _noise_free(c)
+            cls_a, rn_a = c.get("classification"), c.get("return_number")
+            has_cls |= cls_a is not None
+            has_rn |= rn_a is not None
+            rec = np.empty(int(keep.sum()), _REC)
+            xyz = c.xyz[keep]
+            rec["x"], rec["y"], rec["z"] = xyz[:, 0], xyz[:, 1], xyz[:, 2]
+            rec["cls"] = cls_a[keep] if cls_a is not None else 0
+            rec["rn"] = rn_a[keep] if rn_a is not None else 1
+            row, col, inside = grid.cell_index(rec["x"], rec["y"])
+            for k, (r0, r1, c0, c1) in enumerate(tiles):
+                m = inside & (row >= r0 - buffer) & (row < r1 + buffer) & (col >= c0 - buffer) & (col < c1 + buffer)
+                if m.any():
+                    with open(files[k], "ab") as f:
+                        rec[m].tofile(f)
+        for k, (r0, r1, c0, c1) in enumerate(tiles):
+            if not files[k].exists():
+                continue
+            rec = np.fromfile(files[k], _REC)
+            files[k].unlink()
+            attrs = {}
+            if has_cls:
+                attrs["classification"] = rec["cls"]
+            if has_rn:
+                attrs["return_number"] = rec["rn"]
+            ra, rb = max(r0 - buffer, 0), min(r1 + buffer, grid.rows)
+            ca, cb = max(c0 - buffer, 0), min(c1 + buffer, grid.cols)
+            sub = GridSpec(grid.x0 + ca * grid.res, grid.y1 - ra * grid.res, grid.res, rb - ra, cb - ca)
+            cloud = Cloud(np.column_stack([rec["x"], rec["y"], rec["z"]]), attrs)
+            try:
+                r = build_dem(cloud, params, chunk_size=chunk_size, grid=sub, tile_cells=0)
+            except StageError:
+                continue  # no ground or no valid cell in this tile: it stays nodata
+            out[r0:r1, c0:c1] = r.array[r0 - ra : r1 - ra, c0 - ca : c1 - ca]
+            n_used += int(r.meta["points"])
+    if (params.kind in ("dtm", "chm")) and not has_cls:
+        raise InvalidInputError(
+            "the cloud has no classification, so ground points are unknown",
+            "classify ground first (ws ground IN -o OUT) or build a DSM", field="classification",
+        )
+    return out, n_used
+
+
+def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None,
+              tile_cells: int = 4096, buffer_cells: int = 128) -> Raster:
+    """Grid a DSM, DTM or CHM from a cloud, a file or several files (one mosaic).
+
+    Parameters
+    ----------
+    source : Cloud, path or sequence of paths/clouds
+        Files are streamed in chunks of ``chunk_size`` points.
+    params : DemParams
+    grid : GridSpec, optional
+        Output grid; default: aligned to multiples of the cell size over the data bounds.
+    tile_cells : int
+        File inputs whose grid has more than ``tile_cells``² cells are gridded out of core by
+        tiles of that many cells a side, overlapping by ``buffer_cells`` (0: never tile).
+    buffer_cells : int
+        Overlap of the tiles in cells; voids (buildings, lakes) narrower than this are filled
+        exactly as in a single pass.
+
+    Returns
+    -------
+    Raster
+        float32 array, NaN (nodata -9999) where there is no surface; ``meta`` has ``kind``,
+        ``method``, ``resolution``, ``resolution_reason``, ``vertical_rmse``, ``points``.
+
+    Raises
+    ------
+    InvalidInputError
+        No points, or no classification for a DTM.
+    StageError
+        The result has no valid cell.
+    """
+    t0 = time.perf_counter()
+    kind = params.kind
+    method = params.method or ("tin" if kind == "dtm" else "highest")
+    survey = None
+    if grid is None or params.resolution is None:
+        survey = _survey(source, params, chunk_size, need_area=grid is None and params.resolution is None)
+    vrmse = params.vertical_rmse or (survey.vertical_rmse if survey else None)
+    if grid is not None:
+        res = grid.res
+        reason = "given grid"
+    elif params.resolution is None:
+        n = survey.n_ground if kind == "dtm" else (survey.n_first or survey.n_all)
+        if n == 0:
+            raise InvalidInputError("no ground points to choose a cell size from", "classify ground first or give --resolution")
+        res, reason = auto_resolution(n, survey.area, vrmse)
+        log.info("resolution %g m: %s", res, reason)
+    else:
+        res = float(params.resolution)
+        reason = "given"
+    if grid is None:
+        grid = GridSpec.from_bounds(*survey.bounds, res)
+    if grid.rows * grid.cols > 400_000_000:
+        raise InvalidInputError(
+            f"grid of {grid.rows}×{grid.cols} cells is too large", "use a coarser --resolution or split the input"
+        )
+    crs = survey.crs if survey else None
+    if tile_cells and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells:
+        arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
+        if not np.isfinite(arr).any():
+            raise StageError("dem", f"the {kind} has no valid cell", "check the input extent and resolution")
+        meta = {
+            "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
+            "resolution": res, "resolution_reason": reason, "points": n_used, "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
+            "seconds": round(time.perf_counter() - t0, 3),
+            "params": {k: v for k, v in asdict(params).items() if v is not None},
+        }
+        if vrmse:
+            meta["vertical_rmse"] = float(vrmse)
+        return Raster(arr, grid.transform, crs, -9999.0, meta)
+    need_ground = kind in ("dtm", "chm")
+    need_top = kind in ("dsm", "chm") and not (kind == "chm" and params.pit_free)
+    top_first = method == "tin"
+    gacc = _MeanAcc(grid) if need_ground else None
+    tacc = _MaxAcc(grid) if need_top else None
+    n_used = 0
+    for c in _iter_clouds(source, chunk_size):
+        if c.n == 0:
+            continue
+        crs = crs or c.crs
+        if gacc is not None:
+            g = _ground(c, params.ground_classes)
+            gacc.add(c.xyz[g, 0], c.xyz[g, 1], c.xyz[g, 2])
+            n_used += int(g.sum())
+        if tacc is not None:
+            m = _first_returns(c) if top_first else _noise_free(c)
+            tacc.add(c.xyz[m, 0], c.xyz[m, 1], c.xyz[m, 2])
+            if gacc is None:
+                n_used += int(m.sum())
+    if gacc is not None and not (gacc.count > 0).any():
+        raise StageError("dem", "no ground points in the input", "classify ground first (ws ground) or check --ground-classes")
+    if kind == "dtm":
+        arr = _surface(gacc, method, params, res)
+    elif kind == "dsm":
+        arr = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
+    else:
+        dtm = _surface(gacc, "tin", params, res)
+        if params.pit_free:
+            arr = _pit_free(source, grid, dtm, params, chunk_size)
+        else:
+            dsm = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
+            arr = np.maximum(dsm - dtm, 0.0)
+    if not np.isfinite(arr).any():
+        raise StageError("dem", f"the {kind} has no valid cell", "check the input extent and resolution")
+    meta = {
+        "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
+        "resolution": res, "resolution_reason": reason, "points": n_used,
+        "seconds": round(time.perf_counter() - t0, 3),
+        "params": {k: v for k, v in asdict(params).items() if v is not None},
+    }
+    if vrmse:
+        meta["vertical_rmse"] = float(vrmse)
+    return Raster(arr.astype(np.float32), grid.transform, crs, -9999.0, meta)
+
+
+def dem_from_arrays(xyz: np.ndarray, classification: np.ndarray | None = None, **kw) -> Raster:
+    """Convenience: :func:`build_dem` on a bare (n, 3) array (and classes)."""
+    attrs = {} if classification is None else {"classification": classification}
+    return build_dem(Cloud(np.asarray(xyz, float), attrs), DemParams(**kw))
+
+
+__all__ = [
+    "DemParams", "build_dem", "auto_resolution", "sample_bilinear", "height_above_ground", "nice_ceil",
+    "dem_from_arrays", "GridSpec",
+]
+

@@ -1,0 +1,306 @@
+"""Grid geometry and TIN rasterisation shared by the raster products.
+
+Coordinates inside this module are *cell units*: the centre of cell (row i, col j) is at
+(u, v) = (j, i); u grows east, v grows south. :class:`GridSpec` converts between them and
+world coordinates.
+
+The TIN machinery is vectorised numpy (no Python loop over points or triangles):
+
+* :func:`lattice_tin` — points reduced to at most one representative per cell (the "lattice")
+  are triangulated by splitting every quad of four occupied neighbouring cells along its
+  shorter diagonal (the Delaunay choice for a convex quad), and each cell centre is
+  interpolated linearly (barycentric) in the triangle of the quads around it that contains it.
+  O(cells), no global triangulation.
+* :func:`fill_voids_tin` — the cells left without a triangle (voids: buildings, water, sparse
+  data) are filled from a scipy/Qhull Delaunay triangulation (Barber et al. 1996) of the
+  occupied cells on the rim of the voids only, so the triangulation cost grows with the void
+  perimeters, not with the point count. A Delaunay triangle spanning a void has an empty
+  circumcircle and its corners lie on the void rim, so it is also a triangle of the rim
+  triangulation: the fill equals a full-TIN interpolation there.
+* :func:`rasterize_triangles` — barycentric linear interpolation of triangles at the cell
+  centres they cover, bucketed by triangle size so that each bucket is one array operation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError
+
+_EPS = 1e-9
+
+
+@dataclass(frozen=True)
+class GridSpec:
+    """A north-up grid: west edge ``x0``, north edge ``y1``, square cells of ``res``.
+
+    Attributes
+    ----------
+    x0, y1 : float
+        World coordinates (CRS units) of the upper-left corner.
+    res : float
+        Cell size in CRS units (metres for projected CRSs).
+    rows, cols : int
+    """
+
+    x0: float
+    y1: float
+    res: float
+    rows: int
+    cols: int
+
+    @classmethod
+    def from_bounds(cls, xmin: float, ymin: float, xmax: float, ymax: float, res: float) -> "GridSpec":
+        """Smallest grid aligned to multiples of ``res`` that holds every point of the bounds.
+
+        Aligning to multiples of the cell size makes grids of adjacent tiles line up, so
+        tiles can be mosaicked cell for cell.
+        """
+        if not (res > 0 and math.isfinite(res)):
+            raise InvalidInputError(f"cell size must be positive, got {res}", field="resolution")
+        x0 = math.floor(xmin / res) * res
+        y1 = (math.floor(ymax / res) + 1) * res  # a point on a row's top edge belongs to that row
+        cols = int(math.floor((xmax - x0) / res)) + 1
+        rows = int(math.floor((y1 - ymin) / res)) + 1
+        return cls(float(x0), float(y1), float(res), int(rows), int(cols))
+
+    @classmethod
+    def from_transform(cls, transform, shape) -> "GridSpec":
+        a, b, c, d, e, f = transform
+        if b or d or abs(abs(e) - a) > 1e-9 * a or e >= 0:
+            raise InvalidInputError("only north-up grids with square cells are supported", field="transform")
+        return cls(float(c), float(f), float(a), int(shape[0]), int(shape[1]))
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.rows, self.cols
+
+    @property
+    def transform(self) -> tuple:
+        return (self.res, 0.0, self.x0, 0.0, -self.res, self.y1)
+
+    @property
+    def bounds(self) -> tuple[float, float, float, float]:
+        return self.x0, self.y1 - self.rows * self.res, self.x0 + self.cols * self.res, self.y1
+
+    def to_uv(self, x, y) -> tuple[np.ndarray, np.ndarray]:
+        """World (x, y) -> cell units (u, v); cell (i, j) centre is (j, i)."""
+        return (np.asarray(x) - self.x0) / self.res - 0.5, (self.y1 - np.asarray(y)) / self.res - 0.5
+
+    def to_xy(self, u, v) -> tuple[np.ndarray, np.ndarray]:
+        return self.x0 + (np.asarray(u) + 0.5) * self.res, self.y1 - (np.asarray(v) + 0.5) * self.res
+
+    def cell_index(self, x, y) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(row, col, inside) of points; ``inside`` is False for points off the grid."""
+        col = np.floor((np.asarray(x) - self.x0) / self.res).astype(np.int64)
+        row = np.floor((self.y1 - np.asarray(y)) / self.res).astype(np.int64)
+        inside = (row >= 0) & (row < self.rows) & (col >= 0) & (col < self.cols)
+        return row, col, inside
+
+
+def _bary(p0u, p0v, p1u, p1v, p2u, p2v, qu, qv):
+    """Barycentric coordinates of (qu, qv) in triangles (arrays broadcast); den 0 -> nan."""
+    den = (p1v - p2v) * (p0u - p2u) + (p2u - p1u) * (p0v - p2v)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        l0 = ((p1v - p2v) * (qu - p2u) + (p2u - p1u) * (qv - p2v)) / den
+        l1 = ((p2v - p0v) * (qu - p2u) + (p0u - p2u) * (qv - p2v)) / den
+    return l0, l1, 1.0 - l0 - l1
+
+
+def _edges_ok(tri_u, tri_v, max_edge):
+    if max_edge is None:
+        return True
+    m2 = max_edge * max_edge
+    ok = True
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        ok = ok & ((tri_u[a] - tri_u[b]) ** 2 + (tri_v[a] - tri_v[b]) ** 2 <= m2)
+    return ok
+
+
+def lattice_tin(du, dv, z, valid, max_edge: float | None = None) -> np.ndarray:
+    """Linear TIN interpolation at cell centres from one representative point per cell.
+
+    Parameters
+    ----------
+    du, dv : (rows, cols) float
+        Offset of each cell's representative point from the cell centre, in cells (|d| ≤ 0.5).
+    z : (rows, cols) float
+        Value at the representative point.
+    valid : (rows, cols) bool
+        Cells that have a representative.
+    max_edge : float, optional
+        Triangles with an edge longer than this (in cells) are not used.
+
+    Returns
+    -------
+    (rows, cols) float64
+        Interpolated values; NaN where no lattice triangle covers the cell centre.
+    """
+    R, C = z.shape
+    out = np.full((R, C), np.nan)
+    if R < 2 or C < 2:
+        out[valid] = z[valid]
+        return out
+    # quad corners A (r, c), B (r, c+1), C (r+1, c), D (r+1, c+1) in quad-local cell units
+    sl = {"A": (slice(0, R - 1), slice(0, C - 1)), "B": (slice(0, R - 1), slice(1, C)),
+          "C": (slice(1, R), slice(0, C - 1)), "D": (slice(1, R), slice(1, C))}
+    base = {"A": (0.0, 0.0), "B": (1.0, 0.0), "C": (0.0, 1.0), "D": (1.0, 1.0)}
+    U = {k: base[k][0] + du[s] for k, s in sl.items()}
+    V = {k: base[k][1] + dv[s] for k, s in sl.items()}
+    Z = {k: z[s] for k, s in sl.items()}
+    qvalid = valid[sl["A"]] & valid[sl["B"]] & valid[sl["C"]] & valid[sl["D"]]
+    if not qvalid.any():
+        return out
+    ad = (U["D"] - U["A"]) ** 2 + (V["D"] - V["A"]) ** 2 <= (U["C"] - U["B"]) ** 2 + (V["C"] - V["B"]) ** 2
+    # triangle 1: (A, B, D) if AD else (A, B, C); triangle 2: (A, D, C) if AD else (B, D, C)
+    def pick(k_ad, k_bc, arr):
+        return np.where(ad, arr[k_ad], arr[k_bc])
+
+    tris = []
+    for corners in ((("A", "A"), ("B", "B"), ("D", "C")), (("A", "B"), ("D", "D"), ("C", "C"))):
+        tu = [pick(a, b, U) for a, b in corners]
+        tv = [pick(a, b, V) for a, b in corners]
+        tz = [pick(a, b, Z) for a, b in corners]
+        ok = qvalid & _edges_ok(tu, tv, max_edge)
+        tris.append((tu, tv, tz, ok))
+    for k in ("A", "B", "C", "D"):
+        qu, qv = base[k]
+        view = out[sl[k]]
+        for tu, tv, tz, ok in tris:
+            l0, l1, l2 = _bary(tu[0], tv[0], tu[1], tv[1], tu[2], tv[2], qu, qv)
+            inside = ok & (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS) & np.isnan(view)
+            if inside.any():
+                view[inside] = (l0 * tz[0] + l1 * tz[1] + l2 * tz[2])[inside]
+    return out
+
+
+def rasterize_triangles(tri_u, tri_v, tri_z, out, target=None, chunk: int = 2_000_000) -> int:
+    """Write the linear interpolant of triangles at the cell centres they cover.
+
+    Parameters
+    ----------
+    tri_u, tri_v : (m, 3) float
+        Triangle corners in cell units (centre of cell (i, j) at (j, i)).
+    tri_z : (m, 3) float
+        Values at the corners.
+    out : (rows, cols) float64
+        Written in place where a triangle covers a cell centre (and ``target`` is True).
+    target : (rows, cols) bool, optional
+        Cells that may be written.
+
+    Returns
+    -------
+    int
+        Number of cells written.
+    """
+    R, C = out.shape
+    if len(tri_u) == 0:
+        return 0
+    umin = np.ceil(tri_u.min(1) - _EPS).astype(np.int64)
+    umax = np.floor(tri_u.max(1) + _EPS).astype(np.int64)
+    vmin = np.ceil(tri_v.min(1) - _EPS).astype(np.int64)
+    vmax = np.floor(tri_v.max(1) + _EPS).astype(np.int64)
+    umin = np.maximum(umin, 0)
+    vmin = np.maximum(vmin, 0)
+    umax = np.minimum(umax, C - 1)
+    vmax = np.minimum(vmax, R - 1)
+    w = umax - umin + 1
+    h = vmax - vmin + 1
+    keep = (w > 0) & (h > 0)
+    size = np.maximum(w, h)
+    bucket = np.zeros(len(size), dtype=np.int64)
+    bucket[keep] = np.ceil(np.log2(np.maximum(size[keep], 1))).astype(np.int64)
+    written = 0
+    for b in np.unique(bucket[keep]):
+        idx = np.flatnonzero(keep & (bucket == b))
+        s = 1 << int(b)
+        ov, ou = np.divmod(np.arange(s * s), s)
+        step = max(1, chunk // (s * s))
+        for start in range(0, len(idx), step):
+            I = idx[start : start + step]
+            cu = umin[I, None] + ou[None, :]
+            cv = vmin[I, None] + ov[None, :]
+            m = (cu <= umax[I, None]) & (cv <= vmax[I, None])
+            tu, tv, tz = tri_u[I], tri_v[I], tri_z[I]
+            l0, l1, l2 = _bary(tu[:, 0:1], tv[:, 0:1], tu[:, 1:2], tv[:, 1:2], tu[:, 2:3], tv[:, 2:3], cu, cv)
+            m &= (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS)
+            if target is not None:
+                m[m] = target[cv[m], cu[m]]
+            if not m.any():
+                continue
+            val = l0 * tz[:, 0:1] + l1 * tz[:, 1:2] + l2 * tz[:, 2:3]
+            out[cv[m], cu[m]] = val[m]
+            written += int(m.sum())
+    return written
+
+
+def _dilate(mask: np.ndarray, iterations: int) -> np.ndarray:
+    from scipy.ndimage import binary_dilation
+
+    return binary_dilation(mask, structure=np.ones((3, 3), bool), iterations=iterations)
+
+
+def fill_voids_tin(out, du, dv, z, valid, max_edge: float | None = None, rim: int = 1) -> np.ndarray:
+    """Fill the NaN cells of ``out`` from a Delaunay TIN of the occupied cells on void rims.
+
+    Parameters
+    ----------
+    out : (rows, cols) float64
+        Values so far; NaN cells are the voids to fill (modified copy returned).
+    du, dv, z, valid : (rows, cols)
+        Representatives as in :func:`lattice_tin`.
+    max_edge : float, optional
+        Triangles with an edge longer than this (cells) leave their cells NaN.
+    rim : int
+        Width in cells of the rim around voids whose points enter the triangulation.
+
+    Returns
+    -------
+    (rows, cols) float64
+        ``out`` with voids inside the convex hull of the points filled.
+    """
+    from scipy.spatial import Delaunay
+    from scipy.spatial import QhullError
+
+    out = out.copy()
+    voids = np.isnan(out)
+    if not voids.any():
+        return out
+    sel = valid & _dilate(voids, rim)
+    ii, jj = np.nonzero(sel)
+    if len(ii) < 3:
+        return out
+    pu = jj + du[ii, jj]
+    pv = ii + dv[ii, jj]
+    pz = z[ii, jj]
+    try:
+        tri = Delaunay(np.column_stack([pu, pv]))
+    except (QhullError, ValueError):
+        return out  # collinear or too few distinct points: nothing to triangulate
+    s = tri.simplices
+    tu, tv, tz = pu[s], pv[s], pz[s]
+    if max_edge is not None:
+        ok = _edges_ok(tu.T, tv.T, max_edge)
+        tu, tv, tz = tu[ok], tv[ok], tz[ok]
+    rasterize_triangles(tu, tv, tz, out, target=voids)
+    return out
+
+
+def tin_surface(du, dv, z, valid, max_edge: float | None = None, tile: int = 1024) -> np.ndarray:
+    """Full TIN surface at every cell centre: lattice triangles by tiles, then void filling.
+
+    The lattice step is local (a cell needs its 8 neighbours), so tiles of ``tile`` cells with
+    a one-cell overlap give exactly the untiled result while bounding temporary memory.
+    """
+    R, C = z.shape
+    out = np.full((R, C), np.nan)
+    for r0 in range(0, R, tile):
+        for c0 in range(0, C, tile):
+            ra, rb = max(r0 - 1, 0), min(r0 + tile + 1, R)
+            ca, cb = max(c0 - 1, 0), min(c0 + tile + 1, C)
+            part = lattice_tin(du[ra:rb, ca:cb], dv[ra:rb, ca:cb], z[ra:rb, ca:cb], valid[ra:rb, ca:cb], max_edge)
+            out[r0 : min(r0 + tile, R), c0 : min(c0 + tile, C)] = part[r0 - ra : r0 - ra + min(tile, R - r0), c0 - ca : c0 - ca + min(tile, C - c0)]
+    return fill_voids_tin(out, du, dv, z, valid, max_edge)
