@@ -18,16 +18,13 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
-<<<<<<< HEAD
     "mesh": ("workstation.cli.mesh:mesh", "Mesh a cloud (screened Poisson, ball pivoting, 2.5D Delaunay) with MeshLab filters."),
     "render": ("workstation.cli.render:render", "Render a cloud or mesh off-screen to PNG (or a turntable GIF)."),
     "report": ("workstation.cli.report:report", "Self-contained HTML report of a work folder: stages, figures, renders, plots."),
-=======
     "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),
     "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
     "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),
     "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
->>>>>>> main
 }
 
 
