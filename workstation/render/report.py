@@ -322,12 +322,19 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
     from workstation.io.mesh import read_mesh
 
     cloud_html = []
+    seen: dict = {}
     for p in clouds[: params.max_files]:
         try:
             c = read_cloud(p)
         except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
             cloud_html.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(e))})</p>')
             continue
+        sig = (c.n, tuple(np.round(c.xyz[:3].ravel(), 6)))
+        if sig in seen:
+            cloud_html.append(f'<p class="note">{html.escape(str(p.relative_to(root)))}: the same points as '
+                              f'{html.escape(seen[sig])} (not drawn again)</p>')
+            continue
+        seen[sig] = str(p.relative_to(root))
         lo, hi = c.bounds
         info = [("points", c.n), ("CRS", (c.crs or "none")[:80]), ("min", np.round(lo, 3).tolist()),
                 ("max", np.round(hi, 3).tolist()), ("dimensions", ", ".join(c.dims))]

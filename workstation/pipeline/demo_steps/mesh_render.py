@@ -33,7 +33,7 @@ def step(ctx) -> dict:
         seen.add(sig)
         clouds[key] = c
         color = "class" if "classification" in c.attrs else "auto"
-        img = render(c, RenderParams(size=(800, 600), view="top", color=color, max_points=1_000_000))
+        img = render(c, RenderParams(size=(640, 480), view="top", color=color, max_points=500_000))
         out = ctx.outdir / f"render_{key}.png"
         save_png(img, out, overwrite=True)
         made[f"render_{key}"] = out
@@ -54,12 +54,12 @@ def step(ctx) -> dict:
     summary_path = ctx.outdir / "terrain_mesh.json"
     with atomic_path(summary_path, overwrite=True) as tmp:
         tmp.write_text(json.dumps(summary, indent=2, default=float))
-    img = render(res.mesh, RenderParams(size=(800, 600), view="iso", color="elevation"))
+    img = render(res.mesh, RenderParams(size=(640, 480), view="iso", color="elevation"))
     save_png(img, ctx.outdir / "render_terrain_mesh.png", overwrite=True)
     made.update({"terrain_mesh": mesh_path, "terrain_mesh_summary": summary_path,
                  "render_terrain_mesh": ctx.outdir / "render_terrain_mesh.png"})
     ctx.summaries["mesh_render"] = {"faces": res.mesh.n_faces, "rms_to_cloud": res.quality["cloud_to_mesh"]["rms"]}
     report = ctx.outdir / "report.html"
-    write_report(ctx.outdir, report, overwrite=True, params=ReportParams(render_size=(640, 480), max_points=500_000))
+    write_report(ctx.outdir, report, overwrite=True, params=ReportParams(render_size=(480, 360), max_points=300_000))
     made["report"] = report
     return made
