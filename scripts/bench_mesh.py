@@ -44,6 +44,7 @@ def bunny(threads):
     from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
                                   QualityParams, estimate_normals, mesh_cloud, mesh_quality)
     from workstation.core.products import Mesh
+    from workstation.io import read_cloud
 
     folder = Path(os.environ.get("WS_SHARED_DATA", REPO.parent / "shared" / "data")) / "registration"
     if not folder.is_dir():
@@ -54,10 +55,7 @@ def bunny(threads):
         s = line.split()
         if not s or s[0] != "bmesh":
             continue
-        lines = (folder / s[1]).read_bytes().decode().splitlines()
-        end = next(i for i, x in enumerate(lines) if x.strip() == "end_header")
-        n = next(int(x.split()[-1]) for x in lines[:end] if x.startswith("element vertex"))
-        xyz = np.loadtxt(lines[end + 1:end + 1 + n], usecols=(0, 1, 2))
+        xyz = read_cloud(folder / s[1]).xyz
         R = Rotation.from_quat(np.array(s[5:9], float)).as_matrix()
         local, _ = estimate_normals(Cloud(xyz), NormalParams(k=10), viewpoints=np.array([0.0, 0.0, 1.0]))
         scans.append(Cloud(xyz @ R + np.array(s[2:5], float), {"normal": np.asarray(local.attrs["normal"], float) @ R}))

@@ -11,12 +11,11 @@ from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, Norm
                               estimate_normals, mesh_cloud)
 
 
-def read_ascii_ply_xyz(path) -> np.ndarray:
-    """x y z of an ASCII PLY (CRLF tolerated) with numpy; the io helper's PLY reader is not on main yet."""
-    lines = path.read_bytes().decode("ascii").splitlines()
-    end = next(i for i, line in enumerate(lines) if line.strip() == "end_header")
-    n = next(int(line.split()[-1]) for line in lines[:end] if line.startswith("element vertex"))
-    return np.loadtxt(lines[end + 1:end + 1 + n], usecols=(0, 1, 2))
+def read_xyz(path) -> np.ndarray:
+    """x y z of a scan (ASCII PLY with CRLF line endings) through the package's PLY reader."""
+    from workstation.io import read_cloud
+
+    return read_cloud(path).xyz
 
 
 def bunny_scans(folder) -> list[Cloud]:
@@ -31,7 +30,7 @@ def bunny_scans(folder) -> list[Cloud]:
             continue
         t, q = np.array(s[2:5], float), np.array(s[5:9], float)
         R = Rotation.from_quat(q).as_matrix()
-        xyz = read_ascii_ply_xyz(folder / s[1])
+        xyz = read_xyz(folder / s[1])
         local, _ = estimate_normals(Cloud(xyz), NormalParams(k=10), viewpoints=np.array([0.0, 0.0, 1.0]))
         out.append(Cloud(xyz @ R + t, {"normal": np.asarray(local.attrs["normal"], float) @ R}))
     return out
@@ -50,7 +49,7 @@ def test_bunny_pose_convention(shared_data):
     assert np.median(d) < 0.0004
     s = next(line.split() for line in (folder / "bun.conf").read_text().splitlines() if "bun045" in line)
     R = Rotation.from_quat(np.array(s[5:9], float)).as_matrix()
-    raw = read_ascii_ply_xyz(folder / "bun045.ply")
+    raw = read_xyz(folder / "bun045.ply")
     d_wrong, _ = cKDTree(scans[0].xyz).query(raw @ R.T + np.array(s[2:5], float))
     assert np.median(d_wrong) > 0.01
 

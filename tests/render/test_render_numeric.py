@@ -68,6 +68,25 @@ def test_pinhole_silhouette_matches_projection():
     assert cx == pytest.approx(ex, abs=0.3) and cy == pytest.approx(ey, abs=0.3)
 
 
+def test_reconstruction_view_renders_like_its_camera():
+    from workstation.core.products import Image, Reconstruction
+    from workstation.render import reconstruction_view
+
+    mesh = Mesh(O + np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], float), np.array([[0, 1, 2]]))
+    cam = Camera(80, 60, 70.0, 70.0, 40.0, 30.0)
+    R = rot(180, 0, 0)  # looking down
+    C = O + [0.3, 0.3, 3.0]
+    rec = Reconstruction({1: cam}, {7: Image("a.jpg", 1, Pose(R, -R @ C))})
+    got = reconstruction_view(rec, 7)
+    assert got[0] is cam
+    a = render(mesh, RenderParams(color="uniform"), camera=got)
+    b = render(mesh, RenderParams(color="uniform"), camera=(cam, Pose(R, -R @ C)))
+    assert np.array_equal(a, b) and a.shape == (60, 80, 3)
+    assert (a.max(axis=2) < 250).sum() > 50  # the triangle is in view
+    with pytest.raises(InvalidInputError):
+        reconstruction_view(rec, 8)
+
+
 def test_object_behind_camera_is_an_error():
     mesh = Mesh(O + np.eye(3), np.array([[0, 1, 2]]))
     cam = Camera(64, 48, 50.0, 50.0, 32.0, 24.0)

@@ -20,7 +20,7 @@ from workstation.core.classes import CLASS_COLORS, class_colors, class_name
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
-from workstation.core.products import Camera, Mesh, Pose
+from workstation.core.products import Camera, Mesh, Pose, Reconstruction
 
 log = get_logger(__name__)
 
@@ -363,6 +363,21 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     if img is None or img.shape[:2] != (size[1], size[0]):
         raise StageError("render", "VTK returned no image", "check the OpenGL (EGL/OSMesa) libraries")
     return np.ascontiguousarray(img[:, :, :3])
+
+
+def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pose]:
+    """The (Camera, Pose) of one oriented image of a reconstruction, for ``render(camera=...)``.
+
+    The render then matches the photo pixel for pixel (distortion aside: renders are ideal
+    pinhole images; undistort the photo to compare).
+    """
+    if image_id not in rec.images:
+        raise InvalidInputError(f"image {image_id} is not in the reconstruction",
+                                "ids: " + ", ".join(str(k) for k in sorted(rec.images)[:20]), field="image_id")
+    im = rec.images[image_id]
+    if im.camera_id not in rec.cameras:
+        raise InvalidInputError(f"camera {im.camera_id} of image {image_id} is missing", field="cameras")
+    return rec.cameras[im.camera_id], im.pose
 
 
 def turntable(obj, params: RenderParams = RenderParams(), frames: int = 36, elevation_deg: float = 25.0):
