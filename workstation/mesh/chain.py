@@ -7,7 +7,7 @@ step (parameters resolved to numbers, seconds, summary) in the result and in the
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
 from workstation.core.cloud import Cloud
@@ -112,7 +112,10 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
         steps.append(rec)
         log.info("%s: %d faces in %.1f s", rec.name, mesh.n_faces, rec.seconds)
         if params.clean is not None:
-            mesh, rec = clean(mesh, params.clean)
+            cp = params.clean
+            if params.quality is not None and params.quality.self_intersections:
+                cp = replace(cp, report_self_intersections=False)  # counted once, on the final mesh
+            mesh, rec = clean(mesh, cp)
             steps.append(rec)
         if params.decimate is not None:
             mesh, rec = decimate(mesh, params.decimate)

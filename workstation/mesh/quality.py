@@ -40,7 +40,7 @@ class QualityParams:
 
     mesh_samples: int = 0
     max_cloud_points: int = 1_000_000
-    self_intersections: bool = False
+    self_intersections: bool = True
 
 
 def _stats(d: np.ndarray) -> dict:
