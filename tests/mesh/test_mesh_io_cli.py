@@ -92,3 +92,21 @@ def test_ws_mesh_cli_poisson_and_delaunay(tmp_path, capsys):
     rc = main(["mesh", str(tmp_path / "t.las"), "-o", str(tmp_path / "t.ply"), "--method", "delaunay25d", "--json"])
     assert rc == 0
     assert json.loads(capsys.readouterr().out)["faces"] == 2 * 19 * 19
+
+
+def test_pymeshlab_interop_round_trip_keeps_precision_and_colours():
+    from workstation.interop.pymeshlab import (cloud_to_pymeshlab, mesh_to_pymeshlab, pymeshlab_to_cloud,
+                                               pymeshlab_to_mesh, rgb_to_u8)
+
+    rgb16 = (RGB.astype(np.uint16) * 257)
+    c = Cloud(V, {"rgb": rgb16, "normal": np.tile(np.float32([0, 0, 1]), (4, 1))}, crs="EPSG:32632")
+    m, origin = cloud_to_pymeshlab(c)
+    assert np.all(np.abs(m.vertex_matrix()) < 10)  # shifted to a local origin
+    back = pymeshlab_to_cloud(m, origin, template=c)
+    assert np.abs(back.xyz - V).max() < 1e-9 and back.crs == c.crs
+    assert np.abs(back.attrs["rgb"].astype(int) - rgb16).max() <= 1
+    mm, o2 = mesh_to_pymeshlab(Mesh(V, F, {"rgb": RGB}))
+    r = pymeshlab_to_mesh(mm, o2)
+    assert np.abs(r.vertices - V).max() < 1e-9 and r.faces.tolist() == F.tolist()
+    assert r.vertex_attrs["rgb"].tolist() == RGB.tolist()
+    assert rgb_to_u8(np.array([[255, 128, 0]], np.uint16)).tolist() == [[255, 128, 0]]  # 8-bit values in u16
