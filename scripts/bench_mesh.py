@@ -1,11 +1,13 @@
 """Meshing and rendering benchmarks (issue 10). Prints one JSON line per result.
 
-    PYTHONPATH=. python scripts/bench_mesh.py [--only bunny,poisson,render] [--threads 2]
+    WS_SHARED_DATA=../../shared/data PYTHONPATH=. python scripts/bench_mesh.py \
+        [--only render,poisson,poisson_open3d,bunny] [--threads 2]
 
 - bunny: Stanford bunny, 3 scans merged with bun.conf poses, screened Poisson depth 9,
   decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
   decimation on the same oriented points as the anchor (needs ../shared/data).
-- poisson: screened Poisson depth 10 on 1,000,000 points (a bumpy torus, analytic normals).
+- poisson: screened Poisson depth 10 on 1,000,000 points (a bumpy torus, analytic normals);
+  poisson_open3d: the same through Open3D (anchor).
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
 shared machine).
@@ -87,9 +89,7 @@ def bunny(threads):
          mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
 
 
-def poisson_1m(threads):
-    from workstation.mesh import PoissonParams, poisson
-
+def torus_1m():
     rng = np.random.default_rng(0)
     n = 1_000_000
     u, v = rng.uniform(0, 2 * np.pi, (2, n))
@@ -97,10 +97,29 @@ def poisson_1m(threads):
     xyz = np.column_stack([(Rr + r * np.cos(v)) * np.cos(u), (Rr + r * np.cos(v)) * np.sin(u), r * np.sin(v)])
     c = np.column_stack([Rr * np.cos(u), Rr * np.sin(u), np.zeros(n)])
     nrm = (xyz - c) / np.linalg.norm(xyz - c, axis=1, keepdims=True)  # near-radial normals of the tube
-    cloud = Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
+    return Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
+
+
+def poisson_1m(threads):
+    from workstation.mesh import PoissonParams, poisson
+
+    cloud = torus_1m()
+    n = cloud.n
     (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads))
     emit(bench="poisson_depth10_1M", points=n, threads=rec.params["threads"], faces=mesh.n_faces,
          wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
+
+
+def poisson_1m_open3d():
+    """The same cloud and depth through Open3D's Poisson (the anchor for the ratio)."""
+    import open3d as o3d
+
+    cloud = torus_1m()
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - [500_000, 4_000_000, 100]))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], float))
+    (m, _), wall, cpu = timed(o3d.geometry.TriangleMesh.create_from_point_cloud_poisson, pc, depth=10)
+    emit(bench="poisson_depth10_1M_open3d_anchor", points=cloud.n, faces=len(m.triangles), wall_s=round(wall, 1),
+         cpu_s=round(cpu, 1))
 
 
 def render_10m():
@@ -117,7 +136,7 @@ def render_10m():
 
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
-    ap.add_argument("--only", default="bunny,poisson,render")
+    ap.add_argument("--only", default="render,poisson,poisson_open3d,bunny")
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args()
     todo = a.only.split(",")
@@ -125,5 +144,7 @@ if __name__ == "__main__":
         render_10m()
     if "poisson" in todo:
         poisson_1m(a.threads)
+    if "poisson_open3d" in todo:
+        poisson_1m_open3d()
     if "bunny" in todo:
         bunny(a.threads)
