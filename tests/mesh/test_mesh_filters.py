@@ -95,6 +95,18 @@ def test_poisson_sphere_is_closed_with_the_right_volume(sphere_poisson, sphere_c
     assert np.abs(np.linalg.norm(mesh.vertices - CENTRE, axis=1) - R).max() < 0.03 * R
 
 
+def test_poisson_open3d_backend_agrees(sphere_cloud, sphere_poisson):
+    oriented, _ = estimate_normals(sphere_cloud, NormalParams(k=10))
+    mesh, rec = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.0, backend="open3d", threads=1))
+    assert rec.params["backend"] == "open3d"
+    q = mesh_quality(mesh, sphere_cloud)
+    assert q["watertight"] and q["volume"] == pytest.approx(4 / 3 * np.pi * R ** 3, rel=0.03)
+    assert q["cloud_to_mesh"]["p95"] < 0.01 * R
+    assert "quality" in mesh.vertex_attrs
+    with pytest.raises(InvalidInputError):
+        PoissonParams(backend="cgal")
+
+
 def test_poisson_trims_unsupported_surface():
     """A hemisphere of points: Poisson closes it; trimming by density removes the invented cap."""
     xyz, u = sphere_points(6000)

@@ -20,6 +20,8 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Poisson screening weight (0 = unscreened).")
 @click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
+@click.option("--poisson-backend", type=click.Choice(["pymeshlab", "open3d"]), default="pymeshlab", show_default=True,
+              help="MeshLab's Poisson filter or Open3D's build of the same code (faster on large clouds).")
 @click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
 @click.option("--radius", type=float, default=None,
               help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")
@@ -46,7 +48,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--no-quality", is_flag=True, help="Skip the quality summary (distances to the cloud).")
 @overwrite_option
 @json_option
-def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, threads, radius, max_edge,
+def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, poisson_backend, threads, radius, max_edge,
          k_normals, orient, viewpoint, recompute_normals, target_faces, smooth, smooth_iterations,
          min_piece_fraction, max_hole_edges, no_color, no_quality, overwrite, as_json):
     """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary."""
@@ -67,7 +69,7 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
         method=method,
         normals=NormalParams(k=k_normals, orient=orient, recompute=recompute_normals),
         poisson=PoissonParams(depth=depth, samples_per_node=samples_per_node, point_weight=point_weight,
-                              trim_quantile=trim_quantile, threads=threads),
+                              trim_quantile=trim_quantile, backend=poisson_backend, threads=threads),
         ball_pivoting=BallPivotingParams(radius=radius),
         delaunay=Delaunay25dParams(max_edge=max_edge),
         clean=CleanParams(min_piece_fraction=min_piece_fraction, max_hole_edges=max_hole_edges),

@@ -23,7 +23,7 @@ from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Mesh
 
-from .steps import StepRecord, Timer, import_pymeshlab, openmp_threads, point_spacing
+from .steps import StepRecord, Timer, import_pymeshlab, openmp_threads, passive_openmp, point_spacing
 
 log = get_logger(__name__)
 
@@ -49,6 +49,9 @@ class PoissonParams:
     trim_quantile : float
         Vertices whose density is below this quantile of the output vertices' densities are
         removed, with their faces (fraction in [0, 1); 0 = keep the closed surface).
+    backend : {"pymeshlab", "open3d"}
+        MeshLab's filter, or Open3D's build of the same PoissonRecon code (faster here: 118 s
+        against 200 s CPU for depth 10 on a million points; no ``iterations`` setting).
     threads : int
         OpenMP threads of the solver (count; 0 = all cores, or 1 when OpenMP would spin:
         see :func:`workstation.mesh.steps.openmp_threads`).
@@ -61,6 +64,7 @@ class PoissonParams:
     scale: float = 1.1
     iterations: int = 8
     trim_quantile: float = 0.05
+    backend: str = "pymeshlab"
     threads: int = 0
 
     def __post_init__(self):
@@ -68,6 +72,9 @@ class PoissonParams:
             raise InvalidInputError(f"depth={self.depth} out of 1..16", field="depth")
         if not 0.0 <= self.trim_quantile < 1.0:
             raise InvalidInputError(f"trim_quantile={self.trim_quantile} not in [0, 1)", field="trim_quantile")
+        if self.backend not in ("pymeshlab", "open3d"):
+            raise InvalidInputError(f"unknown Poisson backend '{self.backend}'", "use pymeshlab or open3d",
+                                    field="backend")
         if self.samples_per_node <= 0:
             raise InvalidInputError("samples_per_node must be positive", field="samples_per_node")
 
@@ -124,26 +131,32 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
     Returns
     -------
     (Mesh, StepRecord)
-        The mesh carries ``quality`` (float32): MeshLab's per-vertex sample density.
+        The mesh carries ``quality`` (float32): the solver's per-vertex sample density.
         Colours are not transferred here (see :func:`workstation.mesh.color.transfer_colors`).
     """
     if "normal" not in cloud.attrs:
         raise InvalidInputError("screened Poisson needs oriented normals", "run estimate_normals first",
                                 field="normal")
-    import_pymeshlab()
+    if params.backend == "open3d":
+        passive_openmp()
+    else:
+        import_pymeshlab()
     from workstation.interop.pymeshlab import cloud_to_pymeshlab, meshset_with, pymeshlab_to_mesh
 
     threads = openmp_threads(params.threads)
     with Timer() as t:
-        m, origin = cloud_to_pymeshlab(cloud.without_attrs("rgb") if "rgb" in cloud.attrs else cloud)
-        ms = meshset_with(m)
-        ms.generate_surface_reconstruction_screened_poisson(
-            depth=int(params.depth), fulldepth=int(params.full_depth), samplespernode=float(params.samples_per_node),
-            pointweight=float(params.point_weight), scale=float(params.scale), iters=int(params.iterations),
-            confidence=False, preclean=False, threads=threads,
-        )
-        out = ms.current_mesh()
-        mesh = pymeshlab_to_mesh(out, origin, crs=cloud.crs)
+        if params.backend == "open3d":
+            mesh = _poisson_open3d(cloud, params, threads)
+        else:
+            m, origin = cloud_to_pymeshlab(cloud.without_attrs("rgb") if "rgb" in cloud.attrs else cloud)
+            ms = meshset_with(m)
+            ms.generate_surface_reconstruction_screened_poisson(
+                depth=int(params.depth), fulldepth=int(params.full_depth),
+                samplespernode=float(params.samples_per_node), pointweight=float(params.point_weight),
+                scale=float(params.scale), iters=int(params.iterations), confidence=False, preclean=False,
+                threads=threads,
+            )
+            mesh = pymeshlab_to_mesh(ms.current_mesh(), origin, crs=cloud.crs)
         n_before = mesh.n_faces
         thr = None
         if params.trim_quantile > 0 and "quality" in mesh.vertex_attrs and mesh.n_faces:
@@ -154,12 +167,31 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
         "poisson",
         {"depth": params.depth, "full_depth": params.full_depth, "samples_per_node": params.samples_per_node,
          "point_weight": params.point_weight, "scale": params.scale, "iterations": params.iterations,
-         "trim_quantile": params.trim_quantile, "threads": threads},
+         "trim_quantile": params.trim_quantile, "backend": params.backend, "threads": threads},
         t.seconds,
         {"faces_untrimmed": n_before, "faces": mesh.n_faces, "vertices": mesh.n_vertices,
          "density_threshold": thr, "cpu_seconds": round(t.cpu, 3)},
     )
     return _check_mesh("poisson", mesh), rec
+
+
+def _poisson_open3d(cloud: Cloud, params: PoissonParams, threads: int) -> Mesh:
+    """Open3D's screened Poisson (same PoissonRecon code); its densities become ``quality``."""
+    try:
+        import open3d as o3d
+    except ImportError as e:  # pragma: no cover - declared dependency
+        from workstation.core.errors import MissingDependencyError
+
+        raise MissingDependencyError("open3d", "the open3d Poisson backend", "pip install open3d") from e
+    origin = np.round(0.5 * (cloud.xyz.min(axis=0) + cloud.xyz.max(axis=0)))
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - origin))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], dtype=np.float64))
+    m, dens = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(
+        pc, depth=int(params.depth), scale=float(params.scale), linear_fit=False, n_threads=int(threads),
+        full_depth=int(params.full_depth), samples_per_node=float(params.samples_per_node),
+        point_weight=float(params.point_weight))
+    return Mesh(np.asarray(m.vertices) + origin, np.asarray(m.triangles, dtype=np.int64),
+                {"quality": np.asarray(dens, dtype=np.float32)}, crs=cloud.crs)
 
 
 def keep_vertices(mesh: Mesh, keep: np.ndarray) -> Mesh:

@@ -107,13 +107,17 @@ def import_pymeshlab():
     The policy is read once, when libgomp is loaded, so it is set here only if no OpenMP
     runtime is loaded yet and the user has not chosen one.
     """
-    import sys
-
-    if "pymeshlab" not in sys.modules and "OMP_WAIT_POLICY" not in os.environ and not _libgomp_loaded():
-        os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
+    passive_openmp()
     from workstation.interop.pymeshlab import _pymeshlab
 
     return _pymeshlab()
+
+
+def passive_openmp() -> None:
+    """Ask for sleeping OpenMP waits (``OMP_WAIT_POLICY=PASSIVE``) if no OpenMP runtime is
+    loaded yet and the user has not chosen a policy (see :func:`import_pymeshlab`)."""
+    if "OMP_WAIT_POLICY" not in os.environ and not _libgomp_loaded():
+        os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
 
 
 def openmp_threads(requested: int) -> int:
