@@ -7,7 +7,8 @@
   decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
   decimation on the same oriented points as the anchor (needs ../shared/data).
 - poisson: screened Poisson depth 10 on 1,000,000 points (a bumpy torus, analytic normals);
-  poisson_open3d: the same through Open3D (anchor).
+  poisson_backend_open3d: the same through ``PoissonParams(backend="open3d")`` (passive
+  OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
 shared machine).
@@ -74,7 +75,7 @@ def bunny(threads):
          mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
     import open3d as o3d
 
-    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(merged.xyz))
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.array(merged.xyz)))
     pc.normals = o3d.utility.Vector3dVector(np.asarray(merged.attrs["normal"], float))
     t, c = time.perf_counter(), time.process_time()
     m, dens = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(pc, depth=9)
@@ -100,13 +101,14 @@ def torus_1m():
     return Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
 
 
-def poisson_1m(threads):
+def poisson_1m(threads, backend="pymeshlab"):
     from workstation.mesh import PoissonParams, poisson
 
     cloud = torus_1m()
     n = cloud.n
-    (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads))
-    emit(bench="poisson_depth10_1M", points=n, threads=rec.params["threads"], faces=mesh.n_faces,
+    (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads,
+                                                                 backend=backend))
+    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"], faces=mesh.n_faces,
          wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
 
 
@@ -144,6 +146,8 @@ if __name__ == "__main__":
         render_10m()
     if "poisson" in todo:
         poisson_1m(a.threads)
+    if "poisson_backend_open3d" in todo:
+        poisson_1m(a.threads, backend="open3d")
     if "poisson_open3d" in todo:
         poisson_1m_open3d()
     if "bunny" in todo:

@@ -185,7 +185,7 @@ def _poisson_open3d(cloud: Cloud, params: PoissonParams, threads: int) -> Mesh:
         raise MissingDependencyError("open3d", "the open3d Poisson backend", "pip install open3d") from e
     origin = np.round(0.5 * (cloud.xyz.min(axis=0) + cloud.xyz.max(axis=0)))
     pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - origin))
-    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], dtype=np.float64))
+    pc.normals = o3d.utility.Vector3dVector(np.array(cloud.attrs["normal"], dtype=np.float64))
     m, dens = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(
         pc, depth=int(params.depth), scale=float(params.scale), linear_fit=False, n_threads=int(threads),
         full_depth=int(params.full_depth), samples_per_node=float(params.samples_per_node),
