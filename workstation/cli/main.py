@@ -21,6 +21,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "mesh": ("workstation.cli.mesh:mesh", "Mesh a cloud (screened Poisson, ball pivoting, 2.5D Delaunay) with MeshLab filters."),
     "render": ("workstation.cli.render:render", "Render a cloud or mesh off-screen to PNG (or a turntable GIF)."),
     "report": ("workstation.cli.report:report", "Self-contained HTML report of a work folder: stages, figures, renders, plots."),
+    "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
+    "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
     "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),
     "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
     "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),

@@ -1,0 +1,67 @@
+"""`ws plan-flight`: swath, spacing, density, lines and time of an ALS/ULS block, or its inverse."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json
+
+
+@click.command("plan-flight")
+@click.option("--altitude", type=float, default=1000.0, show_default=True, help="Flying height above ground in metres.")
+@click.option("--speed", type=float, default=60.0, show_default=True, help="Ground speed in m/s.")
+@click.option("--prf", type=float, default=300_000.0, show_default=True, help="Pulse repetition frequency in Hz.")
+@click.option("--scan-rate", "--scan-frequency", "scan_rate", type=float, default=50.0, show_default=True,
+              help="Scan frequency in Hz (mirror cycles for zigzag, lines for polygon, revolutions for palmer).")
+@click.option("--fov", type=float, default=40.0, show_default=True, help="Full field of view in degrees.")
+@click.option("--overlap", type=float, default=0.3, show_default=True, help="Lateral strip overlap as a fraction 0-1.")
+@click.option("--area-width", type=float, default=2000.0, show_default=True, help="Block width across the lines in metres.")
+@click.option("--area-length", type=float, default=3000.0, show_default=True, help="Block length along the lines in metres.")
+@click.option("--run-in", type=float, default=500.0, show_default=True, help="Extra line length before and after the block in metres.")
+@click.option("--bank", type=float, default=20.0, show_default=True, help="Bank angle in turns in degrees.")
+@click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default="zigzag", show_default=True,
+              help="Scan mechanism.")
+@click.option("--divergence", type=float, default=None, help="Beam divergence in mrad (adds the footprint diameter).")
+@click.option("--target-density", type=float, default=None,
+              help="Solve for this point density in points/m^2 per pass (inverse problem).")
+@click.option("--solve-for", type=click.Choice(["prf", "speed", "altitude"]), default="prf", show_default=True,
+              help="Which parameter --target-density solves for.")
+@click.option("--json", "as_json", is_flag=True, help="Print the plan as JSON on stdout (SI units).")
+def plan_flight(altitude, speed, prf, scan_rate, fov, overlap, area_width, area_length, run_in, bank, pattern,
+                divergence, target_density, solve_for, as_json):
+    """Plan an airborne LiDAR block: swath width, along/across spacing, density, NPS, lines, time.
+
+    With --target-density, first solve for the PRF (or speed, or altitude) that reaches it.
+    """
+    from workstation.lidar.planning import FlightParams, plan_flight as plan, solve_for_density
+
+    p = FlightParams(altitude=altitude, speed=speed, prf=prf, scan_frequency=scan_rate, fov_deg=fov, overlap=overlap,
+                     area_width=area_width, area_length=area_length, run_in=run_in, bank_deg=bank, pattern=pattern)
+    if target_density is not None:
+        p = solve_for_density(target_density, p, solve_for)
+    result = plan(p, divergence)
+    d = result.to_dict()
+    if target_density is not None:
+        d["solved_for"] = solve_for
+        d["solved_value"] = getattr(p, solve_for)
+    if as_json:
+        emit_json(d)
+        return
+    rows = [
+        ("altitude", f"{p.altitude:.1f} m"), ("speed", f"{p.speed:.2f} m/s"), ("prf", f"{p.prf:.0f} Hz"),
+        ("swath width", f"{result.swath_width:.1f} m"), ("spacing along", f"{result.spacing_along:.3f} m"),
+        ("spacing across", f"{result.spacing_across:.3f} m"), ("density (per pass)", f"{result.density:.2f} pts/m²"),
+        ("density (block mean)", f"{result.density_block:.2f} pts/m²"), ("NPS", f"{result.nps:.3f} m"),
+        ("flight lines", f"{result.flight_lines} (spacing {result.line_spacing:.1f} m)"),
+        ("turn", f"radius {result.turn_radius:.0f} m, {result.turn_time_s:.0f} s"),
+        ("total time", f"{result.total_time_s:.0f} s ({result.total_time_s / 60:.1f} min)"),
+        ("max PRF, one pulse in air", f"{result.max_prf_one_pulse_in_air:.0f} Hz"),
+        ("pulses in the air", f"{result.pulses_in_air}" + (" (needs an MPiA sensor)" if result.pulses_in_air > 1 else "")),
+    ]
+    if result.footprint_diameter is not None:
+        rows.append(("footprint", f"{result.footprint_diameter:.3f} m"))
+    if target_density is not None:
+        rows.insert(0, ("solved", f"{solve_for} for {target_density} pts/m²"))
+    w = max(len(k) for k, _ in rows)
+    for k, v in rows:
+        click.echo(f"{k:<{w}}  {v}")

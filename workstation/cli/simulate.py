@@ -1,0 +1,172 @@
+"""`ws simulate {als,uls,mls,tls} -o OUT.laz`: simulated, fully labelled LiDAR of a synthetic scene."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, overwrite_option
+
+
+def _triple(ctx, param, value):
+    if value is None:
+        return None
+    try:
+        parts = tuple(float(v) for v in value.split(","))
+    except ValueError:
+        raise click.BadParameter("give three comma-separated numbers, e.g. 0.01,0,-0.02") from None
+    if len(parts) != 3:
+        raise click.BadParameter("give three comma-separated numbers")
+    return parts
+
+
+def _xy(ctx, param, value):
+    out = []
+    for v in value or ():
+        try:
+            x, y = (float(a) for a in v.split(","))
+        except ValueError:
+            raise click.BadParameter(f"'{v}' is not X,Y in metres") from None
+        out.append((x, y))
+    return tuple(out)
+
+
+@click.command()
+@click.argument("kind", type=click.Choice(["als", "uls", "mls", "tls"]))
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), help="Output cloud (.laz, .las, ...).")
+@click.option("--scene", "scene_path", default=None,
+              help="Scene recipe TOML or the name of a shipped one (mixed, urban, rural, forest, mountain, demo_small). Default: mixed.")
+@click.option("--seed", type=int, default=None, help="Seed of the scene and of every random error (default 0).")
+@click.option("--config", "config_path", type=click.Path(exists=True, dir_okay=False), default=None,
+              help="Survey TOML: [survey] scene/seed/area/lever_arm..., [flight], [vehicle], [scanner], [sensor], [errors], [[stations]].")
+@click.option("--altitude", type=float, default=None, help="Flying height above ground in metres (ALS/ULS).")
+@click.option("--speed", type=float, default=None, help="Platform ground speed in m/s (ALS/ULS/MLS).")
+@click.option("--overlap", type=float, default=None, help="Lateral strip overlap as a fraction 0-1 (ALS/ULS).")
+@click.option("--lines", type=int, default=None, help="Number of flight lines to fly (default: cover the scene, at least 2).")
+@click.option("--heading", type=float, default=None, help="Flight line direction in degrees clockwise from north.")
+@click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default=None, help="Airborne scan mechanism.")
+@click.option("--prf", type=float, default=None, help="Pulse repetition frequency in Hz.")
+@click.option("--scan-frequency", type=float, default=None, help="Scan frequency in Hz (mirror cycles, lines or revolutions).")
+@click.option("--fov", type=float, default=None, help="Full field of view in degrees.")
+@click.option("--h-step", type=float, default=None, help="TLS horizontal angular step in degrees.")
+@click.option("--v-step", type=float, default=None, help="TLS vertical angular step in degrees.")
+@click.option("--station", "stations", multiple=True, callback=_xy, help="TLS station X,Y in local scene metres (repeatable).")
+@click.option("--subrays", type=int, default=None, help="Rays per pulse sampling the beam footprint (1 = first return only).")
+@click.option("--divergence", type=float, default=None, help="Full beam divergence in mrad.")
+@click.option("--wavelength", type=float, default=None, help="Laser wavelength in nm (reflectances are given at 1064 and 1550).")
+@click.option("--max-returns", type=int, default=None, help="Returns recorded per pulse (1-15).")
+@click.option("--no-errors", is_flag=True, help="Perfect measurements: switch every error off (then apply the error options).")
+@click.option("--range-noise", type=float, default=None, help="1-sigma range noise in metres.")
+@click.option("--gnss-noise", callback=_triple, default=None, help="1-sigma GNSS noise E,N,U in metres.")
+@click.option("--gnss-bias", callback=_triple, default=None, help="GNSS bias E,N,U in metres.")
+@click.option("--imu-noise", callback=_triple, default=None, help="1-sigma attitude noise roll,pitch,yaw in degrees.")
+@click.option("--lever-arm-error", callback=_triple, default=None, help="Lever-arm error x,y,z (body frame) in metres.")
+@click.option("--boresight-error", callback=_triple, default=None, help="Boresight error roll,pitch,yaw in degrees.")
+@click.option("--scan-angle-scale", type=float, default=None, help="Relative mirror-angle scale error (negative: smile).")
+@click.option("--scan-angle-offset", type=float, default=None, help="Mirror angle offset in degrees.")
+@click.option("--time-bias", type=float, default=None, help="Scanner-to-navigation clock offset in seconds.")
+@click.option("--range-walk", type=float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
+@click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
+              help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
+@click.option("--trajectory", "trajectory_path", type=click.Path(dir_okay=False), default=None,
+              help="Trajectory CSV to write (default: OUT with suffix .trajectory.csv).")
+@click.option("--save-scene", "scene_out", type=click.Path(dir_okay=False), default=None,
+              help="Also write the labelled scene mesh (.npz: triangles, class, material, object id, colour).")
+@overwrite_option
+@click.option("--json", "as_json", is_flag=True, help="Print a summary as JSON on stdout.")
+def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
+             scan_frequency, fov, h_step, v_step, stations, subrays, divergence, wavelength, max_returns, no_errors,
+             range_noise, gnss_noise, gnss_bias, imu_noise, lever_arm_error, boresight_error, scan_angle_scale,
+             scan_angle_offset, time_bias, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
+    """Simulate an ALS, ULS, MLS or TLS survey of a synthetic scene.
+
+    Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
+    heritage church, trees, a road with cars, a stream with a bridge, a pond, a power line) is
+    flown with two overlapping ALS lines, or scanned from three TLS stations. The cloud carries
+    the scene's class, object id (user_data and extra dimension object_id), part (roof, wall,
+    trunk, crown, vehicle, ...), return numbers, intensity from the laser range equation, GPS time, scan angle and flags; the trajectory is
+    written beside it as CSV.
+    """
+    import time
+    from dataclasses import replace
+    from pathlib import Path
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.core.log import get_logger
+    from workstation.core.progress import progress_bar
+    from workstation.io import check_output, format_of, write_cloud
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.scene import build_scene, save_scene, scene_summary
+    from workstation.lidar.simulate import ErrorModel, write_trajectory_csv
+    from workstation.lidar.survey import count_pulses, default_survey, run_survey, survey_from_toml, survey_trajectory
+
+    log = get_logger(__name__)
+    t0 = time.perf_counter()
+    format_of(output)
+    check_output(output, overwrite)
+    traj_out = Path(trajectory_path) if trajectory_path else Path(output).with_suffix(".trajectory.csv")
+    check_output(traj_out, overwrite)
+    if scene_out:
+        check_output(scene_out, overwrite)
+    top: dict = {}
+    if config_path:
+        cfg, top = survey_from_toml(config_path, kind)
+        if top.get("kind", kind) != kind:
+            raise InvalidInputError(f"config is for '{top['kind']}' but '{kind}' was asked", path=config_path)
+    else:
+        cfg = default_survey(kind)
+    scene_arg = scene_path or top.get("scene", "mixed")
+    seed = seed if seed is not None else int(top.get("seed", 0))
+
+    flight = cfg.flight
+    for name, val in (("altitude", altitude), ("speed", speed), ("overlap", overlap), ("n_lines", lines), ("heading_deg", heading)):
+        if val is not None:
+            flight = replace(flight, **{name: val})
+    scanner = cfg.scanner
+    for name, val in (("kind", pattern), ("prf", prf), ("scan_frequency", scan_frequency), ("fov_deg", fov),
+                      ("h_step_deg", h_step), ("v_step_deg", v_step)):
+        if val is not None:
+            scanner = replace(scanner, **{name: val})
+    sensor = cfg.sensor
+    for name, val in (("subrays", subrays), ("divergence_mrad", divergence), ("wavelength_nm", wavelength),
+                      ("max_returns", max_returns)):
+        if val is not None:
+            sensor = replace(sensor, **{name: val})
+    errors = ErrorModel.none() if no_errors else cfg.errors
+    for name, val in (("range_noise_m", range_noise), ("gnss_noise_m", gnss_noise), ("gnss_bias_m", gnss_bias),
+                      ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
+                      ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
+                      ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
+                      ("range_walk_m", range_walk)):
+        if val is not None:
+            errors = replace(errors, **{name: val})
+    vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle
+    st = tuple(Station(x, y) for x, y in stations) if stations else cfg.stations
+    cfg = replace(cfg, flight=flight, scanner=scanner, sensor=sensor, errors=errors, vehicle=vehicle, stations=st)
+
+    scene = build_scene(scene_arg, seed)
+    log.info("scene: %s", scene_summary(scene))
+    traj = survey_trajectory(scene, cfg, seed)
+    total = count_pulses(traj, cfg.scanner)
+    with progress_bar(f"simulate {kind}", total) as advance:
+        result = run_survey(scene, cfg, seed, progress=advance, with_nir=point_format == "8", trajectory=traj)
+    cloud = result.cloud
+    if point_format == "6":
+        cloud = cloud.without_attrs("rgb")
+    opts = {"point_format": int(point_format)} if format_of(output)[0] in ("las", "laz") else {}
+    write_cloud(cloud, output, overwrite=overwrite, **opts)
+    write_trajectory_csv(result, traj_out, overwrite=overwrite)
+    if scene_out:
+        save_scene(scene, scene_out, overwrite=overwrite)
+    dt = time.perf_counter() - t0
+    log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
+    if as_json:
+        import numpy as np
+
+        cls, cnt = np.unique(cloud.attrs["classification"], return_counts=True)
+        emit_json({
+            "output": output, "trajectory": str(traj_out), "scene_mesh": scene_out, "kind": kind, "scene": scene.meta.get("recipe"), "seed": seed,
+            "pulses": result.stats["pulses"], "point_count": cloud.n,
+            "multiple_return_share": result.stats["multiple_return_share"],
+            "flight_lines_or_stations": len(traj.segments),
+            "classes": {int(c): int(n) for c, n in zip(cls, cnt)}, "crs": cloud.crs, "seconds": dt,
+        })
