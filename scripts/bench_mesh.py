@@ -1,7 +1,7 @@
 """Meshing and rendering benchmarks (issue 10). Prints one JSON line per result.
 
     WS_SHARED_DATA=../../shared/data PYTHONPATH=. python scripts/bench_mesh.py \
-        [--only render,poisson,poisson_open3d,bunny] [--threads 2]
+        [--only render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage] [--threads 2]
 
 - bunny: Stanford bunny, 3 scans merged with bun.conf poses, screened Poisson depth 9,
   decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
@@ -9,6 +9,7 @@
 - poisson: screened Poisson depth 10 on 1,000,000 points (a bumpy torus, analytic normals);
   poisson_backend_open3d: the same through ``PoissonParams(backend="open3d")`` (passive
   OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
+- heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
 shared machine).
@@ -124,6 +125,57 @@ def poisson_1m_open3d():
          cpu_s=round(cpu, 1))
 
 
+def heritage():
+    """Synthetic heritage church (simulator scene), 8 TLS stations on a 35 m circle, screened
+    Poisson of the church returns (normals toward each point's station) against the true mesh."""
+    from dataclasses import replace
+
+    from workstation.core.products import Mesh
+    from workstation.interop.pymeshlab import mesh_to_pymeshlab
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.scene import SceneRecipe, build_scene
+    from workstation.lidar.survey import default_survey, run_survey
+    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
+                                  QualityParams, mesh_cloud)
+    from workstation.mesh.quality import _hausdorff, _stats
+
+    rec = SceneRecipe(name="heritage", extent=(120.0, 120.0), buildings=0, courtyards=0, heritage=True, trees=0,
+                      bushes=0, grass_patches=0, cars=0, stream=False, pond=False, powerline=False)
+    scene = build_scene(rec, 0)
+    oid = next(int(k) for k, v in scene.meta["objects"].items() if v == "heritage_church")
+    fm = scene.object_id == oid
+    used = np.unique(scene.faces[fm])
+    lo, hi = scene.vertices[used].min(0), scene.vertices[used].max(0)
+    centre, height = 0.5 * (lo + hi), float(hi[2] - lo[2])
+    stations = tuple(Station(float(centre[0] + 35 * np.cos(a)), float(centre[1] + 35 * np.sin(a)), 1.6)
+                     for a in np.linspace(0, 2 * np.pi, 8, endpoint=False))
+    cfg = default_survey("tls")
+    cfg = replace(cfg, stations=stations, scanner=replace(cfg.scanner, h_step_deg=0.12, v_step_deg=0.12))
+    res = run_survey(scene, cfg, seed=0)
+    c = res.cloud
+    ch = c[np.asarray(c.attrs["object_id"]) == oid]
+    traj = res.true_trajectory  # station i is point source i + 1
+    spos = np.array([traj.position[np.searchsorted(traj.time, sg.t0)] for sg in traj.segments]) + scene.origin
+    vp = spos[np.asarray(ch.attrs["point_source_id"]).astype(int) - 1]
+    keep = np.sort(np.random.default_rng(0).choice(ch.n, min(600_000, ch.n), replace=False))
+    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), MeshChainParams(
+        method="poisson", normals=NormalParams(k=12), poisson=PoissonParams(depth=9, trim_quantile=0.05),
+        clean=CleanParams(min_piece_fraction=0.05), decimate=DecimateParams(target_faces=200_000),
+        quality=QualityParams(max_cloud_points=300_000)), vp[keep])
+    remap = -np.ones(len(scene.vertices), int)
+    remap[used] = np.arange(len(used))
+    truth = Mesh(scene.vertices[used] + scene.origin, remap[scene.faces[fm]])
+    a, o = mesh_to_pymeshlab(out.mesh)
+    b, _ = mesh_to_pymeshlab(truth, origin=o)
+    m2t = _stats(_hausdorff(a, b, True, 300_000, 200.0))
+    t2m = _stats(_hausdorff(b, a, True, 300_000, 200.0))
+    emit(bench="heritage_church_tls_poisson", tls_points=int(c.n), church_points=int(ch.n), meshed_points=int(keep.size),
+         height_m=height, faces=out.mesh.n_faces, mesh_to_truth_m={k: round(v, 4) for k, v in m2t.items()},
+         truth_to_mesh_m={k: round(v, 4) for k, v in t2m.items()},
+         rms_over_height_percent=round(100 * m2t["rms"] / height, 3), mesh_wall_s=round(wall, 1),
+         mesh_cpu_s=round(cpu, 1))
+
+
 def render_10m():
     from workstation.render import RenderParams, render
 
@@ -138,7 +190,7 @@ def render_10m():
 
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
-    ap.add_argument("--only", default="render,poisson,poisson_open3d,bunny")
+    ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args()
     todo = a.only.split(",")
@@ -152,3 +204,5 @@ if __name__ == "__main__":
         poisson_1m_open3d()
     if "bunny" in todo:
         bunny(a.threads)
+    if "heritage" in todo:
+        heritage()
