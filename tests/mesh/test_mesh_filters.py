@@ -274,14 +274,15 @@ def test_chain_records_every_step_and_colours(sphere_cloud):
                                         decimate=DecimateParams(target_faces=500), smooth=SmoothParams(iterations=2),
                                         quality=QualityParams()))
     names = [s.name for s in res.steps]
-    assert names == ["normals", "poisson", "clean", "decimate", "smooth", "color_transfer", "quality"]
+    assert names == ["normals", "poisson", "clean", "decimate", "smooth", "clean_after_decimation", "color_transfer",
+                     "quality"]
     assert res.mesh.n_faces <= 500
     assert res.mesh.meta["steps"][1]["params"]["depth"] == 5
     assert res.quality["watertight"]
     x = res.mesh.vertices[:, 0] - CENTRE[0]
     assert np.all(res.mesh.vertex_attrs["rgb"][x > 0.3, 0] > 200)
     d = res.to_dict()
-    assert d["faces"] == res.mesh.n_faces and len(d["steps"]) == 7
+    assert d["faces"] == res.mesh.n_faces and len(d["steps"]) == 8
     with pytest.raises(InvalidInputError):
         MeshChainParams(method="marching")
 

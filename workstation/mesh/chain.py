@@ -123,6 +123,10 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
         if params.smooth is not None:
             mesh, rec = smooth(mesh, params.smooth)
             steps.append(rec)
+        if params.clean is not None and params.decimate is not None:
+            # edge collapses can pinch the surface into non-manifold edges again
+            mesh, rec = clean(mesh, CleanParams(report_self_intersections=False))
+            steps.append(replace(rec, name="clean_after_decimation"))
         if params.color is not None and "rgb" in cloud.attrs:
             mesh, rec = transfer_colors(mesh, cloud, params.color)
             steps.append(rec)
