@@ -33,16 +33,20 @@ def step(ctx) -> dict:
         seen.add(sig)
         clouds[key] = c
         color = "class" if "classification" in c.attrs else "auto"
-        img = render(c, RenderParams(size=(640, 480), view="top", color=color, max_points=500_000))
+        img = render(c, RenderParams(size=(640, 480), view="top", color=color, max_points=300_000))
         out = ctx.outdir / f"render_{key}.png"
         save_png(img, out, overwrite=True)
         made[f"render_{key}"] = out
     if not clouds:
         return made
-    # a terrain mesh (2.5D Delaunay) of a 20,000-point subset of the first cloud's ground
+    # a terrain mesh (2.5D Delaunay) of a 20,000-point subset of the first cloud's ground and roads
     key, c = next(iter(clouds.items()))
-    if "classification" in c.attrs and np.any(c.attrs["classification"] == 2):
-        c = c[np.asarray(c.attrs["classification"]) == 2]
+    from workstation.core.classes import ASPRSClass
+
+    if "classification" in c.attrs:
+        bare = np.isin(np.asarray(c.attrs["classification"]), [ASPRSClass.GROUND, ASPRSClass.ROAD_SURFACE])
+        if bare.any():
+            c = c[bare]
     rng = np.random.default_rng(ctx.seed)
     small = c[np.sort(rng.choice(c.n, min(20_000, c.n), replace=False))]
     res = mesh_cloud(small, MeshChainParams(method="delaunay25d", delaunay=Delaunay25dParams(),
@@ -60,6 +64,6 @@ def step(ctx) -> dict:
                  "render_terrain_mesh": ctx.outdir / "render_terrain_mesh.png"})
     ctx.summaries["mesh_render"] = {"faces": res.mesh.n_faces, "rms_to_cloud": res.quality["cloud_to_mesh"]["rms"]}
     report = ctx.outdir / "report.html"
-    write_report(ctx.outdir, report, overwrite=True, params=ReportParams(render_size=(480, 360), max_points=300_000))
+    write_report(ctx.outdir, report, overwrite=True, params=ReportParams(render_size=(400, 300), max_points=200_000))
     made["report"] = report
     return made
