@@ -30,6 +30,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
     "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),
     "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
+    "calibrate": ("workstation.cli.calibrate:calibrate", "Calibrate a camera (Zhang planar target or DLT) to CAMERA.json."),
+    "sfm": ("workstation.cli.sfm:sfm", "Orient photos and build a sparse cloud (pycolmap); georeference with GCPs."),
 }
 
 
