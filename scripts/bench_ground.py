@@ -3,6 +3,8 @@
   python scripts/bench_ground.py isprs  [--data DIR] [--methods smrf,csf,...]   per-sample ISPRS errors
   python scripts/bench_ground.py tiles  [--data DIR] [--methods ...]           1 m TIN DTM RMSE vs the file's class 2
   python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
+  python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
+                                        datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
 
 DIR defaults to ../shared/data (or $WS_SHARED_DATA). Timings: wall and process (CPU) seconds.
 """
@@ -143,9 +145,30 @@ def bench_speed(data: Path, methods, n: int):
                   "points_per_s": tile.n / wall2, "points_per_cpu_s": tile.n / cpu2})
 
 
+def bench_sim(sim_dir: Path, methods):
+    """Ground/non-ground errors on simulated ALS against the simulator's classes (bare earth:
+    ground 2, water 9, road 11)."""
+    from workstation.ground.evaluate import evaluate_labels
+    from workstation.io import read_cloud
+
+    for name in ("urban", "rural", "forest", "mountain"):
+        f = sim_dir / f"{name}.laz"
+        if not f.exists():
+            continue
+        c = read_cloud(f)
+        truth = np.asarray(c.attrs["classification"])
+        for m in methods:
+            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True))
+            pred = np.asarray(out.attrs["classification"])
+            ev = evaluate_labels(truth, np.where(pred == 2, 2, 1), ground_classes=(2, 9, 11))
+            emit({"bench": "sim", "scene": name, "method": m, "points": c.n, "type1": ev.type1, "type2": ev.type2,
+                  "total_error": ev.total_error, "kappa": ev.kappa, "seconds": wall, "cpu_seconds": cpu})
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["isprs", "tiles", "speed"])
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim"])
+    ap.add_argument("--sim-dir", default="sim")
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
@@ -156,6 +179,8 @@ def main(argv=None):
         bench_isprs(data, methods)
     elif a.what == "tiles":
         bench_tiles(data, methods)
+    elif a.what == "sim":
+        bench_sim(Path(a.sim_dir), methods)
     else:
         bench_speed(data, methods, a.points)
 

@@ -15,9 +15,12 @@ from .options import emit_json, json_option
               help="Largest distance for matching points by coordinates, CRS units.")
 @click.option("--plot-dir", type=click.Path(file_okay=False), default=None,
               help="Write errors_plan.png (Type I/II in plan view) and confusion.png into this folder.")
+@click.option("--ground-classes", default="2", show_default=True,
+              help="Classes counted as bare earth in the ground / non-ground view, comma separated "
+                   "(e.g. 2,9,11 for simulated truth with water and roads).")
 @click.option("--pred-columns", default=None, help="Column spec when PRED is a text file (must hold classification).")
 @json_option
-def evaluate(pred, ref, tolerance, plot_dir, pred_columns, as_json):
+def evaluate(pred, ref, tolerance, plot_dir, ground_classes, pred_columns, as_json):
     """Compare the classes of PRED with a reference (points matched by order or coordinates).
 
     Prints Type I (ground rejected), Type II (object accepted), total error and Cohen's kappa
@@ -31,17 +34,21 @@ def evaluate(pred, ref, tolerance, plot_dir, pred_columns, as_json):
     from workstation.ground.evaluate import evaluate_clouds, plot_confusion, plot_errors, read_reference
     from workstation.io import read_cloud
 
+    try:
+        gcls = tuple(int(v) for v in ground_classes.split(",") if v.strip())
+    except ValueError:
+        raise click.UsageError(f"--ground-classes must be integers, got {ground_classes!r}") from None
     pc = read_cloud(pred, **({"columns": pred_columns} if pred_columns else {}))
     rc = read_reference(ref)
-    ev, pi, ri = evaluate_clouds(pc, rc, tolerance=tolerance)
+    ev, pi, ri = evaluate_clouds(pc, rc, tolerance=tolerance, ground_classes=gcls)
     files = {}
     if plot_dir:
         d = Path(plot_dir)
         d.mkdir(parents=True, exist_ok=True)
-        from workstation.ground.evaluate import GROUND_CLASSES, reference_classes
+        from workstation.ground.evaluate import reference_classes
 
-        rg = np.isin(reference_classes(rc)[ri], GROUND_CLASSES)
-        pg = np.isin(np.asarray(pc.attrs["classification"])[pi], GROUND_CLASSES)
+        rg = np.isin(reference_classes(rc)[ri], gcls)
+        pg = np.isin(np.asarray(pc.attrs["classification"])[pi], gcls)
         files["errors_plan"] = str(plot_errors(pc.xyz[pi], rg, pg, d / "errors_plan.png", title=Path(pred).name))
         files["confusion"] = str(plot_confusion(ev, d / "confusion.png"))
     if as_json:

@@ -1,6 +1,6 @@
 """Textbook baselines for comparison: lowest point per cell, local minimum with a slope limit.
 
-Isolated low points (:mod:`workstation.ground.noise`) are set aside first in both.
+Low outliers (:func:`workstation.ground.noise.grid_low_points`) are set aside first in both.
 
 * ``lowest``: the lowest point of every ``cell`` and every point within ``threshold`` above
   it is ground (no object removal: roofs wider than a cell stay ground);
@@ -21,7 +21,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
-from .noise import isolated_low_points
+from .noise import grid_low_points
 
 STAGE_LOWEST = "ground.lowest"
 STAGE_LOCALMIN = "ground.local_min"
@@ -73,7 +73,7 @@ class LocalMinParams:
 
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
     """Ground flags (m,) bool: within ``threshold`` of the lowest point of the cell."""
-    low = isolated_low_points(xyz)
+    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     return ~low & (xyz[:, 2] - zmin[r, c] <= p.threshold)
@@ -81,7 +81,7 @@ def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
 
 def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     """Ground flags (m,) bool by the slope-based local minimum test on the min-grid."""
-    low = isolated_low_points(xyz)
+    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     filled = np.where(np.isnan(zmin), np.inf, zmin)

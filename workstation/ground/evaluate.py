@@ -402,13 +402,16 @@ def evaluate_clouds(pred: Cloud, ref: Cloud, *, tolerance: float = 0.01, ground_
 
 
 # -- plots -------------------------------------------------------------------------------------
-def plot_errors(xy, ref_ground, pred_ground, path, title: str = "", overwrite: bool = True) -> Path:
+def plot_errors(xy, ref_ground, pred_ground, path, title: str = "", overwrite: bool = True,
+                max_points: int = 200_000) -> Path:
     """Plan-view PNG: correct points grey, Type I errors (ground missed) red, Type II blue.
 
     Parameters
     ----------
     xy : (n, 2+) array_like of float
     ref_ground, pred_ground : (n,) array_like of bool
+    max_points : int
+        At most this many correct points are drawn (a fixed random subset); errors all are.
     """
     import matplotlib
 
@@ -423,10 +426,17 @@ def plot_errors(xy, ref_ground, pred_ground, path, title: str = "", overwrite: b
     t1 = r & ~p
     t2 = ~r & p
     ok = ~(t1 | t2)
+    if ok.sum() > max_points:
+        # draw a fixed random subset of the correct points (every error is drawn)
+        keep = np.flatnonzero(ok)
+        keep = np.random.default_rng(0).choice(keep, max_points, replace=False)
+        ok = np.zeros_like(ok)
+        ok[keep] = True
     o = xy.min(axis=0) if xy.size else np.zeros(2)
     fig, ax = plt.subplots(figsize=(8, 8), dpi=110)
     s = max(0.2, min(4.0, 2e4 / max(xy.shape[0], 1)))
-    ax.scatter(*(xy[ok] - o).T, s=s, c="0.8", lw=0, label=f"correct ({ok.sum()})", rasterized=True)
+    n_ok = int(np.count_nonzero(~(t1 | t2)))
+    ax.scatter(*(xy[ok] - o).T, s=s, c="0.8", lw=0, label=f"correct ({n_ok})", rasterized=True)
     ax.scatter(*(xy[t1] - o).T, s=3 * s, c="tab:red", lw=0, label=f"Type I: ground as object ({t1.sum()})")
     ax.scatter(*(xy[t2] - o).T, s=3 * s, c="tab:blue", lw=0, label=f"Type II: object as ground ({t2.sum()})")
     ax.set_aspect("equal")

@@ -4,7 +4,8 @@ Zhang K., Chen S.-C., Whitman D., Shyu M.-L., Yan J., Zhang C. (2003) "A progres
 morphological filter for removing nonground measurements from airborne LIDAR data",
 IEEE Trans. Geosci. Remote Sens. 41(4):872-882.
 
-Isolated low points are set aside first. On the minimum-height grid (empty cells filled with the nearest value), openings with square
+Low outliers (:func:`workstation.ground.noise.grid_low_points`) are set aside first. On the
+minimum-height grid (empty cells filled with the nearest value), openings with square
 windows of growing size ``w_k = 2·b^k + 1`` cells (exponential growth, ``b = 2``) up to
 ``max_window`` are applied to the previous opened surface; at each step the height threshold
 is ``dh_k = slope · (w_k - w_{k-1}) · cell + initial_distance`` capped at ``max_distance``
@@ -84,9 +85,9 @@ def pmf_ground(xyz: np.ndarray, p: PMFParams) -> np.ndarray:
     """Ground flags (m,) bool of local metric points by PMF."""
     from scipy import ndimage
 
-    from .noise import isolated_low_points
+    from .noise import grid_low_points
 
-    low = isolated_low_points(xyz)
+    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     zmin[np.isinf(zmin)] = np.nan
