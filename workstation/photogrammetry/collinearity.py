@@ -167,7 +167,7 @@ def pixels_to_normalized(uv: np.ndarray, camera: Camera) -> np.ndarray:
     return undistort_normalized(np.column_stack([xd, yd]), camera.dist)
 
 
-def project(X: np.ndarray, camera: Camera, pose: Pose, return_depth: bool = False):
+def project(X: np.ndarray, camera: Camera, pose: Pose, return_depth: bool = False, return_normalized: bool = False):
     """Project world points into an image with the collinearity equations and OpenCV distortion.
 
     Parameters
@@ -180,11 +180,15 @@ def project(X: np.ndarray, camera: Camera, pose: Pose, return_depth: bool = Fals
     return_depth : bool
         Also return the depth (camera z, same unit as X) of every point; points behind the camera
         have a negative depth and meaningless pixels.
+    return_normalized : bool
+        Also return the undistorted normalised image coordinates (x/z, y/z), e.g. to reject
+        points beyond the radius where the distortion polynomial folds back.
 
     Returns
     -------
     uv : (n, 2) float64 pixels
     depth : (n,) float64, only when ``return_depth``
+    xy : (n, 2) float64, only when ``return_normalized``
 
     Examples
     --------
@@ -202,7 +206,9 @@ def project(X: np.ndarray, camera: Camera, pose: Pose, return_depth: bool = Fals
     u = camera.fx * xyd[:, 0] + camera.skew * xyd[:, 1] + camera.cx
     v = camera.fy * xyd[:, 1] + camera.cy
     uv = np.column_stack([u, v])
-    return (uv, z) if return_depth else uv
+    if not (return_depth or return_normalized):
+        return uv
+    return (uv,) + ((z,) if return_depth else ()) + ((xy,) if return_normalized else ())
 
 
 # --------------------------------------------------------------------------------------------

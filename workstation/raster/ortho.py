@@ -21,8 +21,8 @@ literature: Amhar et al. 1998; Rau, Chen & Chen 2002; Habib et al. 2007):
    σ_px · depth / f on the ground; the two are independent, so they add in quadrature
    (``accuracy`` raster and its RMS in ``meta``).
 
-No collinearity module existed on main when this was written, so :func:`project_points`
-(numpy, OpenCV distortion model) lives here.
+Projection uses the collinearity equations of
+:func:`workstation.photogrammetry.collinearity.project`.
 """
 
 from __future__ import annotations
@@ -79,20 +79,10 @@ def project_points(camera: Camera, pose: Pose, X: np.ndarray) -> tuple[np.ndarra
 
 def _project(camera: Camera, pose: Pose, X: np.ndarray):
     """:func:`project_points` plus the squared radius of the undistorted normalised point."""
-    X = np.asarray(X, dtype=np.float64)
-    xc = X @ np.asarray(pose.R, float).T + np.asarray(pose.t, float)
-    z = xc[:, 2]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        x = xc[:, 0] / z
-        y = xc[:, 1] / z
-    k1, k2, p1, p2, k3 = (tuple(camera.dist) + (0.0,) * 5)[:5]
-    r2 = x * x + y * y
-    radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3))
-    xd = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x)
-    yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y
-    u = camera.fx * xd + camera.skew * yd + camera.cx
-    v = camera.fy * yd + camera.cy
-    return np.column_stack([u, v]), z, r2
+    from workstation.photogrammetry.collinearity import project
+
+    uv, z, xy = project(X, camera, pose, return_depth=True, return_normalized=True)
+    return uv, z, (xy * xy).sum(axis=1)
 
 
 def undistort(camera: Camera, uv: np.ndarray, iterations: int = 20) -> np.ndarray:

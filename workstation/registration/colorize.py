@@ -80,21 +80,10 @@ def project(xyz: np.ndarray, camera: Camera, pose: Pose) -> tuple[np.ndarray, np
     z : (n,) float64
         Depth along the optical axis (metres); <= 0 behind the camera.
     """
-    R = np.asarray(pose.R, dtype=np.float64)
-    t = np.asarray(pose.t, dtype=np.float64)
-    xc = np.asarray(xyz, dtype=np.float64) @ R.T + t
-    z = xc[:, 2]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        x = xc[:, 0] / z
-        y = xc[:, 1] / z
-    k1, k2, p1, p2, k3 = (tuple(camera.dist) + (0.0,) * 5)[:5]
-    r2 = x * x + y * y
-    radial = 1.0 + r2 * (k1 + r2 * (k2 + r2 * k3))
-    xd = x * radial + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x)
-    yd = y * radial + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y
-    u = camera.fx * xd + camera.skew * yd + camera.cx
-    v = camera.fy * yd + camera.cy
-    return u, v, z
+    from workstation.photogrammetry.collinearity import project as collinear
+
+    uv, z = collinear(xyz, camera, pose, return_depth=True)
+    return uv[:, 0], uv[:, 1], z
 
 
 def bilinear(image: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
