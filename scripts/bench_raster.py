@@ -241,7 +241,6 @@ def figures(path: Path, docs_img: Path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from workstation.io import atomic_path
     from workstation.raster.contours import ContourParams, contour_lines
     from workstation.raster.terrain import HillshadeParams, hillshade
 

@@ -129,7 +129,7 @@ def bench_icp(n: int, o3d_iterations: int):
     t = points_to_legacy(tgt)
     w0, c0 = time.perf_counter(), time.process_time()
     t.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=0.3, max_nn=20))
-    wn, cn = time.perf_counter() - w0, time.process_time() - c0
+    wn = time.perf_counter() - w0
     for name, est in (("point_to_point", reg.TransformationEstimationPointToPoint()),
                       ("point_to_plane", reg.TransformationEstimationPointToPlane())):
         w0, c0 = time.perf_counter(), time.process_time()
@@ -188,7 +188,7 @@ def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
     from workstation.core.products import Camera, Image, Pose, Reconstruction
     from workstation.lidar.scene import build_scene
     from workstation.lidar.survey import default_stations, default_survey, run_survey
-    from workstation.registration.colorize import ColorizeParams, colorize, project
+    from workstation.registration.colorize import ColorizeParams, colorize
 
     scene = build_scene("demo_small", seed)
     st = default_stations(scene, 3)

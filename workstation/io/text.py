@@ -43,7 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from workstation.core.cloud import Cloud
-from workstation.core.dims import DIMS, canonical_name
+from workstation.core.dims import canonical_name
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from workstation.core.products import Camera, Image, Pose, Reconstruction
+from workstation.core.products import Camera, Image, Reconstruction
 
 from .collinearity import intersect, pose_from_opk, project
 from .georef import Similarity
