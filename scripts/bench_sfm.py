@@ -1,0 +1,252 @@
+"""Photogrammetry benchmarks: one JSON line per result on stdout.
+
+Parts (``--part``, repeatable; default all):
+
+* ``zhang``: Bouguet's calibration example (13×12 inner corners, 30 mm) against the published
+  toolbox result fc = [657.46, 657.95], cc = [303.14, 242.57].
+* ``dlt``: DLT on synthetic cameras, 20 control points, 0.1 px noise.
+* ``gcp``: synthetic GCP scene, check RMSE against the noise-only expectation.
+* ``fountain``: Strecha fountain-P11 — plain pycolmap against ``run_sfm`` (self-calibrated and
+  with the true intrinsics), camera errors after a 7-DoF alignment to the true centres, and
+  run-time ratios measured in the same run (wall and process CPU time).
+
+Usage::
+
+    PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def emit(d):
+    print(json.dumps(d), flush=True)
+
+
+def part_zhang(data: Path):
+    from workstation.photogrammetry.calibration import ZhangParams, calibrate_zhang_images
+
+    t = time.perf_counter()
+    r = calibrate_zhang_images(data / "images/calibration/bouguet_calib_example", 13, 12, 30.0, ZhangParams())
+    c = r.camera
+    pub = {"fx": 657.46, "fy": 657.95, "cx": 303.14, "cy": 242.57}
+    got = {"fx": c.fx, "fy": c.fy, "cx": c.cx, "cy": c.cy}
+    emit(
+        {
+            "bench": "zhang_bouguet",
+            **{k: round(v, 3) for k, v in got.items()},
+            "max_abs_diff_px": round(max(abs(got[k] - pub[k]) for k in pub), 3),
+            "rms_px": round(r.rms, 4),
+            "views_used": len(r.per_image),
+            "dropped": [d["name"] for d in r.dropped],
+            "dist": [round(x, 5) for x in c.dist],
+            "seconds": round(time.perf_counter() - t, 2),
+        }
+    )
+
+
+def part_dlt(data: Path, trials: int = 50):
+    from workstation.photogrammetry.calibration import DLTParams, calibrate_dlt
+    from workstation.photogrammetry.synthetic import dlt_case
+
+    rng = np.random.default_rng(2024)
+    for refine in (False, True):
+        pp, foc, cen = [], [], []
+        for _ in range(trials):
+            cam, pose, X, uv, dist = dlt_case(rng, 0.1, 20)
+            r = calibrate_dlt(X, uv, (cam.width, cam.height), DLTParams(refine=refine, estimate_skew=not refine))
+            c = r.camera
+            pp.append(np.hypot(c.cx - cam.cx, c.cy - cam.cy))
+            foc.append(max(abs(c.fx / cam.fx - 1), abs(c.fy / cam.fy - 1)) * 100)
+            cen.append(np.linalg.norm(next(iter(r.poses.values())).center - pose.center) / dist * 100)
+        emit(
+            {
+                "bench": "dlt_synthetic" + ("_refined" if refine else "_linear"),
+                "trials": trials,
+                "points": 20,
+                "noise_px": 0.1,
+                "pp_err_px_median": round(float(np.median(pp)), 4),
+                "pp_err_px_max": round(float(np.max(pp)), 4),
+                "pp_within_1px_pct": round(100 * float(np.mean(np.array(pp) <= 1.0)), 1),
+                "focal_err_pct_median": round(float(np.median(foc)), 4),
+                "focal_err_pct_max": round(float(np.max(foc)), 4),
+                "centre_err_pct_of_distance_median": round(float(np.median(cen)), 4),
+                "centre_err_pct_of_distance_max": round(float(np.max(cen)), 4),
+            }
+        )
+
+
+def part_gcp(data: Path):
+    from workstation.photogrammetry.georef import georeference
+    from workstation.photogrammetry.synthetic import gcp_scene
+
+    for noise in (0.3, 1.0):
+        rec, gcps, expected = gcp_scene(np.random.default_rng(7), noise_px=noise, n_control=6, n_check=20)
+        res = georeference(gcps, rec)
+        m = res.report.metrics
+        emit(
+            {
+                "bench": "gcp_synthetic",
+                "noise_px": noise,
+                "control": m["control_n"],
+                "check": m["check_n"],
+                "check_rmse_h": round(m["check_rmse_h"], 4),
+                "check_rmse_z": round(m["check_rmse_z"], 4),
+                "expected_rmse_h": round(expected["rmse_h"], 4),
+                "expected_rmse_z": round(expected["rmse_z"], 4),
+                "ce90": round(m["check_ce90"], 4),
+                "le90": round(m["check_le90"], 4),
+            }
+        )
+
+
+# ------------------------------------------------------------------------------------------
+def gt_cameras(folder: Path):
+    out = {}
+    for f in sorted(folder.glob("*.camera")):
+        v = np.array(f.read_text().split(), dtype=float)
+        K = v[0:9].reshape(3, 3)
+        R_cw = v[12:21].reshape(3, 3)
+        C = v[21:24]
+        out[f.name[: -len(".camera")]] = (K, R_cw.T, C, int(v[24]), int(v[25]))
+    return out
+
+
+def camera_errors(model_dir: Path, gt: dict):
+    import pycolmap
+
+    from workstation.interop.pycolmap import pose_from_pycolmap
+    from workstation.photogrammetry.collinearity import rotation_angle_deg
+    from workstation.photogrammetry.georef import fit_similarity
+
+    rec = pycolmap.Reconstruction(str(model_dir))
+    names, Ce, Re, Cg, Rg = [], [], [], [], []
+    for im in rec.images.values():
+        if not im.has_pose or im.name not in gt:
+            continue
+        p = pose_from_pycolmap(im)
+        names.append(im.name)
+        Ce.append(p.center)
+        Re.append(p.R)
+        Rg.append(gt[im.name][1])
+        Cg.append(gt[im.name][2])
+    Ce, Cg = np.array(Ce), np.array(Cg)
+    sim = fit_similarity(Ce, Cg)
+    ce = np.linalg.norm(sim.apply(Ce) - Cg, axis=1)
+    re = np.array([rotation_angle_deg(Re[i] @ sim.R.T, Rg[i]) for i in range(len(names))])
+    return {
+        "registered": len(names),
+        "median_centre_err_mm": round(float(np.median(ce)) * 1000, 3),
+        "max_centre_err_mm": round(float(np.max(ce)) * 1000, 3),
+        "median_rot_err_deg": round(float(np.median(re)), 4),
+        "max_rot_err_deg": round(float(np.max(re)), 4),
+    }
+
+
+def plain_pycolmap(images: Path, work: Path, K=None, seed: int = 0):
+    """COLMAP's pipeline with default options, as a user of pycolmap would run it."""
+    import pycolmap
+
+    pycolmap.set_random_seed(seed)
+    db = work / "database.db"
+    ro = pycolmap.ImageReaderOptions()
+    if K is not None:
+        ro.camera_model = "PINHOLE"
+        ro.camera_params = ",".join(repr(float(x)) for x in K)
+    names = sorted(p.name for p in images.iterdir() if p.suffix.lower() in (".jpg", ".png", ".tif"))
+    pycolmap.extract_features(db, images, image_names=names, camera_mode=pycolmap.CameraMode.SINGLE, reader_options=ro)
+    pycolmap.match_exhaustive(db)
+    opts = pycolmap.IncrementalPipelineOptions()
+    opts.random_seed = seed
+    if K is not None:
+        opts.ba_refine_focal_length = False
+        opts.ba_refine_extra_params = False
+        opts.ba_refine_principal_point = False
+        opts.mapper.abs_pose_refine_focal_length = False
+        opts.mapper.abs_pose_refine_extra_params = False
+    (work / "sparse").mkdir()
+    recs = pycolmap.incremental_mapping(db, images, work / "sparse", opts)
+    best = max(recs, key=lambda k: recs[k].num_reg_images())
+    return work / "sparse" / str(best)
+
+
+def timed(fn):
+    t0, c0 = time.perf_counter(), time.process_time()
+    out = fn()
+    return out, time.perf_counter() - t0, time.process_time() - c0
+
+
+def part_fountain(data: Path, which=("self", "camera")):
+    from workstation.core.products import Camera
+    from workstation.io.camera import write_camera
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+
+    root = data / "images/sfm/strecha_fountain-P11"
+    images = root / "images"
+    gt = gt_cameras(root / "gt_dense_cameras")
+    K, _, _, w, h = next(iter(gt.values()))
+    tmp = Path(tempfile.mkdtemp(prefix="bench_sfm_"))
+    try:
+        for mode in which:
+            Kp = None
+            cam = None
+            if mode == "camera":
+                # the GT K is taken in OpenCV's pixel convention; COLMAP's is +0.5 px
+                cam = Camera(w, h, K[0, 0], K[1, 1], K[0, 2], K[1, 2])
+                Kp = [K[0, 0], K[1, 1], K[0, 2] + 0.5, K[1, 2] + 0.5]
+                write_camera(cam, tmp / "camera.json")
+            wp = tmp / f"plain_{mode}"
+            wp.mkdir()
+            model, wall_p, cpu_p = timed(lambda: plain_pycolmap(images, wp, Kp))
+            res_p = camera_errors(model, gt)
+            emit({"bench": f"fountain_plain_pycolmap_{mode}", **res_p, "wall_s": round(wall_p, 1), "cpu_s": round(cpu_p, 1)})
+            wo = tmp / f"ws_{mode}"
+            r, wall_o, cpu_o = timed(lambda: run_sfm(images, wo, cam, SfMParams()))
+            res_o = camera_errors(wo / "sparse" / "0", gt)
+            emit(
+                {
+                    "bench": f"fountain_ws_sfm_{mode}",
+                    **res_o,
+                    "points": r.summary["points"],
+                    "mean_reprojection_error_px": round(r.summary["mean_reprojection_error_px"], 4),
+                    "mean_track_length": round(r.summary["mean_track_length"], 3),
+                    "wall_s": round(wall_o, 1),
+                    "cpu_s": round(cpu_o, 1),
+                    "ratio_wall": round(wall_o / wall_p, 3),
+                    "ratio_cpu": round(cpu_o / cpu_p, 3),
+                    "timings_s": {k: round(v, 1) for k, v in r.summary["timings_s"].items()},
+                }
+            )
+            shutil.rmtree(wp, ignore_errors=True)
+            shutil.rmtree(wo, ignore_errors=True)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--data", type=Path, default=REPO.parent / "shared" / "data")
+    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain"])
+    ap.add_argument("--fountain-mode", action="append", choices=["self", "camera"])
+    a = ap.parse_args(argv)
+    parts = a.part or ["zhang", "dlt", "gcp", "fountain"]
+    for p in parts:
+        if p == "fountain":
+            part_fountain(a.data, tuple(a.fountain_mode or ("self", "camera")))
+        else:
+            globals()[f"part_{p}"](a.data)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,128 @@
+"""`ws sfm IMAGES/ -o WORKDIR`: structure from motion with pycolmap, optional GCP georeferencing."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from workstation.cli.options import emit_json, json_option, overwrite_option
+
+
+@click.command("sfm")
+@click.argument("images", type=click.Path(file_okay=False))
+@click.option("-o", "--output", "workdir", required=True, type=click.Path(file_okay=False), help="Work folder (COLMAP layout: database.db, sparse/0 = largest model).")
+@click.option("--camera", "camera_file", type=click.Path(dir_okay=False), help="CAMERA.json from `ws calibrate`; intrinsics kept fixed unless --refine-intrinsics.")
+@click.option("--refine-intrinsics", is_flag=True, help="Refine the --camera intrinsics in the bundle adjustments.")
+@click.option("--gcp", "gcp_file", type=click.Path(dir_okay=False), help="GCP.csv (schema in workstation.io.gcp): control points fix a 7-parameter similarity, check points give the accuracy.")
+@click.option("--crs", help="CRS of the GCP coordinates (EPSG code or WKT), recorded on the georeferenced outputs.")
+@click.option("--matcher", type=click.Choice(["auto", "exhaustive", "sequential", "spatial"]), default="auto", show_default=True, help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential.")
+@click.option("--mapper", type=click.Choice(["incremental", "global"]), default="incremental", show_default=True, help="Incremental (COLMAP) or global (GLOMAP) mapping.")
+@click.option("--max-image-size", type=int, default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
+@click.option("--max-features", type=int, default=8192, show_default=True, help="SIFT features per image.")
+@click.option("--camera-model", default="SIMPLE_RADIAL", show_default=True, help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...).")
+@click.option("--no-principal-point", is_flag=True, help="Skip the final bundle adjustment that frees the principal point.")
+@click.option("--sigma-px", type=float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
+@click.option("--seed", type=int, default=0, show_default=True, help="Random seed (-1 = random).")
+@overwrite_option
+@json_option
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, sigma_px, seed, overwrite, as_json):
+    """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
+
+    Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
+    reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud when
+    PLY output is available) and WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
+    model in the survey frame) and WORKDIR/georef_report.json (control and check residuals,
+    RMSE, CE90/LE90, DEM cell size and contour interval supported).
+    """
+    from workstation.core.errors import InvalidInputError
+    from workstation.core.log import get_logger
+    from workstation.io.atomic import atomic_path
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+
+    log = get_logger("workstation.cli.sfm")
+    camera = None
+    if camera_file:
+        from workstation.io.camera import read_camera
+
+        camera = read_camera(camera_file)
+    gcps = None
+    if gcp_file:
+        from workstation.io.gcp import read_gcp
+
+        gcps = read_gcp(gcp_file)  # read before the long run: fail early on a bad file
+        if sum(g.role == "control" for g in gcps) <= 2:
+            raise InvalidInputError(
+                f"{sum(g.role == 'control' for g in gcps)} control point(s) in the GCP file: a 7-parameter "
+                "similarity needs at least 3 not on one line (2 leave the rotation about their line free)",
+                "add control points or mark fewer points as check",
+                path=gcp_file,
+            )
+    if not Path(images).is_dir():
+        raise InvalidInputError("image folder not found", path=images)
+    params = SfMParams(
+        matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
+        camera_model=camera_model, refine_intrinsics=refine_intrinsics,
+        refine_principal_point=not no_principal_point, seed=seed,
+    )
+    result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
+    wd = Path(workdir)
+    out = result.to_dict()
+    try:
+        from workstation.io import write_cloud
+
+        write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
+        out["sparse_cloud"] = str(wd / "sparse.ply")
+    except Exception as e:  # noqa: BLE001 - PLY writer may not be on this branch yet
+        log.warning("sparse cloud not written as PLY (%s); the model is in sparse/0", e)
+    s = result.summary
+    click.echo(
+        f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
+        f"{s['mean_reprojection_error_px']:.3f} px, mean track length {s['mean_track_length']:.2f} -> {wd / 'sparse' / '0'}",
+        err=True,
+    )
+    if result.unregistered:
+        click.echo("not registered: " + ", ".join(result.unregistered), err=True)
+    for o in result.other_models:
+        click.echo(f"disconnected model sparse/{o['index']}: " + ", ".join(o["images"]), err=True)
+    if gcps is not None:
+        import pycolmap
+
+        from workstation.interop.pycolmap import apply_similarity, write_model
+        from workstation.photogrammetry.georef import georeference
+
+        geo = georeference(gcps, result.reconstruction, sigma_px=sigma_px, crs=crs)
+        rec = pycolmap.Reconstruction(str(wd / "sparse" / "0"))
+        apply_similarity(rec, geo.similarity)
+        write_model(rec, wd / "georef" / "0")
+        rep = geo.to_dict()
+        with atomic_path(wd / "georef_report.json", overwrite=True) as tmp:
+            Path(tmp).write_text(json.dumps(_clean(rep), indent=2) + "\n")
+        m = geo.report.metrics
+        if m.get("check_n"):
+            click.echo(
+                f"check points {m['check_n']}: RMSE X {m['check_rmse_x']:.4f} Y {m['check_rmse_y']:.4f} Z {m['check_rmse_z']:.4f} "
+                f"H {m['check_rmse_h']:.4f} 3D {m['check_rmse_3d']:.4f}; CE90 {m['check_ce90']:.4f} LE90 {m['check_le90']:.4f}; "
+                f"DEM cell >= {m['check_dem_cell_size_min']:.3f}, contour interval >= {m['check_contour_interval_min']:.3f}",
+                err=True,
+            )
+        for note in geo.report.notes:
+            click.echo("note: " + note, err=True)
+        out["georef"] = rep
+    with atomic_path(wd / "summary.json", overwrite=True) as tmp:
+        Path(tmp).write_text(json.dumps(_clean(out), indent=2, default=str) + "\n")
+    if as_json:
+        emit_json(out)
+
+
+def _clean(o):
+    import math
+
+    if isinstance(o, float) and not math.isfinite(o):
+        return None
+    if isinstance(o, dict):
+        return {str(k): _clean(v) for k, v in o.items()}
+    if isinstance(o, (list, tuple)):
+        return [_clean(v) for v in o]
+    return o

@@ -1,0 +1,125 @@
+"""Synthetic photogrammetric scenes with known geometry, for tests, benchmarks and the demo.
+
+Deterministic for a given ``numpy.random.Generator``. Numpy only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from workstation.core.products import Camera, Image, Pose, Reconstruction
+
+from .collinearity import intersect, pose_from_opk, project
+from .georef import Similarity
+
+
+def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
+    """A random camera looking at a 3-D control field (a calibration cage as deep as it is wide,
+    filling 80 % of the frame), all points in view.
+
+    Returns
+    -------
+    camera : Camera
+        The true camera (4000 × 3000 px, f 2500–4500 px, principal point within 40 px of centre).
+    pose : Pose
+        The true pose.
+    X : (n, 3) float
+        Control points, metres.
+    uv : (n, 2) float
+        Their pixels with Gaussian noise of ``noise_px`` per coordinate.
+    distance : float
+        Object distance, metres.
+    """
+    w, h = 4000, 3000
+    f = rng.uniform(2500, 4500)
+    cam = Camera(w, h, f, f * rng.uniform(0.995, 1.005), w / 2 + rng.uniform(-40, 40), h / 2 + rng.uniform(-40, 40))
+    dist = rng.uniform(20, 60)
+    width = dist * w / f * 0.8
+    om, ph, ka = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-np.pi, np.pi)
+    C = np.array([0.0, 0.0, dist]) + rng.normal(0, 0.5, 3)
+    pose = pose_from_opk(om, ph, ka, C)
+    kept = np.empty((0, 3))
+    while kept.shape[0] < n:
+        X = np.column_stack(
+            [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
+        )
+        uv, z = project(X, cam, pose, return_depth=True)
+        ok = (z > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
+        kept = np.vstack([kept, X[ok]])
+    X = kept[:n]
+    uv = project(X, cam, pose)
+    return cam, pose, X, uv + rng.normal(0, noise_px, uv.shape), dist
+
+
+def gcp_scene(
+    rng: np.random.Generator,
+    noise_px: float = 0.5,
+    n_control: int = 6,
+    n_check: int = 12,
+    flying_height: float = 120.0,
+):
+    """An aerial block in a local model frame, with surveyed GCPs observed in its images.
+
+    A 3 × 3 grid of nadir images (4000 × 3000 px, f = 3500 px, 60 % overlap) over a 150 m
+    square of gently rolling terrain; the reconstruction is expressed in a model frame (scale
+    1/25, rotated, shifted from the survey frame, as SfM would return it). Each GCP is observed
+    in every image that sees it, with Gaussian pixel noise ``noise_px``.
+
+    Returns
+    -------
+    reconstruction : Reconstruction
+        Oriented images in the model frame (exact poses).
+    gcps : list of GCP
+        Survey coordinates (UTM-like, metres), role control/check, image observations.
+    expected : dict
+        ``rmse_h`` and ``rmse_z`` the check points should show from the image noise alone
+        (root mean of the intersection variances, metres).
+    """
+    from workstation.io.gcp import GCP
+
+    cam = Camera(4000, 3000, 3500.0, 3500.0, 1999.5, 1499.5, model="PINHOLE")
+    gsd = flying_height / cam.fx
+    foot_x, foot_y = cam.width * gsd, cam.height * gsd
+    origin = np.array([500000.0, 4100000.0, 200.0])
+    poses_w = []
+    for j in range(3):
+        for i in range(3):
+            C = origin + [i * 0.4 * foot_x, j * 0.4 * foot_y, flying_height]
+            poses_w.append(pose_from_opk(rng.normal(0, 0.01), rng.normal(0, 0.01), rng.normal(0, 0.02), C))
+    lo = origin[:2] - [0.1 * foot_x, 0.1 * foot_y]
+    hi = origin[:2] + [0.9 * foot_x, 0.9 * foot_y]
+    n = n_control + n_check
+    xy = rng.uniform(lo, hi, (n, 2))
+    z = origin[2] + 5 * np.sin(xy[:, 0] / 40.0) * np.cos(xy[:, 1] / 55.0) + rng.uniform(0, 3, n)
+    Xw = np.column_stack([xy, z])
+    # survey -> model similarity (what SfM would produce), and its inverse for the poses
+    from .collinearity import opk_to_matrix
+
+    Rm = opk_to_matrix(0.3, -0.2, 1.1)
+    to_model = Similarity(1 / 25.0, Rm, -Rm @ (origin + [60, 40, 0]) / 25.0)
+    cams = {1: cam}
+    images = {}
+    for k, p in enumerate(poses_w, 1):
+        images[k] = Image(f"IMG_{k:04d}.JPG", 1, to_model.apply_pose(p))
+    rec = Reconstruction(cams, images, to_model.apply(Xw), None, None, {"synthetic": True})
+    gcps = []
+    var_h, var_z = [], []
+    for i in range(n):
+        obs, cs, ps = [], [], []
+        for k, p in enumerate(poses_w, 1):
+            uv, d = project(Xw[i : i + 1], cam, p, return_depth=True)
+            u, v = uv[0]
+            if d[0] > 0 and 0 <= u < cam.width and 0 <= v < cam.height:
+                un, vn = uv[0] + rng.normal(0, noise_px, 2)
+                obs.append((images[k].name, float(un), float(vn)))
+                cs.append(cam)
+                ps.append(p)
+        role = "control" if i < n_control else "check"
+        gcps.append(GCP(f"{'GCP' if role == 'control' else 'CHK'}{i + 1:02d}", Xw[i], role, None, tuple(obs)))
+        if role == "check" and len(obs) >= 2:
+            uv_exact = np.vstack([project(Xw[i : i + 1], c, q) for c, q in zip(cs, ps)])
+            res = intersect(uv_exact, cs, ps, sigma_px=noise_px, a_posteriori=False)
+            var_h.append(res.covariance[0, 0] + res.covariance[1, 1])
+            var_z.append(res.covariance[2, 2])
+    expected = {"rmse_h": float(np.sqrt(np.mean(var_h))), "rmse_z": float(np.sqrt(np.mean(var_z)))}
+    return rec, gcps, expected
