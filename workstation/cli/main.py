@@ -18,17 +18,15 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
-<<<<<<< HEAD
     "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
     "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
     "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),
     "hillshade": ("workstation.cli.hillshade:hillshade", "Hillshade, slope or aspect of a DEM GeoTIFF."),
     "contours": ("workstation.cli.contours:contours", "Contour lines of a DEM as GeoJSON (index contours, smoothing)."),
     "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
-=======
     "calibrate": ("workstation.cli.calibrate:calibrate", "Calibrate a camera (Zhang planar target or DLT) to CAMERA.json."),
     "sfm": ("workstation.cli.sfm:sfm", "Orient photos and build a sparse cloud (pycolmap); georeference with GCPs."),
->>>>>>> photo
+    "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU plane sweep or CUDA PatchMatch) and fusion."),
 }
 
 
