@@ -97,3 +97,34 @@ def test_dense_fusion_points_near_surface(tmp_path):
     assert wall.sum() > 100 and np.median(np.abs(np.asarray(cloud.attrs["normal"])[wall, 1])) > 0.9
     with pytest.raises(Exception):
         run_dense(tmp_path, params=DenseParams(depth_range=(5.0, 20.0)))  # dense/ exists, no overwrite
+
+
+def test_dense_cli_writes_fused_and_output(tmp_path, capsys):
+    import json
+
+    import cv2
+
+    from workstation.cli.main import main
+    from workstation.io import read_cloud
+
+    V, F, alb = _box_scene()
+    cam, poses = _rig(4, 128, 96, 120.0)
+    (tmp_path / "images").mkdir()
+    images = {}
+    for k, p in enumerate(poses, start=1):
+        cv2.imwrite(str(tmp_path / "images" / f"im{k}.png"), render(V, F, alb, cam, p, 2)[:, :, ::-1])
+        images[k] = Image(f"im{k}.png", 1, p)
+    write_colmap_text(Reconstruction({1: cam}, images), tmp_path / "sparse" / "0")
+    out = tmp_path / "dense.ply"
+    rc = main(["dense", str(tmp_path), "--device", "cpu", "--depth-range", "5", "20", "--sources", "3", "-o", str(out), "--json"])
+    assert rc in (0, None)
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["device"] == "cpu" and summary["points"] > 100
+    c = read_cloud(out)
+    assert c.n == summary["points"]
+    assert np.all(c.xyz[:, 1] > 7.5) and np.all(c.xyz[:, 1] < 12.5)  # between the box front and the wall
+    import pycolmap
+
+    if not pycolmap.has_cuda:  # --device cuda without a CUDA build is a clear user error
+        rc = main(["dense", str(tmp_path), "--device", "cuda", "--overwrite", "--depth-range", "5", "20"])
+        assert rc == 1 and "CUDA" in capsys.readouterr().err
