@@ -517,8 +517,11 @@ def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
         ref = _grey(d / "images" / v.name, (v.width, v.height))
         srcs = [views[j] for j in sources[iid]]
         imgs = [_grey(d / "images" / s.name, (s.width, s.height)) for s in srcs]
+        ti = time.perf_counter()
         depth, _ = plane_sweep(ref, v, imgs, srcs, params)
         write_array(depth, dm / f"{v.name}.photometric.bin")
+        log.info("depth map %s: %.0f %% of pixels, %d sources, %.1f s", v.name, 100.0 * float((depth > 0).mean()),
+                 len(srcs), time.perf_counter() - ti)
         stats["valid_photometric"] += int((depth > 0).sum())
     stats["photometric_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
