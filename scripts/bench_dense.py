@@ -117,7 +117,7 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "registered": len(pairs), "images": len(true.images),
            "render_s": round(t_render, 1), "sfm_s": round(t_sfm, 1), "dense_wall_s": round(wall, 1),
            "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
-           "samples": int(len(samples)), "summary": summary["timings_s"]})
+           "samples": len(samples), "summary": summary["timings_s"]})
     if render:
         _render(xyz, cloud.attrs["rgb"], render, f"synthetic heritage rig: {cloud.n} dense points (CPU plane sweep)")
 

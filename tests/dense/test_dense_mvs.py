@@ -62,7 +62,7 @@ def test_dense_plane_sweep_recovers_box_and_wall():
     imgs = [render(V, F, alb, cam, p, 2).astype(np.float32).mean(-1) for p in poses]
     K = np.array([[cam.fx, 0, cam.cx], [0, cam.fy, cam.cy], [0, 0, 1.0]])
     views = [_View(f"{i}", K, np.asarray(p.R), np.asarray(p.t), cam.width, cam.height, 5.0, 20.0) for i, p in enumerate(poses)]
-    depth, score = plane_sweep(imgs[1], views[1], [imgs[0], imgs[2]], [views[0], views[2]], DenseParams(top_k=1, num_sources=2))
+    depth, _score = plane_sweep(imgs[1], views[1], [imgs[0], imgs[2]], [views[0], views[2]], DenseParams(top_k=1, num_sources=2))
     z = _true_depth(V, F, cam, poses[1])
     ok = (depth > 0) & np.isfinite(z)
     assert ok.mean() > 0.5
@@ -87,7 +87,7 @@ def test_dense_fusion_points_near_surface(tmp_path):
         cv2.imwrite(str(tmp_path / "images" / f"im{k}.png"), render(V, F, alb, cam, p, 2)[:, :, ::-1])
         images[k] = Image(f"im{k}.png", 1, p)
     write_colmap_text(Reconstruction({1: cam}, images), tmp_path / "sparse" / "0")
-    cloud, summary = run_dense(tmp_path, params=DenseParams(depth_range=(5.0, 20.0), device="cpu", num_sources=4))
+    cloud, _summary = run_dense(tmp_path, params=DenseParams(depth_range=(5.0, 20.0), device="cpu", num_sources=4))
     assert (tmp_path / "dense" / "fused.ply").exists()
     assert cloud.n > 500 and "rgb" in cloud.attrs and "normal" in cloud.attrs
     ev = evaluate(cloud.xyz, V, F, 16.0, cloud.xyz[:10])
@@ -95,7 +95,9 @@ def test_dense_fusion_points_near_surface(tmp_path):
     assert ev["accuracy_median"] < 0.04
     wall = cloud.xyz[:, 1] > 11.8
     assert wall.sum() > 100 and np.median(np.abs(np.asarray(cloud.attrs["normal"])[wall, 1])) > 0.9
-    with pytest.raises(Exception):
+    from workstation.core.errors import OutputExistsError
+
+    with pytest.raises(OutputExistsError):
         run_dense(tmp_path, params=DenseParams(depth_range=(5.0, 20.0)))  # dense/ exists, no overwrite
 
 

@@ -33,7 +33,11 @@ from pathlib import Path
 
 import numpy as np
 
-from workstation.core.errors import InvalidInputError, MissingDependencyError, StageError
+from workstation.core.errors import (
+    InvalidInputError,
+    MissingDependencyError,
+    StageError,
+)
 from workstation.core.log import get_logger
 
 log = get_logger(__name__)
@@ -163,10 +167,10 @@ class _View:
 
 
 def _load_views(rec, depth_range=None, max_points: int = 200_000):
-    """(views by image id, source candidates by image id as [(score, id, angle_deg)])."""
+    """(views by image id, sparse points (n, 3), their track image ids, point indices per image)."""
     views, obs = {}, {}
     pts, ids = [], []
-    for pid, p in rec.points3D.items():
+    for p in rec.points3D.values():
         pts.append(p.xyz)
         ids.append([el.image_id for el in p.track.elements])
         if len(pts) >= max_points:
@@ -645,10 +649,24 @@ def evaluate(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray, extent
     sc.add_triangles(o3d.core.Tensor((vertices - off).astype(np.float32)), o3d.core.Tensor(faces.astype(np.uint32)))
     dist = sc.compute_distance(o3d.core.Tensor((points - off).astype(np.float32))).numpy()
     nn, _ = cKDTree(points).query(samples, k=1)
-    return {"points": int(len(points)), "accuracy_median": float(np.median(dist)),
+    return {"points": len(points), "accuracy_median": float(np.median(dist)),
             "accuracy_rel": float(np.median(dist) / extent), "accuracy_p90": float(np.percentile(dist, 90)),
             "completeness": float(np.mean(nn <= 0.01 * extent)), "extent": float(extent)}
 
 
-__all__ = ["DenseParams", "DEVICES", "write_array", "read_array", "select_sources", "plane_sweep", "depth_normals",
-           "geometric_filter", "resolve_device", "undistort", "compute_depth_maps", "fuse", "run_dense", "evaluate"]
+__all__ = [
+    "DEVICES",
+    "DenseParams",
+    "compute_depth_maps",
+    "depth_normals",
+    "evaluate",
+    "fuse",
+    "geometric_filter",
+    "plane_sweep",
+    "read_array",
+    "resolve_device",
+    "run_dense",
+    "select_sources",
+    "undistort",
+    "write_array",
+]

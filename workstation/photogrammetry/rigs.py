@@ -226,7 +226,7 @@ def rig_poses(spec: RigSpec, centre: np.ndarray, size: np.ndarray) -> list[Pose]
         rings = [(spec.camera_height, 0.0)]
         if spec.layout == "convergent":
             rings = [(spec.camera_height, 0.0), (2.0 * spec.camera_height, 0.5)]
-        per = int(math.ceil(spec.n_images / len(rings)))
+        per = math.ceil(spec.n_images / len(rings))
         k = 0
         for h, off in rings:
             for i in range(per):
@@ -362,9 +362,8 @@ def make_rig(recipe, spec: RigSpec, outdir, overwrite: bool = False) -> RigResul
     rec = Reconstruction({1: cam}, images, meta={"synthetic": True, "extent_m": extent})
     write_reconstruction_json(rec, out / "cameras.json", overwrite=True)
     write_colmap_text(rec, out / "sparse" / "0")
-    with atomic_path(out / "truth_mesh.npz", overwrite=True) as tmp:
-        with open(tmp, "wb") as fh:
-            np.savez_compressed(fh, vertices=V, faces=F, target=tmask, origin=origin, extent=extent)
+    with atomic_path(out / "truth_mesh.npz", overwrite=True) as tmp, open(tmp, "wb") as fh:
+        np.savez_compressed(fh, vertices=V, faces=F, target=tmask, origin=origin, extent=extent)
     log.info("rig %s: %d images %dx%d, target extent %.1f m", spec.layout, len(images), cam.width, cam.height, extent)
     return RigResult(out, rec, V, F, origin, extent, tmask)
 
@@ -375,5 +374,17 @@ def load_truth(folder) -> dict:
         return {k: z[k] for k in z.files}
 
 
-__all__ = ["RigSpec", "RigResult", "LAYOUTS", "load_rig", "make_rig", "render", "rig_poses", "look_at",
-           "surface_colour", "value_noise3", "write_colmap_text", "load_truth"]
+__all__ = [
+    "LAYOUTS",
+    "RigResult",
+    "RigSpec",
+    "load_rig",
+    "load_truth",
+    "look_at",
+    "make_rig",
+    "render",
+    "rig_poses",
+    "surface_colour",
+    "value_noise3",
+    "write_colmap_text",
+]
