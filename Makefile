@@ -18,15 +18,25 @@ $(STAMP): pyproject.toml
 
 install: $(STAMP)
 
-# open3d needs libusb-1.0 from Debian.
+# System libraries from Debian: libusb for open3d; EGL/Mesa for VTK's off-screen rendering
+# with no display; chromium only for the HTML-report test (best effort: that test skips
+# without it).
+SYSLIBS := libusb-1.0-0 libegl1 libegl-mesa0 libgl1-mesa-dri
 sysdeps:
-	@if ! ldconfig -p 2>/dev/null | grep -q 'libusb-1.0.so.0'; then \
+	@missing=""; for p in $(SYSLIBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = "0" ] && command -v apt-get >/dev/null; then \
-	    echo "Installing libusb-1.0-0 (needed by open3d)..."; \
-	    (apt-get install -y -qq libusb-1.0-0 >/dev/null 2>&1 || (apt-get update -qq && apt-get install -y -qq libusb-1.0-0 >/dev/null)); \
+	    echo "Installing$$missing (system libraries for open3d and off-screen rendering)..."; \
+	    (apt-get install -y -qq $$missing >/dev/null 2>&1 || (apt-get update -qq && apt-get install -y -qq $$missing >/dev/null)) \
+	      || { echo "apt-get could not install$$missing"; exit 1; }; \
 	  else \
-	    echo "open3d needs the system library libusb-1.0. Run: sudo apt-get install -y libusb-1.0-0"; exit 1; \
+	    echo "Missing system libraries. Run: sudo apt-get install -y$$missing"; exit 1; \
 	  fi; \
+	fi
+	@if ! command -v chromium >/dev/null && [ "$$(id -u)" = "0" ] && command -v apt-get >/dev/null; then \
+	  echo "Installing chromium (used by the HTML report test)..."; \
+	  (apt-get install -y -qq chromium >/dev/null 2>&1 || (apt-get update -qq && apt-get install -y -qq chromium >/dev/null 2>&1)) \
+	    || echo "chromium not installed: the report rendering test will be skipped"; \
 	fi
 
 demo: $(STAMP)

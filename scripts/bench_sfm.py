@@ -62,12 +62,14 @@ def part_dlt(data: Path, trials: int = 50):
 
     rng = np.random.default_rng(2024)
     for refine in (False, True):
-        pp, foc, cen = [], [], []
+        pp, foc, cen, pstd = [], [], [], []
         for _ in range(trials):
             cam, pose, X, uv, dist = dlt_case(rng, 0.1, 20)
             r = calibrate_dlt(X, uv, (cam.width, cam.height), DLTParams(refine=refine, estimate_skew=not refine))
             c = r.camera
             pp.append(np.hypot(c.cx - cam.cx, c.cy - cam.cy))
+            if refine:
+                pstd.append(np.hypot(r.std["cx"], r.std["cy"]))
             foc.append(max(abs(c.fx / cam.fx - 1), abs(c.fy / cam.fy - 1)) * 100)
             cen.append(np.linalg.norm(next(iter(r.poses.values())).center - pose.center) / dist * 100)
         emit(
@@ -79,6 +81,7 @@ def part_dlt(data: Path, trials: int = 50):
                 "pp_err_px_median": round(float(np.median(pp)), 4),
                 "pp_err_px_max": round(float(np.max(pp)), 4),
                 "pp_within_1px_pct": round(100 * float(np.mean(np.array(pp) <= 1.0)), 1),
+                **({"pp_predicted_radial_std_px_median": round(float(np.median(pstd)), 4)} if pstd else {}),
                 "focal_err_pct_median": round(float(np.median(foc)), 4),
                 "focal_err_pct_max": round(float(np.max(foc)), 4),
                 "centre_err_pct_of_distance_median": round(float(np.median(cen)), 4),

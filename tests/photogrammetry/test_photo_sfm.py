@@ -93,6 +93,10 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     assert doc["intrinsics"] == "fixed" and doc["cameras"]["1"]["fx"] == pytest.approx(K[0, 0])
     assert doc["mean_reprojection_error_px"] < 1.0 and doc["points"] > 100
     assert (tmp_path / "work/sparse/0/images.bin").exists() and (tmp_path / "work/database.db").exists()
+    from workstation.io import read_cloud
+
+    cloud = read_cloud(doc["sparse_cloud"])
+    assert cloud.n == doc["points"] and cloud.attrs["rgb"].max() > 0
     geo = doc["georef"]["metrics"]
     assert geo["control_n"] == 5 and geo["check_n"] == 4
     assert geo["check_rmse_3d"] < 0.002, geo  # metres, on an object 0.16 m across
@@ -111,3 +115,21 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     err = np.linalg.norm(sim.apply(Ce) - Cg, axis=1)
     radius = np.linalg.norm(Cg - Cg.mean(0), axis=1).mean()
     assert np.median(err) < 0.01 * radius  # within 1 % of the ring's size
+
+
+@pytest.mark.realdata
+@pytest.mark.slow
+def test_global_mapper_self_calibrated_keeps_principal_point_sane(shared_data, tmp_path):
+    from workstation.photogrammetry.sfm import run_sfm
+
+    src = shared_data / "images/sfm/middlebury_templeSparseRing"
+    imgs = tmp_path / "imgs"
+    imgs.mkdir()
+    for k in (6, 7, 8, 9, 10, 11):
+        (imgs / f"templeSR{k:04d}.png").symlink_to(src / f"templeSR{k:04d}.png")
+    res = run_sfm(imgs, tmp_path / "work", params=SfMParams(mapper="global"))
+    assert res.summary["mapper"] == "global" and res.summary["registered"] == 6
+    cam = res.reconstruction.cameras[1]
+    # six narrow views barely constrain the principal point: it stays within 10 % of the centre
+    assert np.hypot(cam.cx - 319.5, cam.cy - 239.5) <= 0.1 * 640 + 1e-6
+    assert res.cloud.n == res.summary["points"] > 100

@@ -17,7 +17,13 @@ import click
 COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
+    "register": ("workstation.cli.register:register", "Register a cloud onto another (global + ICP); write the moved source."),
+    "merge": ("workstation.cli.merge:merge", "Merge registered clouds keeping every attribute; optional pose graph."),
+    "colorize": ("workstation.cli.colorize:colorize", "Colour a cloud from oriented photos with occlusion tests."),
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
+    "mesh": ("workstation.cli.mesh:mesh", "Mesh a cloud (screened Poisson, ball pivoting, 2.5D Delaunay) with MeshLab filters."),
+    "render": ("workstation.cli.render:render", "Render a cloud or mesh off-screen to PNG (or a turntable GIF)."),
+    "report": ("workstation.cli.report:report", "Self-contained HTML report of a work folder: stages, figures, renders, plots."),
     "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),
     "plan-flight": ("workstation.cli.plan_flight:plan_flight", "Airborne LiDAR flight plan: swath, spacing, density, lines, time."),
     "dem": ("workstation.cli.dem:dem", "Grid clouds into a DSM, DTM or CHM GeoTIFF (TIN, natural neighbour, IDW, pit-free)."),

@@ -22,26 +22,25 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--max-image-size", type=int, default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
 @click.option("--max-features", type=int, default=8192, show_default=True, help="SIFT features per image.")
 @click.option("--camera-model", default="SIMPLE_RADIAL", show_default=True, help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...).")
-@click.option("--no-principal-point", is_flag=True, help="Skip the final bundle adjustment that frees the principal point.")
+@click.option("--no-principal-point", is_flag=True, help="Keep the principal point fixed in the final bundle adjustment.")
+@click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
 @click.option("--sigma-px", type=float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Random seed (-1 = random).")
 @overwrite_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, sigma_px, seed, overwrite, as_json):
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
-    reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud when
-    PLY output is available) and WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
+    reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud) and
+    WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
     model in the survey frame) and WORKDIR/georef_report.json (control and check residuals,
     RMSE, CE90/LE90, DEM cell size and contour interval supported).
     """
     from workstation.core.errors import InvalidInputError
-    from workstation.core.log import get_logger
     from workstation.io.atomic import atomic_path
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
 
-    log = get_logger("workstation.cli.sfm")
     camera = None
     if camera_file:
         from workstation.io.camera import read_camera
@@ -64,18 +63,15 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
     params = SfMParams(
         matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
         camera_model=camera_model, refine_intrinsics=refine_intrinsics,
-        refine_principal_point=not no_principal_point, seed=seed,
+        refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
     )
     result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
     wd = Path(workdir)
     out = result.to_dict()
-    try:
-        from workstation.io import write_cloud
+    from workstation.io import write_cloud
 
-        write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
-        out["sparse_cloud"] = str(wd / "sparse.ply")
-    except Exception as e:  # noqa: BLE001 - PLY writer may not be on this branch yet
-        log.warning("sparse cloud not written as PLY (%s); the model is in sparse/0", e)
+    write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
+    out["sparse_cloud"] = str(wd / "sparse.ply")
     s = result.summary
     click.echo(
         f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "

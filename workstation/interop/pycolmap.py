@@ -140,6 +140,34 @@ def reconstruction_from_pycolmap(rec, image_dir=None) -> Reconstruction:
     return Reconstruction(cameras, images, pts, cols, None, {"point_errors": err, "track_lengths": tl})
 
 
+def find_model(path) -> Path | None:
+    """The COLMAP model folder of a work folder: ``path``, ``path/sparse/0`` or ``path/sparse``."""
+    p = Path(path)
+    for cand in (p, p / "sparse" / "0", p / "sparse"):
+        if (cand / "cameras.bin").is_file() or (cand / "cameras.txt").is_file():
+            return cand
+    return None
+
+
+def read_model(path, image_dir=None) -> Reconstruction:
+    """Core :class:`Reconstruction` of a COLMAP model (binary or text) in a work folder.
+
+    ``path`` is a model folder or an SfM work folder (``sparse/0`` or ``sparse``). Image paths
+    point into ``image_dir``, by default the work folder's ``images/`` when it exists.
+    Principal points follow OpenCV's convention (pixel centres at integers).
+    """
+    model = find_model(path)
+    if model is None:
+        raise InvalidInputError("no COLMAP model (cameras.bin/.txt) found", "give the SfM work folder (ws sfm -o)", path=path)
+    if image_dir is None:
+        for cand in (Path(path) / "images", model.parent.parent / "images", model.parent / "images"):
+            if cand.is_dir():
+                image_dir = cand
+                break
+    pycolmap = import_pycolmap()
+    return reconstruction_from_pycolmap(pycolmap.Reconstruction(str(model)), image_dir)
+
+
 def cloud_from_reconstruction(rec: Reconstruction):
     """Sparse coloured :class:`~workstation.core.cloud.Cloud` (rgb u16 = u8 · 257)."""
     from workstation.core.cloud import Cloud

@@ -1,0 +1,22 @@
+"""Meshing with MeshLab filters (pymeshlab): normals, screened Poisson, ball pivoting, 2.5D
+Delaunay, cleaning, decimation, smoothing, colour transfer and a quality summary.
+
+pymeshlab is imported inside the functions; importing this package is cheap.
+"""
+
+from .chain import METHODS, MeshChainParams, MeshResult, mesh_cloud
+from .clean import CleanParams, clean
+from .color import ColorTransferParams, transfer_colors
+from .normals import NormalParams, estimate_normals
+from .quality import QualityParams, mesh_quality
+from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, ball_pivoting, delaunay25d,
+                          keep_vertices, poisson)
+from .simplify import DecimateParams, SmoothParams, decimate, smooth
+from .steps import StepRecord, point_spacing
+
+__all__ = [
+    "METHODS", "MeshChainParams", "MeshResult", "mesh_cloud", "CleanParams", "clean", "ColorTransferParams",
+    "transfer_colors", "NormalParams", "estimate_normals", "QualityParams", "mesh_quality", "BallPivotingParams",
+    "Delaunay25dParams", "PoissonParams", "ball_pivoting", "delaunay25d", "keep_vertices", "poisson",
+    "DecimateParams", "SmoothParams", "decimate", "smooth", "StepRecord", "point_spacing",
+]

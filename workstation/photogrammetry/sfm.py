@@ -60,7 +60,18 @@ class SfMParams:
     refine_intrinsics : bool
         With a given camera: refine it in the bundle adjustments instead of keeping it fixed.
     refine_principal_point : bool
-        Free the principal point in a final bundle adjustment when the intrinsics are refined.
+        Free the principal point in the final bundle adjustment when the intrinsics are refined.
+    final_ba : bool
+        Run one final bundle adjustment of the largest model with a robust loss (below), the
+        intrinsics free when self-calibrated (principal point included), fixed otherwise.
+    final_ba_loss : str
+        Ceres loss of the final adjustment: "CAUCHY", "SOFT_L1", "HUBER" or "TRIVIAL".
+    final_ba_loss_scale : float
+        Scale of the robust loss, pixels (residuals beyond it are down-weighted).
+    max_principal_point_shift : float
+        Largest accepted move of the principal point from the image centre in the final
+        adjustment, as a fraction of the longer image side; beyond it the geometry is too weak
+        (few or narrow views) and the adjustment is repeated with the principal point fixed.
     seed : int
         Random seed (RANSAC, initial pair choice) for repeatable runs; -1 leaves it random.
     num_threads : int
@@ -77,6 +88,10 @@ class SfMParams:
     single_camera: bool = True
     refine_intrinsics: bool = False
     refine_principal_point: bool = True
+    final_ba: bool = True
+    final_ba_loss: str = "CAUCHY"
+    final_ba_loss_scale: float = 1.0
+    max_principal_point_shift: float = 0.1
     seed: int = 0
     num_threads: int = -1
 
@@ -285,16 +300,39 @@ def run_sfm(
     ordered = sorted(recs.values(), key=lambda r: (r.num_reg_images(), r.num_points3D()), reverse=True)
     best = ordered[0]
 
-    # --- final bundle adjustment with the principal point ---------------------------------
+    summary_notes: list[str] = []
+    # --- final robust bundle adjustment (principal point free when self-calibrating) ---------
     t0 = time.perf_counter()
-    if not fixed and params.refine_principal_point:
+    if params.final_ba:
         bopt = pycolmap.BundleAdjustmentOptions()
-        bopt.refine_principal_point = True
-        bopt.refine_focal_length = True
-        bopt.refine_extra_params = True
+        bopt.refine_focal_length = not fixed
+        bopt.refine_extra_params = not fixed
+        bopt.refine_principal_point = (not fixed) and params.refine_principal_point
         bopt.print_summary = False
-        log.info("final bundle adjustment with the principal point free")
+        try:
+            bopt.ceres.loss_function_type = getattr(pycolmap.LossFunctionType, params.final_ba_loss.upper())
+        except AttributeError:
+            raise InvalidInputError(f"unknown loss {params.final_ba_loss!r}", field="final_ba_loss") from None
+        bopt.ceres.loss_function_scale = float(params.final_ba_loss_scale)
+        log.info(
+            "final bundle adjustment (%s loss, %.2g px%s)",
+            params.final_ba_loss, params.final_ba_loss_scale, ", principal point free" if bopt.refine_principal_point else "",
+        )
+        backup = pycolmap.Reconstruction(best) if bopt.refine_principal_point else None
         pycolmap.bundle_adjustment(best, bopt)
+        if backup is not None:
+            drift = _principal_point_drift(best)
+            if drift > params.max_principal_point_shift:
+                # too few or too narrow views constrain the principal point: keep it central
+                log.warning(
+                    "principal point moved %.1f %% of the image size in the final adjustment (limit %.1f %%): "
+                    "weak geometry; kept at the centre instead",
+                    100 * drift, 100 * params.max_principal_point_shift,
+                )
+                best = backup
+                bopt.refine_principal_point = False
+                pycolmap.bundle_adjustment(best, bopt)
+                summary_notes.append("principal point not estimated (weakly constrained)")
     timings["final_ba"] = time.perf_counter() - t0
 
     # --- write in COLMAP layout: sparse/0 = largest ---------------------------------------
@@ -328,10 +366,21 @@ def run_sfm(
         "intrinsics": "fixed" if fixed else ("refined from given" if camera is not None else "self-calibrated"),
         "cameras": {str(k): _camera_summary(c) for k, c in rec.cameras.items()},
         "timings_s": timings,
+        "notes": summary_notes,
     }
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
+
+
+def _principal_point_drift(rec) -> float:
+    """Largest distance of a camera's principal point from its image centre, as a fraction of
+    the longer image side (COLMAP pixel convention: centre at width/2, height/2)."""
+    worst = 0.0
+    for c in rec.cameras.values():
+        d = np.hypot(c.principal_point_x - c.width / 2, c.principal_point_y - c.height / 2) / max(c.width, c.height)
+        worst = max(worst, float(d))
+    return worst
 
 
 def _camera_summary(c: Camera) -> dict:

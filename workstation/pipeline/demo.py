@@ -22,7 +22,9 @@ STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
     ("LiDAR simulation: ALS flight and TLS stations", "workstation.pipeline.demo_steps.simulate:step"),
     ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
+    ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
     ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),
+    ("renders, terrain mesh, HTML report", "workstation.pipeline.demo_steps.mesh_render:step"),
 ]
 
 

@@ -173,7 +173,8 @@ def lattice_tin(du, dv, z, valid, max_edge: float | None = None) -> np.ndarray:
             l0, l1, l2 = _bary(tu[0], tv[0], tu[1], tv[1], tu[2], tv[2], qu, qv)
             inside = ok & (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS) & np.isnan(view)
             if inside.any():
-                view[inside] = (l0 * tz[0] + l1 * tz[1] + l2 * tz[2])[inside]
+                with np.errstate(invalid="ignore"):  # NaN corners lie outside `inside`
+                    view[inside] = (l0 * tz[0] + l1 * tz[1] + l2 * tz[2])[inside]
     return out
 
 

@@ -164,48 +164,6 @@ def _read_json(path: Path) -> Reconstruction:
     return Reconstruction(cams, imgs, crs=doc.get("crs"), meta=doc.get("meta", {}))
 
 
-def _read_colmap(model_dir: Path, image_dir: Path | None) -> Reconstruction:
-    """A COLMAP sparse model through pycolmap (COLMAP pixel centres at +0.5 -> OpenCV integers)."""
-    try:
-        import pycolmap
-    except ImportError as e:  # pragma: no cover - dependency
-        from workstation.core.errors import MissingDependencyError
-
-        raise MissingDependencyError("pycolmap", "reading COLMAP models") from e
-    rec = pycolmap.Reconstruction(str(model_dir))
-    cams = {}
-    for cid, c in rec.cameras.items():
-        p = list(c.params)
-        name = c.model_name if hasattr(c, "model_name") else str(c.model)
-        name = str(name).split(".")[-1]
-        if name == "SIMPLE_PINHOLE":
-            f, cx, cy = p; fx = fy = f; dist = (0, 0, 0, 0, 0)
-        elif name == "PINHOLE":
-            fx, fy, cx, cy = p; dist = (0, 0, 0, 0, 0)
-        elif name == "SIMPLE_RADIAL":
-            f, cx, cy, k = p; fx = fy = f; dist = (k, 0, 0, 0, 0)
-        elif name == "RADIAL":
-            f, cx, cy, k1, k2 = p; fx = fy = f; dist = (k1, k2, 0, 0, 0)
-        elif name == "OPENCV":
-            fx, fy, cx, cy, k1, k2, p1, p2 = p; dist = (k1, k2, p1, p2, 0)
-        elif name == "FULL_OPENCV":
-            fx, fy, cx, cy, k1, k2, p1, p2, k3 = p[:9]; dist = (k1, k2, p1, p2, k3)
-        else:
-            raise InvalidInputError(f"camera model {name} is not supported for orthophotos",
-                                    "use PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV", path=model_dir)
-        cams[int(cid)] = Camera(int(c.width), int(c.height), float(fx), float(fy), float(cx) - 0.5, float(cy) - 0.5,
-                                0.0, tuple(float(d) for d in dist), name)
-    imgs = {}
-    base = image_dir or (model_dir.parent.parent / "images" if (model_dir.parent.parent / "images").is_dir() else model_dir.parent / "images")
-    for iid, im in rec.images.items():
-        if hasattr(im, "has_pose") and not im.has_pose:
-            continue
-        cfw = im.cam_from_world() if callable(im.cam_from_world) else im.cam_from_world
-        M = np.asarray(cfw.matrix())
-        imgs[int(iid)] = Image(im.name, int(im.camera_id), Pose(M[:, :3], M[:, 3]), str(base / im.name))
-    return Reconstruction(cams, imgs, meta={"source": str(model_dir)})
-
-
 def read_reconstruction(path, image_dir=None) -> Reconstruction:
     """Oriented cameras from a cameras JSON or a COLMAP workdir/model folder.
 
@@ -219,9 +177,10 @@ def read_reconstruction(path, image_dir=None) -> Reconstruction:
         raise InvalidInputError("not found", "give a COLMAP workdir or a cameras JSON", path=p)
     if (p / "cameras.json").is_file():
         return _read_json(p / "cameras.json")
-    for cand in (p, p / "sparse" / "0", p / "sparse"):
-        if (cand / "cameras.bin").is_file() or (cand / "cameras.txt").is_file():
-            return _read_colmap(cand, Path(image_dir) if image_dir else None)
+    from workstation.interop.pycolmap import find_model, read_model
+
+    if find_model(p) is not None:
+        return read_model(p, image_dir)
     raise InvalidInputError("no cameras.json and no COLMAP model (cameras.bin/.txt) found",
                             "run ws sfm first or give the model folder", path=p)
 

@@ -1,0 +1,208 @@
+"""Meshing and rendering benchmarks (issue 10). Prints one JSON line per result.
+
+    WS_SHARED_DATA=../../shared/data PYTHONPATH=. python scripts/bench_mesh.py \
+        [--only render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage] [--threads 2]
+
+- bunny: Stanford bunny, 3 scans merged with bun.conf poses, screened Poisson depth 9,
+  decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
+  decimation on the same oriented points as the anchor (needs ../shared/data).
+- poisson: screened Poisson depth 10 on 1,000,000 points (a bumpy torus, analytic normals);
+  poisson_backend_open3d: the same through ``PoissonParams(backend="open3d")`` (passive
+  OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
+- heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
+- render: a 1920x1080 top-view render of a 10,000,000-point cloud.
+Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
+shared machine).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from workstation.core.cloud import Cloud, concatenate  # noqa: E402
+
+
+def emit(**kw):
+    print(json.dumps(kw), flush=True)
+
+
+def timed(fn, *a, **k):
+    t, c = time.perf_counter(), time.process_time()
+    out = fn(*a, **k)
+    return out, time.perf_counter() - t, time.process_time() - c
+
+
+def bunny(threads):
+    from scipy.spatial.transform import Rotation
+
+    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
+                                  QualityParams, estimate_normals, mesh_cloud, mesh_quality)
+    from workstation.core.products import Mesh
+    from workstation.io import read_cloud
+
+    folder = Path(os.environ.get("WS_SHARED_DATA", REPO.parent / "shared" / "data")) / "registration"
+    if not folder.is_dir():
+        emit(bench="bunny", skipped=f"{folder} absent")
+        return
+    scans = []
+    for line in (folder / "bun.conf").read_text().splitlines():
+        s = line.split()
+        if not s or s[0] != "bmesh":
+            continue
+        xyz = read_cloud(folder / s[1]).xyz
+        R = Rotation.from_quat(np.array(s[5:9], float)).as_matrix()
+        local, _ = estimate_normals(Cloud(xyz), NormalParams(k=10), viewpoints=np.array([0.0, 0.0, 1.0]))
+        scans.append(Cloud(xyz @ R + np.array(s[2:5], float), {"normal": np.asarray(local.attrs["normal"], float) @ R}))
+    merged = concatenate(scans)
+    res, wall, cpu = timed(mesh_cloud, merged, MeshChainParams(
+        method="poisson", poisson=PoissonParams(depth=9, trim_quantile=0.05, threads=threads),
+        clean=CleanParams(min_piece_fraction=0.1), decimate=DecimateParams(target_faces=20000),
+        quality=QualityParams(mesh_samples=200_000)))
+    q = res.quality
+    mm = lambda d: {k: round(v * 1000, 4) for k, v in d.items() if k != "n"}  # noqa: E731
+    emit(bench="bunny_poisson_pymeshlab", points=merged.n, faces=q["faces"], wall_s=round(wall, 1),
+         cpu_s=round(cpu, 1), steps={s.name: round(s.seconds, 2) for s in res.steps},
+         non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+         mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
+    import open3d as o3d
+
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.array(merged.xyz)))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(merged.attrs["normal"], float))
+    t, c = time.perf_counter(), time.process_time()
+    m, dens = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(pc, depth=9)
+    dens = np.asarray(dens)
+    m.remove_vertices_by_mask(dens < np.quantile(dens, 0.05))
+    m = m.simplify_quadric_decimation(20000)
+    wall, cpu = time.perf_counter() - t, time.process_time() - c
+    q = mesh_quality(Mesh(np.asarray(m.vertices), np.asarray(m.triangles)), Cloud(merged.xyz),
+                     QualityParams(mesh_samples=200_000))
+    emit(bench="bunny_poisson_open3d_anchor", faces=q["faces"], wall_s=round(wall, 1), cpu_s=round(cpu, 1),
+         non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+         mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
+
+
+def torus_1m():
+    rng = np.random.default_rng(0)
+    n = 1_000_000
+    u, v = rng.uniform(0, 2 * np.pi, (2, n))
+    Rr, r = 10.0, 3.0 + 0.3 * np.sin(5 * u) * np.cos(3 * v)  # bumpy torus, metres
+    xyz = np.column_stack([(Rr + r * np.cos(v)) * np.cos(u), (Rr + r * np.cos(v)) * np.sin(u), r * np.sin(v)])
+    c = np.column_stack([Rr * np.cos(u), Rr * np.sin(u), np.zeros(n)])
+    nrm = (xyz - c) / np.linalg.norm(xyz - c, axis=1, keepdims=True)  # near-radial normals of the tube
+    return Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
+
+
+def poisson_1m(threads, backend="pymeshlab"):
+    from workstation.mesh import PoissonParams, poisson
+
+    cloud = torus_1m()
+    n = cloud.n
+    (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads,
+                                                                 backend=backend))
+    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"], faces=mesh.n_faces,
+         wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
+
+
+def poisson_1m_open3d():
+    """The same cloud and depth through Open3D's Poisson (the anchor for the ratio)."""
+    import open3d as o3d
+
+    cloud = torus_1m()
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - [500_000, 4_000_000, 100]))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], float))
+    (m, _), wall, cpu = timed(o3d.geometry.TriangleMesh.create_from_point_cloud_poisson, pc, depth=10)
+    emit(bench="poisson_depth10_1M_open3d_anchor", points=cloud.n, faces=len(m.triangles), wall_s=round(wall, 1),
+         cpu_s=round(cpu, 1))
+
+
+def heritage():
+    """Synthetic heritage church (simulator scene), 8 TLS stations on a 35 m circle, screened
+    Poisson of the church returns (normals toward each point's station) against the true mesh."""
+    from dataclasses import replace
+
+    from workstation.core.products import Mesh
+    from workstation.interop.pymeshlab import mesh_to_pymeshlab
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.scene import SceneRecipe, build_scene
+    from workstation.lidar.survey import default_survey, run_survey
+    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
+                                  QualityParams, mesh_cloud)
+    from workstation.mesh.quality import _hausdorff, _stats
+
+    rec = SceneRecipe(name="heritage", extent=(120.0, 120.0), buildings=0, courtyards=0, heritage=True, trees=0,
+                      bushes=0, grass_patches=0, cars=0, stream=False, pond=False, powerline=False)
+    scene = build_scene(rec, 0)
+    oid = next(int(k) for k, v in scene.meta["objects"].items() if v == "heritage_church")
+    fm = scene.object_id == oid
+    used = np.unique(scene.faces[fm])
+    lo, hi = scene.vertices[used].min(0), scene.vertices[used].max(0)
+    centre, height = 0.5 * (lo + hi), float(hi[2] - lo[2])
+    stations = tuple(Station(float(centre[0] + 35 * np.cos(a)), float(centre[1] + 35 * np.sin(a)), 1.6)
+                     for a in np.linspace(0, 2 * np.pi, 8, endpoint=False))
+    cfg = default_survey("tls")
+    cfg = replace(cfg, stations=stations, scanner=replace(cfg.scanner, h_step_deg=0.12, v_step_deg=0.12))
+    res = run_survey(scene, cfg, seed=0)
+    c = res.cloud
+    ch = c[np.asarray(c.attrs["object_id"]) == oid]
+    traj = res.true_trajectory  # station i is point source i + 1
+    spos = np.array([traj.position[np.searchsorted(traj.time, sg.t0)] for sg in traj.segments]) + scene.origin
+    vp = spos[np.asarray(ch.attrs["point_source_id"]).astype(int) - 1]
+    keep = np.sort(np.random.default_rng(0).choice(ch.n, min(600_000, ch.n), replace=False))
+    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), MeshChainParams(
+        method="poisson", normals=NormalParams(k=12), poisson=PoissonParams(depth=9, trim_quantile=0.05),
+        clean=CleanParams(min_piece_fraction=0.05), decimate=DecimateParams(target_faces=200_000),
+        quality=QualityParams(max_cloud_points=300_000)), vp[keep])
+    remap = -np.ones(len(scene.vertices), int)
+    remap[used] = np.arange(len(used))
+    truth = Mesh(scene.vertices[used] + scene.origin, remap[scene.faces[fm]])
+    a, o = mesh_to_pymeshlab(out.mesh)
+    b, _ = mesh_to_pymeshlab(truth, origin=o)
+    m2t = _stats(_hausdorff(a, b, True, 300_000, 200.0))
+    t2m = _stats(_hausdorff(b, a, True, 300_000, 200.0))
+    emit(bench="heritage_church_tls_poisson", tls_points=int(c.n), church_points=int(ch.n), meshed_points=int(keep.size),
+         height_m=height, faces=out.mesh.n_faces, mesh_to_truth_m={k: round(v, 4) for k, v in m2t.items()},
+         truth_to_mesh_m={k: round(v, 4) for k, v in t2m.items()},
+         rms_over_height_percent=round(100 * m2t["rms"] / height, 3), mesh_wall_s=round(wall, 1),
+         mesh_cpu_s=round(cpu, 1))
+
+
+def render_10m():
+    from workstation.render import RenderParams, render
+
+    rng = np.random.default_rng(1)
+    n = 10_000_000
+    xy = rng.uniform(0, 1000, (n, 2))
+    z = 100 + 10 * np.sin(xy[:, 0] / 80) * np.cos(xy[:, 1] / 120)
+    cloud = Cloud(np.column_stack([xy + [500_000, 4_000_000], z]), {"classification": rng.choice([2, 5, 6], n)})
+    img, wall, cpu = timed(render, cloud, RenderParams(size=(1920, 1080), view="top", color="elevation"))
+    emit(bench="render_10M_1920x1080", points=n, wall_s=round(wall, 1), cpu_s=round(cpu, 1), shape=list(img.shape))
+
+
+if __name__ == "__main__":
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
+    ap.add_argument("--threads", type=int, default=2)
+    a = ap.parse_args()
+    todo = a.only.split(",")
+    if "render" in todo:
+        render_10m()
+    if "poisson" in todo:
+        poisson_1m(a.threads)
+    if "poisson_backend_open3d" in todo:
+        poisson_1m(a.threads, backend="open3d")
+    if "poisson_open3d" in todo:
+        poisson_1m_open3d()
+    if "bunny" in todo:
+        bunny(a.threads)
+    if "heritage" in todo:
+        heritage()

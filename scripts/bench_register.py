@@ -1,0 +1,299 @@
+"""Registration benchmarks; prints one JSON line per result.
+
+  PYTHONPATH=. python scripts/bench_register.py [--data ../shared/data] [--skip-bunny] [--o3d-iterations 3]
+
+1. Stanford bunny bun045 -> bun000 and bun090 -> bun000 from identity (``ws register`` defaults):
+   rotation / translation error against bun.conf, wall and CPU seconds.
+2. ICP on 1 million points, 30 iterations: our voxel-plane point-to-plane ICP beside Open3D's
+   plain point-to-point and point-to-plane ICP on the same clouds. Open3D runs
+   ``--o3d-iterations`` iterations and its time is also scaled to 30 (per-iteration cost is
+   constant once correspondences settle), so a shared machine is not held for minutes.
+3. ``--tls-laz``: every pair of stations of a simulated TLS survey, each station in a random
+   frame, and a pose graph over all of them from the identity.
+Wall times on a shared machine are contended: CPU seconds (process_time) are given beside them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "registration"))
+
+
+def emit(d):
+    print(json.dumps(d), flush=True)
+
+
+def bench_bunny(data: Path):
+    from test_reg_bunny import bunny_truth, read_bunny_ply
+
+    from workstation.core.cloud import Cloud
+    from workstation.registration.register import RegisterParams, register
+    from workstation.registration.transforms import transform_error
+
+    d = data / "registration"
+    truth = bunny_truth(d / "bun.conf")
+    tgt = Cloud(read_bunny_ply(d / "bun000.ply"))
+    for scan in ("bun045.ply", "bun090.ply"):
+        src = Cloud(read_bunny_ply(d / scan))
+        w0, c0 = time.perf_counter(), time.process_time()
+        r = register(src, tgt, RegisterParams())
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        rot, tr = transform_error(r.transform, truth[scan])
+        emit({"bench": "bunny", "pair": f"{scan}->bun000.ply", "rotation_error_deg": round(rot, 4),
+              "translation_error_mm": round(tr * 1000, 4), "fitness": round(r.fitness, 4),
+              "coarse": r.meta.get("coarse_method"), "wall_s": round(wall, 2), "cpu_s": round(cpu, 2),
+              "load1": os.getloadavg()[0]})
+
+
+def bench_bunny_open3d(data: Path, voxel: float = 0.003):
+    """Open3D's global-registration tutorial pipeline on the bunny pairs, unchanged except the
+    voxel size: voxel downsampling, normals (radius 2 voxel, signs as Open3D leaves them),
+    FPFH (5 voxel), RANSAC with mutual filter (100000 iterations, 0.999), point-to-plane ICP
+    at 0.4 voxel."""
+    import open3d as o3d
+    from test_reg_bunny import bunny_truth, read_bunny_ply
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.registration.transforms import transform_error
+
+    reg = o3d.pipelines.registration
+    d = data / "registration"
+    truth = bunny_truth(d / "bun.conf")
+
+    def prep(p):
+        down = p.voxel_down_sample(voxel)
+        down.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=2 * voxel, max_nn=30))
+        f = reg.compute_fpfh_feature(down, o3d.geometry.KDTreeSearchParamHybrid(radius=5 * voxel, max_nn=100))
+        return down, f
+
+    tgt_full = points_to_legacy(read_bunny_ply(d / "bun000.ply"))
+    tgt_full.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=2 * voxel, max_nn=30))
+    for scan in ("bun045.ply", "bun090.ply"):
+        src_full = points_to_legacy(read_bunny_ply(d / scan))
+        w0, c0 = time.perf_counter(), time.process_time()
+        (sd, sf), (td, tf) = prep(src_full), prep(tgt_full)
+        dist = 1.5 * voxel
+        r = reg.registration_ransac_based_on_feature_matching(
+            sd, td, sf, tf, True, dist, reg.TransformationEstimationPointToPoint(False), 3,
+            [reg.CorrespondenceCheckerBasedOnEdgeLength(0.9), reg.CorrespondenceCheckerBasedOnDistance(dist)],
+            reg.RANSACConvergenceCriteria(100000, 0.999))
+        r2 = reg.registration_icp(src_full, tgt_full, 0.4 * voxel, r.transformation,
+                                  reg.TransformationEstimationPointToPlane())
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        rot, tr = transform_error(np.asarray(r2.transformation), truth[scan])
+        emit({"bench": "bunny_open3d_tutorial", "pair": f"{scan}->bun000.ply", "voxel": voxel,
+              "rotation_error_deg": round(rot, 4), "translation_error_mm": round(tr * 1000, 4),
+              "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
+
+
+def terrain(n, rng):
+    x = rng.uniform(-25, 25, (n, 2))
+    z = np.sin(x[:, 0] / 3) * np.cos(x[:, 1] / 4) * 2 + 0.3 * np.sin(x[:, 0] * x[:, 1] / 40)
+    return np.column_stack([x, z])
+
+
+def bench_icp(n: int, o3d_iterations: int):
+    import open3d as o3d
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.registration.transforms import apply_transform, invert, make_transform, random_rotation, transform_error
+    from workstation.registration.voxelmap import VoxelPlanes, point_to_plane_voxel
+
+    rng = np.random.default_rng(0)
+    tgt = terrain(n, rng)
+    T = make_transform(random_rotation(rng, 2.0), [0.15, -0.1, 0.05])
+    src = apply_transform(invert(T), terrain(n, rng))
+    voxel = 0.2
+    w0, c0 = time.perf_counter(), time.process_time()
+    planes = [VoxelPlanes.build(tgt, voxel * f) for f in (4.0, 2.0, 1.0)]
+    wb, cb = time.perf_counter() - w0, time.process_time() - c0
+    w0, c0 = time.perf_counter(), time.process_time()
+    r = point_to_plane_voxel(src, tgt, voxel, iterations=30, planes=planes, tolerance=0.0)
+    wi, ci = time.perf_counter() - w0, time.process_time() - c0
+    rot, tr = transform_error(r.transform, T)
+    emit({"bench": "icp_1M", "impl": "workstation voxel_plane (point-to-plane)", "points": n, "iterations": r.iterations,
+          "build_wall_s": round(wb, 3), "build_cpu_s": round(cb, 3), "icp_wall_s": round(wi, 3), "icp_cpu_s": round(ci, 3),
+          "rotation_error_deg": round(rot, 5), "translation_error_m": round(tr, 5), "load1": os.getloadavg()[0]})
+    reg = o3d.pipelines.registration
+    s = points_to_legacy(src)
+    t = points_to_legacy(tgt)
+    w0, c0 = time.perf_counter(), time.process_time()
+    t.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=0.3, max_nn=20))
+    wn, cn = time.perf_counter() - w0, time.process_time() - c0
+    for name, est in (("point_to_point", reg.TransformationEstimationPointToPoint()),
+                      ("point_to_plane", reg.TransformationEstimationPointToPlane())):
+        w0, c0 = time.perf_counter(), time.process_time()
+        res = reg.registration_icp(s, t, 1.0, np.eye(4), est, reg.ICPConvergenceCriteria(0.0, 0.0, o3d_iterations))
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        rot, tr = transform_error(np.asarray(res.transformation), T)
+        emit({"bench": "icp_1M", "impl": f"open3d {name}", "points": n, "iterations": o3d_iterations,
+              "wall_s": round(w, 2), "cpu_s": round(c, 2), "wall_s_per_30_it": round(w * 30 / o3d_iterations, 1),
+              "cpu_s_per_30_it": round(c * 30 / o3d_iterations, 1),
+              "normals_wall_s": round(wn, 2) if name == "point_to_plane" else None,
+              "rotation_error_deg": round(rot, 4), "translation_error_m": round(tr, 4), "load1": os.getloadavg()[0]})
+
+
+def bench_tls(path: Path, seed: int = 0):
+    """Stations of a simulated TLS survey (``point_source_id`` per station), each moved into its
+    own frame by a random pose (up to 180 degrees about z, +-10 m, +-0.5 m in z), registered
+    pairwise (every pair) and closed by a pose graph from the identity."""
+    from workstation.io import read_cloud
+    from workstation.registration.merge import transform_cloud
+    from workstation.registration.posegraph import MultiwayParams, register_multiway
+    from workstation.registration.transforms import invert, make_transform, transform_error
+
+    cloud = read_cloud(path)
+    ids = np.unique(cloud.attrs["point_source_id"])
+    rng = np.random.default_rng(seed)
+    scans, G = [], []
+    for i in ids:
+        a = np.radians(rng.uniform(-180, 180))
+        R = np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+        g = make_transform(R, np.append(rng.uniform(-10, 10, 2), rng.uniform(-0.5, 0.5)))
+        scans.append(transform_cloud(cloud[cloud.attrs["point_source_id"] == i], g))
+        G.append(g)
+    w0, c0 = time.perf_counter(), time.process_time()
+    mw = register_multiway(scans, MultiwayParams())
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    for e in mw.edges:
+        rot, tr = transform_error(e.transform, G[e.target] @ invert(G[e.source]), center=scans[e.source].xyz.mean(axis=0))
+        emit({"bench": "tls_pair", "source": int(e.source), "target": int(e.target), "kind": e.kind,
+              "points": [scans[e.source].n, scans[e.target].n], "fitness": round(e.fitness, 4),
+              "rotation_error_deg": round(rot, 4), "translation_error_m": round(tr, 4), "kept_in_graph": e.kept})
+    errs = [transform_error(mw.poses[k], G[0] @ invert(G[k]), center=scans[k].xyz.mean(axis=0)) for k in range(len(scans))]
+    n = len(scans)
+    emit({"bench": "tls_pose_graph", "stations": n, "pairs_tried": n * (n - 1) // 2, "edges": len(mw.edges),
+          "max_rotation_error_deg": round(max(e[0] for e in errs), 4),
+          "max_translation_drift_m": round(max(e[1] for e in errs), 4), "wall_s": round(wall, 1),
+          "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
+
+
+def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
+    """Colour one simulated TLS station of the demo scene from 8 synthetic photos (exact pinhole
+    renders by ray casting the scene mesh: each pixel takes the colour of the face it sees),
+    then compare with the true face colours and check that no point hidden from every camera
+    (ray cast from the camera to the point) was painted."""
+    import open3d as o3d
+
+    from workstation.core.products import Camera, Image, Pose, Reconstruction
+    from workstation.lidar.scene import build_scene
+    from workstation.lidar.survey import default_stations, default_survey, run_survey
+    from workstation.registration.colorize import ColorizeParams, colorize, project
+
+    scene = build_scene("demo_small", seed)
+    st = default_stations(scene, 3)
+    cfg = default_survey("tls")
+    cfg = replace(cfg, scanner=replace(cfg.scanner, h_step_deg=step_deg, v_step_deg=step_deg), stations=st)
+    cloud = run_survey(scene, cfg, seed=seed).cloud
+    cloud = cloud[cloud.attrs["point_source_id"] == np.unique(cloud.attrs["point_source_id"])[0]]
+    cloud = cloud.without_attrs("rgb")
+    o = np.asarray(scene.origin, float)
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor(scene.vertices.astype(np.float32)), o3d.core.Tensor(scene.faces.astype(np.uint32)))
+    local = cloud.xyz - o
+    near = np.linalg.norm(local[:, :2] - [st[0].x, st[0].y], axis=1) < 3.0
+    ground = float(np.median(local[near, 2])) if near.any() else 0.0
+    cam = Camera(800, 600, 500.0, 500.0, 399.5, 299.5)
+    images, recon_images, depths = {}, {}, {}
+    sky = np.array([135, 206, 235], np.uint8)
+    k = 0
+    for dx in (0.0, 5.0):
+        C = np.array([st[0].x + dx, st[0].y + 2.0, ground + 1.7])
+        for yaw in (0, 90, 180, 270):
+            a = np.radians(yaw)
+            fwd, right = np.array([np.cos(a), np.sin(a), 0.0]), np.array([np.sin(a), -np.cos(a), 0.0])
+            R = np.vstack([right, [0.0, 0.0, -1.0], fwd])
+            uu, vv = np.meshgrid(np.arange(cam.width), np.arange(cam.height))
+            dirs_cam = np.column_stack([((uu - cam.cx) / cam.fx).ravel(), ((vv - cam.cy) / cam.fy).ravel(), np.ones(uu.size)])
+            dirs = dirs_cam @ R
+            rays = np.hstack([np.tile(C, (dirs.shape[0], 1)), dirs]).astype(np.float32)
+            hit = rs.cast_rays(o3d.core.Tensor(rays))
+            prim = hit["primitive_ids"].numpy().astype(np.int64)
+            ok = np.isfinite(hit["t_hit"].numpy())
+            img = np.tile(sky, (uu.size, 1))
+            img[ok] = scene.face_rgb[prim[ok]]
+            k += 1
+            images[k] = img.reshape(cam.height, cam.width, 3)
+            # ray directions have a unit optical-axis component, so t_hit is the depth
+            depths[k] = np.where(ok, hit["t_hit"].numpy(), np.nan).reshape(cam.height, cam.width)
+            Cw = C + o
+            recon_images[k] = Image(f"v{k}.png", 1, Pose(R, -R @ Cw))
+    rec = Reconstruction({1: cam}, recon_images)
+    for mode in ("zbuffer", "depth_maps"):
+        w0, c0 = time.perf_counter(), time.process_time()
+        out = colorize(cloud, rec, ColorizeParams(), images=images, depth_maps=depths if mode == "depth_maps" else None)
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, len(images), wall, cpu)
+
+
+def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, wall, cpu):
+    import open3d as o3d
+
+    from workstation.registration.colorize import project
+
+    recon_images = rec.images
+    truth_face = rs.compute_closest_points(o3d.core.Tensor(local.astype(np.float32)))["primitive_ids"].numpy()
+    truth = scene.face_rgb[truth_face.astype(np.int64)].astype(float)
+    painted = out.attrs["colorized"].astype(bool)
+    seen_any = np.zeros(cloud.n, bool)
+    behind = np.full(cloud.n, np.inf)  # least depth by which a point is hidden in any camera
+    for kk, im in recon_images.items():
+        u, v, z = project(cloud.xyz, cam, im.pose)
+        inside = (z > 0) & (u >= 0) & (u <= cam.width - 1) & (v >= 0) & (v <= cam.height - 1)
+        C = im.pose.center - o
+        d = local[inside] - C
+        dist = np.linalg.norm(d, axis=1)
+        rays = np.hstack([np.tile(C, (d.shape[0], 1)), d / dist[:, None]]).astype(np.float32)
+        t = rs.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
+        vis = np.zeros(cloud.n, bool)
+        vis[np.flatnonzero(inside)] = t >= dist - 0.05
+        seen_any |= vis
+        ii = np.flatnonzero(inside)
+        behind[ii] = np.minimum(behind[ii], np.where(np.isfinite(t), dist - t, np.inf))
+    err = np.abs(out.attrs["rgb"][painted] / 257.0 - truth[painted]).mean(axis=1)
+    bad = painted & ~seen_any
+    cls = cloud.attrs["classification"][bad] if "classification" in cloud.attrs else np.zeros(0, int)
+    bad_classes = {int(c): int(n) for c, n in zip(*np.unique(cls, return_counts=True))}
+    emit({"bench": "colorize_sim_tls", "visibility": mode, "painted_but_hidden_by_class": bad_classes, "points": cloud.n, "images": n_images, "painted": int(painted.sum()),
+          "truly_visible": int(seen_any.sum()),
+          "hidden_painted_depth_behind_m_p50_p90": [round(float(x), 3) for x in np.percentile(behind[bad], [50, 90])] if bad.any() else None, "painted_but_hidden_from_all": int((painted & ~seen_any).sum()),
+          "mean_colour_error_255": round(float(err.mean()), 2), "median_colour_error_255": round(float(np.median(err)), 2),
+          "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
+    ap.add_argument("--points", type=int, default=1_000_000)
+    ap.add_argument("--o3d-iterations", type=int, default=3)
+    ap.add_argument("--skip-bunny", action="store_true")
+    ap.add_argument("--skip-icp", action="store_true")
+    ap.add_argument("--colorize-sim", action="store_true", help="colour a simulated TLS station from synthetic photos")
+    ap.add_argument("--tls-laz", type=Path, default=None,
+                    help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
+    a = ap.parse_args()
+    emit({"bench": "machine", "cpus": os.cpu_count(), "load1": os.getloadavg()[0]})
+    if not a.skip_bunny and (a.data / "registration").is_dir():
+        bench_bunny(a.data)
+        for v in (0.002, 0.003, 0.004):
+            bench_bunny_open3d(a.data, v)
+    if a.colorize_sim:
+        bench_colorize_sim()
+    if a.tls_laz is not None:
+        bench_tls(a.tls_laz)
+    if not a.skip_icp:
+        bench_icp(a.points, a.o3d_iterations)
+
+
+if __name__ == "__main__":
+    main()

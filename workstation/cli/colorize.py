@@ -1,0 +1,40 @@
+"""`ws colorize CLOUD --reconstruction WORKDIR -o OUT`: colour a cloud from oriented photos."""
+
+from __future__ import annotations
+
+
+import click
+
+from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+
+
+@click.command("colorize")
+@click.argument("cloud", type=click.Path(exists=True, dir_okay=False))
+@click.option("--reconstruction", "workdir", required=True, type=click.Path(exists=True, file_okay=False),
+              help="COLMAP work folder (model in sparse/0, images in images/).")
+@output_option
+@click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
+              help="Folder of the images (default WORKDIR/images).")
+@click.option("--max-views", type=int, default=3, show_default=True, help="Best views blended per point.")
+@click.option("--depth-tolerance", type=float, default=None,
+              help="Metres a point may lie behind the visible surface and still be painted (default 3 x spacing).")
+@overwrite_option
+@json_option
+def colorize(cloud, workdir, output, image_dir, max_views, depth_tolerance, overwrite, as_json):
+    """Colour CLOUD from the oriented photos of a reconstruction; occluded points are not painted.
+
+    Adds rgb, colorized (1 painted, 0 seen by no image) and color_views.
+    """
+    from workstation.interop.pycolmap import read_model
+    from workstation.io import check_output, read_cloud, write_cloud
+    from workstation.registration.colorize import ColorizeParams
+    from workstation.registration.colorize import colorize as run_colorize
+
+    check_output(output, overwrite, inputs=[cloud])
+    c = read_cloud(cloud)
+    rec = read_model(workdir, image_dir)
+    out = run_colorize(c, rec, ColorizeParams(max_views=max_views, depth_tolerance=depth_tolerance))
+    write_cloud(out, output, overwrite=overwrite, inputs=[cloud])
+    if as_json:
+        painted = int(out.attrs["colorized"].sum())
+        emit_json({"output": str(output), "points": out.n, "painted": painted, "images": len(rec.images)})

@@ -1,0 +1,85 @@
+"""`ws mesh IN -o OUT.{ply,obj,glb}`: a cloud to a cleaned, decimated, coloured mesh (MeshLab filters)."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option, output_option, overwrite_option
+
+
+@click.command()
+@click.argument("src", metavar="IN", type=click.Path(exists=True, dir_okay=False))
+@output_option
+@click.option("--method", type=click.Choice(["poisson", "bpa", "delaunay25d"]), default="poisson", show_default=True,
+              help="Screened Poisson (objects, buildings), ball pivoting, or 2.5D Delaunay (terrain).")
+@click.option("--depth", type=click.IntRange(1, 16), default=9, show_default=True,
+              help="Poisson octree depth (finest cell = bounding cube / 2^depth).")
+@click.option("--samples-per-node", type=float, default=1.5, show_default=True,
+              help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy).")
+@click.option("--point-weight", type=float, default=4.0, show_default=True,
+              help="Poisson screening weight (0 = unscreened).")
+@click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
+              help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
+@click.option("--poisson-backend", type=click.Choice(["pymeshlab", "open3d"]), default="pymeshlab", show_default=True,
+              help="MeshLab's Poisson filter or Open3D's build of the same code (faster on large clouds).")
+@click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
+@click.option("--radius", type=float, default=None,
+              help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")
+@click.option("--max-edge", type=float, default=None,
+              help="2.5D Delaunay: longest triangle edge kept, CRS units [default: 8 x point spacing].")
+@click.option("--k-normals", type=click.IntRange(3, 200), default=10, show_default=True,
+              help="Neighbours per normal (PCA plane fit).")
+@click.option("--orient", type=click.Choice(["auto", "viewpoint", "up", "propagate", "keep"]), default="auto",
+              show_default=True, help="Normal orientation (auto: toward --viewpoint if given, else propagate).")
+@click.option("--viewpoint", type=float, nargs=3, default=None, metavar="X Y Z",
+              help="Scanner position (CRS units) the normals must face.")
+@click.option("--recompute-normals", is_flag=True, help="Estimate normals even when the cloud has them.")
+@click.option("--target-faces", type=click.IntRange(4, None), default=None,
+              help="Quadric edge-collapse decimation to this face count [default: no decimation].")
+@click.option("--smooth", type=click.Choice(["none", "taubin", "laplacian"]), default="none", show_default=True,
+              help="Smoothing after decimation.")
+@click.option("--smooth-iterations", type=click.IntRange(0, 1000), default=10, show_default=True,
+              help="Smoothing passes.")
+@click.option("--min-piece-fraction", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
+              help="Remove pieces smaller than this fraction of the mesh diagonal.")
+@click.option("--max-hole-edges", type=click.IntRange(0, None), default=0, show_default=True,
+              help="Close holes bounded by at most this many edges (0 = none).")
+@click.option("--no-color", is_flag=True, help="Do not transfer cloud colours to the vertices.")
+@click.option("--no-quality", is_flag=True, help="Skip the quality summary (distances to the cloud).")
+@overwrite_option
+@json_option
+def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, poisson_backend, threads, radius, max_edge,
+         k_normals, orient, viewpoint, recompute_normals, target_faces, smooth, smooth_iterations,
+         min_piece_fraction, max_hole_edges, no_color, no_quality, overwrite, as_json):
+    """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary."""
+    import numpy as np
+
+    from workstation.core.log import get_logger
+    from workstation.io import check_output, read_cloud
+    from workstation.io.mesh import check_mesh_extension, write_mesh
+    from workstation.mesh import (BallPivotingParams, CleanParams, ColorTransferParams, DecimateParams,
+                                  Delaunay25dParams, MeshChainParams, NormalParams, PoissonParams, QualityParams,
+                                  SmoothParams, mesh_cloud)
+
+    log = get_logger(__name__)
+    check_mesh_extension(output)
+    check_output(output, overwrite, inputs=[src])
+    cloud = read_cloud(src)
+    params = MeshChainParams(
+        method=method,
+        normals=NormalParams(k=k_normals, orient=orient, recompute=recompute_normals),
+        poisson=PoissonParams(depth=depth, samples_per_node=samples_per_node, point_weight=point_weight,
+                              trim_quantile=trim_quantile, backend=poisson_backend, threads=threads),
+        ball_pivoting=BallPivotingParams(radius=radius),
+        delaunay=Delaunay25dParams(max_edge=max_edge),
+        clean=CleanParams(min_piece_fraction=min_piece_fraction, max_hole_edges=max_hole_edges),
+        decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
+        smooth=SmoothParams(method=smooth, iterations=smooth_iterations) if smooth != "none" else None,
+        color=None if no_color else ColorTransferParams(),
+        quality=None if no_quality else QualityParams(),
+    )
+    res = mesh_cloud(cloud, params, viewpoints=np.asarray(viewpoint) if viewpoint else None)
+    write_mesh(res.mesh, output, overwrite=overwrite, inputs=[src])
+    log.info("wrote %s: %d faces, %d vertices in %.1f s", output, res.mesh.n_faces, res.mesh.n_vertices, res.seconds)
+    if as_json:
+        emit_json({"input": src, "output": output, "method": method, **res.to_dict()})

@@ -1,0 +1,144 @@
+"""`ws register SOURCE TARGET -o OUT`: register one cloud onto another, write the moved source."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+import numpy as np
+
+from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+
+
+def read_matrix(path) -> np.ndarray:
+    """A 4x4 matrix from a JSON file (a 4x4 list, or an object with ``transform``) or a text file."""
+    from workstation.core.errors import InvalidInputError
+
+    p = Path(path)
+    try:
+        if p.suffix.lower() == ".json":
+            obj = json.loads(p.read_text())
+            M = np.asarray(obj["transform"] if isinstance(obj, dict) else obj, dtype=np.float64)
+        else:
+            M = np.loadtxt(p, dtype=np.float64)
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise InvalidInputError(f"cannot read a 4x4 matrix: {e}", path=p) from None
+    if M.shape != (4, 4) or not np.isfinite(M).all():
+        raise InvalidInputError(f"expected a finite 4x4 matrix, got shape {M.shape}", path=p)
+    return M
+
+
+def read_pairs(path) -> tuple[np.ndarray, np.ndarray]:
+    """Point pairs from a CSV/text file: 6 numbers per row ``sx sy sz tx ty tz`` (header allowed)."""
+    from workstation.core.errors import InvalidInputError
+
+    p = Path(path)
+    rows = []
+    for line in p.read_text().splitlines():
+        parts = line.replace(",", " ").split()
+        if not parts or line.lstrip().startswith("#"):
+            continue
+        try:
+            vals = [float(x) for x in parts[-6:]]
+        except ValueError:
+            continue  # header
+        if len(vals) == 6:
+            rows.append(vals)
+    if len(rows) < 3:
+        raise InvalidInputError(f"{len(rows)} point pairs read; need at least 3 rows of 'sx sy sz tx ty tz'", path=p)
+    a = np.asarray(rows)
+    return a[:, :3], a[:, 3:]
+
+
+def write_matrix(result, path, overwrite: bool) -> None:
+    """The result as JSON (``.json``) or the 4x4 matrix as text (any other extension)."""
+    from workstation.io import atomic_path
+
+    with atomic_path(path, overwrite=overwrite) as tmp:
+        if Path(path).suffix.lower() == ".json":
+            Path(tmp).write_text(json.dumps(result.to_dict(), indent=2, default=float))
+        else:
+            np.savetxt(tmp, result.transform, fmt="%.12g")
+
+
+@click.command("register")
+@click.argument("source", type=click.Path(exists=True, dir_okay=False))
+@click.argument("target", type=click.Path(exists=True, dir_okay=False))
+@output_option
+@click.option("--method", type=click.Choice(["auto", "fpfh_ransac", "fgr", "clique", "icp", "similarity", "pairs"]),
+              default="auto", show_default=True,
+              help="Coarse method (auto tries clique and RANSAC, verified by ICP); icp = fine only from --init; "
+                   "similarity = 7-DoF ICP (SfM <-> LiDAR); pairs = only the --pairs fit.")
+@click.option("--fine", "fine", type=click.Choice(["point_to_plane", "point_to_point", "colored", "generalized",
+                                                   "voxel_plane"]), default="point_to_plane", show_default=True,
+              help="Fine ICP variant.")
+@click.option("--kernel", type=click.Choice(["none", "tukey", "huber", "cauchy", "gm", "l1"]), default="tukey",
+              show_default=True, help="Robust kernel of the fine stage.")
+@click.option("--voxel-size", type=float, default=None,
+              help="Voxel edge in metres (CRS units) from which every radius derives; estimated when omitted.")
+@click.option("--init", "init_path", type=click.Path(exists=True, dir_okay=False), default=None,
+              help="Initial 4x4 source->target matrix (JSON or text).")
+@click.option("--pairs", "pairs_path", type=click.Path(exists=True, dir_okay=False), default=None,
+              help="CSV of >= 3 picked point pairs 'sx sy sz tx ty tz' (metres) giving the initial transform.")
+@click.option("--scale", "with_scale", is_flag=True, help="Estimate a scale from --pairs (7 DoF).")
+@click.option("--min-fitness", type=float, default=0.2, show_default=True,
+              help="Smallest accepted overlap (share of source points with a correspondence).")
+@click.option("--matrix-out", type=click.Path(dir_okay=False), default=None,
+              help="Also write the result: .json (all fields) or text (the 4x4 matrix).")
+@overwrite_option
+@json_option
+def register(source, target, output, method, fine, kernel, voxel_size, init_path, pairs_path, with_scale, min_fitness,
+             matrix_out, overwrite, as_json):
+    """Register SOURCE onto TARGET and write the transformed SOURCE to OUT.
+
+    The transform maps SOURCE coordinates into TARGET's frame. A result with too little overlap
+    or no convergence is an error (exit 1) with a hint, not a silently wrong matrix.
+    """
+    import time
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.io import check_output, read_cloud, write_cloud
+    from workstation.registration.icp import ICPParams
+    from workstation.registration.merge import transform_cloud
+    from workstation.registration.register import RegisterParams
+    from workstation.registration.register import register as run_register
+    from workstation.registration.transforms import register_point_pairs
+
+    check_output(output, overwrite, inputs=[source, target])
+    if matrix_out:
+        check_output(matrix_out, overwrite, inputs=[source, target])
+    t0 = time.perf_counter()
+    src = read_cloud(source)
+    tgt = read_cloud(target)
+    init = read_matrix(init_path) if init_path else None
+    pair_fit = None
+    if pairs_path:
+        a, b = read_pairs(pairs_path)
+        pair_fit = register_point_pairs(a, b, with_scale=with_scale)
+        init = pair_fit.result.transform
+    if method == "pairs":
+        if pair_fit is None:
+            raise InvalidInputError("--method pairs needs --pairs FILE")
+        result = pair_fit.result
+    else:
+        if method == "similarity" and init is None:
+            raise InvalidInputError("--method similarity needs a start: --pairs FILE --scale or --init FILE",
+                                    "an SfM cloud has an arbitrary scale, so features cannot be matched to LiDAR")
+        m = "icp" if (init is not None and method == "auto") else method
+        params = RegisterParams(method=m, voxel_size=voxel_size, min_fitness=min_fitness,
+                                fine=ICPParams(method=fine, kernel=kernel))
+        result = run_register(src, tgt, params, init=init)
+    moved = transform_cloud(src, result.transform).with_crs(tgt.crs or src.crs)
+    moved = moved.with_history("register", {"method": method, "target": str(target), "fitness": result.fitness},
+                               time.perf_counter() - t0)
+    write_cloud(moved, output, overwrite=overwrite, inputs=[source, target])
+    if matrix_out:
+        write_matrix(result, matrix_out, overwrite)
+    if as_json:
+        d = result.to_dict()
+        if pair_fit is not None:
+            d["pairs_rmse"] = pair_fit.result.inlier_rmse
+            d["pairs_residuals"] = pair_fit.residual_norms.tolist()
+        d["output"] = str(output)
+        emit_json(d)

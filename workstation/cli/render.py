@@ -1,0 +1,76 @@
+"""`ws render IN -o OUT.png`: an off-screen picture of a cloud or mesh (no display needed)."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option, output_option, overwrite_option
+
+
+def _size(ctx, param, value):
+    try:
+        w, h = (int(v) for v in value.lower().split("x"))
+    except ValueError:
+        raise click.BadParameter("give WIDTHxHEIGHT in pixels, e.g. 1920x1080") from None
+    return w, h
+
+
+@click.command()
+@click.argument("src", metavar="IN", type=click.Path(exists=True, dir_okay=False))
+@output_option
+@click.option("--color", "color", default="auto", show_default=True,
+              help="auto, rgb, class, elevation, intensity, hag, uniform, or any attribute name.")
+@click.option("--view", type=click.Choice(["top", "front", "iso"]), default="iso", show_default=True,
+              help="top: orthographic, north up, scale bar; front: looking north; iso: from the south-east.")
+@click.option("--size", default="1024x768", show_default=True, callback=_size, help="Image size WIDTHxHEIGHT in pixels.")
+@click.option("--background", default="white", show_default=True, help="Background colour (name or #rrggbb).")
+@click.option("--point-size", type=float, default=0.0, show_default=True,
+              help="Point diameter in pixels (0 = from the point density).")
+@click.option("--edl", is_flag=True, help="Eye-dome lighting for clouds (shades depth edges).")
+@click.option("--no-legend", is_flag=True, help="No class legend or scalar bar.")
+@click.option("--max-points", type=int, default=0, show_default=True,
+              help="Draw a seeded random subset of at most this many points (0 = all).")
+@click.option("--turntable", type=click.IntRange(0, 720), default=0, show_default=True,
+              help="Frames of a turntable orbit: OUT.gif is an animation, OUT.png a numbered PNG sequence.")
+@overwrite_option
+@json_option
+def render(src, output, color, view, size, background, point_size, edl, no_legend, max_points, turntable,
+           overwrite, as_json):
+    """Render the cloud or mesh IN to OUT (.png, or .gif with --turntable)."""
+    import time
+    from pathlib import Path
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.io import check_output
+    from workstation.render import RenderParams, save_gif, save_png
+    from workstation.render import render as render_image
+    from workstation.render import turntable as turntable_frames
+    from workstation.render.load import load_product
+
+    out = Path(output)
+    if out.suffix.lower() not in (".png", ".gif"):
+        raise InvalidInputError("the output must be .png or .gif", path=out)
+    if out.suffix.lower() == ".gif" and not turntable:
+        raise InvalidInputError("a .gif output needs --turntable N", path=out)
+    check_output(out, overwrite, inputs=[src])
+    t0 = time.perf_counter()
+    obj = load_product(src)
+    params = RenderParams(size=size, color=color, view=view, background=background, point_size=point_size, edl=edl,
+                          legend=not no_legend, max_points=max_points)
+    files = []
+    if turntable:
+        frames = turntable_frames(obj, params, frames=turntable)
+        if out.suffix.lower() == ".gif":
+            save_gif(frames, out, overwrite=overwrite, inputs=[src])
+            files.append(str(out))
+        else:
+            for i, f in enumerate(frames):
+                p = out.with_name(f"{out.stem}_{i:03d}.png")
+                save_png(f, p, overwrite=overwrite, inputs=[src])
+                files.append(str(p))
+    else:
+        save_png(render_image(obj, params), out, overwrite=overwrite, inputs=[src])
+        files.append(str(out))
+    if as_json:
+        emit_json({"input": src, "files": files, "size": list(size), "view": view, "color": color,
+                   "seconds": time.perf_counter() - t0})

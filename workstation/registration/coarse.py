@@ -1,0 +1,188 @@
+"""Coarse (global) registration from FPFH features: RANSAC, Fast Global Registration and a
+correspondence-graph max-clique estimator.
+
+- RANSAC on feature matches with edge-length and distance pre-checks (Rusu et al. 2009;
+  Open3D's ``registration_ransac_based_on_feature_matching``).
+- Fast Global Registration (Zhou, Park & Koltun 2016, "Fast Global Registration", ECCV).
+- ``clique``: mutual nearest FPFH matches, a pairwise length-consistency graph and greedy
+  maximum cliques grown from the best-connected matches, each clique's Umeyama fit scored by
+  its inlier matches (the pruning idea of TEASER, Yang, Shi & Carlone 2020, IEEE T-RO, and of
+  the max-clique registration of Zhang et al. 2023, CVPR). Deterministic, and insensitive to
+  the inlier ratio as long as the inliers form the largest consistent set.
+
+All inputs are :class:`~workstation.registration.preprocess.Prepared` clouds in a shared
+local frame; results are 4x4 transforms in that frame.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.log import get_logger
+from workstation.core.products import RegistrationResult
+
+from .preprocess import Prepared
+from .transforms import apply_transform, make_transform, umeyama
+
+log = get_logger(__name__)
+
+
+@dataclass(frozen=True)
+class CoarseParams:
+    """Parameters of the coarse stage (distances are multiples of the voxel size).
+
+    Attributes
+    ----------
+    ransac_iterations : int
+        Maximum RANSAC hypotheses.
+    ransac_confidence : float
+        Stop RANSAC once this probability of having drawn an all-inlier sample is reached.
+    seed : int
+        Random seed of RANSAC (Open3D's global generator) for repeatable runs.
+    clique_seeds : int
+        Number of best-connected matches the clique search starts from.
+    max_matches : int
+        Cap on the matches of the clique graph (memory is ``max_matches**2`` bytes).
+    """
+
+    ransac_iterations: int = 100_000
+    ransac_confidence: float = 0.999
+    seed: int = 0
+    clique_seeds: int = 40
+    max_matches: int = 4000
+
+
+def _result(T, fitness, rmse, n_corr, method, **meta) -> RegistrationResult:
+    return RegistrationResult(transform=np.asarray(T), scale=1.0, fitness=float(fitness), inlier_rmse=float(rmse),
+                              converged=True, correspondences=int(n_corr), meta={"method": method, **meta})
+
+
+def fpfh_ransac(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
+    """FPFH + RANSAC (Open3D), mutual feature filter, inlier distance ``1.5 * voxel``."""
+    from workstation.interop.open3d import require_open3d
+
+    o3d = require_open3d()
+    reg = o3d.pipelines.registration
+    d = src.radii.coarse_distance
+    o3d.utility.random.seed(int(params.seed))
+    res = reg.registration_ransac_based_on_feature_matching(
+        src.down, tgt.down, src.fpfh, tgt.fpfh, True, d,
+        reg.TransformationEstimationPointToPoint(False), 3,
+        [reg.CorrespondenceCheckerBasedOnEdgeLength(0.9), reg.CorrespondenceCheckerBasedOnDistance(d)],
+        reg.RANSACConvergenceCriteria(int(params.ransac_iterations), float(params.ransac_confidence)))
+    return _result(res.transformation, res.fitness, res.inlier_rmse, len(res.correspondence_set), "fpfh_ransac")
+
+
+def fgr(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
+    """Fast Global Registration (Zhou et al. 2016) on FPFH matches (Open3D)."""
+    from workstation.interop.open3d import require_open3d
+
+    o3d = require_open3d()
+    reg = o3d.pipelines.registration
+    opt = reg.FastGlobalRegistrationOption(maximum_correspondence_distance=src.radii.coarse_distance,
+                                           use_absolute_scale=True, decrease_mu=True)
+    res = reg.registration_fgr_based_on_feature_matching(src.down, tgt.down, src.fpfh, tgt.fpfh, opt)
+    return _result(res.transformation, res.fitness, res.inlier_rmse, len(res.correspondence_set), "fgr")
+
+
+def _nearest(a: np.ndarray, b: np.ndarray, block: int = 2048) -> np.ndarray:
+    """Index of the nearest row of ``b`` for every row of ``a`` (brute force, float32 BLAS,
+    in row blocks: a KD-tree is no faster than this in 33 dimensions)."""
+    import contextlib
+
+    try:  # threadpoolctl comes with scikit-learn
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover
+        threadpool_limits = None
+
+    a = np.asarray(a, dtype=np.float32)
+    b = np.asarray(b, dtype=np.float32)
+    bb = np.einsum("ij,ij->i", b, b)
+    out = np.empty(a.shape[0], dtype=np.int64)
+    limit = threadpool_limits(1) if threadpool_limits else contextlib.nullcontext()
+    with limit:  # idle BLAS threads spinning on a shared machine cost more than they gain
+        for s in range(0, a.shape[0], block):
+            d = bb[None, :] - 2.0 * (a[s:s + block] @ b.T)
+            out[s:s + block] = np.argmin(d, axis=1)
+    return out
+
+
+def mutual_matches(f_src: np.ndarray, f_tgt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Indices ``(i, j)`` of mutual nearest neighbours between two feature sets (n, d), (m, d)."""
+    j = _nearest(f_src, f_tgt)
+    i = _nearest(f_tgt, f_src)
+    keep = np.flatnonzero(i[j] == np.arange(j.size))
+    return keep, j[keep]
+
+
+def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
+    """Max-clique estimator on mutual FPFH matches (see the module docstring).
+
+    Two matches (a, b) are consistent when the distance between their source points equals
+    that between their target points within ``2 * coarse_distance`` and both distances exceed
+    ``3 * voxel`` (short edges constrain rotation poorly). From each of the ``clique_seeds``
+    best-connected matches a clique is grown greedily (always adding the candidate with most
+    consistent neighbours); each clique gives a Umeyama fit, scored by the number of all
+    matches it explains within ``coarse_distance``; the best is refitted on those inliers.
+    """
+    ps = np.asarray(src.down.points)
+    pt = np.asarray(tgt.down.points)
+    fs = np.asarray(src.fpfh.data).T
+    ft = np.asarray(tgt.fpfh.data).T
+    i, j = mutual_matches(fs, ft)
+    if i.size > params.max_matches:  # keep the matches with the most distinctive features
+        dist = np.linalg.norm(fs[i] - ft[j], axis=1)
+        keep = np.argsort(dist)[: params.max_matches]
+        i, j = i[keep], j[keep]
+    cs, ct = ps[i], pt[j]
+    m = cs.shape[0]
+    d = src.radii.coarse_distance
+    if m < 3:
+        return _result(np.eye(4), 0.0, float("nan"), 0, "clique", matches=int(m))
+    ds = np.sqrt(((cs[:, None, :] - cs[None, :, :]) ** 2).sum(-1)).astype(np.float32)
+    dt = np.sqrt(((ct[:, None, :] - ct[None, :, :]) ** 2).sum(-1)).astype(np.float32)
+    A = (np.abs(ds - dt) < 2.0 * d) & (ds > 3.0 * src.radii.voxel)
+    del ds, dt
+    np.fill_diagonal(A, False)
+    deg = A.sum(axis=1)
+    best = (-1, np.eye(4), 0)
+    for seed in np.argsort(-deg)[: params.clique_seeds]:
+        if deg[seed] < 2:
+            break
+        mask = A[seed].copy()
+        clique = [int(seed)]
+        while mask.any():
+            cand = np.flatnonzero(mask)
+            inner = A[np.ix_(cand, cand)].sum(axis=1) if cand.size <= 256 else deg[cand]
+            c = int(cand[np.argmax(inner)])
+            clique.append(c)
+            mask &= A[c]
+        if len(clique) < 3:
+            continue
+        R, t, _ = umeyama(cs[clique], ct[clique])
+        T = make_transform(R, t)
+        score = int((np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d).sum())
+        if score > best[0]:
+            best = (score, T, len(clique))
+    score, T, size = best
+    if score < 3:
+        return _result(np.eye(4), 0.0, float("nan"), 0, "clique", matches=int(m))
+    inl = np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d
+    R, t, _ = umeyama(cs[inl], ct[inl])
+    T = make_transform(R, t)
+    res = np.linalg.norm(apply_transform(T, cs[inl]) - ct[inl], axis=1)
+    fit = _point_fitness(ps, pt, T, d)
+    log.info("clique: %d mutual matches, clique %d, %d inlier matches, fitness %.3f", m, size, int(inl.sum()), fit)
+    return _result(T, fit, float(np.sqrt(np.mean(res**2))), int(inl.sum()), "clique", matches=int(m), clique=int(size))
+
+
+def _point_fitness(ps: np.ndarray, pt: np.ndarray, T: np.ndarray, d: float) -> float:
+    from scipy.spatial import cKDTree
+
+    dist, _ = cKDTree(pt).query(apply_transform(T, ps), distance_upper_bound=d, workers=-1)
+    return float(np.mean(np.isfinite(dist)))
+
+
+COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration}

@@ -1,0 +1,160 @@
+"""Fine registration: ICP variants with robust kernels, and the 7-DoF similarity ICP.
+
+- point-to-point (Besl & McKay 1992, "A method for registration of 3-D shapes", PAMI 14(2));
+  with ``with_scale`` the Umeyama similarity is solved at every iteration (7 DoF) for SfM
+  clouds whose scale is arbitrary;
+- point-to-plane (Chen & Medioni 1992) with robust kernels (Tukey, Huber, Cauchy, Geman-
+  McClure, L1; Babin et al. 2019, "Analysis of robust functions for registration algorithms",
+  ICRA);
+- coloured ICP (Park, Zhou & Koltun 2017, "Colored point cloud registration revisited", ICCV);
+- generalised ICP (Segal, Haehnel & Thrun 2009, "Generalized-ICP", RSS);
+- ``voxel_plane``: our point-to-plane ICP with voxel-hash correspondences
+  (:mod:`workstation.registration.voxelmap`), for millions of points.
+
+The Open3D variants run a coarse-to-fine schedule of correspondence distances, each a multiple
+of one voxel size.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError
+from workstation.core.log import get_logger
+from workstation.core.products import RegistrationResult
+
+log = get_logger(__name__)
+
+ICP_METHODS = ("point_to_plane", "point_to_point", "colored", "generalized", "voxel_plane")
+KERNELS = ("none", "tukey", "huber", "cauchy", "gm", "l1")
+
+
+@dataclass(frozen=True)
+class ICPParams:
+    """Fine-registration parameters; distances are multiples of ``voxel`` (metres).
+
+    Attributes
+    ----------
+    method : str
+        One of :data:`ICP_METHODS`.
+    schedule : tuple of float
+        Maximum correspondence distances, coarse to fine, as multiples of the voxel size.
+    max_iterations : int
+        Iterations per schedule level.
+    kernel : str
+        Robust kernel (:data:`KERNELS`) for point-to-plane, coloured and generalised ICP.
+    kernel_scale : float
+        Kernel width as a share of the level's correspondence distance.
+    with_scale : bool
+        Estimate a similarity scale (point-to-point only): 7-DoF SfM <-> LiDAR.
+    relative_fitness, relative_rmse : float
+        Open3D convergence thresholds per level.
+    colored_lambda : float
+        Weight of the geometric term in coloured ICP (0..1).
+    """
+
+    method: str = "point_to_plane"
+    schedule: tuple = (1.5, 0.6, 0.3)
+    max_iterations: int = 30
+    kernel: str = "tukey"
+    kernel_scale: float = 0.5
+    with_scale: bool = False
+    relative_fitness: float = 1e-6
+    relative_rmse: float = 1e-6
+    colored_lambda: float = 0.968
+
+    def __post_init__(self):
+        if self.method not in ICP_METHODS:
+            raise InvalidInputError(f"unknown ICP method {self.method!r}", f"use one of {', '.join(ICP_METHODS)}",
+                                    field="method")
+        if self.kernel not in KERNELS:
+            raise InvalidInputError(f"unknown kernel {self.kernel!r}", f"use one of {', '.join(KERNELS)}", field="kernel")
+        if self.with_scale and self.method != "point_to_point":
+            raise InvalidInputError("scale estimation needs method='point_to_point'", field="with_scale")
+        if not self.schedule or min(self.schedule) <= 0:
+            raise InvalidInputError("schedule needs positive distance multiples", field="schedule")
+
+
+def _kernel(reg, name: str, k: float):
+    if name == "none":
+        return None
+    return {"tukey": reg.TukeyLoss, "huber": reg.HuberLoss, "cauchy": reg.CauchyLoss, "gm": reg.GMLoss,
+            "l1": reg.L1Loss}[name](k) if name != "l1" else reg.L1Loss()
+
+
+def refine(source, target, voxel: float, init: np.ndarray | None = None, params: ICPParams = ICPParams()) -> RegistrationResult:
+    """ICP of a legacy Open3D source cloud onto a target (both local frame, normals present for
+    the plane-based methods, colours for coloured ICP).
+
+    Parameters
+    ----------
+    source, target : open3d.geometry.PointCloud
+    voxel : float
+        The voxel size all distances derive from (units of the clouds).
+    init : (4, 4) float, optional
+    params : ICPParams
+
+    Returns
+    -------
+    RegistrationResult
+        Fitness and RMSE at the finest level's distance; ``information`` is Open3D's 6x6
+        information matrix of the final correspondences; ``meta["levels"]`` has each level.
+    """
+    from workstation.interop.open3d import require_open3d
+
+    o3d = require_open3d()
+    reg = o3d.pipelines.registration
+    T = np.eye(4) if init is None else np.asarray(init, dtype=np.float64)
+    levels = []
+    res = None
+    if params.method == "colored" and not (source.has_colors() and target.has_colors()):
+        raise InvalidInputError("coloured ICP needs rgb on both clouds", "use --method point_to_plane", field="rgb")
+    if params.method in ("point_to_plane", "colored") and not target.has_normals():
+        raise InvalidInputError("the target needs normals", field="normal")
+    for f in params.schedule:
+        d = float(f * voxel)
+        crit = reg.ICPConvergenceCriteria(params.relative_fitness, params.relative_rmse, int(params.max_iterations))
+        kern = _kernel(reg, params.kernel, params.kernel_scale * d)
+        if params.method == "point_to_point":
+            est = reg.TransformationEstimationPointToPoint(bool(params.with_scale))
+            res = reg.registration_icp(source, target, d, T, est, crit)
+        elif params.method == "point_to_plane":
+            est = reg.TransformationEstimationPointToPlane(kern) if kern else reg.TransformationEstimationPointToPlane()
+            res = reg.registration_icp(source, target, d, T, est, crit)
+        elif params.method == "colored":
+            est = (reg.TransformationEstimationForColoredICP(params.colored_lambda, kern) if kern
+                   else reg.TransformationEstimationForColoredICP(params.colored_lambda))
+            res = reg.registration_colored_icp(source, target, d, T, est, crit)
+        elif params.method == "generalized":
+            est = (reg.TransformationEstimationForGeneralizedICP(1e-3, kern) if kern
+                   else reg.TransformationEstimationForGeneralizedICP())
+            res = reg.registration_generalized_icp(source, target, d, T, est, crit)
+        else:
+            raise InvalidInputError("voxel_plane runs through voxel_plane_icp()", field="method")
+        T = np.asarray(res.transformation)
+        levels.append({"distance": d, "fitness": float(res.fitness), "inlier_rmse": float(res.inlier_rmse),
+                       "correspondences": int(len(res.correspondence_set))})
+    d_last = float(params.schedule[-1] * voxel)
+    info = np.asarray(reg.get_information_matrix_from_point_clouds(source, target, d_last, T))
+    scale = float(np.cbrt(np.linalg.det(T[:3, :3])))
+    ok = res is not None and len(res.correspondence_set) >= 6 and np.isfinite(T).all()
+    return RegistrationResult(transform=T, scale=scale, fitness=float(res.fitness), inlier_rmse=float(res.inlier_rmse),
+                              converged=bool(ok), correspondences=int(len(res.correspondence_set)), information=info,
+                              meta={"method": params.method, "kernel": params.kernel, "levels": levels})
+
+
+def voxel_plane_icp(source_xyz: np.ndarray, target_xyz: np.ndarray, voxel: float, init: np.ndarray | None = None,
+                    params: ICPParams = ICPParams(method="voxel_plane")) -> RegistrationResult:
+    """Point-to-plane ICP with voxel-hash correspondences on local (origin-subtracted) arrays.
+
+    ``voxel`` is the finest plane voxel; levels ``4, 2, 1`` times it run
+    ``params.max_iterations`` iterations in total. See :mod:`workstation.registration.voxelmap`.
+    """
+    from .voxelmap import point_to_plane_voxel
+
+    r = point_to_plane_voxel(source_xyz, target_xyz, voxel, init=init, iterations=int(params.max_iterations))
+    return RegistrationResult(transform=r.transform, scale=1.0, fitness=r.fitness, inlier_rmse=r.rmse,
+                              converged=r.converged, correspondences=int(round(r.fitness * len(source_xyz))),
+                              meta={"method": "voxel_plane", "iterations": r.iterations})

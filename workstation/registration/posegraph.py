@@ -1,0 +1,197 @@
+"""Multi-scan registration: pairwise edges, loop closures and a global pose-graph optimisation.
+
+Sequential (odometry) edges i -> i+1 and loop-closure edges between every other overlapping
+pair are registered pairwise; Open3D's pose graph is optimised with Levenberg-Marquardt and
+line-process edge pruning (Choi, Zhou & Koltun 2015, "Robust reconstruction of indoor
+scenes", CVPR). The result gives each scan's pose (scan -> frame of scan ``reference``) and a
+residual table: how far each edge's measured transform disagrees with the optimised poses.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.log import get_logger
+
+from .register import RegisterParams, register
+from .transforms import invert, rotation_angle_deg
+
+log = get_logger(__name__)
+STAGE = "register-multiway"
+
+
+@dataclass(frozen=True)
+class EdgeRecord:
+    """One pose-graph edge and its residual after optimisation.
+
+    Attributes
+    ----------
+    source, target : int
+        Scan indices; ``transform`` maps source into target.
+    kind : str
+        ``"odometry"`` (consecutive scans) or ``"loop"``.
+    fitness, inlier_rmse : float
+        Of the pairwise registration (rmse in metres).
+    rotation_residual_deg, translation_residual : float
+        Disagreement between the edge and the optimised poses (degrees, metres).
+    kept : bool
+        False when the optimiser pruned the edge as an outlier.
+    """
+
+    source: int
+    target: int
+    kind: str
+    transform: np.ndarray
+    fitness: float
+    inlier_rmse: float
+    rotation_residual_deg: float = float("nan")
+    translation_residual: float = float("nan")
+    kept: bool = True
+
+    def to_dict(self) -> dict:
+        return {"source": self.source, "target": self.target, "kind": self.kind, "fitness": self.fitness,
+                "inlier_rmse": self.inlier_rmse, "rotation_residual_deg": self.rotation_residual_deg,
+                "translation_residual": self.translation_residual, "kept": self.kept}
+
+
+@dataclass(frozen=True)
+class MultiwayResult:
+    """Poses of every scan (4x4, scan -> reference frame) and the edge residual table."""
+
+    poses: list
+    edges: list
+    reference: int = 0
+    meta: dict = field(default_factory=dict)
+
+    def residual_table(self) -> list[dict]:
+        return [e.to_dict() for e in self.edges]
+
+    def to_dict(self) -> dict:
+        return {"reference": self.reference, "poses": [np.asarray(p).tolist() for p in self.poses],
+                "edges": self.residual_table(), **self.meta}
+
+
+@dataclass(frozen=True)
+class MultiwayParams:
+    """Parameters of :func:`register_multiway`.
+
+    Attributes
+    ----------
+    pair : RegisterParams
+        Pairwise registration (its ``voxel_size`` also scales the optimiser's distance).
+    loop_closure : bool
+        Also register non-consecutive pairs and add them as uncertain loop-closure edges.
+    loop_min_fitness : float
+        Loop-closure pairs below this fitness are left out (they do not overlap).
+    edge_prune_threshold : float
+        Open3D line-process threshold below which a loop edge is pruned.
+    reference : int
+        Index of the scan whose frame the poses are expressed in.
+    initial_poses : list of (4, 4) float, optional
+        Rough pose of every scan (scan -> one common frame, e.g. from GNSS or a field sketch):
+        pairs are then refined by ICP from ``inv(P_j) P_i`` instead of global registration.
+    """
+
+    pair: RegisterParams = field(default_factory=RegisterParams)
+    loop_closure: bool = True
+    loop_min_fitness: float = 0.3
+    edge_prune_threshold: float = 0.25
+    reference: int = 0
+    initial_poses: tuple | None = None
+
+
+def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayParams()) -> MultiwayResult:
+    """Register many overlapping scans into the frame of ``params.reference``.
+
+    Parameters
+    ----------
+    clouds : list of Cloud
+        At least two scans, consecutive ones overlapping.
+    params : MultiwayParams
+
+    Returns
+    -------
+    MultiwayResult
+
+    Raises
+    ------
+    StageError
+        When an odometry edge fails (the chain would break).
+    """
+    from workstation.interop.open3d import default_origin, local_transform, require_open3d, world_transform
+
+    o3d = require_open3d()
+    reg = o3d.pipelines.registration
+    n = len(clouds)
+    if n < 2:
+        raise InvalidInputError(f"{n} scan(s) given; multi-scan registration needs 2 or more")
+    if params.initial_poses is not None and len(params.initial_poses) != n:
+        raise InvalidInputError(f"{len(params.initial_poses)} initial poses for {n} scans", field="initial_poses")
+    if not 0 <= params.reference < n:
+        raise InvalidInputError(f"reference {params.reference} out of range", field="reference")
+    edges: list[EdgeRecord] = []
+    infos: dict = {}
+    for i in range(n):
+        for j in range(i + 1, n):
+            odo = j == i + 1
+            if not odo and not params.loop_closure:
+                continue
+            p = params.pair if odo else replace(params.pair, min_fitness=params.loop_min_fitness)
+            init = None
+            if params.initial_poses is not None:
+                init = invert(np.asarray(params.initial_poses[j], float)) @ np.asarray(params.initial_poses[i], float)
+                p = replace(p, method="icp")
+            try:
+                r = register(clouds[i], clouds[j], p, init=init)
+            except StageError as e:
+                if odo:
+                    raise StageError(STAGE, f"scans {i} and {j} could not be registered: {e.message}", e.hint) from None
+                log.info("no loop closure %d-%d: %s", i, j, e.message)
+                continue
+            edges.append(EdgeRecord(i, j, "odometry" if odo else "loop", r.transform, r.fitness, r.inlier_rmse))
+            infos[(i, j)] = r.information if r.information is not None else np.eye(6)
+            log.info("edge %d->%d (%s): fitness %.3f", i, j, edges[-1].kind, r.fitness)
+    origin = default_origin(clouds[params.reference].xyz)
+    voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
+    if voxel is None:
+        from .preprocess import estimate_voxel_size
+
+        voxel = estimate_voxel_size(clouds[params.reference].xyz - origin)
+    # chain odometry for initial poses (scan -> scan 0), local frame
+    L = {(e.source, e.target): local_transform(e.transform, origin, origin) for e in edges}
+    pose0 = [np.eye(4)]
+    for i in range(1, n):
+        pose0.append(pose0[-1] @ invert(L[(i - 1, i)]))
+    graph = reg.PoseGraph()
+    for i in range(n):
+        graph.nodes.append(reg.PoseGraphNode(pose0[i]))
+    for e in edges:
+        graph.edges.append(reg.PoseGraphEdge(e.source, e.target, L[(e.source, e.target)], infos[(e.source, e.target)],
+                                             uncertain=e.kind == "loop"))
+    option = reg.GlobalOptimizationOption(max_correspondence_distance=float(params.pair.fine.schedule[-1] * voxel),
+                                          edge_prune_threshold=float(params.edge_prune_threshold),
+                                          preference_loop_closure=1.0, reference_node=int(params.reference))
+    g = reg.PoseGraph(graph)  # Open3D optimises in place: work on a copy
+    with o3d.utility.VerbosityContextManager(o3d.utility.VerbosityLevel.Error):
+        reg.global_optimization(g, reg.GlobalOptimizationLevenbergMarquardt(),
+                                reg.GlobalOptimizationConvergenceCriteria(), option)
+    kept_pairs = {(e.source_node_id, e.target_node_id) for e in g.edges}
+    P = [np.asarray(nd.pose) for nd in g.nodes]
+    ref_inv = invert(P[params.reference])
+    P = [ref_inv @ p for p in P]
+    out_edges = []
+    for e in edges:
+        Tij = L[(e.source, e.target)]
+        # edge predicts x_j = Tij x_i; poses give x_j = inv(P_j) P_i x_i
+        D = invert(Tij) @ invert(P[e.target]) @ P[e.source]
+        c = clouds[e.source].xyz.mean(axis=0) - origin
+        moved = D[:3, :3] @ c + D[:3, 3] - c
+        out_edges.append(replace(e, rotation_residual_deg=rotation_angle_deg(D[:3, :3]),
+                                 translation_residual=float(np.linalg.norm(moved)),
+                                 kept=(e.source, e.target) in kept_pairs))
+    poses = [world_transform(p, origin, origin) for p in P]
+    return MultiwayResult(poses, out_edges, params.reference, {"voxel_size": voxel, "n_scans": n})

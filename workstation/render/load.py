@@ -1,0 +1,38 @@
+"""Load a product file for rendering or reporting: a cloud or a mesh, decided by the file."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from workstation.core.cloud import Cloud
+from workstation.core.products import Mesh
+
+MESH_ONLY = (".obj", ".glb", ".gltf", ".off")
+
+
+def ply_face_count(path) -> int:
+    """Number of faces declared in a PLY header (0 for a point cloud)."""
+    with open(path, "rb") as fh:
+        head = fh.read(65536).split(b"end_header")[0].decode("ascii", "replace")
+    for line in head.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[0] == "element" and parts[1] == "face":
+            return int(parts[2])
+    return 0
+
+
+def is_mesh_file(path) -> bool:
+    p = Path(path)
+    ext = p.suffix.lower()
+    return ext in MESH_ONLY or (ext == ".ply" and ply_face_count(p) > 0)
+
+
+def load_product(path) -> Cloud | Mesh:
+    """A :class:`Mesh` for mesh files (PLY with faces, OBJ, glTF, OFF), else a :class:`Cloud`."""
+    if is_mesh_file(path):
+        from workstation.io.mesh import read_mesh
+
+        return read_mesh(path)
+    from workstation.io import read_cloud
+
+    return read_cloud(path)

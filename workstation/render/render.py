@@ -1,0 +1,437 @@
+"""Off-screen renders of clouds and meshes with pyvista/VTK (no display needed).
+
+Colour by RGB, ASPRS classification (standard palette and a legend), elevation, intensity,
+height above ground or any attribute; eye-dome lighting for clouds (Boucheny, "Interactive
+scientific visualization of large datasets", PhD thesis 2009); views ``top`` (orthographic,
+north up, scale bar), ``front`` (looking north), ``iso`` (from the south-east, above), or an
+exact pinhole camera (:class:`~workstation.core.products.Camera` + ``Pose``), the projection
+matrix being built from the intrinsics so a world point lands on the pixel ``K [R|t]`` gives.
+Renders are deterministic for a given input, view and size.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.classes import CLASS_COLORS, class_colors, class_name
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.log import get_logger
+from workstation.core.products import Camera, Mesh, Pose, Reconstruction
+
+log = get_logger(__name__)
+
+VIEWS = ("top", "front", "iso")
+NAMED_COLORS = ("auto", "rgb", "class", "classification", "elevation", "intensity", "hag", "uniform")
+
+
+@dataclass(frozen=True)
+class RenderParams:
+    """Render settings.
+
+    Attributes
+    ----------
+    size : (int, int)
+        Image width and height in pixels.
+    color : str
+        ``auto`` (rgb, else classification, else elevation), ``rgb``, ``class``,
+        ``elevation``, ``intensity``, ``hag``, ``uniform`` or the name of any attribute.
+    view : {"top", "front", "iso"}
+        Ignored when a camera is given.
+    background : str
+        Colour name or ``#rrggbb``.
+    point_size : float
+        Point diameter in pixels (clouds); 0 = from the density, so that points about cover
+        the object's footprint (1-8 px).
+    edl : bool
+        Eye-dome lighting for clouds: shades depth discontinuities so shapes read without
+        normals (best on dense clouds seen from the side; on sparse clouds it outlines every
+        point).
+    legend : bool
+        Class legend (class colouring) or scalar bar (scalar colouring).
+    scale_bar : bool
+        Scale bar and north mark in the ``top`` view.
+    cmap : str or None
+        Matplotlib colour map for scalars (None: ``viridis``; ``gray`` for intensity).
+    clip_percent : float
+        Scalar colour range clipped to [p, 100 - p] percentiles (percent).
+    max_points : int
+        Clouds above this are drawn from a seeded random subset (count; 0 = all).
+    margin : float
+        Space around the object in ``top``/``front``/``iso`` views (fraction of its size).
+    """
+
+    size: tuple[int, int] = (1024, 768)
+    color: str = "auto"
+    view: str = "iso"
+    background: str = "white"
+    point_size: float = 0.0
+    edl: bool = False
+    legend: bool = True
+    scale_bar: bool = True
+    cmap: str | None = None
+    clip_percent: float = 2.0
+    max_points: int = 0
+    margin: float = 0.05
+
+    def __post_init__(self):
+        w, h = self.size
+        if not (16 <= int(w) <= 8192 and 16 <= int(h) <= 8192):
+            raise InvalidInputError(f"size {self.size} out of 16..8192 pixels", field="size")
+        if self.view not in VIEWS:
+            raise InvalidInputError(f"unknown view '{self.view}'", "use " + ", ".join(VIEWS), field="view")
+        if not 0 <= self.clip_percent < 50:
+            raise InvalidInputError("clip_percent must be in [0, 50)", field="clip_percent")
+
+
+def _nice_length(x: float) -> float:
+    """Largest 1, 2 or 5 × 10^k not above x."""
+    if x <= 0:
+        return 0.0
+    e = math.floor(math.log10(x))
+    for m in (5, 2, 1):
+        if m * 10 ** e <= x:
+            return m * 10 ** e
+    return 10 ** e
+
+
+def _units(crs) -> str:
+    s = str(crs or "").lower()
+    return "ft" if ("foot" in s or "feet" in s or "ftus" in s or "us-ft" in s) else "m"
+
+
+def _scalar_colors(obj, params: RenderParams):
+    """(name of colouring, rgb (n,3) u8 or None, scalars (n,) or None, legend entries or title)."""
+    attrs = obj.attrs if isinstance(obj, Cloud) else obj.vertex_attrs
+    xyz = obj.xyz if isinstance(obj, Cloud) else obj.vertices
+    c = params.color
+    if c == "auto":
+        if "rgb" in attrs:
+            c = "rgb"
+        elif "classification" in attrs and isinstance(obj, Cloud):
+            c = "class"
+        else:
+            c = "elevation" if isinstance(obj, Cloud) else "uniform"
+    if c == "classification":
+        c = "class"
+    if c == "rgb":
+        if "rgb" not in attrs:
+            raise InvalidInputError("no rgb colours to render", "use --color elevation or class", field="rgb")
+        from workstation.interop.pymeshlab import rgb_to_u8
+
+        return c, rgb_to_u8(np.asarray(attrs["rgb"])), None, None
+    if c == "class":
+        face_cls = isinstance(obj, Mesh) and "classification" in obj.face_attrs
+        if "classification" not in attrs and not face_cls:
+            raise InvalidInputError("no classification to colour by", "use --color elevation", field="classification")
+        codes = np.asarray(obj.face_attrs["classification"] if face_cls else attrs["classification"])
+        present = np.unique(codes)
+        entries = [(f"{int(k)} {class_name(int(k))}", tuple(v / 255 for v in CLASS_COLORS.get(int(k), (128,) * 3)))
+                   for k in present]
+        return ("class-face" if face_cls else "class"), class_colors(codes), None, entries
+    if c == "uniform":
+        return c, None, None, None
+    if c == "elevation":
+        return c, None, np.asarray(xyz[:, 2], dtype=np.float64), f"Elevation ({_units(obj.crs)})"
+    if c not in attrs:
+        raise InvalidInputError(f"no attribute '{c}' to colour by",
+                                "available: " + ", ".join(sorted(attrs)) or "none", field=c)
+    a = np.asarray(attrs[c])
+    if a.ndim == 2 and a.shape[1] == 3:
+        from workstation.interop.pymeshlab import rgb_to_u8
+
+        return "rgb", rgb_to_u8(a), None, None
+    if a.ndim != 1:
+        raise InvalidInputError(f"attribute '{c}' has shape {a.shape}: not a scalar", field=c)
+    title = {"intensity": "Intensity", "hag": f"Height above ground ({_units(obj.crs)})"}.get(c, c)
+    return c, None, a.astype(np.float64), title
+
+
+def _point_size(params: RenderParams, lo: np.ndarray, hi: np.ndarray, n: int, size) -> float:
+    """Point diameter in pixels: given, or about sqrt(footprint pixels / points)."""
+    if params.point_size > 0:
+        return float(params.point_size)
+    ext = hi - lo
+    w, h = size
+    # share of the frame the XY footprint fills in a fitted view (an upper bound for others)
+    aspect = max(ext[0], 1e-9) / max(ext[1], 1e-9)
+    fill = (aspect / (w / h)) if aspect < w / h else ((w / h) / aspect)
+    footprint_px = w * h * fill * 0.8
+    return float(np.clip(1.5 * math.sqrt(footprint_px / max(n, 1)), 1.0, 8.0))
+
+
+def _subset(cloud: Cloud, max_points: int) -> Cloud:
+    if max_points and cloud.n > max_points:
+        idx = np.sort(np.random.default_rng(0).choice(cloud.n, max_points, replace=False))
+        return cloud[idx]
+    return cloud
+
+
+def projection_matrix(camera: Camera, near: float, far: float) -> np.ndarray:
+    """OpenGL projection matrix (4, 4) of a pinhole camera (pixel centres at integers).
+
+    Maps eye coordinates (x right, y up, looking down -z) so that the image pixel (u, v) of
+    ``K @ [R|t] X`` in OpenCV convention (v down) is where X is drawn.
+    """
+    w, h = float(camera.width), float(camera.height)
+    fx, fy, cx, cy, s = camera.fx, camera.fy, camera.cx, camera.cy, camera.skew
+    m = np.zeros((4, 4))
+    m[0] = [2 * fx / w, -2 * s / w, 1 - 2 * (cx + 0.5) / w, 0]
+    m[1] = [0, 2 * fy / h, 2 * (cy + 0.5) / h - 1, 0]
+    m[2] = [0, 0, -(far + near) / (far - near), -2 * far * near / (far - near)]
+    m[3] = [0, 0, -1, 0]
+    return m
+
+
+def _vtk_matrix(m: np.ndarray):
+    import vtk
+
+    vm = vtk.vtkMatrix4x4()
+    for i in range(4):
+        for j in range(4):
+            vm.SetElement(i, j, float(m[i, j]))
+    return vm
+
+
+def _set_pinhole(pl, camera: Camera, pose: Pose, origin: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> None:
+    R = np.asarray(pose.R, dtype=np.float64)
+    C = np.asarray(pose.center, dtype=np.float64) - origin
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    depth = (corners - C) @ R[2]
+    if depth.max() <= 0:
+        raise InvalidInputError("the object is behind the camera", "check the pose (world -> camera)", field="pose")
+    # clipping planes from the bounding box (the camera may stand inside it)
+    far = float(depth.max()) * 1.05
+    near = max(float(depth.min()) * 0.95, far * 1e-4)
+    cam = pl.camera
+    cam.position = tuple(C)
+    cam.focal_point = tuple(C + R[2])
+    cam.up = tuple(-R[1])
+    vcam = pl.renderer.GetActiveCamera()
+    vcam.SetClippingRange(near, far)
+    vcam.SetExplicitProjectionTransformMatrix(_vtk_matrix(projection_matrix(camera, near, far)))
+    vcam.SetUseExplicitProjectionTransformMatrix(True)
+
+
+def _fit_view(pl, view: str, bounds_min: np.ndarray, bounds_max: np.ndarray, size, margin: float) -> float | None:
+    """Place the camera; returns world units per pixel for the top view."""
+    w, h = size
+    centre = 0.5 * (bounds_min + bounds_max)
+    ext = np.maximum(bounds_max - bounds_min, 1e-9)
+    diag = float(np.linalg.norm(ext))
+    cam = pl.camera
+    if view == "top":
+        pl.enable_parallel_projection()
+        cam.focal_point = tuple(centre)
+        cam.position = tuple(centre + [0, 0, diag * 2 + 1])
+        cam.up = (0.0, 1.0, 0.0)
+        half_h = max(ext[1] / 2, ext[0] / 2 * h / w) * (1 + 2 * margin)
+        cam.parallel_scale = float(half_h)
+        pl.renderer.ResetCameraClippingRange()
+        return 2 * half_h / h
+    direction = np.array([0.0, -1.0, 0.0]) if view == "front" else np.array([1.0, -1.0, 0.8])
+    direction /= np.linalg.norm(direction)
+    view_angle = 30.0
+    tan_h = math.tan(math.radians(view_angle / 2))
+    tan_w = tan_h * w / h
+    # camera axes: forward = -direction, up = world Z made orthogonal, right = forward x up
+    fwd = -direction
+    up = np.array([0.0, 0.0, 1.0]) - fwd[2] * fwd
+    up /= np.linalg.norm(up)
+    right = np.cross(fwd, up)
+    corners = np.array([[x, y, z] for x in (bounds_min[0], bounds_max[0]) for y in (bounds_min[1], bounds_max[1])
+                        for z in (bounds_min[2], bounds_max[2])]) - centre
+    corners = corners * (1 + 2 * margin)
+    # distance so every corner of the bounding box projects inside the frame
+    depth = corners @ fwd
+    dist = float(np.max(np.concatenate([np.abs(corners @ right) / tan_w - depth, np.abs(corners @ up) / tan_h - depth])))
+    dist = max(dist, 1e-6 * diag + 1e-9)
+    cam.focal_point = tuple(centre)
+    cam.up = tuple(up)
+    cam.view_angle = view_angle
+    cam.position = tuple(centre + direction * dist)
+    pl.renderer.ResetCameraClippingRange()
+    return None
+
+
+def _draw_scale_bar(pl, pv, units_per_px: float, size, centre, zmax, units: str, bg_dark: bool) -> None:
+    w, h = size
+    length = _nice_length(0.25 * w * units_per_px)
+    if length <= 0:
+        return
+    x0_px, y0_px, thick_px = 20, 20, max(4, h // 120)
+    # world position of the bar's lower-left corner (orthographic top view, north up)
+    wx = centre[0] + (x0_px - w / 2) * units_per_px
+    wy = centre[1] + (y0_px - h / 2) * units_per_px
+    z = zmax + 1e-3 * max(units_per_px * w, 1.0)
+    fg = "white" if bg_dark else "black"
+    half = length / 2
+    for i, col in enumerate((fg, "gray")):
+        x = wx + i * half
+        quad = pv.Rectangle([[x, wy, z], [x + half, wy, z], [x + half, wy + thick_px * units_per_px, z]])
+        pl.add_mesh(quad, color=col, lighting=False, show_edges=False)
+    label = f"{length:g} {units}"
+    pl.add_text(label, position=(x0_px, y0_px + thick_px + 4), font_size=max(8, h // 70), color=fg)
+    pl.add_text("N ^", position=(x0_px, h - 20 - max(8, h // 70) * 2), font_size=max(8, h // 70), color=fg)
+
+
+def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pose] | None = None) -> np.ndarray:
+    """Render a cloud or mesh off-screen.
+
+    Parameters
+    ----------
+    obj : Cloud or Mesh
+    params : RenderParams
+    camera : (Camera, Pose), optional
+        Exact pinhole camera; ``params.size`` is then the camera's image size.
+
+    Returns
+    -------
+    (height, width, 3) uint8 image, row 0 at the top.
+    """
+    from workstation.interop.pyvista import cloud_to_polydata, mesh_to_polydata, pyvista_offscreen
+
+    if not isinstance(obj, (Cloud, Mesh)):
+        raise InvalidInputError(f"cannot render a {type(obj).__name__}", "pass a Cloud or a Mesh")
+    is_cloud = isinstance(obj, Cloud)
+    if (obj.n if is_cloud else obj.n_faces) == 0:
+        raise InvalidInputError("nothing to render: empty cloud or mesh")
+    pv = pyvista_offscreen()
+    size = (int(camera[0].width), int(camera[0].height)) if camera else (int(params.size[0]), int(params.size[1]))
+    if is_cloud:
+        obj = _subset(obj, params.max_points)
+    kind, rgb, scalars, legend = _scalar_colors(obj, params)
+    xyz = obj.xyz if is_cloud else obj.vertices
+    lo, hi = xyz.min(axis=0), xyz.max(axis=0)  # once, in float64
+    origin = np.round(0.5 * (lo + hi))
+    lo, hi = lo - origin, hi - origin
+    poly, _ = cloud_to_polydata(obj, origin) if is_cloud else mesh_to_polydata(obj, origin)
+    n_points = obj.n if is_cloud else obj.n_vertices
+    pl = pv.Plotter(off_screen=True, window_size=list(size), lighting=None if is_cloud else "light kit")
+    try:
+        pl.set_background(params.background)
+        bg = np.asarray(pv.Color(params.background).float_rgb)
+        kw = dict(lighting=not is_cloud, show_scalar_bar=False)
+        if is_cloud:
+            kw.update(style="points", point_size=_point_size(params, lo, hi, n_points, size), render_points_as_spheres=False)
+        else:
+            kw.update(smooth_shading=True)
+        if rgb is not None:
+            if kind == "class-face":
+                poly.cell_data["_rgb"] = rgb
+            else:
+                poly.point_data["_rgb"] = rgb
+            pl.add_mesh(poly, scalars="_rgb", rgb=True, **kw)
+        elif scalars is not None:
+            sample = scalars if scalars.size <= 1_000_000 else scalars[
+                np.random.default_rng(0).choice(scalars.size, 1_000_000, replace=False)]
+            finite = sample[np.isfinite(sample)]
+            vmin, vmax = (np.percentile(finite, [params.clip_percent, 100 - params.clip_percent]) if finite.size
+                      else (0.0, 1.0))
+            if vmax <= vmin:
+                vmax = vmin + 1.0
+            poly.point_data["_s"] = scalars
+            cmap = params.cmap or ("gray" if kind == "intensity" else "viridis")
+            pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(vmin), float(vmax)], **kw)
+            if params.legend:
+                fg = "white" if bg.mean() < 0.5 else "black"
+                pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.8, position_y=0.1,
+                                  width=0.05, height=0.7, n_labels=5, fmt="%.4g",
+                                  title_font_size=max(6, size[1] // 40), label_font_size=max(6, size[1] // 45))
+        else:
+            pl.add_mesh(poly, color="lightgray", **kw)
+        if kind.startswith("class") and params.legend and legend:
+            lw, lh = 0.34, min(0.055 * len(legend), 0.6)
+            actor = pl.add_legend(labels=[[name, col] for name, col in legend], bcolor=tuple(bg), border=True,
+                                  loc="upper right", size=(lw, lh), face="rectangle")
+            actor.SetPosition(1 - lw - 0.01, 1 - lh - 0.01)  # pyvista places it as if 0.2 wide
+        if camera is not None:
+            _set_pinhole(pl, camera[0], camera[1], origin, lo, hi)
+        else:
+            upp = _fit_view(pl, params.view, lo, hi, size, params.margin)
+            if params.view == "top" and params.scale_bar and upp:
+                _draw_scale_bar(pl, pv, upp, size, 0.5 * (lo + hi), float(hi[2]), _units(obj.crs),
+                                bg.mean() < 0.5)
+        if is_cloud and params.edl:
+            pl.enable_eye_dome_lighting()
+        img = pl.screenshot(return_img=True)
+    finally:
+        pl.close()
+    if img is None or img.shape[:2] != (size[1], size[0]):
+        raise StageError("render", "VTK returned no image", "check the OpenGL (EGL/OSMesa) libraries")
+    return np.ascontiguousarray(img[:, :, :3])
+
+
+def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pose]:
+    """The (Camera, Pose) of one oriented image of a reconstruction, for ``render(camera=...)``.
+
+    The render then matches the photo pixel for pixel (distortion aside: renders are ideal
+    pinhole images; undistort the photo to compare).
+    """
+    if image_id not in rec.images:
+        raise InvalidInputError(f"image {image_id} is not in the reconstruction",
+                                "ids: " + ", ".join(str(k) for k in sorted(rec.images)[:20]), field="image_id")
+    im = rec.images[image_id]
+    if im.camera_id not in rec.cameras:
+        raise InvalidInputError(f"camera {im.camera_id} of image {image_id} is missing", field="cameras")
+    return rec.cameras[im.camera_id], im.pose
+
+
+def turntable(obj, params: RenderParams = RenderParams(), frames: int = 36, elevation_deg: float = 25.0):
+    """Frames (list of (h, w, 3) uint8) of the camera orbiting the object once.
+
+    The camera circles the bounding-box centre at ``elevation_deg`` above the horizon,
+    starting from the south, counter-clockwise seen from above, ``frames`` equal steps.
+    """
+    if frames < 1:
+        raise InvalidInputError("frames must be >= 1", field="frames")
+    xyz = obj.xyz if isinstance(obj, Cloud) else obj.vertices
+    lo, hi = xyz.min(axis=0), xyz.max(axis=0)
+    centre = 0.5 * (lo + hi)
+    r = 0.5 * float(np.linalg.norm(hi - lo)) * (1 + 2 * params.margin)
+    w, h = params.size
+    half = math.radians(15)
+    dist = r / math.sin(min(half, math.atan(math.tan(half) * w / h)))
+    f = (h / 2) / math.tan(half)  # 30 degree vertical field of view
+    cam = Camera(int(w), int(h), f, f, (w - 1) / 2, (h - 1) / 2)
+    out = []
+    el = math.radians(elevation_deg)
+    for i in range(frames):
+        az = 2 * math.pi * i / frames - math.pi / 2
+        C = centre + dist * np.array([math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)])
+        fwd = centre - C
+        fwd /= np.linalg.norm(fwd)
+        right = np.cross(fwd, [0.0, 0.0, 1.0])
+        right /= np.linalg.norm(right)
+        down = np.cross(fwd, right)
+        R = np.vstack([right, down, fwd])
+        out.append(render(obj, params, camera=(cam, Pose(R, -R @ C))))
+    return out
+
+
+def save_png(img: np.ndarray, path, overwrite: bool = False, inputs=()):
+    """Write an (h, w, 3|4) uint8 image as PNG atomically."""
+    from PIL import Image as PILImage
+
+    from workstation.io import atomic_path
+
+    with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
+        PILImage.fromarray(np.asarray(img, dtype=np.uint8)).save(tmp, format="PNG", optimize=True)
+    return path
+
+
+def save_gif(frames, path, fps: float = 12.0, overwrite: bool = False, inputs=()):
+    """Write frames as a looping GIF atomically (adaptive palette per frame)."""
+    from PIL import Image as PILImage
+
+    from workstation.io import atomic_path
+
+    if not frames:
+        raise InvalidInputError("no frames to write")
+    ims = [PILImage.fromarray(np.asarray(f, dtype=np.uint8)) for f in frames]
+    with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
+        ims[0].save(tmp, format="GIF", save_all=True, append_images=ims[1:], duration=int(1000 / fps), loop=0)
+    return path

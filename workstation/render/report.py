@@ -1,0 +1,402 @@
+"""One self-contained HTML page for a work folder: inputs, stages, figures, renders and plots.
+
+Everything is inlined (images as base64 PNG, no scripts, no external files), so the page can
+be mailed or archived. Sections, in order: products found (clouds, meshes, rasters, JSON),
+stages (from ``run.json``, other ``*.json`` records and the clouds' ``history``), renders of
+clouds (top view) and meshes (iso view), plots (class histograms, confusion matrices
+found in JSON files, hillshades of elevation rasters and error maps), and the PNG images
+already in the folder.
+"""
+
+from __future__ import annotations
+
+import base64
+import datetime as _dt
+import html
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError
+from workstation.core.log import get_logger
+
+log = get_logger(__name__)
+
+CLOUD_EXT = (".las", ".laz", ".ply", ".pcd", ".xyz", ".txt", ".csv", ".pts", ".e57")
+MESH_EXT = (".obj", ".glb", ".gltf", ".off")
+RASTER_EXT = (".tif", ".tiff")
+
+
+@dataclass(frozen=True)
+class ReportParams:
+    """Report settings.
+
+    Attributes
+    ----------
+    render_size : (int, int)
+        Size of each render in pixels.
+    max_points : int
+        Points drawn per cloud render (seeded random subset above; count).
+    max_files : int
+        Clouds, meshes and rasters rendered at most, each (count).
+    max_depth : int
+        Folder levels searched below the work folder (count).
+    """
+
+    render_size: tuple[int, int] = (640, 480)
+    max_points: int = 2_000_000
+    max_files: int = 12
+    max_depth: int = 3
+
+
+def _png_b64(img: np.ndarray) -> str:
+    from PIL import Image as PILImage
+
+    buf = io.BytesIO()
+    PILImage.fromarray(np.asarray(img, dtype=np.uint8)).save(buf, format="PNG", optimize=True)
+    return base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def _fig_b64(fig) -> str:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+    return base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def _img(b64: str, alt: str) -> str:
+    return f'<figure><img alt="{html.escape(alt)}" src="data:image/png;base64,{b64}"><figcaption>{html.escape(alt)}</figcaption></figure>'
+
+
+def _fmt(v) -> str:
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    if isinstance(v, (list, tuple)) and len(v) > 8:
+        return html.escape(json.dumps(v[:8])[:-1] + ", ...]")
+    if isinstance(v, (dict, list, tuple)):
+        s = json.dumps(v, default=str)
+        return html.escape(s if len(s) < 300 else s[:300] + "...")
+    return html.escape(str(v))
+
+
+def _table(rows, header=("", "")) -> str:
+    h = "".join(f"<th>{html.escape(str(c))}</th>" for c in header)
+    body = "".join("<tr>" + "".join(f"<td>{_fmt(c)}</td>" for c in r) + "</tr>" for r in rows)
+    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def _flatten(d, prefix="", out=None, limit=60):
+    out = [] if out is None else out
+    if isinstance(d, dict):
+        for k, v in d.items():
+            if len(out) >= limit:
+                break
+            _flatten(v, f"{prefix}{k}.", out, limit)
+    elif prefix:
+        out.append((prefix[:-1], d))
+    return out
+
+
+def _find(root: Path, exts, max_depth: int) -> list[Path]:
+    found = []
+    for p in sorted(root.rglob("*")):
+        if not p.is_file() or p.name.startswith("."):
+            continue
+        if len(p.relative_to(root).parts) - 1 > max_depth:
+            continue
+        if p.suffix.lower() in exts:
+            found.append(p)
+    return found
+
+
+def _stage_rows(doc) -> list[tuple]:
+    """(stage, seconds, parameters, summary) rows from a run.json-like document."""
+    rows = []
+    stages = None
+    if isinstance(doc, dict):
+        for key in ("stages", "steps", "history"):
+            if isinstance(doc.get(key), list):
+                stages = doc[key]
+                break
+        if stages is None and isinstance(doc.get("stages"), dict):
+            stages = [{"name": k, **(v if isinstance(v, dict) else {"value": v})} for k, v in doc["stages"].items()]
+    elif isinstance(doc, list):
+        stages = doc
+    for s in stages or []:
+        if not isinstance(s, dict):
+            continue
+        name = s.get("name") or s.get("stage") or "?"
+        secs = s.get("seconds", s.get("time_s", s.get("duration")))
+        params = s.get("params", s.get("parameters", {}))
+        summary = s.get("summary", s.get("outputs", s.get("result", {})))
+        rows.append((name, secs if secs is not None else "", params, summary))
+    return rows
+
+
+def _confusion(doc):
+    """(matrix, labels) of the first confusion matrix found in a JSON document, or None."""
+    stack = [doc]
+    while stack:
+        d = stack.pop()
+        if isinstance(d, dict):
+            for k, v in d.items():
+                if "confusion" in str(k).lower() and isinstance(v, (list, dict)):
+                    m = v.get("matrix") if isinstance(v, dict) else v
+                    try:
+                        a = np.asarray(m, dtype=float)
+                    except (TypeError, ValueError):
+                        a = None
+                    if a is not None and a.ndim == 2 and a.shape[0] == a.shape[1] and a.shape[0] > 1:
+                        labels = (v.get("labels") or v.get("classes")) if isinstance(v, dict) else None
+                        labels = labels or d.get("labels") or d.get("classes")
+                        if not isinstance(labels, list) or len(labels) != a.shape[0]:
+                            labels = [str(i) for i in range(a.shape[0])]
+                        return a, [str(x) for x in labels]
+                stack.append(v)
+        elif isinstance(d, list):
+            stack.extend(x for x in d if isinstance(x, (dict, list)))
+    return None
+
+
+def _plot_confusion(m: np.ndarray, labels, title: str) -> str:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(1.2 + 0.8 * len(labels), 1 + 0.7 * len(labels)))
+    ax.imshow(m, cmap="Blues")
+    for i in range(m.shape[0]):
+        for j in range(m.shape[1]):
+            ax.text(j, i, f"{m[i, j]:.4g}", ha="center", va="center",
+                    color="white" if m[i, j] > 0.6 * m.max() else "black", fontsize=9)
+    ax.set_xticks(range(len(labels)), labels, rotation=45, ha="right")
+    ax.set_yticks(range(len(labels)), labels)
+    ax.set_xlabel("predicted")
+    ax.set_ylabel("reference")
+    ax.set_title(title)
+    return _fig_b64(fig)
+
+
+def _plot_class_histogram(codes: np.ndarray, title: str) -> str:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from workstation.core.classes import CLASS_COLORS, class_name
+
+    k, n = np.unique(np.asarray(codes), return_counts=True)
+    fig, ax = plt.subplots(figsize=(6, 0.5 + 0.35 * len(k)))
+    cols = [np.array(CLASS_COLORS.get(int(c), (128, 128, 128))) / 255 for c in k]
+    ax.barh([f"{int(c)} {class_name(int(c))}" for c in k], n, color=cols, edgecolor="black")
+    for y, v in enumerate(n):
+        ax.text(v, y, f" {v:,} ({100 * v / n.sum():.1f} %)", va="center", fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlabel("points")
+    ax.set_title(title)
+    ax.margins(x=0.3)
+    return _fig_b64(fig)
+
+
+def hillshade(z: np.ndarray, cell: float, azimuth_deg: float = 315.0, altitude_deg: float = 45.0) -> np.ndarray:
+    """Hillshade (rows, cols) in [0, 1] of an elevation grid (Horn's gradient via numpy).
+
+    Parameters
+    ----------
+    z : (rows, cols) float, NaN for no data
+    cell : float
+        Cell size in the elevation's units.
+    """
+    z = np.asarray(z, dtype=np.float64)
+    zf = np.where(np.isfinite(z), z, np.nanmean(z) if np.isfinite(z).any() else 0.0)
+    gy, gx = np.gradient(zf, cell)
+    slope = np.arctan(np.hypot(gx, gy))
+    aspect = np.arctan2(-gx, gy)
+    az, alt = np.radians(360.0 - azimuth_deg + 90.0), np.radians(altitude_deg)
+    hs = np.sin(alt) * np.cos(slope) + np.cos(alt) * np.sin(slope) * np.cos(az - aspect)
+    return np.where(np.isfinite(z), np.clip(hs, 0, 1), np.nan)
+
+
+def _plot_raster(path: Path) -> tuple[str, str] | None:
+    """(caption, b64 png) for a GeoTIFF: hillshade for elevation, diverging map for errors."""
+    try:
+        import rasterio
+    except ImportError:  # pragma: no cover - declared dependency
+        return None
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    with rasterio.open(path) as ds:
+        a = ds.read(1, masked=True).astype(np.float64).filled(np.nan)
+        cell = abs(ds.transform.a) or 1.0
+        bands = ds.count
+    name = path.stem.lower()
+    fig, ax = plt.subplots(figsize=(6, 6 * a.shape[0] / max(a.shape[1], 1) + 0.5))
+    if any(w in name for w in ("error", "diff", "residual", "dod")):
+        lim = np.nanpercentile(np.abs(a), 98) if np.isfinite(a).any() else 1.0
+        im = ax.imshow(a, cmap="RdBu_r", vmin=-lim, vmax=lim)
+        fig.colorbar(im, ax=ax, shrink=0.7, label="error")
+        cap = f"{path.name}: error map"
+    elif "hillshade" in name or bands > 1:
+        ax.imshow(a, cmap="gray")
+        cap = f"{path.name}"
+    else:
+        ax.imshow(hillshade(a, cell), cmap="gray", vmin=0, vmax=1)
+        im = ax.imshow(a, cmap="terrain", alpha=0.45)
+        fig.colorbar(im, ax=ax, shrink=0.7, label="elevation")
+        cap = f"{path.name}: hillshade (315°/45°) with elevation tint"
+    ax.set_axis_off()
+    return cap, _fig_b64(fig)
+
+
+CSS = """
+body{font-family:system-ui,sans-serif;margin:2em auto;max-width:1100px;color:#222}
+h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}
+table{border-collapse:collapse;margin:.5em 0;font-size:.85em}td,th{border:1px solid #ddd;padding:.25em .5em;
+text-align:left;vertical-align:top;max-width:520px;overflow-wrap:anywhere}th{background:#f3f3f3}
+figure{display:inline-block;margin:.5em;vertical-align:top}figcaption{font-size:.85em;color:#555}
+img{max-width:100%;border:1px solid #ddd}.note{color:#777;font-size:.85em}
+"""
+
+
+def build_report(workdir, params: ReportParams = ReportParams()) -> str:
+    """The HTML text of the report of ``workdir`` (see the module docstring).
+
+    Raises
+    ------
+    InvalidInputError
+        When ``workdir`` is not a folder.
+    """
+    from workstation.render.load import is_mesh_file
+    from workstation.render.render import RenderParams, render
+
+    root = Path(workdir)
+    if not root.is_dir():
+        raise InvalidInputError("not a folder", "give the work folder of a run", path=root)
+    parts = [f"<h1>Report: {html.escape(root.resolve().name)}</h1>",
+             f'<p class="note">{html.escape(str(root.resolve()))} — generated '
+             f'{_dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}</p>']
+    jsons = _find(root, (".json",), params.max_depth)
+    clouds = [p for p in _find(root, CLOUD_EXT, params.max_depth) if not is_mesh_file(p)]
+    meshes = [p for p in _find(root, CLOUD_EXT + MESH_EXT, params.max_depth) if is_mesh_file(p)]
+    rasters = _find(root, RASTER_EXT, params.max_depth)
+
+    # products
+    rows = [(str(p.relative_to(root)), kind, f"{p.stat().st_size / 1e6:.2f} MB")
+            for kind, lst in (("cloud", clouds), ("mesh", meshes), ("raster", rasters), ("record", jsons)) for p in lst]
+    parts.append("<h2>Products</h2>" + (_table(rows, ("file", "kind", "size")) if rows else "<p>No products found.</p>"))
+
+    # stages from run.json and other records
+    stage_html = []
+    for p in jsons:
+        try:
+            doc = json.loads(p.read_text())
+        except (OSError, ValueError) as e:
+            stage_html.append(f'<p class="note">{html.escape(p.name)}: unreadable ({html.escape(str(e))})</p>')
+            continue
+        srows = _stage_rows(doc)
+        title = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>"
+        if srows:
+            stage_html.append(title + _table(srows, ("stage", "seconds", "parameters", "summary")))
+        rest = {k: v for k, v in doc.items() if k not in ("stages", "steps", "history")} if isinstance(doc, dict) else doc
+        flat = [(k, v) for k, v in _flatten(rest) if not isinstance(v, (dict,))]
+        if flat:
+            stage_html.append(title + f"<details><summary>{len(flat)} figures</summary>"
+                              + _table(flat, ("figure", "value")) + "</details>")
+        cm = _confusion(doc)
+        if cm is not None:
+            stage_html.append(_img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({p.name})"),
+                                   f"Confusion matrix from {p.name}"))
+    parts.append("<h2>Stages and figures</h2>" + ("".join(stage_html) or "<p>No JSON records found.</p>"))
+
+    # clouds: summary, history, render, class histogram
+    from workstation.io import read_cloud
+    from workstation.io.mesh import read_mesh
+
+    cloud_html = []
+    seen: dict = {}
+    for p in clouds[: params.max_files]:
+        try:
+            c = read_cloud(p)
+        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
+            cloud_html.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(e))})</p>')
+            continue
+        sig = (c.n, tuple(np.round(c.xyz[:3].ravel(), 6)))
+        if sig in seen:
+            cloud_html.append(f'<p class="note">{html.escape(str(p.relative_to(root)))}: the same points as '
+                              f'{html.escape(seen[sig])} (not drawn again)</p>')
+            continue
+        seen[sig] = str(p.relative_to(root))
+        lo, hi = c.bounds
+        info = [("points", c.n), ("CRS", (c.crs or "none")[:80]), ("min", np.round(lo, 3).tolist()),
+                ("max", np.round(hi, 3).tolist()), ("dimensions", ", ".join(c.dims))]
+        block = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
+        hist = [(h.stage, h.seconds if h.seconds is not None else "", dict(h.params)) for h in c.history]
+        if hist:
+            block += _table(hist, ("history stage", "seconds", "parameters"))
+        col = "class" if "classification" in c.attrs and len(np.unique(c.attrs["classification"])) > 1 else "auto"
+        figs = []
+        try:
+            img = render(c, RenderParams(size=params.render_size, view="top", color=col, max_points=params.max_points))
+            figs.append(_img(_png_b64(img), f"{p.name}: top view, colour {col}"))
+        except Exception as e:  # noqa: BLE001
+            block += f'<p class="note">render failed: {html.escape(str(e))}</p>'
+        if "classification" in c.attrs:
+            figs.append(_img(_plot_class_histogram(c.attrs["classification"], p.name), f"{p.name}: classes"))
+        cloud_html.append(block + "".join(figs))
+    parts.append("<h2>Clouds</h2>" + ("".join(cloud_html) or "<p>No clouds found.</p>"))
+
+    mesh_html = []
+    for p in meshes[: params.max_files]:
+        try:
+            m = read_mesh(p)
+            img = render(m, RenderParams(size=params.render_size, view="iso"))
+        except Exception as e:  # noqa: BLE001
+            mesh_html.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
+            continue
+        info = [("faces", m.n_faces), ("vertices", m.n_vertices), ("area", float(m.face_areas().sum())),
+                ("vertex attributes", ", ".join(m.vertex_attrs))]
+        mesh_html.append(f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
+                         + _img(_png_b64(img), f"{p.name}: iso view"))
+    parts.append("<h2>Meshes</h2>" + ("".join(mesh_html) or "<p>No meshes found.</p>"))
+
+    raster_html = []
+    for p in rasters[: params.max_files]:
+        try:
+            r = _plot_raster(p)
+        except Exception as e:  # noqa: BLE001
+            raster_html.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
+            continue
+        if r:
+            raster_html.append(_img(r[1], r[0]))
+    if raster_html:
+        parts.append("<h2>Rasters</h2>" + "".join(raster_html))
+    pngs = [p for p in _find(root, (".png",), params.max_depth) if p.stat().st_size <= 2_000_000]
+    if pngs:
+        parts.append("<h2>Images in the folder</h2>" + "".join(
+            _img(base64.b64encode(p.read_bytes()).decode("ascii"), str(p.relative_to(root)))
+            for p in pngs[: params.max_files]))
+    return ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
+            f"<title>Report: {html.escape(root.resolve().name)}</title><style>{CSS}</style></head><body>"
+            + "\n".join(parts) + "</body></html>\n")
+
+
+def write_report(workdir, output, overwrite: bool = False, params: ReportParams = ReportParams()) -> Path:
+    """Build the report of ``workdir`` and write it atomically to ``output`` (.html)."""
+    from workstation.io import atomic_path
+
+    out = Path(output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise InvalidInputError("the report must be an .html file", path=out)
+    text = build_report(workdir, params)
+    with atomic_path(out, overwrite=overwrite) as tmp:
+        tmp.write_text(text, encoding="utf-8")
+    return out
