@@ -83,7 +83,8 @@ def _render(cloud_xyz, rgb, path, title):
     plt.close(fig)
 
 
-def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 2, min_ncc: float = 0.5) -> None:
+def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 1, min_ncc: float = 0.4,
+              fusion_min_pixels: int = 2) -> None:
     from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
@@ -101,7 +102,8 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
         run_sfm(rigdir / "images", sfmdir, params=SfMParams(), overwrite=True)
     t_sfm = time.perf_counter() - t0
     c0, t0 = time.process_time(), time.perf_counter()
-    cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc),
+    cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc,
+                                                                      fusion_min_pixels=fusion_min_pixels),
                                overwrite=True)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     true = read_reconstruction(rigdir / "cameras.json")
@@ -114,7 +116,7 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     cams = [(true.cameras[im.camera_id], im.pose) for im in true.images.values()]
     samples = _surface_samples(T["vertices"], T["faces"], T["target"], cams)
     ev = evaluate(xyz, T["vertices"], T["faces"], float(T["extent"]), samples)
-    _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "registered": len(pairs), "images": len(true.images),
+    _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels, "registered": len(pairs), "images": len(true.images),
            "render_s": round(t_render, 1), "sfm_s": round(t_sfm, 1), "dense_wall_s": round(wall, 1),
            "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
            "samples": len(samples), "summary": summary["timings_s"]})
@@ -193,13 +195,14 @@ def main() -> None:
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--render")
     ap.add_argument("--size", type=int, default=1536)
-    ap.add_argument("--min-consistent", type=int, default=2)
-    ap.add_argument("--min-ncc", type=float, default=0.5)
+    ap.add_argument("--min-consistent", type=int, default=1)
+    ap.add_argument("--min-ncc", type=float, default=0.4)
+    ap.add_argument("--fusion-min-pixels", type=int, default=2)
     a = ap.parse_args()
     work = Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     if a.what == "rig":
-        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc)
+        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels)
     elif a.what == "temple":
         bench_temple(work, a.render)
     else:

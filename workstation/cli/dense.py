@@ -16,8 +16,8 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU plane sweep.")
 @click.option("--max-image-size", type=int, default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
 @click.option("--sources", "num_sources", type=int, default=5, show_default=True, help="Source views per reference image (CPU path).")
-@click.option("--min-ncc", type=float, default=0.5, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
-@click.option("--min-consistent", type=int, default=2, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
+@click.option("--min-ncc", type=float, default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
+@click.option("--min-consistent", type=int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
 @click.option("--depth-range", nargs=2, type=float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
 @overwrite_option
 @json_option

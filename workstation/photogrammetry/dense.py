@@ -83,7 +83,8 @@ class DenseParams:
         (near, far) depth in model units for every image; by default from the sparse points
         seen by each image (needed when the model has no 3-D points, e.g. true rig cameras).
     fusion_min_pixels : int
-        ``StereoFusionOptions.min_num_pixels``.
+        ``StereoFusionOptions.min_num_pixels``: pixels (in different images) that must agree
+        for a fused point; itself a multi-view consistency check.
     num_threads : int
         OpenCV / fusion threads (-1: all).
     """
@@ -93,16 +94,16 @@ class DenseParams:
     num_sources: int = 5
     top_k: int = 2
     window: int = 7
-    min_ncc: float = 0.5
+    min_ncc: float = 0.4
     max_planes: int = 192
     plane_step_px: float = 1.0
     min_angle_deg: float = 2.0
     max_angle_deg: float = 45.0
-    min_consistent: int = 2
+    min_consistent: int = 1
     max_reproj_px: float = 1.0
     max_rel_depth: float = 0.01
     min_texture: float = 2.0
-    fusion_min_pixels: int = 3
+    fusion_min_pixels: int = 2
     num_threads: int = -1
     depth_range: tuple | None = None
 
