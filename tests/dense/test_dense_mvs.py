@@ -7,7 +7,12 @@ import pytest
 
 from workstation.core.products import Camera, Image, Reconstruction
 from workstation.photogrammetry.dense import DenseParams, read_array, write_array
-from workstation.photogrammetry.rigs import look_at, render, write_colmap_text
+from workstation.photogrammetry.rigs import (
+    box_wall_scene,
+    look_at,
+    render,
+    write_colmap_text,
+)
 
 
 def test_dense_array_roundtrip_and_layout(tmp_path):
@@ -27,16 +32,7 @@ def test_dense_array_roundtrip_and_layout(tmp_path):
 
 
 def _box_scene():
-    """A textured wall at y = 12 and a 2 m box in front of it, z up; extent ≈ 16 m."""
-    V = [[-8, 12, -5], [8, 12, -5], [8, 12, 7], [-8, 12, 7]]
-    F = [[0, 1, 2], [0, 2, 3]]
-    b = np.array([[x, y, z] for z in (-1, 1) for y in (8, 10) for x in (-1, 1)], float)
-    V = np.vstack([V, b])
-    q = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
-    for a, bb, c, dd in q:
-        F += [[4 + a, 4 + bb, 4 + c], [4 + a, 4 + c, 4 + dd]]
-    F = np.asarray(F, np.int64)
-    return V, F, np.full((len(F), 3), 0.8)
+    return box_wall_scene()
 
 
 def _rig(n=4, w=160, h=120, f=150.0):

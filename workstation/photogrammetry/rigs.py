@@ -368,6 +368,39 @@ def make_rig(recipe, spec: RigSpec, outdir, overwrite: bool = False) -> RigResul
     return RigResult(out, rec, V, F, origin, extent, tmask)
 
 
+def box_wall_scene() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A compact test scene: a 16 × 12 m textured wall at y = 12 m and a 2 m box in front of it
+    (y 8-10 m), z up. Returns (vertices (n, 3), faces (m, 3), albedo (m, 3) in 0-1)."""
+    V = [[-8, 12, -5], [8, 12, -5], [8, 12, 7], [-8, 12, 7]]
+    F = [[0, 1, 2], [0, 2, 3]]
+    b = np.array([[x, y, z] for z in (-1, 1) for y in (8, 10) for x in (-1, 1)], float)
+    V = np.vstack([V, b])
+    for a, bb, c, dd in [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]:
+        F += [[4 + a, 4 + bb, 4 + c], [4 + a, 4 + c, 4 + dd]]
+    F = np.asarray(F, np.int64)
+    return V, F, np.full((len(F), 3), 0.8)
+
+
+def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_px: float = 150.0) -> Reconstruction:
+    """Render :func:`box_wall_scene` from ``n`` cameras on a 5 m baseline looking at the box into
+    ``folder/images`` and write the true cameras as ``folder/sparse/0`` (a tiny rig for tests
+    and the demo; depth range 5-20 m)."""
+    import cv2
+
+    V, F, alb = box_wall_scene()
+    cam = Camera(width, height, focal_px, focal_px, (width - 1) / 2, (height - 1) / 2)
+    folder = Path(folder)
+    (folder / "images").mkdir(parents=True, exist_ok=True)
+    images = {}
+    for k, x in enumerate(np.linspace(-2.5, 2.5, n), start=1):
+        pose = look_at(np.array([x, 0.0, 0.5 * ((k - 1) % 2)]), np.array([0.0, 10.0, 0.0]))
+        cv2.imwrite(str(folder / "images" / f"im{k}.png"), render(V, F, alb, cam, pose, 2)[:, :, ::-1])
+        images[k] = Image(f"im{k}.png", 1, pose)
+    rec = Reconstruction({1: cam}, images)
+    write_colmap_text(rec, folder / "sparse" / "0")
+    return rec
+
+
 def load_truth(folder) -> dict:
     """The true mesh of a rendered rig: ``vertices``, ``faces``, ``target``, ``origin``, ``extent``."""
     with np.load(Path(folder) / "truth_mesh.npz") as z:
@@ -378,6 +411,8 @@ __all__ = [
     "LAYOUTS",
     "RigResult",
     "RigSpec",
+    "box_wall_rig",
+    "box_wall_scene",
     "load_rig",
     "load_truth",
     "look_at",
