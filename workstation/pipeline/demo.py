@@ -21,6 +21,8 @@ log = get_logger(__name__)
 STEPS: list[tuple[str, str]] = [
     ("synthetic cloud, convert, info", "workstation.pipeline.demo_steps.foundation:step"),
     ("LiDAR simulation: ALS flight and TLS stations", "workstation.pipeline.demo_steps.simulate:step"),
+    ("ground filtering (SMRF) and its evaluation against the truth", "workstation.pipeline.demo_steps.ground:step"),
+    ("point classifier (shipped model)", "workstation.pipeline.demo_steps.classify:step"),
     ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
     ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
     ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),

@@ -1,0 +1,125 @@
+"""Benchmark of the point classifier: speed and the issue's real-data goals.
+
+Prints one JSON line per result. Usage::
+
+    PYTHONPATH=. python scripts/bench_classify.py speed              # inference points/s
+    PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
+    PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
+    PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
+
+Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+DATA = Path(os.environ.get("WS_SHARED_DATA", REPO.parent / "shared" / "data"))
+
+
+def emit(**kw):
+    print(json.dumps(kw, default=float), flush=True)
+
+
+def speed(model=None):
+    """Inference rate (features + network) on bcts_1 + bcts_2 (1.36 M points)."""
+    from workstation.core.cloud import concatenate
+    from workstation.io import read_cloud
+    from workstation.ml.classifier import PointClassifier
+
+    clf = PointClassifier.load(model, device="cpu")
+    cloud = concatenate([read_cloud(DATA / "lidar" / "bcts_1.laz"), read_cloud(DATA / "lidar" / "bcts_2.laz")])
+    clf.classify(cloud[:20000])  # warm-up (imports)
+    best = None
+    for _ in range(2):
+        t0, c0 = time.perf_counter(), time.process_time()
+        clf.classify(cloud)
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        if best is None or wall < best[0]:
+            best = (wall, cpu)
+    wall, cpu = best
+    emit(bench="classify_speed", points=cloud.n, seconds=wall, points_per_s=cloud.n / wall, cpu_seconds=cpu,
+         cpu_points_per_core_s=cloud.n / cpu, load_avg=os.getloadavg()[0], cores=os.cpu_count())
+
+
+def goals(clf, label):
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.ml.realdata import BUILDING_FILES, DTM_FILES, isprs_scores, tile_scores
+
+    s = isprs_scores(lambda c: clf.predict(c) == C.GROUND, DATA / "isprs")
+    emit(bench="isprs", model=label, **{k: (v if not isinstance(v, dict) else {a: round(b, 2) for a, b in v.items()})
+                                         for k, v in s.items()})
+    for f in DTM_FILES + BUILDING_FILES:
+        t0 = time.perf_counter()
+        r = tile_scores(clf.predict, DATA / "lidar" / f)
+        emit(bench="real_tile", model=label, file=f, seconds=time.perf_counter() - t0, **r)
+
+
+def _tileset():
+    import pickle
+
+    from workstation.ml.dataset import build_tileset, load_dataset_recipe
+
+    cache = Path(os.environ.get("WS_ML_TILESET_CACHE", "/tmp/ws_ml_tileset.pkl"))
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    if cache.exists():
+        ts = pickle.loads(cache.read_bytes())
+        if ts.info and len(ts.info) == len(recipe.recipes) * recipe.scenes_per_recipe * recipe.tiles_per_scene:
+            return ts
+    ts = build_tileset(recipe, progress=False)
+    cache.write_bytes(pickle.dumps(ts))
+    return ts
+
+
+def baseline():
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.train import split_scores
+
+    from workstation.ml.dataset import load_dataset_recipe
+    from workstation.ml.features import FEATURE_NAMES
+
+    ts = _tileset()
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    vm = ts.val[ts.tile]
+    use = np.ones(len(ts.y), bool)
+    if recipe.train.get("drop_ground_above_m") is not None:  # the same rows as the shipped MLP
+        use = ~(~vm & (ts.y == 0) & (np.abs(ts.X[:, FEATURE_NAMES.index("hag_prov")]) > recipe.train["drop_ground_above_m"]))
+    rf = PointClassifier(model="rf", seed=0, ignore_features=recipe.train.get("ignore_features", ()))
+    rf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm])
+    emit(bench="rf_fit", seconds=rf.report_.seconds, cpu_seconds=rf.report_.cpu_seconds, validation=split_scores(rf, ts.X[vm], ts.y[vm]))
+    goals(rf, "rf")
+
+
+def sim():
+    """Scores of the shipped model on the simulated validation scenes (never trained on)."""
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.train import split_scores
+
+    ts = _tileset()
+    vm = ts.val[ts.tile]
+    clf = PointClassifier.load(None, device="cpu")
+    emit(bench="sim_validation", model="mlp", **split_scores(clf, ts.X[vm], ts.y[vm]))
+
+
+if __name__ == "__main__":
+    what = sys.argv[1] if len(sys.argv) > 1 else "speed"
+    model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
+    if what == "speed":
+        speed(model)
+    elif what == "goals":
+        from workstation.ml.classifier import PointClassifier
+
+        goals(PointClassifier.load(model, device="cpu"), "mlp")
+    elif what == "baseline":
+        baseline()
+    elif what == "sim":
+        sim()
+    else:
+        raise SystemExit(f"unknown benchmark {what!r}")

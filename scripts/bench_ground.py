@@ -1,0 +1,189 @@
+"""Ground-filter benchmarks; one JSON line per result on stdout.
+
+  python scripts/bench_ground.py isprs  [--data DIR] [--methods smrf,csf,...]   per-sample ISPRS errors
+  python scripts/bench_ground.py tiles  [--data DIR] [--methods ...]           1 m TIN DTM RMSE vs the file's class 2
+  python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
+  python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
+                                        datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
+
+DIR defaults to ../shared/data (or $WS_SHARED_DATA). Timings: wall and process (CPU) seconds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from workstation.core.cloud import Cloud  # noqa: E402
+from workstation.ground.evaluate import ground_errors, read_isprs_text  # noqa: E402
+from workstation.ground.methods import ground_filter  # noqa: E402
+
+SAMPLES = ["samp11", "samp21", "samp31", "samp42", "samp51", "samp61"]
+PUBLISHED = {  # total error %, /work/shared/data/README.md
+    "axelsson_ptd": {"samp11": 10.76, "samp21": 4.25, "samp31": 4.78, "samp42": 1.62, "samp51": 2.72, "samp61": 2.08},
+    "csf_paper": {"samp11": 12.01, "samp21": 3.42, "samp31": 1.61, "samp42": 1.58, "samp51": 3.08, "samp61": 1.49},
+    "smrf_tuned": {"samp11": 9.19, "samp21": 1.47, "samp31": 1.18, "samp42": 2.04, "samp51": 1.68, "samp61": 0.88},
+}
+TILES = ["Topography.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las", "MixedConifer.laz"]
+
+
+def emit(d):
+    print(json.dumps(d), flush=True)
+
+
+def timed(fn):
+    t, c = time.perf_counter(), time.process_time()
+    out = fn()
+    return out, time.perf_counter() - t, time.process_time() - c
+
+
+def bench_isprs(data: Path, methods):
+    for m in methods:
+        tot = []
+        for s in SAMPLES:
+            ref = read_isprs_text(data / "isprs" / f"{s}.txt")
+            cloud = Cloud(ref.xyz)
+            out, wall, cpu = timed(lambda: ground_filter(cloud, m))
+            e = ground_errors(np.asarray(ref.attrs["label"]) == 0, np.asarray(out.attrs["classification"]) == 2)
+            tot.append(e.total_error)
+            emit({"bench": "isprs", "method": m, "sample": s, "type1": e.type1, "type2": e.type2,
+                  "total_error": e.total_error, "kappa": e.kappa, "seconds": wall, "cpu_seconds": cpu})
+        emit({"bench": "isprs", "method": m, "sample": "mean", "total_error": float(np.mean(tot))})
+
+
+def dtm_rmse(xyz, ours, theirs, cell):
+    """RMSE (CRS z unit) between TIN DTMs of two ground sets on a ``cell`` grid inside both hulls."""
+    from workstation.ground.common import _one_blas_thread, delaunay, tin_eval
+
+    o = xyz[:, :2].min(axis=0)
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    gx, gy = np.meshgrid(np.arange(lo[0] + cell / 2, hi[0], cell), np.arange(lo[1] + cell / 2, hi[1], cell))
+    q = np.column_stack([gx.ravel(), gy.ravel()]) - o
+    zs = []
+    for g in (ours, theirs):
+        tri = delaunay(xyz[g, :2] - o)
+        with _one_blas_thread():
+            zs.append(tin_eval(tri, xyz[g, 2], q))
+    ok = np.isfinite(zs[0]) & np.isfinite(zs[1])
+    d = zs[0][ok] - zs[1][ok]
+    return float(np.sqrt(np.mean(d * d))), int(ok.sum())
+
+
+def bench_tiles(data: Path, methods):
+    from workstation.ground.common import crs_unit_factors
+    from workstation.io import read_cloud
+
+    for f in TILES:
+        c = read_cloud(data / "lidar" / f)
+        hf, vf = crs_unit_factors(c.crs)
+        ref = np.asarray(c.attrs["classification"]) == 2
+        for m in methods:
+            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True))
+            g = np.asarray(out.attrs["classification"]) == 2
+            rmse, cells = dtm_rmse(c.xyz, g, ref, 1.0 / hf)
+            emit({"bench": "tiles", "file": f, "method": m, "dtm_rmse_m": rmse * vf, "cells": cells,
+                  "ground_ours": int(g.sum()), "ground_file": int(ref.sum()), "points": c.n,
+                  "seconds": wall, "cpu_seconds": cpu})
+
+
+def synthetic_tile(n: int, data: Path):
+    """A tile of ``n`` points: bcts_2 repeated on a grid of shifted copies with jitter."""
+    from workstation.io import read_cloud
+
+    c = read_cloud(data / "lidar" / "bcts_2.laz")
+    xyz = c.xyz - c.xyz.min(axis=0)
+    span = np.ptp(xyz[:, :2], axis=0)
+    k = int(np.ceil(n / c.n))
+    side = int(np.ceil(np.sqrt(k)))
+    rng = np.random.default_rng(0)
+    parts = []
+    for i in range(k):
+        sx, sy = (i % side) * span[0], (i // side) * span[1]
+        p = xyz + [sx, sy, 0.0]
+        parts.append(p + rng.normal(0, 0.02, p.shape))
+    allp = np.concatenate(parts)[:n]
+    rn = np.ones(n, np.uint8)
+    return Cloud(allp + [500000.0, 5000000.0, 0.0], {"return_number": rn, "number_of_returns": rn})
+
+
+def bench_speed(data: Path, methods, n: int):
+    tile = synthetic_tile(n, data)
+    for m in methods:
+        out, wall, cpu = timed(lambda: ground_filter(tile, m))
+        emit({"bench": "speed", "method": m, "points": tile.n, "seconds": wall, "cpu_seconds": cpu,
+              "points_per_s": tile.n / wall, "points_per_cpu_s": tile.n / cpu})
+        if m == "csf":
+            # the package alone at the same cloth resolution, same points
+            import CSF
+
+            from workstation.ground.csf import CSFParams, _StdoutToStderr
+
+            p = CSFParams()
+            xyz = np.ascontiguousarray(tile.xyz - tile.xyz.min(axis=0))
+
+            def pkg():
+                cs = CSF.CSF()
+                cs.params.cloth_resolution = p.cloth_resolution
+                cs.params.rigidness = p.rigidness
+                cs.params.bSloopSmooth = p.slope_smooth
+                cs.setPointCloud(xyz)
+                g, ng = CSF.VecInt(), CSF.VecInt()
+                with _StdoutToStderr():
+                    cs.do_filtering(g, ng, False)
+
+            _, wall2, cpu2 = timed(pkg)
+            emit({"bench": "speed", "method": "csf_package", "points": tile.n, "seconds": wall2, "cpu_seconds": cpu2,
+                  "points_per_s": tile.n / wall2, "points_per_cpu_s": tile.n / cpu2})
+
+
+def bench_sim(sim_dir: Path, methods):
+    """Ground/non-ground errors on simulated ALS against the simulator's classes (bare earth:
+    ground 2, water 9, road 11)."""
+    from workstation.ground.evaluate import evaluate_labels
+    from workstation.io import read_cloud
+
+    for name in ("urban", "rural", "forest", "mountain"):
+        f = sim_dir / f"{name}.laz"
+        if not f.exists():
+            continue
+        c = read_cloud(f)
+        truth = np.asarray(c.attrs["classification"])
+        for m in methods:
+            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True))
+            pred = np.asarray(out.attrs["classification"])
+            ev = evaluate_labels(truth, np.where(pred == 2, 2, 1), ground_classes=(2, 9, 11))
+            emit({"bench": "sim", "scene": name, "method": m, "points": c.n, "type1": ev.type1, "type2": ev.type2,
+                  "total_error": ev.total_error, "kappa": ev.kappa, "seconds": wall, "cpu_seconds": cpu})
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim"])
+    ap.add_argument("--sim-dir", default="sim")
+    ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
+    ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
+    ap.add_argument("--points", type=int, default=5_000_000)
+    a = ap.parse_args(argv)
+    methods = a.methods.split(",")
+    data = Path(a.data)
+    if a.what == "isprs":
+        bench_isprs(data, methods)
+    elif a.what == "tiles":
+        bench_tiles(data, methods)
+    elif a.what == "sim":
+        bench_sim(Path(a.sim_dir), methods)
+    else:
+        bench_speed(data, methods, a.points)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,79 @@
+"""`ws ground` and `ws evaluate` end to end on small files."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from ground_synth import terrain_with_boxes
+
+from workstation.cli.main import main
+from workstation.core.cloud import Cloud
+from workstation.io import read_cloud, write_cloud
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    d = tmp_path_factory.mktemp("ground_cli")
+    xyz, truth = terrain_with_boxes(seed=5, size=60.0)
+    n = xyz.shape[0]
+    src = Cloud(xyz, {"intensity": np.arange(n) % 1000}, crs="EPSG:32632")
+    write_cloud(src, d / "in.las")
+    ref = src.with_attrs(classification=np.where(truth, 2, 1))
+    write_cloud(ref, d / "ref.las")
+    # the same reference as an ISPRS text sample (label 0 ground, 1 object)
+    np.savetxt(d / "ref.txt", np.column_stack([xyz, (~truth).astype(int)]), fmt="%.3f\t%.3f\t%.3f\t%d")
+    return d, truth
+
+
+def test_ground_then_evaluate_json(files, capsys):
+    d, truth = files
+    rc = main(["ground", str(d / "in.las"), "-o", str(d / "out.las"), "--method", "smrf", "--json"])
+    assert rc == 0
+    info = json.loads(capsys.readouterr().out)
+    assert info["method"] == "smrf" and info["params"]["window"] == 18.0
+    assert info["ground_count"] == pytest.approx(int(truth.sum()), rel=0.03)
+    out = read_cloud(d / "out.las")
+    assert np.array_equal(np.asarray(out.attrs["intensity"]), np.arange(out.n) % 1000)
+    rc = main(["evaluate", str(d / "out.las"), "--reference", str(d / "ref.las"), "--json",
+               "--plot-dir", str(d / "plots")])
+    assert rc == 0
+    ev = json.loads(capsys.readouterr().out)
+    for k in ("type1", "type2", "total_error", "kappa", "confusion", "classes"):
+        assert k in ev
+    assert ev["total_error"] < 0.02 and ev["kappa"] > 0.9
+    assert ev["classes"] == [1, 2]
+    assert sum(map(sum, ev["confusion"])) == out.n
+    assert (d / "plots" / "errors_plan.png").stat().st_size > 1000
+    assert (d / "plots" / "confusion.png").stat().st_size > 1000
+    # ISPRS text reference gives the same figures
+    rc = main(["evaluate", str(d / "out.las"), "--reference", str(d / "ref.txt"), "--json"])
+    assert rc == 0
+    ev2 = json.loads(capsys.readouterr().out)
+    assert ev2["total_error"] == pytest.approx(ev["total_error"])
+
+
+def test_ground_preset_options_and_refusals(files, capsys):
+    d, _ = files
+    out = d / "out_pmf.laz"
+    rc = main(["ground", str(d / "in.las"), "-o", str(out), "--method", "pmf", "--preset", "urban",
+               "--slope", "0.4", "--hag", "--json"])
+    assert rc == 0
+    info = json.loads(capsys.readouterr().out)
+    assert info["params"]["slope"] == 0.4 and info["params"]["max_window"] == 49.0
+    c = read_cloud(out)
+    assert "hag" in c.attrs
+    # refuses to overwrite, and rejects an option of another method (usage error)
+    assert main(["ground", str(d / "in.las"), "-o", str(out), "--method", "pmf"]) == 1
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "pmf", "--rigidness", "2"]) == 2
+    capsys.readouterr()
+
+
+def test_evaluate_text_output(files, capsys):
+    d, _ = files
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "out_auto.las"), "--method", "auto"]) == 0
+    capsys.readouterr()
+    assert main(["evaluate", str(d / "out_auto.las"), "--reference", str(d / "ref.las")]) == 0
+    text = capsys.readouterr().out
+    assert "Type I" in text and "kappa" in text and "Ground" in text

@@ -1,0 +1,140 @@
+"""Each ground filter on a small synthetic terrain with box buildings and a low outlier."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from ground_synth import terrain_with_boxes
+
+from workstation.core.classes import ASPRSClass
+from workstation.core.cloud import Cloud
+from workstation.core.errors import StageError
+from workstation.ground.evaluate import ground_errors
+from workstation.ground.methods import METHOD_NAMES, ground_filter, make_params
+
+
+@pytest.fixture(scope="module")
+def scene():
+    xyz, truth = terrain_with_boxes(seed=3)
+    n = xyz.shape[0]
+    rng = np.random.default_rng(0)
+    cloud = Cloud(xyz, {"intensity": rng.integers(0, 60000, n), "gps_time": np.arange(n, dtype=float)},
+                  crs="EPSG:32632")
+    return cloud, truth
+
+
+# total error each method reaches on the synthetic scene (fails when a filter breaks)
+LIMITS = {"smrf": 0.02, "csf": 0.05, "pmf": 0.05, "ptd": 0.05, "auto": 0.02, "lowest": 0.5, "local_min": 0.1}
+
+
+@pytest.mark.parametrize("method", METHOD_NAMES)
+def test_filter_separates_boxes(scene, method):
+    cloud, truth = scene
+    out = ground_filter(cloud, method)
+    cls = np.asarray(out.attrs["classification"])
+    assert set(np.unique(cls)) <= {1, 2}
+    e = ground_errors(truth, cls == ASPRSClass.GROUND)
+    assert e.total_error < LIMITS[method], (method, e)
+    # the 30 m deep outlier is never ground
+    assert cls[-1] != ASPRSClass.GROUND
+    # attributes kept, input untouched
+    assert np.array_equal(out.attrs["intensity"], cloud.attrs["intensity"])
+    assert "classification" not in cloud.attrs
+    assert out.history[-1].stage.startswith("ground.")
+
+
+def test_roofs_are_not_ground_with_smrf(scene):
+    cloud, truth = scene
+    cls = np.asarray(ground_filter(cloud, "smrf").attrs["classification"])
+    roof = ~truth
+    roof[-1] = False
+    assert np.mean(cls[roof] == ASPRSClass.GROUND) < 0.02
+    assert np.mean(cls[truth] == ASPRSClass.GROUND) > 0.97
+
+
+def test_existing_classes_kept_unless_reclassify(scene):
+    cloud, truth = scene
+    cls = np.ones(cloud.n, np.uint8)
+    cls[:20] = ASPRSClass.WATER
+    cls[20:25] = ASPRSClass.LOW_POINT
+    c = cloud.with_attrs(classification=cls)
+    out = np.asarray(ground_filter(c, "smrf").attrs["classification"])
+    assert np.all(out[:20] == ASPRSClass.WATER)
+    assert np.all(out[20:25] == ASPRSClass.LOW_POINT)
+    out2 = np.asarray(ground_filter(c, "smrf", reclassify=True).attrs["classification"])
+    assert set(np.unique(out2[:25])) <= {1, 2}
+    assert np.mean(out2[:20][truth[:20]] == ASPRSClass.GROUND) > 0.9
+
+
+def test_last_returns_only(scene):
+    cloud, truth = scene
+    rn = np.ones(cloud.n, np.uint8)
+    nr = np.ones(cloud.n, np.uint8)
+    nr[::7] = 2  # every 7th point is a first of two returns: cannot be ground
+    out = ground_filter(cloud.with_attrs(return_number=rn, number_of_returns=nr), "smrf")
+    cls = np.asarray(out.attrs["classification"])
+    assert np.all(cls[::7] == ASPRSClass.UNCLASSIFIED)
+    out2 = ground_filter(cloud.with_attrs(return_number=rn, number_of_returns=nr), "smrf", last_returns_only=False)
+    assert np.mean(np.asarray(out2.attrs["classification"])[::7][truth[::7]] == 2) > 0.9
+
+
+def test_feet_crs_gives_the_same_classes(scene):
+    cloud, _ = scene
+    ft = 0.3048  # EPSG:2994 is in international feet
+    c_ft = Cloud(cloud.xyz / ft, dict(cloud.attrs), crs="EPSG:2994")
+    a = np.asarray(ground_filter(cloud, "smrf").attrs["classification"])
+    b = np.asarray(ground_filter(c_ft, "smrf").attrs["classification"])
+    assert np.mean(a == b) > 0.995
+    # the filters see metres: the prepared coordinates of both clouds agree
+    from workstation.ground.common import prepare
+
+    pa = prepare(cloud, "t")
+    pb = prepare(c_ft, "t")
+    assert pb.hfac == pytest.approx(ft) and pb.vfac == pytest.approx(ft)
+    np.testing.assert_allclose(pa.xyz, pb.xyz, atol=1e-6)
+
+
+def test_refuses_empty_and_all_noise(scene):
+    cloud, _ = scene
+    with pytest.raises(StageError):
+        ground_filter(cloud[np.zeros(cloud.n, bool)], "smrf")
+    noisy = cloud.with_attrs(classification=np.full(cloud.n, ASPRSClass.LOW_POINT))
+    with pytest.raises(StageError, match="usable"):
+        ground_filter(noisy, "pmf")
+
+
+def test_unknown_parameter_rejected():
+    with pytest.raises(ValueError, match="no parameter"):
+        make_params("smrf", "default", rigidness=2)
+    p = make_params("smrf", "urban", threshold=0.7)
+    assert p.threshold == 0.7 and p.window == 30.0
+
+
+def test_noise_and_hag(scene):
+    from workstation.ground.hag import height_above_ground
+    from workstation.ground.noise import classify_noise
+
+    cloud, truth = scene
+    c = classify_noise(cloud)
+    cls = np.asarray(c.attrs["classification"])
+    assert cls[-1] == ASPRSClass.LOW_POINT
+    assert np.mean(cls[:-1] == ASPRSClass.LOW_POINT) < 0.01
+    g = ground_filter(c, "smrf")
+    assert np.asarray(g.attrs["classification"])[-1] == ASPRSClass.LOW_POINT
+    h = height_above_ground(g)
+    hag = np.asarray(h.attrs["hag"])
+    assert hag.dtype == np.float32
+    roof = ~truth
+    roof[-1] = False
+    # roofs are 6 and 9 m high; ground near 0
+    assert np.median(np.abs(hag[truth])) < 0.1
+    assert 5.0 < np.median(hag[roof]) < 9.5
+    assert hag[-1] < -25
+
+
+def test_hag_needs_ground(scene):
+    from workstation.ground.hag import height_above_ground
+
+    cloud, _ = scene
+    with pytest.raises(StageError):
+        height_above_ground(cloud.with_attrs(classification=np.ones(cloud.n, np.uint8)))

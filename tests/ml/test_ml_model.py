@@ -1,0 +1,161 @@
+"""Point classifier: features, model shapes/devices, learning, persistence, attributes."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+
+from workstation.core.classes import ASPRSClass as C
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, NotFittedError
+from workstation.ml.classifier import PointClassifier
+from workstation.ml.dataset import MODEL_CLASSES
+from workstation.ml.features import FEATURE_NAMES, compute_features, sym3_eigen
+
+
+def two_class_scene(seed: int, size: float = 80.0, density: float = 3.0) -> Cloud:
+    """Gently sloping ground with noise plus flat-roofed boxes (buildings), labelled 2 / 6."""
+    rng = np.random.default_rng(seed)
+    n = int(size * size * density)
+    xy = rng.uniform(0, size, (n, 2))
+    z = 100 + 0.03 * xy[:, 0] + rng.normal(0, 0.03, n)
+    cls = np.full(n, C.GROUND, np.uint8)
+    for _ in range(4):
+        cx, cy = rng.uniform(12, size - 12, 2)
+        hx, hy = rng.uniform(4, 9, 2)
+        h = rng.uniform(4, 12)
+        inside = (np.abs(xy[:, 0] - cx) < hx) & (np.abs(xy[:, 1] - cy) < hy)
+        z[inside] = 100 + 0.03 * cx + h + rng.normal(0, 0.03, inside.sum())
+        cls[inside] = C.BUILDING
+    return Cloud(np.column_stack([xy + [500000, 5000000], z]), {"classification": cls,
+                 "intensity": rng.integers(100, 4000, n).astype(np.uint16)}, crs="EPSG:32632")
+
+
+@pytest.fixture(scope="module")
+def tiny_model():
+    t0 = time.perf_counter()
+    clf = PointClassifier(hidden=(32, 32), epochs=15, patience=15, seed=0, device="cpu")
+    clf.fit([two_class_scene(1), two_class_scene(2)], samples_per_cloud=8000)
+    clf.fit_seconds_ = time.perf_counter() - t0
+    return clf
+
+
+def test_features_shape_and_finite_on_random_points():
+    rng = np.random.default_rng(0)
+    c = Cloud(rng.uniform(0, 50, (2000, 3)))
+    F = compute_features(c)
+    assert F.shape == (2000, len(FEATURE_NAMES))
+    assert F.dtype == np.float32
+    assert np.isfinite(F).all()
+    # no echo or intensity information: the flags say so
+    assert (F[:, FEATURE_NAMES.index("has_returns")] == 0).all()
+    assert (F[:, FEATURE_NAMES.index("has_intensity")] == 0).all()
+
+
+def test_features_are_in_metres_whatever_the_crs_unit():
+    c = two_class_scene(3)
+    ft = 1200 / 3937  # US survey foot
+    c_ft = Cloud(np.asarray(c.xyz) / ft, dict(c.attrs), crs="EPSG:2992")  # Oregon Lambert, ftUS
+    F, G = compute_features(c), compute_features(c_ft)
+    i = FEATURE_NAMES.index("hag_prov")
+    assert np.percentile(np.abs(F[:, i] - G[:, i]), 95) < 0.05
+
+
+def test_closed_form_eigenvalues_match_numpy():
+    rng = np.random.default_rng(1)
+    a = rng.normal(size=(500, 3, 3))
+    a = a @ a.transpose(0, 2, 1)
+    l1, l2, l3 = sym3_eigen(a)
+    w = np.linalg.eigvalsh(a)
+    np.testing.assert_allclose(np.column_stack([l3, l2, l1]), w, atol=1e-9)
+
+
+def test_tiny_model_learns_two_class_scene_quickly(tiny_model):
+    test = two_class_scene(7)
+    pred = tiny_model.predict(test)
+    acc = (pred == np.asarray(test.attrs["classification"])).mean()
+    assert acc >= 0.95, acc
+    assert tiny_model.fit_seconds_ < 60  # a few seconds uncontended
+
+
+def test_predict_proba_shape_and_rows_sum_to_one(tiny_model):
+    c = two_class_scene(8)
+    P = tiny_model.predict_proba(c)
+    assert P.shape == (c.n, len(MODEL_CLASSES)) and P.dtype == np.float32
+    np.testing.assert_allclose(P.sum(1), 1, atol=1e-5)
+
+
+def test_cpu_and_cuda_devices_agree(tiny_model):
+    torch = pytest.importorskip("torch")
+    c = two_class_scene(9)
+    p_cpu = tiny_model.predict_proba(c)
+    if not torch.cuda.is_available():
+        assert next(tiny_model.net_.parameters()).device.type == "cpu"
+        return
+    tiny_model.device = "cuda"
+    try:
+        p_gpu = tiny_model.predict_proba(c)
+    finally:
+        tiny_model.device = "cpu"
+    np.testing.assert_allclose(p_cpu, p_gpu, atol=1e-4)
+
+
+def test_save_load_round_trip_gives_identical_predictions(tiny_model, tmp_path):
+    import torch
+
+    p = tiny_model.save(tmp_path / "m.pt")
+    payload = torch.load(p, weights_only=True)  # safe loading works
+    assert payload["format"].startswith("workstation-point-classifier")
+    back = PointClassifier.load(p, device="cpu")
+    c = two_class_scene(10)
+    np.testing.assert_array_equal(back.predict_proba(c), tiny_model.predict_proba(c))
+    np.testing.assert_array_equal(back.predict(c), tiny_model.predict(c))
+    with pytest.raises(FileExistsError):
+        tiny_model.save(p)
+
+
+def test_classify_keeps_every_other_attribute(tiny_model):
+    c = two_class_scene(11)
+    rng = np.random.default_rng(0)
+    c = c.with_attrs(gps_time=rng.uniform(0, 10, c.n), user_data=rng.integers(0, 255, c.n).astype(np.uint8))
+    out = tiny_model.classify(c)
+    assert out.n == c.n
+    np.testing.assert_array_equal(out.xyz, c.xyz)
+    for k in c.attrs:
+        if k != "classification":
+            np.testing.assert_array_equal(out.attrs[k], c.attrs[k])
+    assert out.attrs["confidence"].dtype == np.float32
+    assert ((out.attrs["confidence"] > 0) & (out.attrs["confidence"] <= 1)).all()
+    assert set(np.unique(out.attrs["classification"])) <= {int(x) for x in C}
+    # the input is untouched
+    assert "confidence" not in c.attrs
+
+
+def test_not_fitted_error_before_fit():
+    clf = PointClassifier()
+    with pytest.raises(NotFittedError):
+        clf.predict(two_class_scene(1))
+    with pytest.raises(NotFittedError):
+        clf.save("never.pt")
+
+
+def test_tiled_prediction_matches_untiled_in_the_tile_cores(tiny_model):
+    c = two_class_scene(12, size=200.0, density=1.0)
+    whole = tiny_model.predict(c)
+    tiny_model.tile_points = 15_000
+    try:
+        tiled = tiny_model.predict(c)
+    finally:
+        tiny_model.tile_points = 3_000_000
+    assert (whole == tiled).mean() > 0.98
+
+
+def test_random_forest_baseline_same_harness():
+    rf = PointClassifier(model="rf", n_estimators=20, seed=0)
+    rf.fit([two_class_scene(1)], samples_per_cloud=5000)
+    test = two_class_scene(7)
+    assert (rf.predict(test) == np.asarray(test.attrs["classification"])).mean() > 0.95
+    with pytest.raises(InvalidInputError):
+        PointClassifier(model="svm")

@@ -1,0 +1,54 @@
+"""The shipped model on real scans: the levels it measurably reaches (models/MODEL_CARD.md).
+
+Thresholds are the measured figures rounded up a little (not the issue's goals, which the
+model does not all reach; see the card). Small files only; the full set is in
+scripts/bench_classify.py.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from workstation.core.classes import ASPRSClass as C
+
+pytestmark = [pytest.mark.realdata, pytest.mark.slow]
+
+
+@pytest.fixture(scope="module")
+def shipped():
+    from workstation.ml.classifier import PointClassifier
+
+    return PointClassifier.load(None, device="cpu")
+
+
+def test_isprs_mean_total_error(shipped, shared_data):
+    from workstation.ml.realdata import isprs_scores
+
+    s = isprs_scores(lambda c: shipped.predict(c) == C.GROUND, shared_data / "isprs")
+    assert len(s) == 7
+    # measured 4.35 % (goal 3.5 %); the provisional-ground gate alone gives 3.93 %
+    assert s["mean_total"] <= 4.6, s["mean_total"]
+    assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.2
+
+
+@pytest.mark.parametrize("name, rmse_max", [("MixedConifer.laz", 0.12), ("Topography.laz", 0.34)])
+def test_dtm_under_predicted_ground(shipped, shared_data, name, rmse_max):
+    from workstation.ml.realdata import tile_scores
+
+    r = tile_scores(shipped.predict, shared_data / "lidar" / name)
+    # measured 0.084 m and 0.304 m (autzen_trim, a feet file: 0.187 m, in the benchmark)
+    assert r["dtm_rmse_m"] <= rmse_max, r
+
+
+def test_ml_ground_function_marks_ground_only(shipped, shared_data):
+    from workstation.io import read_cloud
+    from workstation.ml.ground import ml_ground
+
+    c = read_cloud(shared_data / "lidar" / "MixedConifer.laz")
+    out = ml_ground(c.without_attrs("classification"))
+    cls = np.asarray(out.attrs["classification"])
+    assert set(np.unique(cls)) <= {int(C.GROUND), int(C.UNCLASSIFIED)}
+    ref = np.asarray(c.attrs["classification"]) == C.GROUND
+    # vendor ground is a strict subset; most of it must be found
+    assert (cls[ref] == C.GROUND).mean() > 0.85

@@ -1,0 +1,69 @@
+"""`ws evaluate PRED --reference REF`: confusion matrix, ISPRS Type I/II, total error, kappa."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option
+
+
+@click.command()
+@click.argument("pred", metavar="PRED", type=click.Path(dir_okay=False))
+@click.option("--reference", "ref", required=True, type=click.Path(dir_okay=False),
+              help="Reference: a classified LAS/LAZ, or an ISPRS text sample (x y z label; 0 ground, 1 object).")
+@click.option("--tolerance", type=float, default=0.01, show_default=True,
+              help="Largest distance for matching points by coordinates, CRS units.")
+@click.option("--plot-dir", type=click.Path(file_okay=False), default=None,
+              help="Write errors_plan.png (Type I/II in plan view) and confusion.png into this folder.")
+@click.option("--ground-classes", default="2", show_default=True,
+              help="Classes counted as bare earth in the ground / non-ground view, comma separated "
+                   "(e.g. 2,9,11 for simulated truth with water and roads).")
+@click.option("--pred-columns", default=None, help="Column spec when PRED is a text file (must hold classification).")
+@json_option
+def evaluate(pred, ref, tolerance, plot_dir, ground_classes, pred_columns, as_json):
+    """Compare the classes of PRED with a reference (points matched by order or coordinates).
+
+    Prints Type I (ground rejected), Type II (object accepted), total error and Cohen's kappa
+    as in the ISPRS filter test (Sithole & Vosselman 2004), and per-class precision, recall
+    and F1. With --json the rates are fractions.
+    """
+    from pathlib import Path
+
+    import numpy as np
+
+    from workstation.ground.evaluate import evaluate_clouds, plot_confusion, plot_errors, read_reference
+    from workstation.io import read_cloud
+
+    try:
+        gcls = tuple(int(v) for v in ground_classes.split(",") if v.strip())
+    except ValueError:
+        raise click.UsageError(f"--ground-classes must be integers, got {ground_classes!r}") from None
+    pc = read_cloud(pred, **({"columns": pred_columns} if pred_columns else {}))
+    rc = read_reference(ref)
+    ev, pi, ri = evaluate_clouds(pc, rc, tolerance=tolerance, ground_classes=gcls)
+    files = {}
+    if plot_dir:
+        d = Path(plot_dir)
+        d.mkdir(parents=True, exist_ok=True)
+        from workstation.ground.evaluate import reference_classes
+
+        rg = np.isin(reference_classes(rc)[ri], gcls)
+        pg = np.isin(np.asarray(pc.attrs["classification"])[pi], gcls)
+        files["errors_plan"] = str(plot_errors(pc.xyz[pi], rg, pg, d / "errors_plan.png", title=Path(pred).name))
+        files["confusion"] = str(plot_confusion(ev, d / "confusion.png"))
+    if as_json:
+        emit_json({**ev.to_dict(), "prediction": pred, "reference": ref, "plots": files})
+        return
+    out = click.echo
+    out(f"points compared   {ev.n_matched} (matched by {ev.matched_by}; unmatched: {ev.n_unmatched_pred} predicted, "
+        f"{ev.n_unmatched_ref} reference)")
+    out(f"Type I            {100 * ev.type1:6.2f} %   (ground rejected as object)")
+    out(f"Type II           {100 * ev.type2:6.2f} %   (object accepted as ground)")
+    out(f"total error       {100 * ev.total_error:6.2f} %")
+    out(f"kappa             {100 * ev.kappa:6.2f} %")
+    out(f"overall accuracy  {100 * ev.overall_accuracy:6.2f} %")
+    out("class                          support   precision  recall     F1")
+    for s in ev.per_class:
+        out(f"{s.code:>3} {s.name[:26]:<26} {s.support:>9}   {s.precision:8.4f}  {s.recall:8.4f}  {s.f1:8.4f}")
+    for k, v in files.items():
+        out(f"{k}: {v}")

@@ -1,0 +1,100 @@
+"""`ws ground IN -o OUT --method ...`: classify ground (class 2) and the rest (class 1)."""
+
+from __future__ import annotations
+
+import click
+
+from .options import emit_json, json_option, output_option, overwrite_option
+
+
+@click.command()
+@click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
+@output_option
+@click.option("--method", type=click.Choice(["smrf", "csf", "pmf", "ptd", "auto", "lowest", "local_min", "ml"]),
+              default="smrf", show_default=True, help="Ground filter.")
+@click.option("--preset", type=click.Choice(["default", "flat", "urban", "forest", "steep"]), default="default",
+              show_default=True, help="Parameter set for a kind of terrain.")
+@click.option("--reclassify", is_flag=True, help="Overwrite every class (also noise and classes other than 0/1/2).")
+@click.option("--all-returns", is_flag=True, help="Let first/intermediate returns be ground too (default: last and only).")
+@click.option("--noise/--no-noise", default=False, show_default=True,
+              help="Classify noise first (isolated low points -> 7, outliers -> 7/18).")
+@click.option("--hag", is_flag=True, help="Add the height above ground (hag, CRS vertical unit) from a ground TIN.")
+@click.option("--cell", type=float, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
+@click.option("--slope", type=float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
+@click.option("--window", type=float, default=None, help="[smrf] largest window radius, metres.")
+@click.option("--threshold", type=float, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
+@click.option("--scalar", type=float, default=None, help="[smrf] elevation scaling factor (metres per unit slope).")
+@click.option("--max-window", type=float, default=None, help="[pmf] largest window size, metres.")
+@click.option("--cloth-resolution", type=float, default=None, help="[csf] particle spacing, metres.")
+@click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
+@click.option("--class-threshold", type=float, default=None, help="[csf] largest distance to the cloth, metres.")
+@click.option("--iterations", type=int, default=None, help="[csf] largest number of time steps.")
+@click.option("--slope-smooth/--no-slope-smooth", default=None, help="[csf] slope post-processing.")
+@click.option("--max-angle", type=float, default=None, help="[ptd] iteration angle, degrees.")
+@click.option("--max-distance", type=float, default=None, help="[ptd] iteration distance, metres.")
+@click.option("--seed-cell", type=float, default=None, help="[ptd] seed cell, metres.")
+@click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
+@overwrite_option
+@json_option
+def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cell, slope, window, threshold, scalar,
+           max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
+           max_distance, seed_cell, columns, overwrite, as_json):
+    """Classify the ground of IN with one of the filters; write OUT (any cloud format).
+
+    Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
+    classes other than 0, 1 and 2 keep them unless --reclassify.
+    """
+    import time
+
+    import numpy as np
+
+    from workstation.core.classes import ASPRSClass
+    from workstation.core.errors import InvalidInputError
+    from workstation.core.log import get_logger
+    from workstation.ground.methods import make_params, methods
+    from workstation.io import check_output, format_of, read_cloud, write_cloud
+
+    log = get_logger(__name__)
+    t0 = time.perf_counter()
+    format_of(src)
+    format_of(output)
+    check_output(output, overwrite, inputs=[src])
+    given = {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
+             "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
+             "class_threshold": class_threshold, "iterations": iterations, "slope_smooth": slope_smooth,
+             "max_angle": max_angle, "max_distance": max_distance, "seed_cell": seed_cell}
+    given = {k: v for k, v in given.items() if v is not None}
+    if reclassify:
+        given["reclassify"] = True
+    if all_returns:
+        given["last_returns_only"] = False
+    if method == "ml":  # the shipped point classifier (workstation.ml.ground)
+        from workstation.ml.ground import MLGroundParams, ml_ground
+
+        params = MLGroundParams(reclassify=reclassify)
+    else:
+        try:
+            params = make_params(method, preset, **given)
+        except InvalidInputError as e:
+            raise click.UsageError(e.message) from None
+    cloud = read_cloud(src, **({"columns": columns} if columns else {}))
+    if noise:
+        from workstation.ground.noise import classify_noise
+
+        cloud = classify_noise(cloud)
+    out = ml_ground(cloud, params) if method == "ml" else methods()[method].func(cloud, params)
+    if hag:
+        from workstation.ground.hag import height_above_ground
+
+        out = height_above_ground(out)
+    write_cloud(out, output, overwrite=overwrite, inputs=[src])
+    dt = time.perf_counter() - t0
+    cls = np.asarray(out.attrs["classification"])
+    n_ground = int(np.count_nonzero(cls == ASPRSClass.GROUND))
+    log.info("%s: %d of %d points ground (%.1f %%) in %.2f s", method, n_ground, out.n, 100.0 * n_ground / out.n, dt)
+    if as_json:
+        import dataclasses
+
+        emit_json({"input": src, "output": output, "method": method, "preset": preset,
+                   "params": dataclasses.asdict(params), "point_count": out.n, "ground_count": n_ground,
+                   "ground_fraction": n_ground / out.n, "seconds": dt})

@@ -1,0 +1,384 @@
+"""What every ground filter shares: units, which points take part, and writing the classes.
+
+Every filter works internally on **local metric coordinates**: the cloud's coordinates minus
+their minimum corner, scaled to metres with the CRS's linear unit (pyproj), so parameters
+given in metres mean metres in a US-survey-feet CRS too, and float precision is never lost to
+large eastings/northings. Results (classes, heights) go back in the CRS's units.
+
+Classes written: :attr:`ASPRSClass.GROUND` (2) for ground, :attr:`ASPRSClass.UNCLASSIFIED` (1)
+for the rest. Points already in another class (anything but 0, 1 and 2) keep it unless
+``reclassify`` is set; noise (7, 18) also stays out of the filter so one bad point cannot pull
+the ground down.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from workstation.core.classes import ASPRSClass
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.log import get_logger
+
+log = get_logger(__name__)
+
+#: Classes a ground filter may overwrite without ``reclassify``.
+OVERWRITABLE = (int(ASPRSClass.CREATED_NEVER_CLASSIFIED), int(ASPRSClass.UNCLASSIFIED), int(ASPRSClass.GROUND))
+#: Classes that never take part in filtering unless ``reclassify``.
+NOISE_CLASSES = (int(ASPRSClass.LOW_POINT), int(ASPRSClass.HIGH_NOISE))
+
+
+@lru_cache(maxsize=64)
+def crs_unit_factors(crs: str | None) -> tuple[float, float]:
+    """Metres per CRS unit, horizontally and vertically (1.0, 1.0 when the CRS is unknown).
+
+    Examples
+    --------
+    >>> crs_unit_factors("EPSG:2994")[0]
+    0.3048
+    >>> crs_unit_factors(None)
+    (1.0, 1.0)
+    """
+    if not crs:
+        return 1.0, 1.0
+    from pyproj import CRS
+    from pyproj.exceptions import CRSError
+
+    try:
+        c = CRS.from_user_input(crs)
+    except CRSError:
+        log.warning("cannot parse the CRS; assuming metres")
+        return 1.0, 1.0
+    h = None
+    v = None
+    subs = c.sub_crs_list if c.is_compound else [c]
+    for sc in subs:
+        for ax in sc.axis_info:
+            if ax.direction in ("up", "down"):
+                v = v or ax.unit_conversion_factor
+            elif ax.unit_name not in ("degree", "radian", "grad", "arc-second"):
+                h = h or ax.unit_conversion_factor
+            else:
+                raise InvalidInputError(
+                    f"the CRS is geographic ({ax.unit_name}); ground filters need a projected CRS",
+                    "reproject first, e.g. ws convert IN OUT --to-crs EPSG:<utm zone>", field="crs")
+    h = float(h or 1.0)
+    return h, float(v or h)
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """Points a filter works on.
+
+    Attributes
+    ----------
+    xyz : (m, 3) float64
+        Local metric coordinates (metres, origin at the minimum corner) of the used points.
+    index : (m,) int64
+        Their indices in the input cloud.
+    hfac, vfac : float
+        Metres per CRS unit (horizontal, vertical).
+    """
+
+    xyz: np.ndarray
+    index: np.ndarray
+    hfac: float
+    vfac: float
+    origin: np.ndarray
+
+
+def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_only: bool = False,
+            min_points: int = 3) -> Prepared:
+    """Select the points a filter uses and convert them to local metres.
+
+    Noise classes (7, 18) are left out unless ``reclassify``; with ``last_returns_only`` only
+    last (and only) returns take part (where return numbers are present and valid).
+    """
+    n = cloud.n
+    if n == 0:
+        raise StageError(stage, "the cloud has no points", "check the input file")
+    use = np.ones(n, dtype=bool)
+    cls = cloud.attrs.get("classification")
+    if cls is not None and not reclassify:
+        use &= ~np.isin(cls, NOISE_CLASSES)
+    if last_returns_only and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs:
+        rn = np.asarray(cloud.attrs["return_number"])
+        nr = np.asarray(cloud.attrs["number_of_returns"])
+        valid = (nr > 0) & (rn > 0)
+        if valid.mean() > 0.9:
+            use &= ~valid | (rn >= nr)
+    idx = np.flatnonzero(use)
+    if idx.size < min_points:
+        raise StageError(stage, f"only {idx.size} usable point(s) (of {n}); need at least {min_points}",
+                         "noise-classified points are skipped; pass reclassify to use them")
+    hf, vf = crs_unit_factors(cloud.crs)
+    p = cloud.xyz[idx]
+    origin = p.min(axis=0)
+    local = (p - origin) * np.array([hf, hf, vf])
+    return Prepared(local, idx, hf, vf, origin)
+
+
+def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage: str, params, t0: float,
+                  reclassify: bool = False, extra_attrs: dict | None = None) -> Cloud:
+    """A new cloud with class 2 on ground points and 1 on the rest (existing classes kept).
+
+    Parameters
+    ----------
+    ground_local : (m,) bool
+        Ground flags of the prepared points (``prep.index``).
+    """
+    g = np.asarray(ground_local, dtype=bool)
+    if g.shape != prep.index.shape:
+        raise StageError(stage, "internal: ground mask does not match the prepared points")
+    if not g.any():
+        raise StageError(stage, "no ground point found",
+                         "check the units and the parameters (a larger window, a larger threshold), or the noise classes")
+    ground = np.zeros(cloud.n, dtype=bool)
+    ground[prep.index[g]] = True
+    new = np.where(ground, np.uint8(ASPRSClass.GROUND), np.uint8(ASPRSClass.UNCLASSIFIED)).astype(np.uint8)
+    old = cloud.attrs.get("classification")
+    if old is not None and not reclassify:
+        keep = ~np.isin(old, OVERWRITABLE)
+        new = np.where(keep, np.asarray(old, dtype=np.uint8), new)
+    out = cloud.with_attrs(classification=new, **(extra_attrs or {}))
+    pd = asdict(params) if hasattr(params, "__dataclass_fields__") else dict(params or {})
+    log.info("%s: %d ground of %d points (%.1f %%) in %.2f s", stage, int(ground.sum()), cloud.n,
+             100.0 * ground.mean(), time.perf_counter() - t0)
+    return out.with_history(stage, pd, time.perf_counter() - t0)
+
+
+# -- grids -----------------------------------------------------------------------------------
+def grid_index(xy: np.ndarray, cell: float, origin=None) -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray]:
+    """Cell row/column of each point on a grid of ``cell`` metres.
+
+    Returns
+    -------
+    row, col : (m,) int64
+    shape : (rows, cols)
+    origin : (2,) float64 (x, y of the grid's lower-left corner)
+    """
+    o = xy.min(axis=0) if origin is None else np.asarray(origin, dtype=np.float64)
+    c = np.floor((xy[:, 0] - o[0]) / cell).astype(np.int64)
+    r = np.floor((xy[:, 1] - o[1]) / cell).astype(np.int64)
+    shape = (int(r.max()) + 1, int(c.max()) + 1)
+    return r, c, shape, o
+
+
+def grid_min(z: np.ndarray, r: np.ndarray, c: np.ndarray, shape) -> tuple[np.ndarray, np.ndarray]:
+    """Per-cell minimum z (NaN where empty) and the index of the lowest point (-1 where empty)."""
+    flat = r * shape[1] + c
+    order = np.lexsort((z, flat))
+    fs = flat[order]
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = fs[1:] != fs[:-1]
+    cells = fs[first]
+    zmin = np.full(shape[0] * shape[1], np.nan)
+    zmin[cells] = z[order[first]]
+    imin = np.full(shape[0] * shape[1], -1, dtype=np.int64)
+    imin[cells] = order[first]
+    return zmin.reshape(shape), imin.reshape(shape)
+
+
+def fill_nearest(grid: np.ndarray) -> np.ndarray:
+    """Fill NaN cells with the value of the nearest filled cell (Euclidean distance transform)."""
+    from scipy import ndimage
+
+    mask = np.isnan(grid)
+    if not mask.any():
+        return grid
+    if mask.all():
+        raise ValueError("empty grid")
+    idx = ndimage.distance_transform_edt(mask, return_distances=False, return_indices=True)
+    return grid[tuple(idx)]
+
+
+def _one_blas_thread():
+    """Context limiting BLAS to one thread: find_simplex builds per-triangle transforms with
+    tiny LAPACK calls, which OpenBLAS worker threads make ~100x slower on a busy machine."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl comes with scikit-learn
+        import contextlib
+
+        return contextlib.nullcontext()
+    return threadpool_limits(1, user_api="blas")
+
+
+def tin_eval(tri, values: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Linear interpolation of vertex ``values`` over a scipy ``Delaunay`` at points ``q`` (k, 2).
+
+    NaN outside the triangulation.
+    """
+    with _one_blas_thread():
+        s = tri.find_simplex(q)
+    out = np.full(q.shape[0], np.nan)
+    ok = s >= 0
+    if ok.any():
+        v = tri.simplices[s[ok]]
+        a = tri.points[v[:, 0]]
+        b = tri.points[v[:, 1]]
+        c = tri.points[v[:, 2]]
+        p = q[ok]
+        # barycentric weights from signed areas (scipy's tri.transform is slow to build)
+        det = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])
+        det = np.where(det == 0, np.finfo(np.float64).tiny, det)
+        wb = ((p[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (p[:, 1] - a[:, 1])) / det
+        wc = ((b[:, 0] - a[:, 0]) * (p[:, 1] - a[:, 1]) - (p[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])) / det
+        out[ok] = (1.0 - wb - wc) * values[v[:, 0]] + wb * values[v[:, 1]] + wc * values[v[:, 2]]
+    return out
+
+
+def delaunay(pts: np.ndarray, jitter: float = 0.0):
+    """scipy Delaunay of (k, 2) points; ``jitter`` (same unit) breaks grid degeneracy, which
+    otherwise makes Qhull crawl on cell centres."""
+    from scipy.spatial import Delaunay
+
+    if jitter:
+        pts = pts + np.random.default_rng(0).uniform(-jitter, jitter, pts.shape)
+    return Delaunay(pts)
+
+
+def inpaint(grid: np.ndarray) -> np.ndarray:
+    """Fill NaN cells smoothly: linear interpolation over a Delaunay TIN of the filled cells
+    that border an empty one, nearest value outside their hull (the role of SMRF's image
+    inpainting)."""
+    mask = np.isnan(grid)
+    if not mask.any():
+        return grid
+    from scipy import ndimage
+
+    border = ~mask & ndimage.binary_dilation(mask, structure=np.ones((3, 3), bool))
+    br, bc = np.nonzero(border)
+    if br.size < 3:
+        return fill_nearest(grid)
+    # a frame one cell outside the grid, valued by the nearest filled cell, puts every query
+    # inside the TIN (scipy's find_simplex falls back to brute force for points outside)
+    near = fill_nearest(grid)
+    rows, cols = grid.shape
+    fr = np.concatenate([np.full(cols + 2, -1), np.full(cols + 2, rows), np.arange(rows), np.arange(rows)])
+    fc = np.concatenate([np.arange(-1, cols + 1), np.arange(-1, cols + 1), np.full(rows, -1), np.full(rows, cols)])
+    fv = near[np.clip(fr, 0, rows - 1), np.clip(fc, 0, cols - 1)]
+    sr = np.concatenate([br, fr])
+    sc = np.concatenate([bc, fc])
+    sv = np.concatenate([grid[br, bc], fv])
+    out = grid.copy()
+    er, ec = np.nonzero(mask)
+    try:
+        tri = delaunay(np.column_stack([sr, sc]).astype(np.float64), 1e-4)
+    except Exception:  # degenerate support: nearest
+        return near
+    out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))
+    nan = np.isnan(out)
+    out[nan] = near[nan]
+    return out
+
+
+def bilinear(grid: np.ndarray, xy: np.ndarray, cell: float, origin) -> np.ndarray:
+    """Bilinear interpolation of a cell-centred grid at points (edge cells extend outward)."""
+    rows, cols = grid.shape
+    fx = (xy[:, 0] - origin[0]) / cell - 0.5
+    fy = (xy[:, 1] - origin[1]) / cell - 0.5
+    fx = np.clip(fx, 0, cols - 1)
+    fy = np.clip(fy, 0, rows - 1)
+    c0 = np.minimum(np.floor(fx).astype(np.int64), max(cols - 2, 0))
+    r0 = np.minimum(np.floor(fy).astype(np.int64), max(rows - 2, 0))
+    c1 = np.minimum(c0 + 1, cols - 1)
+    r1 = np.minimum(r0 + 1, rows - 1)
+    tx = fx - c0
+    ty = fy - r0
+    return ((grid[r0, c0] * (1 - tx) + grid[r0, c1] * tx) * (1 - ty)
+            + (grid[r1, c0] * (1 - tx) + grid[r1, c1] * tx) * ty)
+
+
+def tin_interpolate(xy_known: np.ndarray, z_known: np.ndarray, xy_query: np.ndarray) -> np.ndarray:
+    """Linear interpolation on a Delaunay TIN of (k, 2) points; nearest known value outside the hull."""
+    from scipy.spatial import cKDTree
+
+    out = np.full(xy_query.shape[0], np.nan)
+    if xy_known.shape[0] >= 3:
+        # four far corners (value NaN) keep every query inside the TIN, so find_simplex never
+        # falls back to brute force; queries in triangles touching them become nearest below
+        lo = np.minimum(xy_known.min(axis=0), xy_query.min(axis=0))
+        hi = np.maximum(xy_known.max(axis=0), xy_query.max(axis=0))
+        span = float(np.max(hi - lo)) + 1.0
+        corners = np.array([[lo[0] - span, lo[1] - span], [hi[0] + span, lo[1] - span],
+                            [hi[0] + span, hi[1] + span], [lo[0] - span, hi[1] + span]])
+        try:
+            tri = delaunay(np.vstack([xy_known, corners]))
+            out = tin_eval(tri, np.concatenate([z_known, np.full(4, np.nan)]), xy_query)
+        except Exception:  # collinear support
+            pass
+    bad = np.isnan(out)
+    if bad.any():
+        _, j = cKDTree(xy_known).query(xy_query[bad])
+        out[bad] = z_known[j]
+    return out
+
+
+# -- grey morphology with diamond (L1) structuring elements -----------------------------------
+def _cross_step(a: np.ndarray, op, fill: float) -> np.ndarray:
+    """One erosion/dilation with the 3x3 cross (a diamond of radius 1 cell)."""
+    p = np.pad(a, 1, mode="constant", constant_values=fill)
+    out = op(p[1:-1, 1:-1], p[:-2, 1:-1])
+    op(out, p[2:, 1:-1], out=out)
+    op(out, p[1:-1, :-2], out=out)
+    op(out, p[1:-1, 2:], out=out)
+    return out
+
+
+def erode_diamond(a: np.ndarray, radius: int) -> np.ndarray:
+    """Grey erosion by a diamond of ``radius`` cells (``radius`` cross erosions)."""
+    for _ in range(int(radius)):
+        a = _cross_step(a, np.minimum, np.inf)
+    return a
+
+
+def dilate_diamond(a: np.ndarray, radius: int) -> np.ndarray:
+    """Grey dilation by a diamond of ``radius`` cells (``radius`` cross dilations)."""
+    for _ in range(int(radius)):
+        a = _cross_step(a, np.maximum, -np.inf)
+    return a
+
+
+def disk(radius: int) -> np.ndarray:
+    """Boolean disk footprint of ``radius`` cells (x² + y² ≤ r²); the 3x3 square for radius 1."""
+    r = int(radius)
+    if r <= 1:
+        return np.ones((3, 3), dtype=bool)
+    y, x = np.mgrid[-r : r + 1, -r : r + 1]
+    return x * x + y * y <= r * r
+
+
+def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
+    """Grey erosion/dilation by :func:`disk` as a union of its rows: one 1D running min/max per
+    distinct chord width plus shifted minima/maxima, O(cells · radius) instead of
+    O(cells · radius²)."""
+    from scipy import ndimage
+
+    fp = disk(radius)
+    r = fp.shape[0] // 2
+    f1d = ndimage.minimum_filter1d if erode else ndimage.maximum_filter1d
+    op = np.minimum if erode else np.maximum
+    fill = np.inf if erode else -np.inf
+    halfw = fp.sum(axis=1) // 2  # chord half-width per row offset
+    rows = {}
+    for w in np.unique(halfw):
+        rows[int(w)] = f1d(a, size=2 * int(w) + 1, axis=1, mode="nearest") if w > 0 else a
+    out = np.full(a.shape, fill)
+    n = a.shape[0]
+    for k, dy in enumerate(range(-r, r + 1)):
+        src = rows[int(halfw[k])]
+        # out[i] = op(out[i], src[i + dy]) where i + dy is inside the grid
+        lo, hi = max(0, -dy), min(n, n - dy)
+        if lo < hi:
+            op(out[lo:hi], src[lo + dy : hi + dy], out=out[lo:hi])
+    return out
+
+
+def open_disk(a: np.ndarray, radius: int) -> np.ndarray:
+    """Grey opening (erosion then dilation) by a disk of ``radius`` cells."""
+    return _disk_filter(_disk_filter(a, radius, True), radius, False)

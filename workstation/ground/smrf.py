@@ -1,0 +1,177 @@
+"""SMRF, the simple morphological filter (Pingel, Clarke & McBride 2013).
+
+Pingel T.J., Clarke K.C., McBride W.A. (2013) "An improved simple morphological filter for the
+terrain classification of airborne LIDAR data", ISPRS J. Photogramm. 77:21-30.
+
+Steps (as in PDAL's ``filters.smrf``, vectorised on a grid):
+
+1. minimum surface: lowest point per ``cell``; empty cells inpainted;
+2. low outliers: the progressive filter on the *negated* surface (slope 5, window 1 m) marks
+   pits more than 5 m deep as low outliers;
+3. objects: the progressive filter on the surface: grey openings by disks of radius
+   1 … ``window``/``cell`` cells, each applied to the previous opened surface (as in Pingel's
+   reference code; PDAL uses diamonds, which miss more roofs: 4.3 % against 3.7 % mean total
+   error on the six ISPRS samples here); a cell whose opened height drops by more than
+   ``slope · cell · radius`` is an object;
+4. provisional DEM: the minimum surface without object and low-outlier cells, inpainted
+   (linear interpolation over the TIN of the remaining cells);
+5. classification: a point is ground when its height lies within
+   ``threshold + scalar · slope`` of the provisional DEM interpolated bilinearly at the point,
+   ``slope`` being the DEM's gradient magnitude there.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from workstation.core.cloud import Cloud
+
+from . import common
+
+STAGE = "ground.smrf"
+
+
+@dataclass(frozen=True)
+class SMRFParams:
+    """SMRF parameters (PDAL's defaults). Lengths in metres, whatever the CRS unit.
+
+    Attributes
+    ----------
+    cell : float
+        Grid cell size, metres (1.0).
+    slope : float
+        Terrain slope, rise over run (dimensionless, 0.15).
+    window : float
+        Largest opening window radius, metres (18.0): larger than the largest building.
+    threshold : float
+        Elevation threshold, metres (0.5).
+    scalar : float
+        Elevation scaling factor applied to the provisional DEM's slope (1.25, metres per unit
+        of slope).
+    low_outliers : bool
+        Run the low-outlier step (True).
+    reclassify : bool
+        Overwrite classes other than 0/1/2 and use noise points (False).
+    last_returns_only : bool
+        Only last/only returns can be ground (True, as PDAL's ``returns="last,only"``).
+    """
+
+    cell: float = 1.0
+    slope: float = 0.15
+    window: float = 18.0
+    threshold: float = 0.5
+    scalar: float = 1.25
+    low_outliers: bool = True
+    reclassify: bool = False
+    last_returns_only: bool = True
+
+
+PRESETS: dict[str, SMRFParams] = {
+    "default": SMRFParams(),
+    "flat": SMRFParams(slope=0.1, window=24.0),
+    "urban": SMRFParams(slope=0.15, window=30.0),
+    "forest": SMRFParams(slope=0.3, window=12.0, threshold=0.45),
+    "steep": SMRFParams(slope=0.6, window=10.0, threshold=0.6, scalar=1.5),
+}
+
+
+def progressive_filter(surface: np.ndarray, cell: float, slope: float, window: float) -> np.ndarray:
+    """SMRF's progressive morphological object detection on a filled grid.
+
+    Parameters
+    ----------
+    surface : (rows, cols) float64, no NaN
+    cell : float
+        Cell size, metres.
+    slope : float
+        Rise over run.
+    window : float
+        Largest radius, metres.
+
+    Returns
+    -------
+    (rows, cols) bool
+        True on object cells.
+    """
+    max_radius = max(1, int(np.ceil(window / cell)))
+    last = surface
+    obj = np.zeros(surface.shape, dtype=bool)
+    for radius in range(1, max_radius + 1):
+        opened = common.open_disk(last, radius)
+        obj |= (last - opened) > slope * cell * radius
+        last = opened
+    return obj
+
+
+def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Provisional DEM of SMRF on local metric points.
+
+    Returns
+    -------
+    zpro : (rows, cols) float64
+        Provisional DEM, metres.
+    origin : (2,) float64
+    empty_or_object : (rows, cols) bool
+        Cells that were interpolated.
+    """
+    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
+    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
+    empty = np.isnan(zmin)
+    zfill = common.inpaint(zmin)
+    low = np.zeros(shape, dtype=bool)
+    if p.low_outliers:
+        low = progressive_filter(-zfill, p.cell, 5.0, 1.0)
+        if low.any():
+            z2 = zmin.copy()
+            z2[low] = np.nan
+            zfill = common.inpaint(z2)
+    obj = progressive_filter(zfill, p.cell, p.slope, p.window)
+    bad = empty | low | obj
+    zp = zmin.copy()
+    zp[bad] = np.nan
+    if bad.all():
+        zp = zfill
+    zpro = common.inpaint(zp)
+    return zpro, origin, bad
+
+
+def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points (m, 3) by SMRF."""
+    zpro, origin, _ = smrf_surface(xyz, p)
+    gy, gx = np.gradient(zpro, p.cell)
+    gsurf = np.hypot(gx, gy)
+    zs = common.bilinear(zpro, xyz[:, :2], p.cell, origin)
+    gs = common.bilinear(gsurf, xyz[:, :2], p.cell, origin)
+    return np.abs(xyz[:, 2] - zs) <= p.threshold + p.scalar * gs
+
+
+def smrf(cloud: Cloud, params: SMRFParams | None = None, **overrides) -> Cloud:
+    """Classify ground with SMRF (Pingel et al. 2013).
+
+    Parameters
+    ----------
+    cloud : Cloud
+    params : SMRFParams, optional
+        Defaults: PDAL's (cell 1 m, slope 0.15, window 18 m, threshold 0.5 m, scalar 1.25).
+    **overrides
+        Fields of :class:`SMRFParams` to replace.
+
+    Returns
+    -------
+    Cloud
+        Same points and attributes; ``classification`` 2 on ground, 1 elsewhere (other classes
+        kept unless ``reclassify``).
+
+    Raises
+    ------
+    StageError
+        No usable points, or no ground found.
+    """
+    p = replace(params or SMRFParams(), **overrides)
+    t0 = time.perf_counter()
+    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only)
+    g = smrf_ground(prep.xyz, p)
+    return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)

@@ -1,0 +1,467 @@
+"""An sklearn-shaped point classifier: ``PointClassifier(...).fit(clouds).predict(cloud)``.
+
+Two estimators share one harness (the same features, the same labels, the same tiling):
+``model="mlp"`` the compact PyTorch network of :mod:`workstation.ml.model` (the shipped
+model), and ``model="rf"`` a scikit-learn random forest baseline (Breiman 2001).
+
+Model classes are :data:`workstation.ml.dataset.MODEL_CLASSES` (ground, vegetation, building,
+water, other, noise); outputs are ASPRS codes: ground 2, vegetation 3/4/5 by height above the
+provisional ground (< 0.5 m, < 2 m, above), building 6, water 9, other 1 (cars, bridges,
+wires, towers), noise 7 below the ground and 18 above it.
+
+Large clouds are classified tile by tile in metric coordinates with an overlap that covers
+the largest feature radius, each point taking the prediction of the tile whose core holds it.
+
+References
+----------
+L. Breiman (2001). Random forests. Machine Learning 45:5-32.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from workstation.core.classes import ASPRSClass as C
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError, NotFittedError, StageError
+from workstation.core.log import get_logger
+
+from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
+from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz
+
+log = get_logger(__name__)
+
+FORMAT = "workstation-point-classifier/1"
+#: Default shipped model.
+SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
+_HAG_COL = FEATURE_NAMES.index("hag_prov")
+_SLOPE_COL = FEATURE_NAMES.index("ground_slope")
+
+
+@dataclass
+class TrainReport:
+    """What :meth:`PointClassifier.fit` did.
+
+    Attributes
+    ----------
+    epochs : int
+        Epochs run (early stopping may end before the maximum).
+    best_epoch : int
+    train_loss, val_loss : list of float
+        Per-epoch mean cross-entropy.
+    val_accuracy : float
+        Accuracy on the validation rows at the best epoch (NaN without validation data).
+    seconds : float
+        Wall-clock training time (features excluded).
+    cpu_seconds : float
+        Process CPU time of training.
+    """
+
+    epochs: int = 0
+    best_epoch: int = 0
+    train_loss: list = field(default_factory=list)
+    val_loss: list = field(default_factory=list)
+    val_accuracy: float = float("nan")
+    seconds: float = 0.0
+    cpu_seconds: float = 0.0
+
+
+class PointClassifier:
+    """Per-point classifier on multi-scale local features.
+
+    Parameters
+    ----------
+    model : {"mlp", "rf"}
+        The PyTorch MLP or the random-forest baseline.
+    hidden : tuple of int
+        MLP hidden widths.
+    epochs : int
+        Maximum MLP epochs.
+    batch : int
+        MLP minibatch size.
+    lr : float
+        Adam learning rate.
+    patience : int
+        Early stopping: epochs without validation improvement before stopping.
+    time_budget_s : float
+        Stop training after this many seconds (wall clock), keeping the best epoch.
+    n_estimators, max_depth : int
+        Random forest size.
+    seed : int
+    device : str
+        ``auto`` (CUDA when present), ``cpu`` or ``cuda``.
+    feature_params : FeatureParams
+    tile_points : int
+        Largest number of points classified in one tile (memory bound).
+    veg_low_max, veg_medium_max : float
+        Height above ground (m) splitting low / medium / high vegetation.
+    ignore_features : sequence of str
+        Feature names (:data:`FEATURE_NAMES`) set to zero, for inputs that do not transfer
+        from simulation to real scans.
+    ground_gate : bool
+        Call a point ground only when it also lies within SMRF's band of the provisional
+        ground surface, ``|hag_prov| <= gate_threshold + gate_scalar * slope`` (Pingel et al.
+        2013; metres), and the network gives ground at least ``gate_min_probability``; other
+        points take the network's best non-ground class. The physical prior that keeps the
+        network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
+    gate_threshold, gate_scalar, gate_min_probability : float
+    """
+
+    def __init__(self, model: str = "mlp", hidden=(64, 64), epochs: int = 40, batch: int = 2048,
+                 lr: float = 2e-3, patience: int = 5, time_budget_s: float = 3000.0,
+                 n_estimators: int = 60, max_depth: int = 18, seed: int = 0, device: str = "auto",
+                 feature_params: FeatureParams | None = None, tile_points: int = 3_000_000,
+                 veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
+                 ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
+                 gate_min_probability: float = 0.02):
+        if model not in ("mlp", "rf"):
+            raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
+        self.model = model
+        self.hidden = tuple(int(h) for h in hidden)
+        self.epochs = int(epochs)
+        self.batch = int(batch)
+        self.lr = float(lr)
+        self.patience = int(patience)
+        self.time_budget_s = float(time_budget_s)
+        self.n_estimators = int(n_estimators)
+        self.max_depth = int(max_depth)
+        self.seed = int(seed)
+        self.device = device
+        self.feature_params = feature_params or FeatureParams()
+        self.tile_points = int(tile_points)
+        self.veg_low_max = float(veg_low_max)
+        self.veg_medium_max = float(veg_medium_max)
+        unknown = set(ignore_features) - set(FEATURE_NAMES)
+        if unknown:
+            raise InvalidInputError(f"unknown features {sorted(unknown)}", f"known: {', '.join(FEATURE_NAMES)}")
+        self.ignore_features = tuple(str(f) for f in ignore_features)
+        self.ground_gate = bool(ground_gate)
+        self.gate_threshold = float(gate_threshold)
+        self.gate_scalar = float(gate_scalar)
+        self.gate_min_probability = float(gate_min_probability)
+        self.net_ = None
+        self.rf_ = None
+        self.report_: TrainReport | None = None
+        self.meta_: dict = {}
+
+    # -- fitting -----------------------------------------------------------------------------
+    @property
+    def is_fitted(self) -> bool:
+        return self.net_ is not None or self.rf_ is not None
+
+    def _check_fitted(self):
+        if not self.is_fitted:
+            raise NotFittedError("the classifier is not fitted", "call fit(...) or PointClassifier.load(path) first")
+
+    def features(self, cloud: Cloud) -> np.ndarray:
+        """Feature matrix (n, f) float32 of a cloud (see :mod:`workstation.ml.features`)."""
+        F = compute_features(cloud, self.feature_params)
+        return self._mask(F)
+
+    def _mask(self, F: np.ndarray) -> np.ndarray:
+        if self.ignore_features:
+            F[:, [FEATURE_NAMES.index(f) for f in self.ignore_features]] = 0
+        return F
+
+    def fit(self, clouds, samples_per_cloud: int = 50_000, validation=None) -> "PointClassifier":
+        """Fit on labelled clouds (their ``classification``).
+
+        Parameters
+        ----------
+        clouds : Cloud or sequence of Cloud
+            Training clouds with ASPRS ``classification``.
+        samples_per_cloud : int
+            Points drawn per cloud (class-balanced by the square root of frequency).
+        validation : sequence of Cloud, optional
+            Clouds for early stopping; without them 10 % of the training rows are held out.
+        """
+        if isinstance(clouds, Cloud):
+            clouds = [clouds]
+        rng = np.random.default_rng(self.seed)
+
+        def rows(cs):
+            Xs, ys = [], []
+            for c in cs:
+                if "classification" not in c.attrs:
+                    raise InvalidInputError("a training cloud has no classification", field="classification")
+                F = self.features(c)
+                y = asprs_to_model(c.attrs["classification"])
+                i = sample_balanced(y, samples_per_cloud, rng)
+                Xs.append(F[i])
+                ys.append(y[i])
+            return np.concatenate(Xs), np.concatenate(ys)
+
+        X, y = rows(clouds)
+        Xv = yv = None
+        if validation:
+            Xv, yv = rows(validation)
+        return self.fit_arrays(X, y, Xv, yv)
+
+    def fit_arrays(self, X: np.ndarray, y: np.ndarray, X_val=None, y_val=None, progress: bool = True) -> "PointClassifier":
+        """Fit on a feature matrix (m, f) float32 and model-class labels (m,) int."""
+        X = self._mask(np.array(X, np.float32))
+        y = np.asarray(y, np.int64)
+        if X.ndim != 2 or X.shape[1] != len(FEATURE_NAMES) or len(y) != len(X):
+            raise InvalidInputError(f"X must be (m, {len(FEATURE_NAMES)}) with one label per row, got {X.shape} / {y.shape}")
+        if len(np.unique(y)) < 2:
+            raise InvalidInputError("training labels hold a single class", "add clouds with other classes")
+        rng = np.random.default_rng(self.seed)
+        if X_val is None:
+            perm = rng.permutation(len(X))
+            nv = max(len(X) // 10, 1)
+            X_val, y_val = X[perm[:nv]], y[perm[:nv]]
+            X, y = X[perm[nv:]], y[perm[nv:]]
+        X_val = self._mask(np.array(X_val, np.float32))
+        y_val = np.asarray(y_val, np.int64)
+        t0, c0 = time.perf_counter(), time.process_time()
+        if self.model == "rf":
+            from sklearn.ensemble import RandomForestClassifier
+
+            rf = RandomForestClassifier(n_estimators=self.n_estimators, max_depth=self.max_depth, n_jobs=-1,
+                                        random_state=self.seed, min_samples_leaf=2)
+            rf.fit(X, y)
+            self.rf_ = rf
+            self.classes_present_ = rf.classes_
+            acc = float((rf.predict(X_val) == y_val).mean())
+            self.report_ = TrainReport(1, 1, [], [], acc, time.perf_counter() - t0, time.process_time() - c0)
+            return self
+        self._fit_mlp(X, y, X_val, y_val, progress)
+        self.report_.seconds = time.perf_counter() - t0
+        self.report_.cpu_seconds = time.process_time() - c0
+        return self
+
+    def _fit_mlp(self, X, y, Xv, yv, progress):
+        import torch
+
+        from workstation.core.progress import progress_bar
+
+        from .model import build_mlp, resolve_device, set_standardisation
+
+        torch.manual_seed(self.seed)
+        dev = resolve_device(self.device)
+        if dev.type == "cpu":
+            # a small MLP gains nothing from intra-op threads; on a busy machine they spin
+            torch.set_num_threads(1)
+        net = build_mlp(X.shape[1], len(MODEL_CLASSES), self.hidden).to(dev)
+        set_standardisation(net, X)
+        net.to(dev)
+        opt = torch.optim.Adam(net.parameters(), lr=self.lr, weight_decay=1e-5)
+        sched = torch.optim.lr_scheduler.CosineAnnealingLR(opt, T_max=max(self.epochs, 1))
+        lossf = torch.nn.CrossEntropyLoss()
+        Xt = torch.from_numpy(X).to(dev)
+        yt = torch.from_numpy(y).to(dev)
+        Xvt = torch.from_numpy(Xv).to(dev)
+        yvt = torch.from_numpy(yv).to(dev)
+        g = torch.Generator(device="cpu").manual_seed(self.seed)
+        rep = TrainReport()
+        best, best_state, bad = float("inf"), None, 0
+        t0 = time.perf_counter()
+        with progress_bar("training", self.epochs) as advance:
+            for ep in range(self.epochs):
+                net.train()
+                perm = torch.randperm(len(Xt), generator=g).to(dev)
+                tot = 0.0
+                for s in range(0, len(perm), self.batch):
+                    idx = perm[s:s + self.batch]
+                    opt.zero_grad()
+                    loss = lossf(net(Xt[idx]), yt[idx])
+                    loss.backward()
+                    opt.step()
+                    tot += float(loss.detach()) * len(idx)
+                sched.step()
+                net.eval()
+                with torch.no_grad():
+                    lv = net(Xvt)
+                    vl = float(lossf(lv, yvt))
+                    va = float((lv.argmax(1) == yvt).float().mean())
+                rep.train_loss.append(tot / len(Xt))
+                rep.val_loss.append(vl)
+                rep.epochs = ep + 1
+                log.info("epoch %d: train loss %.4f, val loss %.4f, val acc %.4f", ep + 1, tot / len(Xt), vl, va)
+                advance(1)
+                if vl < best - 1e-4:
+                    best, bad = vl, 0
+                    best_state = {k: v.detach().clone() for k, v in net.state_dict().items()}
+                    rep.best_epoch, rep.val_accuracy = ep + 1, va
+                else:
+                    bad += 1
+                if bad >= self.patience or time.perf_counter() - t0 > self.time_budget_s:
+                    break
+        if best_state is None:
+            raise StageError("train", "the validation loss never became finite", "check the features for NaN or lower the learning rate")
+        net.load_state_dict(best_state)
+        net.eval()
+        self.net_ = net.cpu()
+        self.report_ = rep
+
+    # -- prediction --------------------------------------------------------------------------
+    def predict_proba_features(self, F: np.ndarray) -> np.ndarray:
+        """Class probabilities (n, len(MODEL_CLASSES)) float32 of a feature matrix."""
+        self._check_fitted()
+        if self.rf_ is not None:
+            p = self.rf_.predict_proba(F)
+            out = np.zeros((len(F), len(MODEL_CLASSES)), np.float32)
+            out[:, self.rf_.classes_] = p
+            return out
+        from .model import predict_logits, resolve_device
+
+        dev = resolve_device(self.device)
+        if next(self.net_.parameters()).device != dev:
+            self.net_ = self.net_.to(dev)
+        return predict_logits(self.net_, F, dev)
+
+    def _tiles(self, cloud: Cloud):
+        """(core mask, tile-with-buffer index array) pairs covering the cloud."""
+        n = cloud.n
+        if n <= self.tile_points:
+            yield np.ones(n, bool), np.arange(n)
+            return
+        xyz, _, _ = metric_xyz(cloud)
+        ext = xyz[:, :2].max(axis=0)
+        area = max(ext[0] * ext[1], 1.0)
+        side = float(np.sqrt(self.tile_points / (n / area))) * 0.8
+        buf = max(self.feature_params.min_radii) + self.feature_params.ground_window
+        side = max(side, 2 * buf)
+        nx, ny = int(np.ceil(ext[0] / side)) or 1, int(np.ceil(ext[1] / side)) or 1
+        ix = np.minimum((xyz[:, 0] / side).astype(np.int64), nx - 1)
+        iy = np.minimum((xyz[:, 1] / side).astype(np.int64), ny - 1)
+        for a in range(nx):
+            for b in range(ny):
+                core = (ix == a) & (iy == b)
+                if not core.any():
+                    continue
+                x0, x1 = a * side - buf, (a + 1) * side + buf
+                y0, y1 = b * side - buf, (b + 1) * side + buf
+                sel = np.flatnonzero((xyz[:, 0] >= x0) & (xyz[:, 0] < x1) & (xyz[:, 1] >= y0) & (xyz[:, 1] < y1))
+                yield core, sel
+
+    def _proba_and_hag(self, cloud: Cloud) -> tuple[np.ndarray, np.ndarray]:
+        """Network probabilities (n, c) and the provisional-ground height and slope (n, 2)."""
+        self._check_fitted()
+        if cloud.n < 3:
+            raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
+        P = np.zeros((cloud.n, len(MODEL_CLASSES)), np.float32)
+        hag = np.zeros((cloud.n, 2), np.float32)
+        for core, sel in self._tiles(cloud):
+            sub = cloud if len(sel) == cloud.n else cloud[sel]
+            F = self.features(sub)
+            p = self.predict_proba_features(F)
+            keep = core[sel]
+            P[sel[keep]] = p[keep]
+            hag[sel[keep]] = F[keep][:, [_HAG_COL, _SLOPE_COL]]
+        return P, hag
+
+    def predict_proba(self, cloud: Cloud) -> np.ndarray:
+        """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes
+        (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
+        return self._proba_and_hag(cloud)[0]
+
+    def _codes(self, P: np.ndarray, hs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        hag, slope = hs[:, 0], hs[:, 1]
+        k = P.argmax(axis=1)
+        conf = P[np.arange(len(P)), k].astype(np.float32)
+        if self.ground_gate:
+            band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
+            ground = band & (P[:, 0] >= self.gate_min_probability)
+            rest = P[:, 1:]
+            k2 = rest.argmax(axis=1) + 1
+            c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
+            k = np.where(ground, 0, k2)
+            conf = np.where(ground, np.maximum(P[:, 0], 0.5), np.minimum(c2, 1.0)).astype(np.float32)
+        veg = np.where(hag < self.veg_low_max, C.LOW_VEGETATION,
+                       np.where(hag < self.veg_medium_max, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION))
+        noise = np.where(hag < 0, C.LOW_POINT, C.HIGH_NOISE)
+        table = np.array([C.GROUND, 0, C.BUILDING, C.WATER, C.UNCLASSIFIED, 0], np.uint8)
+        codes = table[k]
+        codes = np.where(k == 1, veg, codes)
+        codes = np.where(k == 5, noise, codes).astype(np.uint8)
+        return codes, conf
+
+    def predict(self, cloud: Cloud) -> np.ndarray:
+        """ASPRS class codes (n,) uint8 for every point."""
+        P, hag = self._proba_and_hag(cloud)
+        return self._codes(P, hag)[0]
+
+    def classify(self, cloud: Cloud) -> Cloud:
+        """A new cloud with ``classification`` (u8 ASPRS) and ``confidence`` (f4, the winning
+        class probability); every other attribute is kept unchanged."""
+        t0 = time.perf_counter()
+        P, hag = self._proba_and_hag(cloud)
+        codes, conf = self._codes(P, hag)
+        if not np.isfinite(conf).all():
+            raise StageError("classify", "non-finite probabilities", "check the input coordinates for NaN")
+        out = cloud.with_attrs(classification=codes, confidence=conf)
+        return out.with_history("classify", {"model": self.model, **self.meta_.get("summary", {})}, time.perf_counter() - t0)
+
+    # -- persistence -------------------------------------------------------------------------
+    def config(self) -> dict:
+        """JSON-able constructor settings."""
+        return {"model": self.model, "hidden": list(self.hidden), "epochs": self.epochs, "batch": self.batch,
+                "lr": self.lr, "patience": self.patience, "time_budget_s": self.time_budget_s,
+                "n_estimators": self.n_estimators, "max_depth": self.max_depth, "seed": self.seed,
+                "device": self.device, "feature_params": self.feature_params.to_dict(),
+                "tile_points": self.tile_points, "veg_low_max": self.veg_low_max,
+                "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features),
+                "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
+                "gate_min_probability": self.gate_min_probability}
+
+    def save(self, path, overwrite: bool = False) -> Path:
+        """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""
+        self._check_fitted()
+        if self.net_ is None:
+            raise InvalidInputError("only the MLP model can be saved", "the random forest is a baseline for comparison")
+        import torch
+
+        from workstation.io import atomic_path
+
+        payload = {
+            "format": FORMAT,
+            "config": json.dumps(self.config()),
+            "features": json.dumps(list(FEATURE_NAMES)),
+            "classes": json.dumps(list(MODEL_CLASSES)),
+            "meta": json.dumps(self.meta_),
+            "state_dict": {k: v.detach().cpu() for k, v in self.net_.state_dict().items()},
+        }
+        p = Path(path)
+        buf = io.BytesIO()
+        torch.save(payload, buf)
+        with atomic_path(p, overwrite=overwrite) as tmp:
+            Path(tmp).write_bytes(buf.getvalue())
+        return p
+
+    @classmethod
+    def load(cls, path=None, device: str = "auto") -> "PointClassifier":
+        """Load a saved model (the shipped one by default) with ``weights_only=True``."""
+        import torch
+
+        p = Path(path) if path is not None else SHIPPED_MODEL
+        if not p.exists():
+            raise InvalidInputError("model file not found", "train one with `ws train` or use the shipped model", path=p)
+        try:
+            payload = torch.load(p, map_location="cpu", weights_only=True)
+        except Exception as e:
+            raise InvalidInputError(f"not a loadable model: {e}", path=p) from None
+        if not isinstance(payload, dict) or payload.get("format") != FORMAT:
+            raise InvalidInputError("not a workstation point classifier", path=p)
+        feats = json.loads(payload["features"])
+        if tuple(feats) != FEATURE_NAMES:
+            raise InvalidInputError("the model was trained on other features", "retrain it with this version", path=p)
+        cfg = json.loads(payload["config"])
+        fp = cfg.pop("feature_params")
+        fp["min_radii"] = tuple(fp["min_radii"])
+        cfg["device"] = device
+        self = cls(**cfg, feature_params=FeatureParams(**fp))
+        from .model import build_mlp
+
+        net = build_mlp(len(FEATURE_NAMES), len(json.loads(payload["classes"])), self.hidden)
+        net.load_state_dict(payload["state_dict"])
+        net.eval()
+        self.net_ = net
+        self.meta_ = json.loads(payload["meta"])
+        return self

@@ -1,0 +1,411 @@
+"""Vectorised multi-scale local features for per-point classification.
+
+Every feature is computed in **local metric coordinates** (the cloud's coordinates minus their
+minimum corner, scaled to metres with the CRS's linear unit), so a model trained in metres
+works on a US-survey-feet file too, and each one is chosen to be independent of the point
+density, the scanner and the intensity calibration as far as possible, which is what lets a
+model trained on simulated scans transfer to real ones:
+
+* **heights above local minima** at radii 2.5, 5, 10, 20 and 40 m (grid minimum filters),
+  and the local height range at 2.5 m;
+* **height above a provisional ground surface**: a progressive morphological filter on a
+  minimum-elevation grid (Zhang et al. 2003; the slope-dependent thresholds of SMRF,
+  Pingel et al. 2013), with the flagged cells inpainted; plus the surface's slope;
+* **eigenvalue features** of the k-nearest-neighbour covariance (Weinmann et al. 2015;
+  Demantké et al. 2011) at two scales: linearity, planarity, scattering, verticality, the
+  normal's |z| and the neighbourhood's z spread; the coarse scale is computed once per voxel
+  of a grid-subsampled cloud and broadcast back to its points (Hackel et al. 2016);
+* **echo features**: return number / number of returns, number of returns, first/last flags,
+  and a flag saying whether returns are present at all;
+* **intensity** normalised per tile by robust statistics (median and 10-90 % range), with a
+  flag when it is missing or constant, so a model survives missing or rescaled intensity;
+* **local density**: log of the mean horizontal kNN distance relative to the tile's median.
+
+References
+----------
+K. Zhang et al. (2003). A progressive morphological filter for removing nonground
+measurements from airborne LIDAR data. IEEE TGRS 41(4):872-882.
+T. J. Pingel, K. C. Clarke, W. A. McBride (2013). An improved simple morphological filter for
+the terrain classification of airborne LIDAR data. ISPRS J. 77:21-30.
+M. Weinmann, B. Jutzi, S. Hinz, C. Mallet (2015). Semantic point cloud interpretation based on
+optimal neighborhoods, relevant features and efficient classifiers. ISPRS J. 105:286-304.
+T. Hackel, J. D. Wegner, K. Schindler (2016). Fast semantic segmentation of 3D point clouds
+with strongly varying density. ISPRS Annals III-3:177-184.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError
+
+#: Names of the feature columns, in order.
+FEATURE_NAMES: tuple[str, ...] = (
+    "dz_min_2_5", "dz_min_5", "dz_min_10", "dz_min_20", "dz_min_40", "range_2_5",
+    "dz_max_2_5", "hag_prov", "hag_prov_soft", "ground_slope",
+    "lin_f", "plan_f", "scat_f", "vert_f", "nz_f", "zstd_f", "dzknn_min_f", "dzknn_max_f",
+    "lin_c", "plan_c", "scat_c", "vert_c", "nz_c", "zstd_c",
+    "ret_ratio", "n_returns", "is_first", "is_last", "has_returns",
+    "intensity", "has_intensity", "log_density",
+)
+
+
+@dataclass(frozen=True)
+class FeatureParams:
+    """Feature extraction settings (lengths in metres).
+
+    Attributes
+    ----------
+    cell : float
+        Grid cell of the minimum-elevation grids (m).
+    min_radii : tuple of float
+        Radii (m) of the height-above-local-minimum features (five values).
+    ground_window : float
+        Largest opening window radius of the provisional ground filter (m), half the largest building.
+    ground_slope : float
+        Terrain slope tolerance of the provisional filter (rise/run).
+    k_fine : int
+        Neighbours of the fine eigenvalue scale (on the points, or on ``fine_voxel`` voxels).
+    fine_voxel : float
+        Voxel (m) to subsample the cloud before the fine kNN (0 = every point).
+    k_coarse : int
+        Neighbours of the coarse scale, computed on ``coarse_voxel`` voxels.
+    coarse_voxel : float
+        Voxel (m) of the coarse scale.
+    workers : int
+        Threads for KD-tree queries (-1 = all cores).
+    """
+
+    cell: float = 1.0
+    min_radii: tuple = (2.5, 5.0, 10.0, 20.0, 40.0)
+    ground_window: float = 30.0
+    ground_slope: float = 0.15
+    k_fine: int = 10
+    fine_voxel: float = 0.5
+    k_coarse: int = 16
+    coarse_voxel: float = 1.5
+    workers: int = -1
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d["min_radii"] = list(self.min_radii)
+        return d
+
+
+def metric_xyz(cloud: Cloud) -> tuple[np.ndarray, float, float]:
+    """Local metric coordinates (m) of a cloud: minus the minimum corner, scaled by the CRS unit.
+
+    Returns
+    -------
+    xyz : (n, 3) float64
+        Metres, origin at the minimum corner.
+    h_factor, v_factor : float
+        Metres per CRS unit, horizontally and vertically (1.0 when the CRS is unknown).
+    """
+    from workstation.ground.common import crs_unit_factors
+
+    try:
+        hf, vf = crs_unit_factors(cloud.crs)
+    except Exception:  # unparsable CRS: assume metres
+        hf, vf = 1.0, 1.0
+    xyz = np.asarray(cloud.xyz, np.float64)
+    lo = xyz.min(axis=0)
+    out = np.empty_like(xyz)
+    out[:, :2] = (xyz[:, :2] - lo[:2]) * hf
+    out[:, 2] = (xyz[:, 2] - lo[2]) * vf
+    return out, hf, vf
+
+
+# -- grids --------------------------------------------------------------------------------
+def _grid(xy: np.ndarray, cell: float):
+    c = np.floor(xy[:, 0] / cell).astype(np.int64)
+    r = np.floor(xy[:, 1] / cell).astype(np.int64)
+    shape = (int(r.max()) + 1, int(c.max()) + 1)
+    return r, c, shape
+
+
+def _grid_reduce(z, r, c, shape, fn, fill):
+    g = np.full(shape[0] * shape[1], fill, np.float64)
+    fn.at(g, r * shape[1] + c, z)
+    return g.reshape(shape)
+
+
+def _fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
+    from scipy import ndimage
+
+    if not empty.any():
+        return grid
+    idx = ndimage.distance_transform_edt(empty, return_distances=False, return_indices=True)
+    return grid[tuple(idx)]
+
+
+def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float,
+                       zmin: np.ndarray | None = None, rc=None) -> np.ndarray:
+    """A provisional bare-earth grid by a progressive morphological filter.
+
+    Square openings of the minimum-elevation grid with radii 1, 2, ... cells up to ``window``,
+    each opening the previous one; a cell is flagged non-ground when one step lowers it by more
+    than ``slope * cell * radius`` (Zhang et al. 2003; the progressive scheme of SMRF, Pingel et
+    al. 2013); flagged and empty cells take the nearest ground cell's value, smoothed.
+
+    Parameters
+    ----------
+    xyz : (n, 3) float64
+        Local metric coordinates (m).
+    cell : float
+        Grid cell (m).
+    window : float
+        Largest window (m).
+    slope : float
+        Slope tolerance (rise/run).
+
+    Returns
+    -------
+    (rows, cols) float64
+        Ground elevation per cell (m, local), cell-centred, origin (0, 0).
+    """
+    from scipy import ndimage
+
+    if rc is None:
+        r, c, shape = _grid(xyz[:, :2], cell)
+    else:
+        r, c, shape = rc
+    if zmin is None:
+        zmin = _grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
+    empty = ~np.isfinite(zmin)
+    z0 = _fill_nearest(zmin, empty)
+    # SMRF's progressive opening: each radius opens the previous opening; a cell is an object
+    # when one step lowers it by more than the slope allows for one cell of radius
+    flagged = np.zeros(shape, bool)
+    last = z0
+    for w in range(1, max(1, int(np.ceil(window / cell))) + 1):
+        size = 2 * w + 1
+        op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
+        flagged |= (last - op) > slope * cell * w
+        last = op
+    bad = flagged | empty
+    if bad.all():
+        return z0
+    g = _fill_nearest(z0, bad)
+    # smooth the filled cells a little (3 cells), keeping ground cells as measured
+    sm = ndimage.uniform_filter(g, size=3, mode="nearest")
+    return np.where(bad, sm, g)
+
+
+def _despike_low(zmin: np.ndarray, threshold: float = 1.5) -> np.ndarray:
+    """Empty the cells of isolated low outliers: a cell lower by more than ``threshold`` (m)
+    than every other filled cell of its 5x5 neighbourhood (multipath, low noise), twice.
+    Empty cells are +inf on input and output."""
+    from scipy import ndimage
+
+    ring = np.ones((5, 5), bool)
+    ring[2, 2] = False
+    for _ in range(2):
+        nb = ndimage.minimum_filter(zmin, footprint=ring, mode="constant", cval=np.inf)
+        spike = np.isfinite(zmin) & np.isfinite(nb) & (zmin < nb - threshold)
+        if not spike.any():
+            break
+        zmin = np.where(spike, np.inf, zmin)
+    return zmin
+
+
+def _bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
+    from workstation.ground.common import bilinear
+
+    return bilinear(grid, xy, cell, (0.0, 0.0))
+
+
+def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
+    """Voxel representative (first point) indices and each point's voxel index."""
+    v = np.floor(xyz / voxel).astype(np.int64)
+    v -= v.min(axis=0)
+    dims = v.max(axis=0) + 1
+    key = (v[:, 0] * dims[1] + v[:, 1]) * dims[2] + v[:, 2]
+    _, first, inv = np.unique(key, return_index=True, return_inverse=True)
+    return first, inv.ravel()
+
+
+def _eigvec(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
+    """Unit eigenvectors (m, 3) of symmetric 3x3 matrices for eigenvalues ``lam`` (m,):
+    the largest cross product of two rows of (A - lam I)."""
+    a = cov - lam[:, None, None] * np.eye(3)
+    c0 = np.cross(a[:, 0], a[:, 1])
+    c1 = np.cross(a[:, 0], a[:, 2])
+    c2 = np.cross(a[:, 1], a[:, 2])
+    n0, n1, n2 = (c0 * c0).sum(1), (c1 * c1).sum(1), (c2 * c2).sum(1)
+    v = np.where((n0 >= n1)[:, None], c0, c1)
+    nv = np.maximum(n0, n1)
+    v = np.where((n2 > nv)[:, None], c2, v)
+    nv = np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
+    return v / nv[:, None]
+
+
+def sym3_eigen(cov: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Eigenvalues l1 >= l2 >= l3 of symmetric 3x3 matrices (m, 3, 3), closed form
+    (O. K. Smith 1961, Eigenvalues of a symmetric 3x3 matrix, Comm. ACM 4(4):168)."""
+    a00, a11, a22 = cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2]
+    a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
+    q = (a00 + a11 + a22) / 3
+    p1 = a01 * a01 + a02 * a02 + a12 * a12
+    b00, b11, b22 = a00 - q, a11 - q, a22 - q
+    p2 = b00 * b00 + b11 * b11 + b22 * b22 + 2 * p1
+    p = np.sqrt(np.maximum(p2 / 6, 1e-30))
+    det = (b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02) + a02 * (a01 * a12 - b11 * a02))
+    r = np.clip(det / (2 * p ** 3), -1, 1)
+    phi = np.arccos(r) / 3
+    l1 = q + 2 * p * np.cos(phi)
+    l3 = q + 2 * p * np.cos(phi + 2 * np.pi / 3)
+    l2 = 3 * q - l1 - l3
+    return l1, l2, l3
+
+
+def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
+    """Eigenvalue features of the kNN covariance of each query point among reference points.
+
+    Returns (m, 8) float32: linearity, planarity, scattering, verticality, |n_z|, z std,
+    z - kNN min z, kNN max z - z; and the mean neighbour distance (m,).
+    """
+    from scipy.spatial import cKDTree
+
+    k = int(min(k, len(xyz_ref)))
+    tree = cKDTree(xyz_ref)
+    d, j = tree.query(xyz_q, k=k, workers=workers)
+    if k == 1:
+        j = j[:, None]
+        d = d[:, None]
+    nb = xyz_ref[j]  # (m, k, 3)
+    mu = nb.mean(axis=1)
+    q = (nb - mu[:, None, :]).astype(np.float32)
+    cov = np.einsum("mki,mkj->mij", q, q, optimize=False).astype(np.float64) / k
+    cov += np.eye(3) * 1e-8
+    l1, l2, l3 = sym3_eigen(cov)
+    l1 = np.maximum(l1, 1e-12)
+    l2 = np.clip(l2, 0, l1)
+    l3 = np.clip(l3, 0, l2)
+    nrm = _eigvec(cov, l3)
+    main = _eigvec(cov, l1)
+    zq = xyz_q[:, 2]
+    nz_ = nb[:, :, 2]
+    out = np.empty((len(xyz_q), 8), np.float32)
+    out[:, 0] = (l1 - l2) / l1
+    out[:, 1] = (l2 - l3) / l1
+    out[:, 2] = l3 / l1
+    out[:, 3] = 1.0 - np.abs(main[:, 2])  # verticality of the main direction
+    out[:, 4] = np.abs(nrm[:, 2])
+    out[:, 5] = np.sqrt(np.maximum(cov[:, 2, 2], 0))
+    out[:, 6] = np.minimum(zq - nz_.min(axis=1), 30.0)
+    out[:, 7] = np.minimum(nz_.max(axis=1) - zq, 30.0)
+    return out, d.mean(axis=1)
+
+
+def _echo_features(cloud: Cloud) -> np.ndarray:
+    n = cloud.n
+    out = np.zeros((n, 5), np.float32)
+    a = cloud.attrs
+    if "return_number" in a and "number_of_returns" in a:
+        rn = np.asarray(a["return_number"]).astype(np.float32)
+        nr = np.asarray(a["number_of_returns"]).astype(np.float32)
+        valid = (nr >= 1) & (rn >= 1)
+        if valid.mean() > 0.5 and nr.max() > 1:
+            nr = np.where(valid, nr, 1)
+            rn = np.clip(np.where(valid, rn, 1), 1, nr)
+            out[:, 0] = rn / nr
+            out[:, 1] = np.minimum(nr, 5)
+            out[:, 2] = rn == 1
+            out[:, 3] = rn == nr
+            out[:, 4] = 1
+            return out
+    out[:, 0] = 1
+    out[:, 1] = 1
+    out[:, 2] = 1
+    out[:, 3] = 1
+    return out
+
+
+def _intensity_features(cloud: Cloud) -> np.ndarray:
+    n = cloud.n
+    out = np.zeros((n, 2), np.float32)
+    if "intensity" not in cloud.attrs:
+        return out
+    i = np.asarray(cloud.attrs["intensity"], np.float64)
+    p10, p50, p90 = np.percentile(i, [10, 50, 90])
+    span = p90 - p10
+    if not np.isfinite(span) or span <= 0:
+        return out
+    out[:, 0] = np.clip((i - p50) / span, -3, 3)
+    out[:, 1] = 1
+    return out
+
+
+def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> np.ndarray:
+    """Per-point feature matrix.
+
+    Parameters
+    ----------
+    cloud : Cloud
+        Any cloud with at least 3 points; ``return_number``/``number_of_returns`` and
+        ``intensity`` are used when present.
+    params : FeatureParams
+
+    Returns
+    -------
+    (n, len(FEATURE_NAMES)) float32
+        Columns as :data:`FEATURE_NAMES`; heights in metres.
+    """
+    from scipy import ndimage
+
+    if cloud.n < 3:
+        raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
+    xyz, _, _ = metric_xyz(cloud)
+    n = len(xyz)
+    p = params
+    F = np.empty((n, len(FEATURE_NAMES)), np.float32)
+    cell = p.cell
+    r, c, shape = _grid(xyz[:, :2], cell)
+    zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
+    zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
+    z = xyz[:, 2]
+    zmin_f = _fill_nearest(zmin, ~np.isfinite(zmin))  # despiked cells take their neighbours' value
+    for t, rad in enumerate(p.min_radii):
+        size = 2 * int(round(rad / cell)) + 1
+        m = ndimage.minimum_filter(zmin_f, size=size, mode="nearest")
+        F[:, t] = np.minimum(z - m[r, c], 60.0)
+    size = 2 * int(round(p.min_radii[0] / cell)) + 1
+    mx = ndimage.maximum_filter(zmax, size=size, mode="nearest")
+    m0 = ndimage.minimum_filter(zmin_f, size=size, mode="nearest")
+    F[:, 5] = np.minimum(mx[r, c] - m0[r, c], 60.0)
+    F[:, 6] = np.minimum(mx[r, c] - z, 60.0)
+    # provisional ground at two tolerances
+    g = provisional_ground(xyz, cell, p.ground_window, p.ground_slope, zmin=zmin, rc=(r, c, shape))
+    F[:, 7] = np.clip(z - _bilinear(g, xyz[:, :2], cell), -20, 60)
+    g2 = provisional_ground(xyz, cell, p.ground_window * 0.4, p.ground_slope * 2, zmin=zmin, rc=(r, c, shape))
+    F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
+    gy, gx = np.gradient(g, cell)
+    F[:, 9] = np.minimum(np.hypot(gx, gy)[r, c], 3.0)
+    # fine eigen scale: one query per fine voxel among the voxel representatives, broadcast
+    if p.fine_voxel > 0:
+        ffirst, finv = _voxel_ids(xyz, p.fine_voxel)
+        ref = xyz[ffirst]
+        ef, dh = _eigen(ref, ref, p.k_fine, p.workers)
+        F[:, 10:16] = ef[finv, :6]
+        # extremes relative to each point's own height
+        zr = ref[:, 2]
+        F[:, 16] = np.clip(z - (zr[finv] - ef[finv, 6]), 0, 30)
+        F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
+        dh = dh[finv]
+    else:
+        ef, dh = _eigen(xyz, xyz, p.k_fine, p.workers)
+        F[:, 10:18] = ef
+    # coarse eigen scale per voxel, broadcast
+    first, inv = _voxel_ids(xyz, p.coarse_voxel)
+    vx = xyz[first]
+    ec, _ = _eigen(vx, vx, p.k_coarse, p.workers)
+    F[:, 18:24] = ec[inv, :6]
+    F[:, 24:29] = _echo_features(cloud)
+    F[:, 29:31] = _intensity_features(cloud)
+    med = float(np.median(dh)) if n else 1.0
+    F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
+    return np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)

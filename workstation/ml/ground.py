@@ -1,0 +1,61 @@
+"""Ground filtering with the point classifier (``ws ground --method ml``).
+
+The classifier's ground class becomes :attr:`ASPRSClass.GROUND`; other points become
+:attr:`ASPRSClass.UNCLASSIFIED`, except points already in another class (anything but 0, 1
+and 2), which keep it unless ``reclassify`` — the convention of the other ground filters
+(:mod:`workstation.ground.common`).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.classes import ASPRSClass as C
+from workstation.core.cloud import Cloud
+from workstation.core.errors import StageError
+
+
+@dataclass(frozen=True)
+class MLGroundParams:
+    """Settings of the ML ground filter.
+
+    Attributes
+    ----------
+    model : str or None
+        Model file (None: the shipped model).
+    min_confidence : float
+        Probability (0-1) of the ground class needed to call a point ground.
+    reclassify : bool
+        Overwrite points already in a class other than 0, 1, 2.
+    device : str
+        ``auto``, ``cpu`` or ``cuda``.
+    """
+
+    model: str | None = None
+    min_confidence: float = 0.0
+    reclassify: bool = False
+    device: str = "auto"
+
+
+def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
+    """Classify ground with the point classifier; returns a new cloud (see module doc)."""
+    from workstation.ground.common import OVERWRITABLE
+
+    from .classifier import PointClassifier
+
+    t0 = time.perf_counter()
+    clf = PointClassifier.load(params.model, device=params.device)
+    P, hs = clf._proba_and_hag(cloud)
+    codes, _ = clf._codes(P, hs)
+    ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
+    if not ground.any():
+        raise StageError("ground_ml", "no point was classified as ground", "check the units and the input; try another method")
+    old = np.asarray(cloud.attrs["classification"]) if "classification" in cloud.attrs else np.zeros(cloud.n, np.uint8)
+    may = np.ones(cloud.n, bool) if params.reclassify else np.isin(old, OVERWRITABLE)
+    cls = np.where(may, np.where(ground, C.GROUND, C.UNCLASSIFIED), old).astype(np.uint8)
+    out = cloud.with_attrs(classification=cls, confidence=P[:, 0].astype(np.float32))
+    return out.with_history("ground_ml", {"model": params.model or "shipped", "min_confidence": params.min_confidence,
+                                          "reclassify": params.reclassify}, time.perf_counter() - t0)

@@ -1,0 +1,94 @@
+"""The compact point network: a per-point MLP on standardised multi-scale features.
+
+Why an MLP on hand-built multi-scale features rather than a point convolution network
+(PointNet++, KPConv): the neighbourhood context (heights above local minima up to 40 m,
+height above a provisional morphological ground surface, eigenvalue shape at two scales,
+echo structure) is computed once, vectorised, in :mod:`workstation.ml.features`; the network
+only has to combine it, which a two-hidden-layer MLP does in a few thousand multiply-adds per
+point. That keeps inference at hundreds of thousands of points per second on two CPU cores
+and training in minutes, and — the point for sim-to-real — the inputs are explicit,
+scanner-independent quantities rather than raw coordinates a deep network could overfit to
+simulator artefacts. Hackel et al. (2016) and Weinmann et al. (2015) show such multi-scale
+features with a shallow classifier reach the accuracy of much heavier models on ALS.
+
+torch is imported inside the functions, never at module import.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def build_mlp(n_in: int, n_out: int, hidden=(64, 64), dropout: float = 0.05):
+    """A standardising MLP (``torch.nn.Module``).
+
+    Parameters
+    ----------
+    n_in, n_out : int
+        Feature count and class count.
+    hidden : sequence of int
+        Hidden layer widths.
+    dropout : float
+
+    Returns
+    -------
+    torch.nn.Module
+        Input (b, n_in) float32 -> logits (b, n_out); buffers ``mean``/``std`` hold the feature
+        standardisation (set by :func:`set_standardisation`).
+    """
+    import torch
+    from torch import nn
+
+    class PointMLP(nn.Module):
+        def __init__(self):
+            super().__init__()
+            self.register_buffer("mean", torch.zeros(n_in))
+            self.register_buffer("std", torch.ones(n_in))
+            layers = []
+            prev = n_in
+            for h in hidden:
+                layers += [nn.Linear(prev, int(h)), nn.ReLU()]
+                if dropout > 0:
+                    layers.append(nn.Dropout(dropout))
+                prev = int(h)
+            layers.append(nn.Linear(prev, n_out))
+            self.net = nn.Sequential(*layers)
+
+        def forward(self, x):
+            return self.net((x - self.mean) / self.std)
+
+    return PointMLP()
+
+
+def set_standardisation(model, X: np.ndarray) -> None:
+    """Store per-feature mean and standard deviation of ``X`` (m, f) in the model's buffers."""
+    import torch
+
+    mu = X.mean(axis=0)
+    sd = X.std(axis=0)
+    sd = np.where(sd < 1e-6, 1.0, sd)
+    with torch.no_grad():
+        model.mean.copy_(torch.as_tensor(mu, dtype=torch.float32))
+        model.std.copy_(torch.as_tensor(sd, dtype=torch.float32))
+
+
+def resolve_device(device: str = "auto"):
+    """``torch.device`` for ``auto`` (CUDA when present), ``cpu`` or ``cuda``."""
+    import torch
+
+    if device == "auto":
+        return torch.device("cuda" if torch.cuda.is_available() else "cpu")
+    return torch.device(device)
+
+
+def predict_logits(model, X: np.ndarray, device, batch: int = 262_144) -> np.ndarray:
+    """Softmax probabilities (m, c) float32 of feature rows, in batches, without gradients."""
+    import torch
+
+    model.eval()
+    out = np.empty((len(X), model.net[-1].out_features), np.float32)
+    with torch.inference_mode():
+        for s in range(0, len(X), batch):
+            xb = torch.from_numpy(np.ascontiguousarray(X[s:s + batch])).to(device)
+            out[s:s + batch] = torch.softmax(model(xb), dim=1).cpu().numpy()
+    return out
