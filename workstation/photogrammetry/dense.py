@@ -465,7 +465,9 @@ def undistort(workdir, image_dir, max_image_size: int = -1, overwrite: bool = Fa
 def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
     """Give a point-less model one 3-D point per (image, source) pair so COLMAP's fusion, which
     finds overlapping images from shared sparse points, knows which images overlap."""
-    pycolmap = __import__("pycolmap")
+    from workstation.interop.pycolmap import import_pycolmap
+
+    pycolmap = import_pycolmap()
     obs = {i: [] for i in views}
     tracks = []
     for i, srcs in sources.items():
