@@ -26,6 +26,7 @@ STEPS: list[tuple[str, str]] = [
     ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
     ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
     ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),
+    ("dense stereo: CPU plane sweep and fusion on a tiny rig", "workstation.pipeline.demo_steps.dense:step"),
     ("renders, terrain mesh, HTML report", "workstation.pipeline.demo_steps.mesh_render:step"),
 ]
 

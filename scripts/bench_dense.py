@@ -1,0 +1,213 @@
+"""Dense reconstruction benchmarks (issue 7). Prints one JSON line per result.
+
+    python scripts/bench_dense.py rig       # synthetic heritage rig, 24 images, SfM cameras
+    python scripts/bench_dense.py temple    # Middlebury templeSparseRing, true cameras
+    python scripts/bench_dense.py fountain  # Strecha fountain-P11 at 1536 px, true cameras
+
+Options: --work DIR (scratch folder, default /tmp/bench_dense), --reuse (keep a rendered rig
+and its SfM workdir), --render PNG (off-screen view of the dense cloud).
+Wall time is contended on a shared machine; ``cpu_s`` (process CPU time) is also reported.
+Peak memory is the process's maximum resident set size.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import shutil
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+DATA = Path(os.environ.get("WS_SHARED_DATA", "/work/shared/data")) / "images" / "sfm"
+
+
+def _peak_gb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
+
+
+def _emit(d: dict) -> None:
+    print(json.dumps(d), flush=True)
+
+
+def _surface_samples(V, F, mask, cams, n=60_000, seed=0):
+    """Area-weighted samples on the faces in ``mask`` seen (unoccluded, in frame) by ≥ 2 cameras."""
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.photogrammetry.collinearity import project
+
+    rng = np.random.default_rng(seed)
+    tri = V[F[mask]]
+    area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    k = rng.choice(len(tri), n, p=area / area.sum())
+    a, b = rng.random(n), rng.random(n)
+    flip = a + b > 1
+    a[flip], b[flip] = 1 - a[flip], 1 - b[flip]
+    P = tri[k, 0] + a[:, None] * (tri[k, 1] - tri[k, 0]) + b[:, None] * (tri[k, 2] - tri[k, 0])
+    sc = RaycastScene(V, F)
+    seen = np.zeros(n, int)
+    for cam, pose in cams:
+        C = pose.center
+        d = P - C
+        dist = np.linalg.norm(d, axis=1)
+        t, _ = sc.cast(np.broadcast_to(C, d.shape), d / dist[:, None])
+        uv, z = project(P, cam, pose, return_depth=True)
+        inside = (z > 0) & (uv[:, 0] >= 0) & (uv[:, 0] < cam.width) & (uv[:, 1] >= 0) & (uv[:, 1] < cam.height)
+        seen += inside & (np.abs(t - dist) < 0.002 * dist + 1e-3)
+    return P[seen >= 2]
+
+
+def _render(cloud_xyz, rgb, path, title):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rng = np.random.default_rng(0)
+    idx = rng.choice(len(cloud_xyz), min(len(cloud_xyz), 60_000), replace=False)
+    x = cloud_xyz[idx] - cloud_xyz[idx].mean(0)
+    fig = plt.figure(figsize=(4.2, 3.4), dpi=90)
+    ax = fig.add_subplot(projection="3d")
+    ax.scatter(x[:, 0], x[:, 1], x[:, 2], s=0.3, c=np.asarray(rgb)[idx] / 65535.0, linewidths=0)
+    ax.set_title(title, fontsize=8)
+    ax.set_axis_off()
+    ax.set_box_aspect(np.ptp(x, axis=0))
+    ax.view_init(elev=20, azim=-60)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 1, min_ncc: float = 0.4,
+              fusion_min_pixels: int = 2) -> None:
+    from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
+    from workstation.photogrammetry.georef import fit_similarity
+    from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+    from workstation.raster.ortho import read_reconstruction
+
+    rigdir, sfmdir = work / "rig", work / "rig_sfm"
+    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
+    t0 = time.perf_counter()
+    if not (reuse and (rigdir / "truth_mesh.npz").exists()):
+        make_rig(recipe, spec, rigdir, overwrite=True)
+    t_render = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if not (reuse and (sfmdir / "sparse" / "0").exists()):
+        run_sfm(rigdir / "images", sfmdir, params=SfMParams(), overwrite=True)
+    t_sfm = time.perf_counter() - t0
+    c0, t0 = time.process_time(), time.perf_counter()
+    cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc,
+                                                                      fusion_min_pixels=fusion_min_pixels),
+                               overwrite=True)
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    true = read_reconstruction(rigdir / "cameras.json")
+    est = read_reconstruction(sfmdir / "sparse" / "0")
+    by_name = {im.name: im for im in true.images.values()}
+    pairs = [(im.pose.center, by_name[im.name].pose.center) for im in est.images.values() if im.name in by_name]
+    sim = fit_similarity(np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs]))
+    xyz = sim.apply(cloud.xyz)
+    T = load_truth(rigdir)
+    cams = [(true.cameras[im.camera_id], im.pose) for im in true.images.values()]
+    samples = _surface_samples(T["vertices"], T["faces"], T["target"], cams)
+    ev = evaluate(xyz, T["vertices"], T["faces"], float(T["extent"]), samples)
+    _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels, "registered": len(pairs), "images": len(true.images),
+           "render_s": round(t_render, 1), "sfm_s": round(t_sfm, 1), "dense_wall_s": round(wall, 1),
+           "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
+           "samples": len(samples), "summary": summary["timings_s"]})
+    if render:
+        _render(xyz, cloud.attrs["rgb"], render, f"synthetic heritage rig: {cloud.n} dense points (CPU plane sweep)")
+
+
+def _true_workdir(work: Path, name: str, cams: list) -> Path:
+    """A COLMAP workdir (sparse/0) holding true cameras; images are read from the data folder."""
+    from workstation.core.products import Reconstruction
+    from workstation.photogrammetry.rigs import write_colmap_text
+
+    wd = work / name
+    if wd.exists():
+        shutil.rmtree(wd)
+    from workstation.core.products import Image
+
+    cameras, images = {}, {}
+    for k, (img, cam, pose) in enumerate(cams, start=1):
+        cameras[k] = cam
+        images[k] = Image(img, k, pose)
+    write_colmap_text(Reconstruction(cameras, images), wd / "sparse" / "0")
+    return wd
+
+
+def bench_temple(work: Path, render: str | None) -> None:
+    from workstation.core.products import Camera, Pose
+    from workstation.photogrammetry.dense import DenseParams, run_dense
+
+    folder = DATA / "middlebury_templeSparseRing"
+    cams = []
+    for line in (folder / "templeSR_par.txt").read_text().splitlines()[1:]:
+        f = line.split()
+        v = np.array(f[1:], float)
+        K, R, t = v[:9].reshape(3, 3), v[9:18].reshape(3, 3), v[18:21]
+        cams.append((f[0], Camera(640, 480, K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, t)))
+    wd = _true_workdir(work, "temple", cams)
+    c0, t0 = time.process_time(), time.perf_counter()
+    cloud, summary = run_dense(wd, folder, DenseParams(device="cpu", depth_range=(0.45, 0.8), max_image_size=-1), overwrite=True)
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    lo, hi = np.array([-0.073568, 0.021728, -0.012445]), np.array([0.028855, 0.181892, 0.062736])
+    inside = np.all((cloud.xyz >= lo - 0.005) & (cloud.xyz <= hi + 0.005), axis=1)
+    _emit({"bench": "dense_middlebury_templeSR", "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
+           "cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), "inside_bbox": round(float(inside.mean()), 4),
+           "goal_wall_s": 180, "summary": summary["timings_s"]})
+    if render:
+        _render(cloud.xyz, cloud.attrs["rgb"], render, f"Middlebury templeSR: {cloud.n} points")
+
+
+def bench_fountain(work: Path, size: int, render: str | None) -> None:
+    from workstation.core.products import Camera, Pose
+    from workstation.photogrammetry.dense import DenseParams, run_dense
+
+    folder = DATA / "strecha_fountain-P11"
+    cams = []
+    for p in sorted((folder / "gt_dense_cameras").glob("*.camera")):
+        v = np.array(p.read_text().split(), float)
+        K, Rcw, C, (w, h) = v[:9].reshape(3, 3), v[12:21].reshape(3, 3), v[21:24], v[24:26]
+        R = Rcw.T
+        cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, -R @ C)))
+    wd = _true_workdir(work, "fountain", cams)
+    c0, t0 = time.process_time(), time.perf_counter()
+    cloud, summary = run_dense(wd, folder / "images", DenseParams(device="cpu", depth_range=(3.0, 25.0), max_image_size=size), overwrite=True)
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    _emit({"bench": f"dense_fountain_P11_{size}", "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
+           "cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), "goal_wall_s": 900, "goal_peak_gb": 6,
+           "summary": summary["timings_s"]})
+    if render:
+        _render(cloud.xyz, cloud.attrs["rgb"], render, f"fountain-P11: {cloud.n} points")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("what", choices=["rig", "temple", "fountain"])
+    ap.add_argument("--work", default="/tmp/bench_dense")
+    ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--render")
+    ap.add_argument("--size", type=int, default=1536)
+    ap.add_argument("--min-consistent", type=int, default=1)
+    ap.add_argument("--min-ncc", type=float, default=0.4)
+    ap.add_argument("--fusion-min-pixels", type=int, default=2)
+    a = ap.parse_args()
+    work = Path(a.work)
+    work.mkdir(parents=True, exist_ok=True)
+    if a.what == "rig":
+        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels)
+    elif a.what == "temple":
+        bench_temple(work, a.render)
+    else:
+        bench_fountain(work, a.size, a.render)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,54 @@
+"""``ws dense``: dense cloud from an SfM workdir (depth maps + fusion)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from workstation.cli.options import emit_json, json_option, overwrite_option
+
+
+@click.command()
+@click.argument("workdir", type=click.Path(file_okay=False, exists=True))
+@click.option("--images", "image_dir", type=click.Path(file_okay=False, exists=True), help="Folder of the original images (default WORKDIR/images).")
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), help="Also write the cloud here (.las, .laz, .ply).")
+@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU plane sweep.")
+@click.option("--max-image-size", type=int, default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
+@click.option("--sources", "num_sources", type=int, default=5, show_default=True, help="Source views per reference image (CPU path).")
+@click.option("--min-ncc", type=float, default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
+@click.option("--min-consistent", type=int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
+@click.option("--depth-range", nargs=2, type=float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
+@overwrite_option
+@json_option
+def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_ncc, min_consistent, depth_range, overwrite, as_json):
+    """Dense reconstruction of WORKDIR (from `ws sfm`, or a synthetic rig folder).
+
+    Undistorts the images into WORKDIR/dense (COLMAP layout), computes depth and normal maps
+    (stereo/depth_maps, stereo/normal_maps) and fuses them into WORKDIR/dense/fused.ply
+    (points in the model frame with colours and normals). --overwrite replaces WORKDIR/dense
+    and the -o file.
+    """
+    from workstation.photogrammetry.dense import DenseParams, run_dense
+
+    if output is not None and Path(output).suffix.lower() not in (".las", ".laz", ".ply"):
+        from workstation.core.errors import InvalidInputError
+
+        raise InvalidInputError("output must be .las, .laz or .ply", path=output)
+    if output is not None and Path(output).exists() and not overwrite:
+        from workstation.core.errors import OutputExistsError
+
+        raise OutputExistsError(output)
+    params = DenseParams(device=device, max_image_size=max_image_size, num_sources=num_sources,
+                         top_k=min(2, num_sources), min_ncc=min_ncc, min_consistent=min_consistent,
+                         depth_range=tuple(depth_range) if depth_range else None)
+    cloud, summary = run_dense(workdir, image_dir, params, overwrite=overwrite)
+    if output is not None:
+        from workstation.io import write_cloud
+
+        write_cloud(cloud, output, overwrite=overwrite, inputs=[summary["fused"]])
+        summary["output"] = str(output)
+    if as_json:
+        emit_json(summary)
+    else:
+        click.echo(f"{summary['points']} points ({summary['device']}) -> {summary['fused']}", err=True)

@@ -1,0 +1,675 @@
+"""Dense reconstruction: undistortion, depth/normal maps per image, fusion into a dense cloud.
+
+Two depth-map back ends write the same COLMAP workspace (``WORKDIR/dense/stereo``), so one
+fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused.ply``:
+
+- ``cuda``: COLMAP PatchMatch stereo (Schönberger et al., *Pixelwise View Selection for
+  Unstructured Multi-View Stereo*, ECCV 2016) through ``pycolmap.patch_match_stereo``; needs a
+  CUDA build of pycolmap (``pycolmap.has_cuda``).
+- ``cpu``: our plane-sweep stereo (Collins, *A space-sweep approach to true multi-image
+  matching*, CVPR 1996; Gallup et al., *Real-time plane-sweeping stereo with multiple sweeping
+  directions*, CVPR 2007): for each reference image, fronto-parallel planes uniformly spaced in
+  inverse depth are swept through the scene; every source view is warped onto each plane by
+  its homography (``cv2.warpPerspective``), scored by zero-mean NCC over a square window (box
+  filters), the best ``k`` source scores are averaged (robust to occlusion), the best plane wins
+  and a parabola through its neighbours refines the depth below the plane spacing. A
+  geometric consistency check (forward-backward reprojection, as in COLMAP's geometric
+  stage and Furukawa & Hernández, *Multi-View Stereo: A Tutorial*, 2015, §3) keeps depths that
+  agree with at least ``min_consistent`` source depth maps. Normals come from the depth map's
+  local plane (cross product of back-projected neighbours).
+
+Memory is bounded by the image size: a handful of float32 arrays of one image at a time.
+
+Depth and normal maps use COLMAP's array format: a text header ``width&height&channels&``
+followed by float32 data in column-major (width, height, channels) order (COLMAP's
+``read_array``/``write_array``); depth 0 marks an invalid pixel.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from workstation.core.errors import (
+    InvalidInputError,
+    MissingDependencyError,
+    StageError,
+)
+from workstation.core.log import get_logger
+
+log = get_logger(__name__)
+
+DEVICES = ("auto", "cpu", "cuda")
+
+
+@dataclass(frozen=True)
+class DenseParams:
+    """Options of :func:`run_dense`.
+
+    Attributes
+    ----------
+    device : str
+        "auto" (COLMAP PatchMatch when pycolmap has CUDA, else CPU plane sweep), "cpu", "cuda".
+    max_image_size : int
+        Longest side of the undistorted images used for stereo, pixels (-1: full size).
+    num_sources : int
+        Source views per reference image (best by shared sparse points and triangulation angle).
+    top_k : int
+        Best source NCC scores averaged per pixel and plane.
+    window : int
+        NCC window side, pixels (odd).
+    min_ncc : float
+        Smallest aggregated NCC (-1..1) kept.
+    max_planes : int
+        Most depth planes per reference image; the count is set so neighbouring planes move
+        the farthest source pixel by about ``plane_step_px``.
+    plane_step_px : float
+        Target disparity step between planes, pixels.
+    min_angle_deg, max_angle_deg : float
+        Median triangulation angle range (degrees) for a source view to be chosen.
+    min_consistent : int
+        Source depth maps that must agree with a depth (geometric consistency).
+    max_reproj_px : float
+        Forward-backward reprojection tolerance of the consistency check, pixels.
+    max_rel_depth : float
+        Relative depth tolerance of the consistency check.
+    min_texture : float
+        Smallest grey-level standard deviation (0-255 scale) in the window; flatter pixels
+        (sky, saturated areas) get no depth.
+    depth_range : (float, float), optional
+        (near, far) depth in model units for every image; by default from the sparse points
+        seen by each image (needed when the model has no 3-D points, e.g. true rig cameras).
+    fusion_min_pixels : int
+        ``StereoFusionOptions.min_num_pixels``: pixels (in different images) that must agree
+        for a fused point; itself a multi-view consistency check.
+    num_threads : int
+        OpenCV / fusion threads (-1: all).
+    """
+
+    device: str = "auto"
+    max_image_size: int = 1600
+    num_sources: int = 5
+    top_k: int = 2
+    window: int = 7
+    min_ncc: float = 0.4
+    max_planes: int = 192
+    plane_step_px: float = 1.0
+    min_angle_deg: float = 2.0
+    max_angle_deg: float = 45.0
+    min_consistent: int = 1
+    max_reproj_px: float = 1.0
+    max_rel_depth: float = 0.01
+    min_texture: float = 2.0
+    fusion_min_pixels: int = 2
+    num_threads: int = -1
+    depth_range: tuple | None = None
+
+    def __post_init__(self):
+        if self.device not in DEVICES:
+            raise InvalidInputError(f"device must be one of {DEVICES}", field="device")
+        if self.window < 3 or self.window % 2 == 0:
+            raise InvalidInputError("window must be an odd number ≥ 3", field="window")
+        if self.num_sources < 1 or not 1 <= self.top_k <= self.num_sources:
+            raise InvalidInputError("need num_sources ≥ 1 and 1 ≤ top_k ≤ num_sources", field="top_k")
+
+
+# ---------------------------------------------------------------------------------------------
+# COLMAP array format
+# ---------------------------------------------------------------------------------------------
+def write_array(array: np.ndarray, path) -> Path:
+    """Write a (h, w) or (h, w, c) array in COLMAP's format (header + column-major float32)."""
+    a = np.asarray(array, np.float32)
+    if a.ndim == 2:
+        a = a[:, :, None]
+    if a.ndim != 3:
+        raise InvalidInputError(f"a depth/normal map is (h, w) or (h, w, c), got shape {array.shape}")
+    h, w, c = a.shape
+    p = Path(path)
+    with open(p, "wb") as f:
+        f.write(f"{w}&{h}&{c}&".encode())
+        f.write(np.transpose(a, (1, 0, 2)).reshape(-1, order="F").astype("<f4").tobytes())
+    return p
+
+
+def read_array(path) -> np.ndarray:
+    """Read a COLMAP depth/normal map: (h, w) for one channel, else (h, w, c) float32."""
+    raw = Path(path).read_bytes()
+    header, pos = [], 0
+    for _ in range(3):
+        j = raw.index(b"&", pos)
+        header.append(int(raw[pos:j]))
+        pos = j + 1
+    w, h, c = header
+    data = np.frombuffer(raw, "<f4", count=w * h * c, offset=pos)
+    a = data.reshape((w, h, c), order="F").transpose(1, 0, 2)
+    return a[:, :, 0].copy() if c == 1 else a.copy()
+
+
+# ---------------------------------------------------------------------------------------------
+# views
+# ---------------------------------------------------------------------------------------------
+@dataclass
+class _View:
+    name: str
+    K: np.ndarray  # 3x3 (pixel centres at integers)
+    R: np.ndarray
+    t: np.ndarray
+    width: int
+    height: int
+    near: float
+    far: float
+
+    @property
+    def center(self) -> np.ndarray:
+        return -self.R.T @ self.t
+
+
+def _load_views(rec, depth_range=None, max_points: int = 200_000):
+    """(views by image id, sparse points (n, 3), their track image ids, point indices per image)."""
+    views, obs = {}, {}
+    pts, ids = [], []
+    for p in rec.points3D.values():
+        pts.append(p.xyz)
+        ids.append([el.image_id for el in p.track.elements])
+        if len(pts) >= max_points:
+            break
+    pts = np.asarray(pts, float).reshape(-1, 3)
+    for iid, im in rec.images.items():
+        if not im.has_pose:
+            continue
+        cam = rec.cameras[im.camera_id]
+        fx, fy, cx, cy = (list(np.asarray(cam.params, float)) + [0, 0, 0, 0])[:4]
+        if str(cam.model_name) == "SIMPLE_PINHOLE":
+            fx, fy, cx, cy = cam.params[0], cam.params[0], cam.params[1], cam.params[2]
+        elif str(cam.model_name) != "PINHOLE":
+            raise InvalidInputError(f"dense stereo needs undistorted PINHOLE cameras, got {cam.model_name}")
+        K = np.array([[fx, 0, cx - 0.5], [0, fy, cy - 0.5], [0, 0, 1.0]])
+        T = im.cam_from_world() if callable(im.cam_from_world) else im.cam_from_world
+        views[int(iid)] = _View(im.name, K, np.asarray(T.rotation.matrix(), float), np.asarray(T.translation, float),
+                                int(cam.width), int(cam.height), 0.0, 0.0)
+        obs[int(iid)] = []
+    for k, track in enumerate(ids):
+        for i in set(track):
+            if i in obs:
+                obs[i].append(k)
+    for iid, v in views.items():
+        if depth_range is not None:
+            v.near, v.far = float(depth_range[0]), float(depth_range[1])
+            continue
+        idx = np.asarray(obs[iid], np.int64)
+        if idx.size < 3:
+            raise StageError("dense", f"image {v.name} sees {idx.size} sparse points",
+                             "re-run SfM (dense needs a sparse model) or give DenseParams.depth_range")
+        z = (pts[idx] @ v.R.T + v.t)[:, 2]
+        z = z[z > 0]
+        v.near, v.far = float(np.percentile(z, 1) * 0.8), float(np.percentile(z, 99) * 1.25)
+    return views, pts, ids, obs
+
+
+def select_sources(views, pts, obs, params: DenseParams) -> dict[int, list[int]]:
+    """Source views per image: most shared sparse points whose median triangulation angle is in
+    [min_angle_deg, max_angle_deg] (the view-selection heuristic of Goesele et al., *Multi-View
+    Stereo for Community Photo Collections*, ICCV 2007, simplified)."""
+    sets = {i: set(v) for i, v in obs.items()}
+    out = {}
+    for i, vi in views.items():
+        cand = []
+        for j, vj in views.items():
+            if j == i:
+                continue
+            shared = np.fromiter(sets[i] & sets[j], np.int64)
+            if len(pts) == 0:  # no sparse points: the ray through the image centre at mid-depth
+                mid = 2.0 / (1.0 / vi.near + 1.0 / vi.far)
+                P = vi.center + vi.R[2] * mid
+                xj = vj.K @ (vj.R @ P + vj.t)
+                if xj[2] <= 0 or not (0 <= xj[0] / xj[2] < vj.width and 0 <= xj[1] / xj[2] < vj.height):
+                    continue
+                shared = np.array([0])
+                a, b = (P - vi.center)[None], (P - vj.center)[None]
+                cosang = np.sum(a * b, 1) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
+                ang = float(np.degrees(np.arccos(np.clip(cosang[0], -1, 1))))
+                if params.min_angle_deg <= ang <= params.max_angle_deg:
+                    cand.append((1.0 / (1.0 + abs(ang - 15.0)), j))  # prefer ~15° (the rig step)
+                continue
+            if shared.size < 5:
+                continue
+            a = pts[shared] - vi.center
+            b = pts[shared] - vj.center
+            cosang = np.sum(a * b, 1) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
+            ang = float(np.degrees(np.median(np.arccos(np.clip(cosang, -1, 1)))))
+            if params.min_angle_deg <= ang <= params.max_angle_deg:
+                w = min(1.0, ang / 5.0)  # penalise tiny baselines (poor depth precision)
+                cand.append((shared.size * w, j))
+        cand.sort(reverse=True)
+        out[i] = [j for _, j in cand[: params.num_sources]]
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# plane sweep
+# ---------------------------------------------------------------------------------------------
+def _grey(path, size) -> np.ndarray:
+    import cv2
+
+    img = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
+    if img is None:
+        raise InvalidInputError("cannot read image", path=path)
+    if (img.shape[1], img.shape[0]) != size:
+        img = cv2.resize(img, size, interpolation=cv2.INTER_AREA)
+    return img.astype(np.float32)
+
+
+def _box(a, r):
+    import cv2
+
+    return cv2.boxFilter(a, -1, (2 * r + 1, 2 * r + 1), borderType=cv2.BORDER_REFLECT)
+
+
+def plane_sweep(ref_img, ref: _View, src_imgs, srcs: list[_View], params: DenseParams, near=None, far=None):
+    """Winner-take-all plane-sweep depth of one reference image.
+
+    Parameters
+    ----------
+    ref_img : (h, w) float32
+        Grey reference image (0-255).
+    ref : _View
+    src_imgs : list of (h', w') float32
+    srcs : list of _View
+    params : DenseParams
+    near, far : float, optional
+        Depth range, metres (default: the view's sparse range).
+
+    Returns
+    -------
+    depth : (h, w) float32
+        Depth along the optical axis (0 = none), model units.
+    score : (h, w) float32
+        Aggregated NCC of the chosen plane.
+    """
+    import cv2
+
+    near = ref.near if near is None else near
+    far = ref.far if far is None else far
+    h, w = ref_img.shape
+    r = params.window // 2
+    eps = 1e-3
+    mr = _box(ref_img, r)
+    vr = np.maximum(_box(ref_img * ref_img, r) - mr * mr, 0)
+    sr = np.sqrt(vr)
+    textured = sr >= params.min_texture
+    # planes uniform in inverse depth; count from the largest disparity range among sources
+    Kinv = np.linalg.inv(ref.K)
+    ray = Kinv @ np.array([w / 2, h / 2, 1.0])
+    span = 0.0
+    for s in srcs:
+        Rrel, trel = s.R @ ref.R.T, s.t - s.R @ ref.R.T @ ref.t
+        p0 = s.K @ (Rrel @ (ray * near) + trel)
+        p1 = s.K @ (Rrel @ (ray * far) + trel)
+        span = max(span, float(np.hypot(*(p0[:2] / p0[2] - p1[:2] / p1[2]))))
+    n_planes = int(np.clip(np.ceil(span / params.plane_step_px), 16, params.max_planes))
+    inv = np.linspace(1.0 / near, 1.0 / far, n_planes)
+    best = np.full((h, w), -2.0, np.float32)
+    best_k = np.full((h, w), -1, np.int32)
+    s_prev = np.zeros((h, w), np.float32)
+    s_next = np.zeros((h, w), np.float32)
+    prev = np.full((h, w), -2.0, np.float32)
+    k_top = min(params.top_k, len(srcs))
+    n = np.array([0.0, 0.0, 1.0])
+    rel = [(s.R @ ref.R.T, s.t - s.R @ ref.R.T @ ref.t) for s in srcs]
+    for k, invd in enumerate(inv):
+        d = 1.0 / invd
+        scores = np.empty((len(srcs), h, w), np.float32)
+        for si, (s, img) in enumerate(zip(srcs, src_imgs)):
+            Rrel, trel = rel[si]
+            H = s.K @ (Rrel + np.outer(trel, n) / d) @ Kinv  # ref pixel -> source pixel
+            warped = cv2.warpPerspective(img, H, (w, h), flags=cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP,
+                                         borderMode=cv2.BORDER_CONSTANT, borderValue=-1.0)
+            valid = warped >= 0  # border value -1 marks pixels outside the source image
+            ms = _box(warped, r)
+            vs = np.maximum(_box(warped * warped, r) - ms * ms, 0)
+            cov = _box(ref_img * warped, r) - mr * ms
+            ncc = cov / (sr * np.sqrt(vs) + eps)
+            ncc[~valid] = -1.0
+            scores[si] = ncc
+        if k_top == 1:
+            agg = scores.max(0)
+        else:
+            agg = -np.partition(-scores, k_top - 1, axis=0)[:k_top].mean(0)
+        # the plane after the current best gives the right neighbour of the parabola
+        upd_next = best_k == k - 1
+        s_next[upd_next] = agg[upd_next]
+        better = agg > best
+        best[better] = agg[better]
+        best_k[better] = k
+        s_prev[better] = prev[better]
+        prev = agg
+    # sub-plane refinement: parabola through (k-1, k, k+1) in plane index (inverse depth)
+    interior = (best_k > 0) & (best_k < n_planes - 1)
+    den = s_prev - 2 * best + s_next
+    off = np.where(interior & (den < -1e-6), 0.5 * (s_prev - s_next) / np.where(den < -1e-6, den, -1), 0.0)
+    off = np.clip(off, -0.5, 0.5)
+    kf = best_k + off
+    step = (inv[-1] - inv[0]) / max(n_planes - 1, 1)
+    invd = inv[0] + kf * step
+    depth = np.where((best >= params.min_ncc) & textured & interior & (invd > 0), 1.0 / np.maximum(invd, 1e-12), 0.0)
+    return depth.astype(np.float32), best
+
+
+def depth_normals(depth: np.ndarray, K: np.ndarray) -> np.ndarray:
+    """(h, w, 3) float32 unit normals (camera frame, facing the camera) from a depth map by the
+    cross product of central differences of back-projected points; 0 where undefined."""
+    h, w = depth.shape
+    u, v = np.meshgrid(np.arange(w, dtype=np.float32), np.arange(h, dtype=np.float32))
+    X = (u - K[0, 2]) / K[0, 0] * depth
+    Y = (v - K[1, 2]) / K[1, 1] * depth
+    P = np.stack([X, Y, depth], -1)
+    dx = np.zeros_like(P)
+    dy = np.zeros_like(P)
+    dx[:, 1:-1] = P[:, 2:] - P[:, :-2]
+    dy[1:-1] = P[2:] - P[:-2]
+    nrm = np.cross(dx, dy)
+    ok = (depth > 0)
+    ok[:, 1:-1] &= (depth[:, 2:] > 0) & (depth[:, :-2] > 0)
+    ok[1:-1] &= (depth[2:] > 0) & (depth[:-2] > 0)
+    ok[[0, -1], :] = False
+    ok[:, [0, -1]] = False
+    ln = np.linalg.norm(nrm, axis=-1, keepdims=True)
+    nrm = np.where(ok[..., None] & (ln > 0), nrm / np.maximum(ln, 1e-12), 0)
+    flip = np.sum(nrm * P, -1) > 0  # make normals face the camera
+    nrm[flip] *= -1
+    return nrm.astype(np.float32)
+
+
+def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View], params: DenseParams) -> np.ndarray:
+    """Keep depths that ``min_consistent`` source depth maps confirm (forward-backward
+    reprojection within ``max_reproj_px`` and relative depth within ``max_rel_depth``)."""
+    import cv2
+
+    h, w = depth.shape
+    u, v = np.meshgrid(np.arange(w, dtype=np.float64), np.arange(h, dtype=np.float64))
+    Kinv = np.linalg.inv(ref.K)
+    rays = np.stack([u, v, np.ones_like(u)], -1) @ Kinv.T
+    Xc = rays * depth[..., None]
+    Xw = (Xc - ref.t) @ ref.R  # R^T (x - t)
+    count = np.zeros((h, w), np.int32)
+    for s, ds in zip(srcs, src_depths):
+        xs = Xw @ s.R.T + s.t
+        zs = xs[..., 2]
+        ps = xs @ s.K.T
+        us = (ps[..., 0] / np.where(zs > 0, ps[..., 2], 1)).astype(np.float32)
+        vs = (ps[..., 1] / np.where(zs > 0, ps[..., 2], 1)).astype(np.float32)
+        dsamp = cv2.remap(ds, us, vs, cv2.INTER_NEAREST, borderMode=cv2.BORDER_CONSTANT, borderValue=0.0).astype(np.float64)
+        ub, vb = np.round(us), np.round(vs)
+        Xs = (np.stack([ub, vb, np.ones_like(ub)], -1) @ np.linalg.inv(s.K).T) * dsamp[..., None]
+        Xb = ((Xs - s.t) @ s.R) @ ref.R.T + ref.t
+        pb = Xb @ ref.K.T
+        zb = Xb[..., 2]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            err = np.hypot(pb[..., 0] / zb - u, pb[..., 1] / zb - v)
+            rel = np.abs(zb - depth) / depth
+        ok = (depth > 0) & (zs > 0) & (dsamp > 0) & (zb > 0) & (err <= params.max_reproj_px) & (rel <= params.max_rel_depth)
+        count += ok
+    return np.where(count >= params.min_consistent, depth, 0.0).astype(np.float32)
+
+
+# ---------------------------------------------------------------------------------------------
+# driver
+# ---------------------------------------------------------------------------------------------
+def resolve_device(device: str) -> str:
+    """"cpu" or "cuda" for a requested device; "cuda" needs a CUDA build of pycolmap."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    has_cuda = bool(getattr(import_pycolmap(), "has_cuda", False))
+    if device == "cuda" and not has_cuda:
+        raise MissingDependencyError("pycolmap (CUDA build)", "COLMAP PatchMatch stereo on the GPU",
+                                     "install a CUDA wheel of pycolmap on a machine with an NVIDIA GPU, or use --device cpu")
+    if device == "auto":
+        device = "cuda" if has_cuda else "cpu"
+        log.info("dense device: %s (pycolmap.has_cuda = %s)", device, has_cuda)
+    return device
+
+
+def find_model(workdir) -> Path:
+    """The sparse model folder of a workdir (``sparse/0``, ``sparse``) or the folder itself."""
+    w = Path(workdir)
+    for c in (w / "sparse" / "0", w / "sparse", w):
+        if (c / "cameras.bin").exists() or (c / "cameras.txt").exists():
+            return c
+    raise InvalidInputError("no COLMAP model found", "give an SfM workdir (ws sfm -o WORKDIR) with sparse/0", path=w)
+
+
+def undistort(workdir, image_dir, max_image_size: int = -1, overwrite: bool = False) -> Path:
+    """Undistort the images of the workdir's model into ``WORKDIR/dense`` (COLMAP layout:
+    ``images/``, ``sparse/``, ``stereo/``) with ``pycolmap.undistort_images``."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    pycolmap = import_pycolmap()
+    out = Path(workdir) / "dense"
+    if out.exists() and any(out.iterdir()):
+        if not overwrite:
+            from workstation.core.errors import OutputExistsError
+
+            raise OutputExistsError(out)
+        import shutil
+
+        shutil.rmtree(out)
+    opt = pycolmap.UndistortCameraOptions()
+    opt.max_image_size = int(max_image_size)
+    pycolmap.undistort_images(str(out), str(find_model(workdir)), str(image_dir), undistort_options=opt)
+    return out
+
+
+def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
+    """Give a point-less model one 3-D point per (image, source) pair so COLMAP's fusion, which
+    finds overlapping images from shared sparse points, knows which images overlap."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    pycolmap = import_pycolmap()
+    obs = {i: [] for i in views}
+    tracks = []
+    for i, srcs in sources.items():
+        vi = views[i]
+        mid = 2.0 / (1.0 / vi.near + 1.0 / vi.far)
+        P = vi.center + vi.R[2] * mid
+        els = []
+        for k in [i, *srcs]:
+            x = views[k].K @ (views[k].R @ P + views[k].t)
+            els.append((k, len(obs[k])))
+            obs[k].append(x[:2] / x[2] + 0.5)  # COLMAP pixel convention (corner origin)
+        tracks.append((P, els))
+    for i, xy in obs.items():
+        rec.images[i].points2D = pycolmap.Point2DList([pycolmap.Point2D(np.asarray(p, float)) for p in xy])
+    for P, els in tracks:
+        t = pycolmap.Track()
+        for k, j in els:
+            t.add_element(int(k), int(j))
+        rec.add_point3D(np.asarray(P, float), t, np.array([128, 128, 128], np.uint8))
+    rec.write_binary(str(sparse_dir))
+
+
+def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
+    """CPU plane-sweep depth and normal maps for every image of an undistorted workspace.
+
+    Writes ``stereo/depth_maps/NAME.{photometric,geometric}.bin`` and
+    ``stereo/normal_maps/NAME.{photometric,geometric}.bin``. Returns per-image statistics.
+    """
+    import cv2
+
+    from workstation.core.progress import track
+    from workstation.interop.pycolmap import import_pycolmap
+
+    pycolmap = import_pycolmap()
+    if params.num_threads > 0:
+        cv2.setNumThreads(params.num_threads)
+    d = Path(dense_dir)
+    rec = pycolmap.Reconstruction(str(d / "sparse"))
+    views, pts, _, obs = _load_views(rec, params.depth_range)
+    sources = select_sources(views, pts, obs, params)
+    if len(pts) == 0:
+        _add_overlap_points(rec, views, sources, d / "sparse")
+    dm, nm = d / "stereo" / "depth_maps", d / "stereo" / "normal_maps"
+    dm.mkdir(parents=True, exist_ok=True)
+    nm.mkdir(parents=True, exist_ok=True)
+    stats = {"images": len(views), "photometric_s": 0.0, "geometric_s": 0.0, "valid_photometric": 0, "valid_geometric": 0}
+    t0 = time.perf_counter()
+    for iid in track(sorted(views), "plane sweep"):
+        v = views[iid]
+        if not sources[iid]:
+            log.warning("%s: no source view in the angle range; no depth map", v.name)
+            write_array(np.zeros((v.height, v.width), np.float32), dm / f"{v.name}.photometric.bin")
+            continue
+        ref = _grey(d / "images" / v.name, (v.width, v.height))
+        srcs = [views[j] for j in sources[iid]]
+        imgs = [_grey(d / "images" / s.name, (s.width, s.height)) for s in srcs]
+        ti = time.perf_counter()
+        depth, _ = plane_sweep(ref, v, imgs, srcs, params)
+        write_array(depth, dm / f"{v.name}.photometric.bin")
+        log.info("depth map %s: %.0f %% of pixels, %d sources, %.1f s", v.name, 100.0 * float((depth > 0).mean()),
+                 len(srcs), time.perf_counter() - ti)
+        stats["valid_photometric"] += int((depth > 0).sum())
+    stats["photometric_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    for iid in track(sorted(views), "consistency"):
+        v = views[iid]
+        depth = read_array(dm / f"{v.name}.photometric.bin")
+        srcs = [views[j] for j in sources[iid]]
+        sd = [read_array(dm / f"{s.name}.photometric.bin") for s in srcs]
+        geo = geometric_filter(depth, v, sd, srcs, params)
+        write_array(geo, dm / f"{v.name}.geometric.bin")
+        nrm = depth_normals(geo, v.K)
+        geo = np.where(np.any(nrm != 0, -1), geo, 0).astype(np.float32)
+        write_array(geo, dm / f"{v.name}.geometric.bin")
+        write_array(nrm, nm / f"{v.name}.geometric.bin")
+        stats["valid_geometric"] += int((geo > 0).sum())
+    stats["geometric_s"] = time.perf_counter() - t0
+    if stats["valid_geometric"] == 0:
+        raise StageError("dense", "no depth survived the consistency check",
+                         "check the cameras (SfM residuals), lower min_ncc or min_consistent")
+    return stats
+
+
+def fuse(dense_dir, params: DenseParams = DenseParams()):
+    """Fuse the geometric depth/normal maps into ``dense_dir/fused.ply`` (pycolmap.stereo_fusion)
+    and return it as a :class:`~workstation.core.cloud.Cloud` (``rgb``, ``normal``)."""
+    from workstation.interop.pycolmap import import_pycolmap
+    from workstation.io import read_cloud
+
+    pycolmap = import_pycolmap()
+    d = Path(dense_dir)
+    opt = pycolmap.StereoFusionOptions()
+    opt.min_num_pixels = int(params.fusion_min_pixels)
+    opt.num_threads = int(params.num_threads)
+    out = d / "fused.ply"
+    pycolmap.stereo_fusion(str(out), str(d), input_type="geometric", options=opt, output_type="PLY")
+    if not out.exists():
+        raise StageError("dense", "fusion wrote no fused.ply", "check the depth maps in stereo/depth_maps")
+    cloud = read_cloud(out)
+    if cloud.n == 0:
+        raise StageError("dense", "fusion produced an empty cloud", "lower fusion_min_pixels or check the depth maps")
+    return cloud
+
+
+def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), overwrite: bool = False):
+    """Undistort, compute depth/normal maps (CUDA PatchMatch or CPU plane sweep), fuse.
+
+    Parameters
+    ----------
+    workdir : path
+        SfM workdir (``sparse/0``) or a rig folder with ``sparse/0`` and ``images/``.
+    image_dir : path, optional
+        The original images (default ``WORKDIR/images``).
+    params : DenseParams
+    overwrite : bool
+        Replace an existing ``WORKDIR/dense``.
+
+    Returns
+    -------
+    cloud : Cloud
+        Fused points (model frame) with ``rgb`` and ``normal``.
+    summary : dict
+        Device, timings (s), image count, points.
+    """
+    from workstation.interop.pycolmap import import_pycolmap
+
+    pycolmap = import_pycolmap()
+    workdir = Path(workdir)
+    image_dir = Path(image_dir) if image_dir is not None else workdir / "images"
+    if not image_dir.is_dir():
+        raise InvalidInputError("image folder not found", "pass the folder of the original images (--images)", path=image_dir)
+    device = resolve_device(params.device)
+    t = {}
+    t0 = time.perf_counter()
+    dense_dir = undistort(workdir, image_dir, params.max_image_size, overwrite)
+    t["undistort"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if device == "cuda":
+        opt = pycolmap.PatchMatchOptions()
+        opt.geom_consistency = True
+        if params.max_image_size > 0:
+            opt.max_image_size = int(params.max_image_size)
+        pycolmap.patch_match_stereo(str(dense_dir), options=opt)
+        stats = {}
+    else:
+        stats = compute_depth_maps(dense_dir, params)
+    t["depth_maps"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    cloud = fuse(dense_dir, params)
+    t["fusion"] = time.perf_counter() - t0
+    summary = {"device": device, "points": cloud.n, "timings_s": {k: round(v, 2) for k, v in t.items()},
+               "fused": str(dense_dir / "fused.ply"), **stats}
+    log.info("dense (%s): %d points in %.1f s", device, cloud.n, sum(t.values()))
+    return cloud.with_history("dense", {"device": device, "max_image_size": params.max_image_size}, sum(t.values())), summary
+
+
+def evaluate(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray, extent: float, samples: np.ndarray) -> dict:
+    """Accuracy and completeness of a dense cloud against a true mesh (Seitz et al., *A
+    Comparison and Evaluation of Multi-View Stereo Reconstruction Algorithms*, CVPR 2006).
+
+    Parameters
+    ----------
+    points : (n, 3) float
+        Dense points (same frame as the mesh).
+    vertices, faces : true mesh.
+    extent : float
+        Scene extent (m) the relative figures are quoted against.
+    samples : (k, 3) float
+        Points on the true surface (e.g. the visible part) for completeness.
+
+    Returns
+    -------
+    dict
+        ``accuracy_median`` (m, point-to-mesh), ``accuracy_rel`` (of extent), ``accuracy_p90``,
+        ``completeness`` (share of samples with a dense point within 1 % of the extent).
+    """
+    import open3d as o3d
+    from scipy.spatial import cKDTree
+
+    sc = o3d.t.geometry.RaycastingScene()
+    off = vertices.mean(0)
+    sc.add_triangles(o3d.core.Tensor((vertices - off).astype(np.float32)), o3d.core.Tensor(faces.astype(np.uint32)))
+    dist = sc.compute_distance(o3d.core.Tensor((points - off).astype(np.float32))).numpy()
+    nn, _ = cKDTree(points).query(samples, k=1)
+    return {"points": len(points), "accuracy_median": float(np.median(dist)),
+            "accuracy_rel": float(np.median(dist) / extent), "accuracy_p90": float(np.percentile(dist, 90)),
+            "completeness": float(np.mean(nn <= 0.01 * extent)), "extent": float(extent)}
+
+
+__all__ = [
+    "DEVICES",
+    "DenseParams",
+    "compute_depth_maps",
+    "depth_normals",
+    "evaluate",
+    "fuse",
+    "geometric_filter",
+    "plane_sweep",
+    "read_array",
+    "resolve_device",
+    "run_dense",
+    "select_sources",
+    "undistort",
+    "write_array",
+]
