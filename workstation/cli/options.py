@@ -32,18 +32,19 @@ def _default(o):
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
-def _clean(o):
+def json_clean(o):
+    """NaN/inf floats -> None, keys -> str, recursively (what JSON can hold)."""
     if isinstance(o, float) and not math.isfinite(o):
         return None
     if isinstance(o, dict):
-        return {str(k): _clean(v) for k, v in o.items()}
+        return {str(k): json_clean(v) for k, v in o.items()}
     if isinstance(o, (list, tuple)):
-        return [_clean(v) for v in o]
+        return [json_clean(v) for v in o]
     return o
 
 
 def emit_json(obj) -> None:
     """Write one JSON document on stdout (NaN/inf become null)."""
-    text = json.dumps(_clean(json.loads(json.dumps(obj, default=_default))), indent=2)
+    text = json.dumps(json_clean(json.loads(json.dumps(obj, default=_default))), indent=2)
     sys.stdout.write(text + "\n")
     sys.stdout.flush()

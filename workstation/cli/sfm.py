@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from workstation.cli.options import emit_json, json_option, overwrite_option
+from workstation.cli.options import emit_json, json_clean, json_option, overwrite_option
 
 
 @click.command("sfm")
@@ -26,9 +26,11 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
 @click.option("--sigma-px", type=float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Random seed (-1 = random).")
+@click.option("--dense", "do_dense", is_flag=True, help="Then densify: depth maps and fusion into WORKDIR/dense/fused.ply (as `ws dense`).")
+@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU plane sweep.")
 @overwrite_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, overwrite, as_json):
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, do_dense, device, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
@@ -94,7 +96,7 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
         write_model(rec, wd / "georef" / "0")
         rep = geo.to_dict()
         with atomic_path(wd / "georef_report.json", overwrite=True) as tmp:
-            Path(tmp).write_text(json.dumps(_clean(rep), indent=2) + "\n")
+            Path(tmp).write_text(json.dumps(json_clean(rep), indent=2) + "\n")
         m = geo.report.metrics
         if m.get("check_n"):
             click.echo(
@@ -106,19 +108,13 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
         for note in geo.report.notes:
             click.echo("note: " + note, err=True)
         out["georef"] = rep
+    if do_dense:
+        from workstation.photogrammetry.dense import DenseParams, run_dense
+
+        _, dense_summary = run_dense(wd, images, DenseParams(device=device), overwrite=overwrite)
+        click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
+        out["dense"] = dense_summary
     with atomic_path(wd / "summary.json", overwrite=True) as tmp:
-        Path(tmp).write_text(json.dumps(_clean(out), indent=2, default=str) + "\n")
+        Path(tmp).write_text(json.dumps(json_clean(out), indent=2, default=str) + "\n")
     if as_json:
         emit_json(out)
-
-
-def _clean(o):
-    import math
-
-    if isinstance(o, float) and not math.isfinite(o):
-        return None
-    if isinstance(o, dict):
-        return {str(k): _clean(v) for k, v in o.items()}
-    if isinstance(o, (list, tuple)):
-        return [_clean(v) for v in o]
-    return o
