@@ -102,10 +102,16 @@ def _flatten(d, prefix="", out=None, limit=60):
     return out
 
 
+# Work-folder parts that hold tool internals, not products (COLMAP text models, depth maps).
+_INTERNAL_DIRS = {"sparse", "stereo", "georef", "depth_maps", "normal_maps"}
+
+
 def _find(root: Path, exts, max_depth: int) -> list[Path]:
     found = []
     for p in sorted(root.rglob("*")):
         if not p.is_file() or p.name.startswith("."):
+            continue
+        if _INTERNAL_DIRS & set(p.relative_to(root).parts[:-1]):
             continue
         if len(p.relative_to(root).parts) - 1 > max_depth:
             continue
