@@ -29,6 +29,12 @@ def import_pycolmap():
         import pycolmap
     except ImportError:  # pragma: no cover - a dependency
         raise MissingDependencyError("pycolmap", "structure from motion", "pip install pycolmap") from None
+    import logging
+
+    # COLMAP logs every step through glog on stderr; keep its INFO lines for -v (DEBUG) only,
+    # so progress bars and our own messages stay readable.
+    if not logging.getLogger("workstation").isEnabledFor(logging.DEBUG):
+        pycolmap.logging.minloglevel = max(int(pycolmap.logging.minloglevel), 1)
     return pycolmap
 
 
