@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from workstation.cli.options import emit_json, json_clean, json_option, overwrite_option
+from workstation.cli.options import emit_json, json_option, overwrite_option
+from workstation.core.jsonutil import json_clean
 
 
 @click.command("sfm")

@@ -43,31 +43,20 @@ def crs_unit_factors(crs: str | None) -> tuple[float, float]:
     >>> crs_unit_factors(None)
     (1.0, 1.0)
     """
-    if not crs:
-        return 1.0, 1.0
-    from pyproj import CRS
-    from pyproj.exceptions import CRSError
+    from workstation.io.crs import crs_info
 
     try:
-        c = CRS.from_user_input(crs)
-    except CRSError:
+        info = crs_info(crs)
+    except InvalidInputError:
         log.warning("cannot parse the CRS; assuming metres")
         return 1.0, 1.0
-    h = None
-    v = None
-    subs = c.sub_crs_list if c.is_compound else [c]
-    for sc in subs:
-        for ax in sc.axis_info:
-            if ax.direction in ("up", "down"):
-                v = v or ax.unit_conversion_factor
-            elif ax.unit_name not in ("degree", "radian", "grad", "arc-second"):
-                h = h or ax.unit_conversion_factor
-            else:
-                raise InvalidInputError(
-                    f"the CRS is geographic ({ax.unit_name}); ground filters need a projected CRS",
-                    "reproject first, e.g. ws convert IN OUT --to-crs EPSG:<utm zone>", field="crs")
-    h = float(h or 1.0)
-    return h, float(v or h)
+    if info is None:
+        return 1.0, 1.0
+    if info.is_geographic:
+        raise InvalidInputError(
+            f"the CRS is geographic ({info.unit}); ground filters need a projected CRS",
+            "reproject first, e.g. ws convert IN OUT --to-crs EPSG:<utm zone>", field="crs")
+    return info.metres_per_unit, info.vertical_metres_per_unit
 
 
 @dataclass(frozen=True)

@@ -41,6 +41,7 @@ from pathlib import Path
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
+from workstation.core.jsonutil import dumps
 from workstation.core.products import Camera
 
 from .atomic import atomic_path
@@ -129,24 +130,4 @@ def write_camera(camera_or_doc, path, overwrite: bool = False, rms: float | None
     else:
         doc = camera_or_doc.to_dict()
     with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
-        Path(tmp).write_text(json.dumps(_clean(json.loads(json.dumps(doc, default=_default))), indent=2, allow_nan=False) + "\n")
-
-
-def _clean(o):
-    if isinstance(o, float) and not np.isfinite(o):
-        return None
-    if isinstance(o, dict):
-        return {str(k): _clean(v) for k, v in o.items()}
-    if isinstance(o, list):
-        return [_clean(v) for v in o]
-    return o
-
-
-def _default(o):
-    if isinstance(o, np.ndarray):
-        return o.tolist()
-    if isinstance(o, (np.integer,)):
-        return int(o)
-    if isinstance(o, (np.floating,)):
-        return float(o)
-    raise TypeError(type(o).__name__)
+        Path(tmp).write_text(dumps(doc, indent=2) + "\n")

@@ -126,6 +126,14 @@ class DemParams:
 
 
 # --------------------------------------------------------------------------- accumulators
+def _in_grid(grid: GridSpec, x, y, z):
+    """Cell row/column of the points inside ``grid`` and those points; None when none is."""
+    row, col, inside = grid.cell_index(x, y)
+    if not inside.all():
+        row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
+    return None if len(z) == 0 else (row, col, x, y, z)
+
+
 class _MeanAcc:
     """Per-cell count and sums of offsets (cells) and z: gives the centroid of each cell."""
 
@@ -138,11 +146,10 @@ class _MeanAcc:
         self.sz = np.zeros(n)
 
     def add(self, x, y, z):
-        row, col, inside = self.grid.cell_index(x, y)
-        if not inside.all():
-            row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
-        if len(z) == 0:
+        cells = _in_grid(self.grid, x, y, z)
+        if cells is None:
             return
+        row, col, x, y, z = cells
         u, v = self.grid.to_uv(x, y)
         idx = row * self.grid.cols + col
         n = self.count.size
@@ -177,11 +184,10 @@ class _MaxAcc:
         self.dv = np.zeros(n)
 
     def add(self, x, y, z):
-        row, col, inside = self.grid.cell_index(x, y)
-        if not inside.all():
-            row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
-        if len(z) == 0:
+        cells = _in_grid(self.grid, x, y, z)
+        if cells is None:
             return
+        row, col, x, y, z = cells
         idx = row * self.grid.cols + col
         order = np.lexsort((z, idx))
         s = idx[order]
