@@ -178,17 +178,18 @@ def bench_tls(path: Path, seed: int = 0):
           "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
 
 
-def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
-    """Colour one simulated TLS station of the demo scene from 8 synthetic photos (exact pinhole
-    renders by ray casting the scene mesh: each pixel takes the colour of the face it sees),
-    then compare with the true face colours and check that no point hidden from every camera
-    (ray cast from the camera to the point) was painted."""
+def colorize_sim_data(seed: int = 0, step_deg: float = 0.4, supersample: int = 3):
+    """One simulated TLS station of the demo scene (its own colours removed) and 8 synthetic
+    photos rendered by ray casting the scene mesh with ``supersample``² rays per pixel (odd, so
+    one ray goes through the pixel centre): each photo pixel is the mean colour of the faces its
+    rays hit (anti-aliased, like a real sensor), and two exact depth maps come with it: the
+    depth at the pixel centre, and the nearest depth over the pixel's rays (a conservative
+    depth map that also shows occluders thinner than a pixel). Sky: depth ``inf``."""
     import open3d as o3d
 
     from workstation.core.products import Camera, Image, Pose, Reconstruction
     from workstation.lidar.scene import build_scene
     from workstation.lidar.survey import default_stations, default_survey, run_survey
-    from workstation.registration.colorize import ColorizeParams, colorize
 
     scene = build_scene("demo_small", seed)
     st = default_stations(scene, 3)
@@ -204,8 +205,10 @@ def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
     near = np.linalg.norm(local[:, :2] - [st[0].x, st[0].y], axis=1) < 3.0
     ground = float(np.median(local[near, 2])) if near.any() else 0.0
     cam = Camera(800, 600, 500.0, 500.0, 399.5, 299.5)
-    images, recon_images, depths = {}, {}, {}
-    sky = np.array([135, 206, 235], np.uint8)
+    images, recon_images, depths, depths_min = {}, {}, {}, {}
+    sky = np.array([135, 206, 235], float)
+    ss = int(supersample)
+    sub = (np.arange(ss) + 0.5) / ss - 0.5  # sub-pixel offsets, 0 in the middle for odd ss
     k = 0
     for dx in (0.0, 5.0):
         C = np.array([st[0].x + dx, st[0].y + 2.0, ground + 1.7])
@@ -213,30 +216,75 @@ def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4):
             a = np.radians(yaw)
             fwd, right = np.array([np.cos(a), np.sin(a), 0.0]), np.array([np.sin(a), -np.cos(a), 0.0])
             R = np.vstack([right, [0.0, 0.0, -1.0], fwd])
-            uu, vv = np.meshgrid(np.arange(cam.width), np.arange(cam.height))
-            dirs_cam = np.column_stack([((uu - cam.cx) / cam.fx).ravel(), ((vv - cam.cy) / cam.fy).ravel(), np.ones(uu.size)])
+            uu = (np.arange(cam.width)[:, None] + sub[None, :]).ravel()  # (w * ss,) column-major sub-columns
+            vv = (np.arange(cam.height)[:, None] + sub[None, :]).ravel()
+            U, V = np.meshgrid(uu, vv)  # (h * ss, w * ss)
+            dirs_cam = np.column_stack([((U - cam.cx) / cam.fx).ravel(), ((V - cam.cy) / cam.fy).ravel(), np.ones(U.size)])
             dirs = dirs_cam @ R
             rays = np.hstack([np.tile(C, (dirs.shape[0], 1)), dirs]).astype(np.float32)
             hit = rs.cast_rays(o3d.core.Tensor(rays))
             prim = hit["primitive_ids"].numpy().astype(np.int64)
-            ok = np.isfinite(hit["t_hit"].numpy())
-            img = np.tile(sky, (uu.size, 1))
-            img[ok] = scene.face_rgb[prim[ok]]
+            # ray directions have a unit optical-axis component, so t_hit is the depth; inf = sky
+            t = hit["t_hit"].numpy().astype(np.float64)
+            ok = np.isfinite(t)
+            col = np.tile(sky, (U.size, 1))
+            col[ok] = scene.face_rgb[prim[ok]]
+            col = col.reshape(cam.height, ss, cam.width, ss, 3)
+            t = t.reshape(cam.height, ss, cam.width, ss)
             k += 1
-            images[k] = img.reshape(cam.height, cam.width, 3)
-            # ray directions have a unit optical-axis component, so t_hit is the depth
-            depths[k] = np.where(ok, hit["t_hit"].numpy(), np.nan).reshape(cam.height, cam.width)
+            images[k] = np.round(col.mean(axis=(1, 3))).astype(np.uint8)
+            depths[k] = t[:, ss // 2, :, ss // 2].copy()
+            depths_min[k] = t.min(axis=(1, 3))
             Cw = C + o
             recon_images[k] = Image(f"v{k}.png", 1, Pose(R, -R @ Cw))
     rec = Reconstruction({1: cam}, recon_images)
-    for mode in ("zbuffer", "depth_maps"):
+    return cloud, rec, images, depths, depths_min, scene, local
+
+
+def bench_colorize_sim(seed: int = 0, step_deg: float = 0.4, supersample: int = 3):
+    """Colour the station of :func:`colorize_sim_data` from its 8 photos, then compare with the
+    true face colours and check that no point hidden from every camera (ray cast from the
+    camera to the point) was painted."""
+    import open3d as o3d
+
+    from workstation.registration.colorize import ColorizeParams, colorize
+
+    cloud, rec, images, depths, depths_min, scene, local = colorize_sim_data(seed, step_deg, supersample)
+    o = np.asarray(scene.origin, float)
+    cam = rec.cameras[1]
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor(scene.vertices.astype(np.float32)), o3d.core.Tensor(scene.faces.astype(np.uint32)))
+    # exact depth maps: the tolerance only covers the scan's noise (3 mm range noise, 5 mm
+    # station position) and the test's own bias, not a depth-map error
+    exact = {"depth_tolerance": 0.03, "depth_tolerance_rel": 0.0}
+    runs = [("zbuffer", None, {}), ("depth_maps_pixel_centre", depths, exact),
+            ("depth_maps_footprint_min", depths_min, {**exact, "depth_footprint_px": (supersample - 1) / (2 * supersample)})]
+    for mode, dm, kw in runs:
+        prm = ColorizeParams(**kw)
         w0, c0 = time.perf_counter(), time.process_time()
-        out = colorize(cloud, rec, ColorizeParams(), images=images, depth_maps=depths if mode == "depth_maps" else None)
+        out = colorize(cloud, rec, prm, images=images, depth_maps=dm)
         wall, cpu = time.perf_counter() - w0, time.process_time() - c0
-        _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, len(images), wall, cpu)
+        per_view = {k: _colorize_one(cloud, rec, k, prm, images, dm) for k in rec.images}
+        _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, len(images), wall, cpu, per_view, kw)
 
 
-def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, wall, cpu):
+def _colorize_one(cloud, rec, k, prm, images, depth_maps):
+    """Colorized flags of ``cloud`` coloured from image ``k`` alone."""
+    from workstation.core.errors import StageError
+    from workstation.core.products import Reconstruction
+    from workstation.registration.colorize import colorize
+
+    try:
+        return colorize(cloud, Reconstruction(rec.cameras, {k: rec.images[k]}), prm, images=images,
+                        depth_maps=depth_maps).attrs["colorized"]
+    except StageError:  # the image sees no point
+        return np.zeros(cloud.n, np.uint8)
+
+
+def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, wall, cpu, per_view=None, params=None):
+    """One JSON line comparing a colourised cloud with the scene. ``per_view``: (image id ->
+    colorized flags of the cloud coloured from that image alone), for the strict check that no
+    view paints a point it does not see."""
     import open3d as o3d
 
     from workstation.registration.colorize import project
@@ -247,6 +295,7 @@ def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, 
     painted = out.attrs["colorized"].astype(bool)
     seen_any = np.zeros(cloud.n, bool)
     behind = np.full(cloud.n, np.inf)  # least depth by which a point is hidden in any camera
+    view_bad = view_painted = view_visible = 0
     for kk, im in recon_images.items():
         u, v, z = project(cloud.xyz, cam, im.pose)
         inside = (z > 0) & (u >= 0) & (u <= cam.width - 1) & (v >= 0) & (v <= cam.height - 1)
@@ -258,17 +307,91 @@ def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, 
         vis = np.zeros(cloud.n, bool)
         vis[np.flatnonzero(inside)] = t >= dist - 0.05
         seen_any |= vis
+        if per_view is not None:
+            pv = per_view[kk].astype(bool)
+            view_bad += int((pv & ~vis).sum())
+            view_painted += int(pv.sum())
+            view_visible += int(vis.sum())
         ii = np.flatnonzero(inside)
         behind[ii] = np.minimum(behind[ii], np.where(np.isfinite(t), dist - t, np.inf))
     err = np.abs(out.attrs["rgb"][painted] / 257.0 - truth[painted]).mean(axis=1)
     bad = painted & ~seen_any
     cls = cloud.attrs["classification"][bad] if "classification" in cloud.attrs else np.zeros(0, int)
     bad_classes = {int(c): int(n) for c, n in zip(*np.unique(cls, return_counts=True))}
-    emit({"bench": "colorize_sim_tls", "visibility": mode, "painted_but_hidden_by_class": bad_classes, "points": cloud.n, "images": n_images, "painted": int(painted.sum()),
+    emit({"bench": "colorize_sim_tls", "visibility": mode, "params": params or {}, "painted_but_hidden_by_class": bad_classes, "points": cloud.n, "images": n_images, "painted": int(painted.sum()),
           "truly_visible": int(seen_any.sum()),
           "hidden_painted_depth_behind_m_p50_p90": [round(float(x), 3) for x in np.percentile(behind[bad], [50, 90])] if bad.any() else None, "painted_but_hidden_from_all": int((painted & ~seen_any).sum()),
+          "coverage_of_visible": round(float((painted & seen_any).sum() / max(seen_any.sum(), 1)), 4),
+          "per_view_painted": view_painted if per_view is not None else None,
+          "per_view_truly_visible": view_visible if per_view is not None else None,
+          "per_view_painted_but_hidden_in_that_view": view_bad if per_view is not None else None,
           "mean_colour_error_255": round(float(err.mean()), 2), "median_colour_error_255": round(float(np.median(err)), 2),
           "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
+
+
+def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, reuse: bool = True):
+    """The SfM <-> TLS scenario's data (cached in ``work``): the heritage photo rig
+    (``datasets_synth/rig_heritage.toml``: 24 renders of the church, 640 x 480), ``ws sfm``
+    (pycolmap, arbitrary frame and scale), the CPU dense cloud, and a TLS survey of the same
+    scene (4 stations 30 m from the church on its diagonals, ``step_deg`` steps). Returns
+    (dense Cloud in the SfM frame, TLS Cloud in the scene's local frame, true similarity SfM ->
+    local frame fitted on the camera centres, its camera-centre residuals (m), timings)."""
+    from workstation.io import read_cloud, write_cloud
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.scene import build_scene
+    from workstation.lidar.survey import default_survey, run_survey
+    from workstation.photogrammetry.dense import DenseParams, run_dense
+    from workstation.photogrammetry.georef import fit_similarity
+    from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+    from workstation.raster.ortho import read_reconstruction
+
+    work.mkdir(parents=True, exist_ok=True)
+    rigdir, sfmdir = work / "rig", work / "rig_sfm"
+    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
+    times = {}
+    t0 = time.perf_counter()
+    if not (reuse and (rigdir / "truth_mesh.npz").exists()):
+        make_rig(recipe, spec, rigdir, overwrite=True)
+    times["render_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if not (reuse and (sfmdir / "sparse" / "0").exists()):
+        run_sfm(rigdir / "images", sfmdir, params=SfMParams(), overwrite=True)
+    times["sfm_s"] = time.perf_counter() - t0
+    dense_path = work / f"dense_{max_image_size}.laz"
+    t0 = time.perf_counter()
+    if reuse and dense_path.exists():
+        dense = read_cloud(dense_path)
+    else:
+        dense, _ = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", max_image_size=max_image_size),
+                             overwrite=True)
+        write_cloud(dense, dense_path, overwrite=True)
+    times["dense_s"] = time.perf_counter() - t0
+    true = read_reconstruction(rigdir / "cameras.json")
+    est = read_reconstruction(sfmdir / "sparse" / "0")
+    by_name = {im.name: im for im in true.images.values()}
+    names = [im.name for im in est.images.values() if im.name in by_name]
+    ce = np.array([im.pose.center for im in est.images.values() if im.name in by_name])
+    ct = np.array([by_name[n].pose.center for n in names])
+    sim = fit_similarity(ce, ct)
+    resid = np.linalg.norm(sim.apply(ce) - ct, axis=1)
+    tls_path = work / f"tls_{step_deg}.laz"
+    t0 = time.perf_counter()
+    scene = build_scene(recipe, spec.seed)
+    if reuse and tls_path.exists():
+        tls = read_cloud(tls_path)
+    else:
+        _, _, _, _, _, centre, size = _target_scene(recipe, spec)
+        r = 0.5 * float(np.hypot(size[0], size[1])) + 10.0
+        st = tuple(Station(float(centre[0] + r * np.cos(a)), float(centre[1] + r * np.sin(a)), 1.6, 0.0)
+                   for a in np.radians([45.0, 135.0, 225.0, 315.0]))
+        cfg = default_survey("tls")
+        cfg = replace(cfg, scanner=replace(cfg.scanner, h_step_deg=step_deg, v_step_deg=step_deg), stations=st)
+        tls = run_survey(scene, cfg, seed=spec.seed).cloud
+        write_cloud(tls, tls_path, overwrite=True)
+    times["tls_s"] = time.perf_counter() - t0
+    tls = tls.with_xyz(tls.xyz - np.asarray(scene.origin, float))
+    return dense, tls, sim, resid, times
 
 
 def main():

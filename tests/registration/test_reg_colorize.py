@@ -136,3 +136,69 @@ def test_ws_colorize_reads_a_colmap_text_model(tmp_path, capsys):
     err = np.abs(out.attrs["rgb"][front_seen] / 257.0 - truth[front_seen]).mean()
     assert err < 10.0
     assert json.loads(capsys.readouterr().out)["painted"] == int(painted.sum())
+
+
+def _plane_depth(cam, u, v, n, d):
+    """Depth of the plane n . X = d along the pixel rays (u, v) of a pinhole camera at the origin."""
+    ray = np.stack([(u - cam.cx) / cam.fx, (v - cam.cy) / cam.fy, np.ones_like(u)], axis=-1)
+    return d / (ray @ n)
+
+
+def test_depth_map_test_is_safe_at_a_silhouette_edge_and_exact_on_a_slanted_plane():
+    from workstation.registration.colorize import depth_map_visible
+
+    cam = Camera(200, 100, 100.0, 100.0, 99.5, 49.5)
+    uu, vv = np.meshgrid(np.arange(200.0), np.arange(100.0))
+    depth = np.full((100, 200), 8.0)
+    depth[:, :101] = 5.0  # a nearer object covering u < 100.6: pixel centres 0..100 see it, 101 sees past it
+    u = np.array([100.55, 100.9, 103.5, 98.5, 50.0])
+    v = np.full(5, 40.3)
+    z = np.array([8.0, 8.0, 8.0, 5.0, 8.0])  # hidden, visible, visible, front, hidden
+    vis, *_ = depth_map_visible(depth, u, v, z, np.full(5, 0.02), cam)
+    # 100.55 and 100.9 are both next to the edge: the first is hidden, the second cannot be told
+    # apart at pixel resolution and must not be painted either
+    assert vis.tolist() == [False, False, True, True, False]
+    nearest = depth[np.round(v).astype(int), np.round(u).astype(int)]
+    assert z[0] <= nearest[0] + 0.02  # what nearest-pixel sampling would have painted
+    # a plane seen at a grazing angle (depth changes by up to 0.3 m per pixel row): exact
+    n, d = np.array([0.0, 1.0, 0.12]), 1.5  # ground 1.5 m below the camera, rising slowly
+    n = n / np.linalg.norm(n)
+    dm = _plane_depth(cam, uu, vv, n, d)
+    rng = np.random.default_rng(0)
+    pu, pv = rng.uniform(2, 197, 500), rng.uniform(60, 97, 500)
+    pz = _plane_depth(cam, pu, pv, n, d)
+    assert np.ptp(dm[60:, 100]) > 4.0 and np.abs(np.diff(dm[60:, 100])).max() > 0.25
+    vis, *_ = depth_map_visible(dm, pu, pv, pz, np.full(500, 0.01), cam)
+    assert vis.all()
+    vis, *_ = depth_map_visible(dm, pu, pv, pz + 0.05, np.full(500, 0.01), cam)  # 5 cm behind the plane
+    assert not vis.any()
+    # a footprint-minimum depth map of the same plane: biased by half a pixel, corrected
+    sub = np.array([-1 / 3, 0.0, 1 / 3])
+    dmin = np.min([_plane_depth(cam, uu + a, vv + b, n, d) for a in sub for b in sub], axis=0)
+    vis, *_ = depth_map_visible(dmin, pu, pv, pz, np.full(500, 0.01), cam, footprint_px=1 / 3)
+    assert vis.mean() > 0.99
+    vis, *_ = depth_map_visible(dmin, pu, pv, pz, np.full(500, 0.01), cam)
+    assert vis.mean() < 0.5  # uncorrected, the bias of up to 0.2 m hides most of them
+
+
+def test_a_cell_across_an_edge_gives_no_mixed_colour():
+    # a red wall at 5 m covering u < 100.6 in front of a blue one at 8 m; points of both near the edge
+    cam = Camera(200, 100, 100.0, 100.0, 99.5, 49.5)
+    depth = np.full((100, 200), 8.0)
+    depth[:, :101] = 5.0
+    img = np.zeros((100, 200, 3), np.uint8)
+    img[:, :101] = [200, 0, 0]
+    img[:, 101:] = [0, 0, 200]
+    u = np.linspace(90.0, 110.0, 81)
+    v = np.full(u.size, 40.0)
+    z = np.where(u < 100.6, 5.0, 8.0)
+    xyz = np.column_stack([(u - cam.cx) / cam.fx * z, (v - cam.cy) / cam.fy * z, z])
+    rec = Reconstruction({1: cam}, {1: Image("a", 1, Pose(np.eye(3), np.zeros(3)))})
+    out = colorize(Cloud(xyz), rec, ColorizeParams(depth_tolerance=0.02, depth_tolerance_rel=0.0),
+                   images={1: img}, depth_maps={1: depth})
+    painted = out.attrs["colorized"].astype(bool)
+    rgb = out.attrs["rgb"] / 257.0
+    red = z == 5.0
+    assert painted[red].sum() > 30 and painted[~red].sum() > 30
+    assert np.all(rgb[painted & red] == [200, 0, 0]) and np.all(rgb[painted & ~red] == [0, 0, 200])
+    assert not painted[(u > 100.0) & (u < 102.0)].any()  # the cells touching the edge

@@ -2,13 +2,17 @@
 
 Every point is projected into every oriented image with the collinearity equations and
 OpenCV's Brown-Conrady distortion (Brown 1971, "Close-range camera calibration"). Visibility
-is a depth test: against the image's depth map when one is given, else against a z-buffer
-rendered from the cloud itself in cells a little larger than a point's footprint, so points
-behind a wall are not painted with the wall's colour (the hidden-point problem of
-orthophoto-only colouring). Each point keeps its ``max_views`` best views, weighted by the
-cosine of the viewing angle (when normals exist) over the squared distance, and gets their
-bilinearly interpolated colours blended with those weights. Points seen by no image keep
-their colour (or get black) and ``colorized == 0``.
+is a depth test: against the image's depth map when one is given (:func:`depth_map_visible`:
+the point's 2 x 2 pixel cell must lie on one plane in inverse depth that the point is on, with
+no nearer surface in the 4 x 4 block around it, so points just behind a silhouette edge are not
+painted and no colour is mixed across an edge), else against a z-buffer rendered from the
+cloud itself in cells a little larger than a point's footprint, so points behind a wall are
+not painted with the wall's colour (the hidden-point problem of orthophoto-only colouring).
+The z-buffer cannot know occluders that the cloud does not hold (objects the scanner did not
+see, sparsely hit tree crowns): depth maps are the safe test. Each point keeps its
+``max_views`` best views, weighted by the cosine of the viewing angle (when normals exist)
+over the squared distance, and gets their bilinearly interpolated colours blended with those
+weights. Points seen by no image keep their colour (or get black) and ``colorized == 0``.
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ from workstation.core.products import Camera, Pose, Reconstruction
 
 log = get_logger(__name__)
 STAGE = "colorize"
+CREASE_SLACK = 0.5
 
 
 @dataclass(frozen=True)
@@ -51,6 +56,10 @@ class ColorizeParams:
     fill_holes : bool
         Close one- or two-cell gaps of the z-buffer with a 3 x 3 median (see
         :func:`_zbuffer_visible`).
+    depth_footprint_px : float
+        Pixels: the depth maps hold the nearest depth within +- this distance of each pixel
+        centre (a conservative depth map, which also shows occluders thinner than a pixel);
+        0 for depth at the pixel centre (see :func:`depth_map_visible`).
     """
 
     max_views: int = 3
@@ -60,6 +69,7 @@ class ColorizeParams:
     min_cos: float = 0.1
     border_px: float = 1.0
     fill_holes: bool = True
+    depth_footprint_px: float = 0.0
 
 
 def project(xyz: np.ndarray, camera: Camera, pose: Pose) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -102,6 +112,120 @@ def bilinear(image: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
     c = img[y0 + 1, x0].astype(np.float64)
     d = img[y0 + 1, x0 + 1].astype(np.float64)
     return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy
+
+
+def _corners(u: np.ndarray, v: np.ndarray, w: int, h: int):
+    """Top-left corner (x0, y0) of the 2 x 2 pixel cell around each (u, v) and the bilinear
+    weights (n, 4) of its corners in the order (x0, y0), (x0+1, y0), (x0, y0+1), (x0+1, y0+1)."""
+    x0 = np.clip(np.floor(u).astype(np.int64), 0, w - 2)
+    y0 = np.clip(np.floor(v).astype(np.int64), 0, h - 2)
+    fx = u - x0
+    fy = v - y0
+    wts = np.column_stack([(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy])
+    return x0, y0, wts
+
+
+def sample_corners(image: np.ndarray, x0: np.ndarray, y0: np.ndarray, weights: np.ndarray) -> np.ndarray:
+    """Weighted mean (n, c) float64 of the four corner pixels of each cell (weights (n, 4), rows
+    summing to > 0): plain bilinear interpolation with the weights of :func:`_corners`, or a
+    depth-aware one with the weights of corners on another surface set to 0."""
+    img = image if image.ndim == 3 else image[:, :, None]
+    acc = np.zeros((x0.size, img.shape[2]))
+    for k, (dx, dy) in enumerate(((0, 0), (1, 0), (0, 1), (1, 1))):
+        acc += weights[:, k:k + 1] * img[y0 + dy, x0 + dx].astype(np.float64)
+    return acc / weights.sum(axis=1, keepdims=True)
+
+
+def depth_map_visible(depth: np.ndarray, u: np.ndarray, v: np.ndarray, z: np.ndarray, tol: np.ndarray,
+                      camera: Camera, min_cos: float = 0.0, footprint_px: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Depth test of projected points against a depth map, safe at depth discontinuities.
+
+    A depth map holds the depth of the first surface at its pixel centres only; a point
+    projects between them. Sampling the nearest pixel paints points just behind the silhouette
+    edge of a nearer object (the nearest pixel centre happens to see past it), and bilinear
+    colour there mixes the occluder's colour in. Here, with inverse depth ``w = 1 / depth``
+    (an affine function of the pixel coordinates on a plane):
+
+    1. the 2 x 2 cell of pixels around the point must lie on one plane (its twist
+       ``w00 + w11 - w10 - w01`` below ``tol / z**2``), and the point's depth must be within
+       ``tol`` (either side) of that plane's depth at the point (bilinear in ``w``);
+    2. no pixel of the surrounding 4 x 4 block may be nearer than that plane extrapolated to it
+       by more than ``tol``: a nearer object within a pixel and a half (whose edge may cover the
+       point's exact position) hides the point; a farther one (background seen past the
+       point's own edge) does not. A step edge inside the cell, which step 1 cannot tell from a
+       steep plane, fails here on its near side;
+    3. with ``min_cos > 0`` the plane must face the camera at a cosine of at least ``min_cos``
+       (its normal follows from the inverse-depth gradient), so grazing views are dropped.
+
+    Occluders thinner than the pixel spacing (leaves, wires) leave no trace in a depth map
+    sampled at pixel centres and cannot be caught by any test on it; a depth map holding the
+    nearest depth over each pixel's footprint (``footprint_px``) shows them, and its bias on a
+    plane, ``footprint_px * (|dw/dx| + |dw/dy|)``, is removed before step 1.
+
+    Parameters
+    ----------
+    depth : (h, w) float
+        Depth along the optical axis (metres). ``inf``: the ray hit nothing (sky); 0 or NaN:
+        unknown (no colour is taken from a cell with an unknown corner; unknown pixels around
+        it are ignored).
+    u, v, z : (n,) float
+        Pixel coordinates and depth of the points (OpenCV convention, inside the image).
+    tol : (n,) float
+        Depth tolerance per point (metres).
+    camera : Camera
+    min_cos : float
+        Smallest cosine between the viewing ray and the surface normal.
+    footprint_px : float
+        The depth map holds the nearest depth within +- this many pixels of each pixel centre
+        (a conservative render: 0.5 for the whole pixel, 1/3 for the extreme rays of 3 x 3
+        supersampling); 0: the depth at the pixel centre.
+
+    Returns
+    -------
+    visible : (n,) bool
+    x0, y0 : (n,) int64
+        Top-left corners of the cells (see :func:`sample_corners`).
+    weights : (n, 4) float64
+        Bilinear weights of the cell's corners (all on the point's surface when visible).
+    """
+    D = np.asarray(depth, dtype=np.float64)
+    h, w = D.shape
+    with np.errstate(divide="ignore", invalid="ignore"):
+        W = np.where(np.isnan(D) | (D <= 0), np.nan, 1.0 / D)  # inverse depth; sky = 0
+    Wp = np.pad(W, 1, mode="constant", constant_values=np.nan)
+    x0, y0, wts = _corners(u, v, w, h)
+    # 4 x 4 block (rows y0-1..y0+2, cols x0-1..x0+2) from the padded array
+    P = np.stack([Wp[y0 + dy, x0 + dx] for dy in range(4) for dx in range(4)], axis=1).reshape(-1, 4, 4)
+    c = P[:, 1:3, 1:3].reshape(-1, 4)  # corners (x0,y0), (x0+1,y0), (x0,y0+1), (x0+1,y0+1)
+    known = np.isfinite(c).all(axis=1)
+    c = np.where(np.isfinite(c), c, 0.0)
+    a = 0.5 * (c[:, 1] - c[:, 0] + c[:, 3] - c[:, 2])  # dw / dx per pixel
+    b = 0.5 * (c[:, 2] - c[:, 0] + c[:, 3] - c[:, 1])  # dw / dy per pixel
+    w0 = c.mean(axis=1)  # plane value at the cell centre (x0 + 0.5, y0 + 0.5)
+    tol_w = tol / z**2  # a depth step of tol at depth z, in inverse depth
+    slack = tol_w + CREASE_SLACK * (np.abs(a) + np.abs(b))
+    planar = np.abs(c[:, 0] + c[:, 3] - c[:, 1] - c[:, 2]) <= slack
+    w_pt = np.einsum("nk,nk->n", wts, c)
+    if footprint_px > 0:
+        w_pt = w_pt - footprint_px * (np.abs(a) + np.abs(b))
+    with np.errstate(divide="ignore"):
+        z_s = np.where(w_pt > 0, 1.0 / np.maximum(w_pt, 1e-300), np.inf)
+    vis = known & planar & (np.abs(z - z_s) <= tol)
+    # no pixel of the 4 x 4 block nearer than the cell's plane by more than tol
+    off = np.arange(4) - 1.5
+    pred = w0[:, None, None] + a[:, None, None] * off[None, None, :] + b[:, None, None] * off[None, :, None]
+    with np.errstate(invalid="ignore"):
+        nearer = np.nan_to_num(P - pred, nan=-np.inf).reshape(-1, 16).max(axis=1) > slack
+    vis &= ~nearer
+    if min_cos > 0:
+        xn = (u - camera.cx) / camera.fx
+        yn = (v - camera.cy) / camera.fy
+        ga, gb = a * camera.fx, b * camera.fy  # gradient of w in normalised image coordinates
+        cc = w_pt - ga * xn - gb * yn
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = np.abs(w_pt) / (np.sqrt(ga * ga + gb * gb + cc * cc) * np.sqrt(xn * xn + yn * yn + 1.0))
+        vis &= cos >= min_cos
+    return vis, x0, y0, wts
 
 
 def _zbuffer_visible(u, v, z, idx, w, h, cell: int, tol: np.ndarray, fill_holes: bool = True) -> np.ndarray:
@@ -198,22 +322,22 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
         ui, vi, zi = u[idx], v[idx], z[idx]
         tol = tol_abs + params.depth_tolerance_rel * zi
         if depth_maps is not None and iid in depth_maps:
-            dm = np.asarray(depth_maps[iid], dtype=np.float64)
-            dz = dm[np.round(vi).astype(np.int64), np.round(ui).astype(np.int64)]
-            vis = np.isfinite(dz) & (dz > 0) & (zi <= dz + tol)
+            vis, x0, y0, cw = depth_map_visible(depth_maps[iid], ui, vi, zi, tol, cam, params.min_cos,
+                                                params.depth_footprint_px)
         else:
             f = 0.5 * (cam.fx + cam.fy)
             cell = int(np.clip(np.ceil(2.0 * f * spacing / np.median(zi)), 1, 64))
             vis = _zbuffer_visible(ui, vi, zi, idx, cam.width, cam.height, cell, tol, params.fill_holes)
-        idx, ui, vi = idx[vis], ui[vis], vi[vis]
+            x0, y0, cw = _corners(ui, vi, cam.width, cam.height)
+        idx, x0, y0, cw = idx[vis], x0[vis], y0[vis], cw[vis]
         ray = xyz[idx] - im.pose.center
         dist2 = np.einsum("ij,ij->i", ray, ray)
         wgt = 1.0 / np.maximum(dist2, 1e-12)
         if normals is not None:
             cosang = np.abs(np.einsum("ij,ij->i", normals[idx], ray)) / np.sqrt(np.maximum(dist2, 1e-24))
             good = cosang >= params.min_cos
-            idx, ui, vi, wgt = idx[good], ui[good], vi[good], (wgt * cosang)[good]
-        col = bilinear(img, ui, vi)[:, :3] * s
+            idx, x0, y0, cw, wgt = idx[good], x0[good], y0[good], cw[good], (wgt * cosang)[good]
+        col = sample_corners(img, x0, y0, cw)[:, :3] * s
         # keep the k best views per point: replace the weakest slot when the new view is better
         slot = np.argmin(W[idx], axis=1)
         better = wgt > W[idx, slot]
