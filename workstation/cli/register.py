@@ -69,7 +69,8 @@ def write_matrix(result, path, overwrite: bool) -> None:
 @click.option("--method", type=click.Choice(["auto", "fpfh_ransac", "fgr", "clique", "icp", "similarity", "pairs"]),
               default="auto", show_default=True,
               help="Coarse method (auto tries clique and RANSAC, verified by ICP); icp = fine only from --init; "
-                   "similarity = 7-DoF ICP (SfM <-> LiDAR); pairs = only the --pairs fit.")
+                   "similarity = 7 DoF for SfM <-> LiDAR (a search over scale hypotheses unless --init or "
+                   "--pairs --scale gives a start, then 7-DoF point-to-plane ICP); pairs = only the --pairs fit.")
 @click.option("--fine", "fine", type=click.Choice(["point_to_plane", "point_to_point", "colored", "generalized",
                                                    "voxel_plane"]), default="point_to_plane", show_default=True,
               help="Fine ICP variant.")
@@ -122,9 +123,6 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
             raise InvalidInputError("--method pairs needs --pairs FILE")
         result = pair_fit.result
     else:
-        if method == "similarity" and init is None:
-            raise InvalidInputError("--method similarity needs a start: --pairs FILE --scale or --init FILE",
-                                    "an SfM cloud has an arbitrary scale, so features cannot be matched to LiDAR")
         m = "icp" if (init is not None and method == "auto") else method
         params = RegisterParams(method=m, voxel_size=voxel_size, min_fitness=min_fitness,
                                 fine=ICPParams(method=fine, kernel=kernel))

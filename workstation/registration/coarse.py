@@ -16,7 +16,7 @@ local frame; results are 4x4 transforms in that frame.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -117,7 +117,8 @@ def mutual_matches(f_src: np.ndarray, f_tgt: np.ndarray) -> tuple[np.ndarray, np
     return keep, j[keep]
 
 
-def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
+def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams(), *,
+                        rel_tol: float = 0.0, with_scale: bool = False) -> RegistrationResult:
     """Max-clique estimator on mutual FPFH matches (see the module docstring).
 
     Two matches (a, b) are consistent when the distance between their source points equals
@@ -126,6 +127,9 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
     best-connected matches a clique is grown greedily (always adding the candidate with most
     consistent neighbours); each clique gives a Umeyama fit, scored by the number of all
     matches it explains within ``coarse_distance``; the best is refitted on those inliers.
+
+    ``rel_tol`` widens the length test by that share of the length and ``with_scale`` fits a
+    similarity (7 DoF) instead: for a source whose scale is known only within ``rel_tol``.
     """
     ps = np.asarray(src.down.points)
     pt = np.asarray(tgt.down.points)
@@ -143,7 +147,7 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
         return _result(np.eye(4), 0.0, float("nan"), 0, "clique", matches=int(m))
     ds = np.sqrt(((cs[:, None, :] - cs[None, :, :]) ** 2).sum(-1)).astype(np.float32)
     dt = np.sqrt(((ct[:, None, :] - ct[None, :, :]) ** 2).sum(-1)).astype(np.float32)
-    A = (np.abs(ds - dt) < 2.0 * d) & (ds > 3.0 * src.radii.voxel)
+    A = (np.abs(ds - dt) < 2.0 * d + rel_tol * ds) & (ds > 3.0 * src.radii.voxel)
     del ds, dt
     np.fill_diagonal(A, False)
     deg = A.sum(axis=1)
@@ -161,8 +165,8 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
             mask &= A[c]
         if len(clique) < 3:
             continue
-        R, t, _ = umeyama(cs[clique], ct[clique])
-        T = make_transform(R, t)
+        R, t, sc = umeyama(cs[clique], ct[clique], with_scale=with_scale)
+        T = make_transform(R, t, sc)
         score = int((np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d).sum())
         if score > best[0]:
             best = (score, T, len(clique))
@@ -170,12 +174,13 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
     if score < 3:
         return _result(np.eye(4), 0.0, float("nan"), 0, "clique", matches=int(m))
     inl = np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d
-    R, t, _ = umeyama(cs[inl], ct[inl])
-    T = make_transform(R, t)
+    R, t, sc = umeyama(cs[inl], ct[inl], with_scale=with_scale)
+    T = make_transform(R, t, sc)
     res = np.linalg.norm(apply_transform(T, cs[inl]) - ct[inl], axis=1)
     fit = _point_fitness(ps, pt, T, d)
     log.info("clique: %d mutual matches, clique %d, %d inlier matches, fitness %.3f", m, size, int(inl.sum()), fit)
-    return _result(T, fit, float(np.sqrt(np.mean(res**2))), int(inl.sum()), "clique", matches=int(m), clique=int(size))
+    out = _result(T, fit, float(np.sqrt(np.mean(res**2))), int(inl.sum()), "clique", matches=int(m), clique=int(size))
+    return replace(out, scale=float(sc)) if with_scale else out
 
 
 def _point_fitness(ps: np.ndarray, pt: np.ndarray, T: np.ndarray, d: float) -> float:
@@ -183,6 +188,84 @@ def _point_fitness(ps: np.ndarray, pt: np.ndarray, T: np.ndarray, d: float) -> f
 
     dist, _ = cKDTree(pt).query(apply_transform(T, ps), distance_upper_bound=d, workers=-1)
     return float(np.mean(np.isfinite(dist)))
+
+
+def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarseParams(), *, scale0: float | None = None,
+                 span: float = 8.0, step: float = 1.35, viewpoint=None, remove_outliers: bool = True):
+    """Coarse similarity (7 DoF) for a source of unknown scale, such as an SfM cloud without
+    control points, by a search over scale hypotheses.
+
+    FPFH is not scale invariant, so the source is scaled by each hypothesis
+    ``scale0 * step**k`` (``scale0 / span`` to ``scale0 * span``) about its centroid,
+    described at the target's voxel size, and registered by the max-clique estimator with
+    a length tolerance of ``step - 1`` and a similarity fit (:func:`clique_registration`).
+    Each hypothesis is checked by a short point-to-plane ICP of the downsampled clouds and
+    scored by its overlap (fitness at ``0.75 * voxel``) times its plane-inlier share
+    (overlapping source points within ``0.3 * voxel`` of the target's tangent plane), which
+    punishes a shrunken source lying on flat ground. This is the hypothesise-and-verify
+    strategy of the rigid ``auto`` method over one more dimension; TEASER (Yang, Shi & Carlone
+    2020) votes on ratios of match distances instead, which needs scale-invariant features.
+
+    Parameters
+    ----------
+    xs : (n, 3) float64
+        Source points (local frame, any scale).
+    tgt : Prepared
+        Target with FPFH, in metres.
+    scale0 : float, optional
+        Central scale hypothesis; default the ratio of the voxel sizes that leave about 4000
+        points in each cloud (equal when both clouds cover the same surface).
+    span, step : float
+        Search range factor and ratio between neighbouring hypotheses.
+
+    Returns
+    -------
+    T : (4, 4) float64
+        Source -> target similarity (local frame), scale included.
+    meta : dict
+        ``coarse_method``, ``scale0`` and every hypothesis' ``scale``, ``score``.
+    """
+    from scipy.spatial import cKDTree
+
+    from .icp import ICPParams, refine
+    from .preprocess import estimate_voxel_size, prepare
+
+    xs = np.asarray(xs, dtype=np.float64)
+    radii = tgt.radii
+    pt = np.asarray(tgt.down.points)
+    nt = np.asarray(tgt.down.normals)
+    tree = cKDTree(pt)
+    if scale0 is None:
+        scale0 = estimate_voxel_size(pt) / estimate_voxel_size(xs)
+    c = xs.mean(axis=0)
+    n_side = int(np.ceil(np.log(span) / np.log(step)))
+    quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
+    cands = []
+    for k in range(-n_side, n_side + 1):
+        s = float(scale0 * step**k)
+        S = make_transform(np.eye(3), c - s * c, s)  # scale about the centroid
+        try:
+            ps = prepare(apply_transform(S, xs), radii, features=True, remove_outliers=remove_outliers,
+                         viewpoint=None if viewpoint is None else apply_transform(S, np.asarray(viewpoint)[None])[0])
+            r = clique_registration(ps, tgt, params, rel_tol=step - 1.0, with_scale=True)
+        except RuntimeError as e:  # Open3D on degenerate input
+            log.info("scale %.4g: %s", s, e)
+            continue
+        if r.correspondences < 3:
+            continue
+        q = refine(ps.down, tgt.down, radii.voxel, r.transform, quick)
+        p = apply_transform(q.transform, np.asarray(ps.down.points))
+        dist, j = tree.query(p, distance_upper_bound=0.75 * radii.voxel, workers=-1)
+        near = np.isfinite(dist)
+        fit = float(near.mean())
+        share = float(np.mean(np.abs(np.einsum("ij,ij->i", nt[j[near]], p[near] - pt[j[near]])) < 0.3 * radii.voxel)) if near.any() else 0.0
+        cands.append((fit * share, s, q.transform @ S, fit, share))
+        log.info("scale %.4g: clique scale %.4f, fitness %.3f, plane share %.3f", s, r.scale, fit, share)
+    if not cands:
+        return np.eye(4), {"coarse_method": "scale_search", "scale0": scale0, "hypotheses": []}
+    best = max(cands, key=lambda x: x[0])
+    return best[2], {"coarse_method": "scale_search", "scale0": float(scale0), "coarse_fitness": best[3],
+                     "hypotheses": [{"scale": round(x[1], 6), "score": round(x[0], 4)} for x in cands]}
 
 
 COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration}

@@ -158,3 +158,105 @@ def voxel_plane_icp(source_xyz: np.ndarray, target_xyz: np.ndarray, voxel: float
     return RegistrationResult(transform=r.transform, scale=1.0, fitness=r.fitness, inlier_rmse=r.rmse,
                               converged=r.converged, correspondences=int(round(r.fitness * len(source_xyz))),
                               meta={"method": "voxel_plane", "iterations": r.iterations})
+
+
+def _rodrigues(w: np.ndarray) -> np.ndarray:
+    th = float(np.linalg.norm(w))
+    if th < 1e-15:
+        return np.eye(3)
+    k = w / th
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(th) * K + (1 - np.cos(th)) * K @ K
+
+
+def similarity_plane_icp(source_xyz: np.ndarray, target_xyz: np.ndarray, target_normals: np.ndarray,
+                         distances, init: np.ndarray | None = None, max_iterations: int = 30,
+                         kernel_scale: float = 0.5, tolerance: float = 1e-7) -> RegistrationResult:
+    """7-DoF point-to-plane ICP: rotation, translation and scale with a Tukey kernel.
+
+    Point-to-point ICP with scale (Umeyama at every step) is biased when the two clouds sample
+    the surface differently (an SfM-dense cloud and a TLS scan): each source point is pulled
+    towards the nearest target sample, not onto the surface. Here the residual is the distance
+    to the target's tangent plane, ``n . (s R p + t - q)``, linearised about the corresponding
+    points' centroid ``c`` as ``p' = c + (1 + sigma)(I + [omega]x)(p - c) + tau`` (the
+    point-to-plane linearisation of Chen & Medioni 1992 / Low 2004 with one more column,
+    ``n . (p - c)``, for the scale), solved by iteratively reweighted least squares with
+    Tukey's biweight of width ``kernel_scale * d`` (Babin et al. 2019).
+
+    Parameters
+    ----------
+    source_xyz : (n, 3) float64
+    target_xyz : (m, 3) float64
+    target_normals : (m, 3) float64
+        Unit normals of the target.
+    distances : sequence of float
+        Maximum correspondence distances, coarse to fine (target units).
+    init : (4, 4) float, optional
+        Initial similarity source -> target.
+    max_iterations : int
+        Iterations per distance level.
+    kernel_scale : float
+    tolerance : float
+        A level stops when the update moves the points by less than this share of ``d``.
+
+    Returns
+    -------
+    RegistrationResult
+        ``scale`` is the similarity's scale; fitness / RMSE (plane distances) at the last
+        level; ``information`` is the 7x7 normal matrix of the last step (omega, tau, sigma).
+    """
+    from scipy.spatial import cKDTree
+
+    src = np.asarray(source_xyz, dtype=np.float64)
+    tgt = np.asarray(target_xyz, dtype=np.float64)
+    nrm = np.asarray(target_normals, dtype=np.float64)
+    T = np.eye(4) if init is None else np.asarray(init, dtype=np.float64).copy()
+    tree = cKDTree(tgt)
+    levels = []
+    H = np.zeros((7, 7))
+    fit = rmse = 0.0
+    n_corr = 0
+    it_total = 0
+    for d in distances:
+        d = float(d)
+        for _ in range(int(max_iterations)):
+            it_total += 1
+            p = src @ T[:3, :3].T + T[:3, 3]
+            dist, j = tree.query(p, distance_upper_bound=d, workers=-1)
+            ok = np.isfinite(dist)
+            n_corr = int(ok.sum())
+            if n_corr < 7:
+                break
+            pp, q, n = p[ok], tgt[j[ok]], nrm[j[ok]]
+            r = np.einsum("ij,ij->i", n, pp - q)
+            k = kernel_scale * d
+            w = np.where(np.abs(r) < k, (1 - (r / k) ** 2) ** 2, 0.0)
+            c = pp.mean(axis=0)
+            x = pp - c
+            J = np.column_stack([np.cross(x, n), n, np.einsum("ij,ij->i", n, x)])
+            H = J.T @ (J * w[:, None])
+            g = J.T @ (w * r)
+            try:
+                delta = -np.linalg.solve(H + 1e-12 * np.eye(7), g)
+            except np.linalg.LinAlgError:
+                break
+            R = _rodrigues(delta[:3])
+            s = 1.0 + delta[6]
+            D = np.eye(4)
+            D[:3, :3] = s * R
+            D[:3, 3] = c + delta[3:6] - s * R @ c
+            T = D @ T
+            move = np.linalg.norm(delta[:3]) * np.sqrt((x**2).sum(1).mean()) + np.linalg.norm(delta[3:6]) \
+                + abs(delta[6]) * np.sqrt((x**2).sum(1).mean())
+            if move < tolerance * d:
+                break
+        inl = np.abs(r) < kernel_scale * d if n_corr >= 7 else np.zeros(0, bool)
+        fit = float(n_corr / max(len(src), 1))
+        rmse = float(np.sqrt(np.mean(r[inl] ** 2))) if inl.any() else float("nan")
+        levels.append({"distance": d, "fitness": fit, "inlier_rmse": rmse, "correspondences": n_corr})
+    scale = float(np.cbrt(np.linalg.det(T[:3, :3])))
+    ok = n_corr >= 7 and np.isfinite(T).all() and scale > 0
+    return RegistrationResult(transform=T, scale=scale, fitness=fit, inlier_rmse=rmse, converged=bool(ok),
+                              correspondences=n_corr, information=H,
+                              meta={"method": "similarity_point_to_plane", "kernel": "tukey", "levels": levels,
+                                    "iterations": it_total})

@@ -29,8 +29,8 @@ from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
-from .coarse import COARSE_METHODS, CoarseParams
-from .icp import ICPParams, refine, voxel_plane_icp
+from .coarse import COARSE_METHODS, CoarseParams, scale_search
+from .icp import ICPParams, refine, similarity_plane_icp, voxel_plane_icp
 from .preprocess import Radii, estimate_spacing, estimate_voxel_size, prepare
 
 log = get_logger(__name__)
@@ -48,7 +48,9 @@ class RegisterParams:
     method : str
         ``auto`` (clique + RANSAC hypotheses verified by ICP), ``fpfh_ransac``, ``fgr``,
         ``clique`` (coarse then fine), ``icp`` (fine only, from ``init`` or identity) or
-        ``similarity`` (7-DoF point-to-point ICP from ``init``, for SfM <-> LiDAR).
+        ``similarity`` (7 DoF, for SfM <-> LiDAR: from ``init`` when given, else a coarse
+        search over scale hypotheses, :func:`~workstation.registration.coarse.scale_search`;
+        then 7-DoF point-to-plane ICP, :func:`~workstation.registration.icp.similarity_plane_icp`).
     voxel_size : float, optional
         Voxel edge in metres (CRS units) of the coarse stage; every radius derives from it
         (normals 2x, FPFH 5x, coarse inliers 1.5x, ICP schedule ``fine.schedule`` x).
@@ -166,16 +168,19 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     T0 = None if init is None else local_transform(np.asarray(init, float), origin, origin)
     method = params.method
     need_coarse = method in ("fpfh_ransac", "fgr", "clique") or (method == "auto" and T0 is None)
+    scale_coarse = method == "similarity" and T0 is None
     fine_method = params.fine.method
     timings = {}
 
     t0 = time.perf_counter()
-    if fine_method == "voxel_plane" and not need_coarse:
+    if fine_method == "voxel_plane" and not need_coarse and method != "similarity":
         ps = pt = None
     else:
-        ps = prepare(xs, radii, features=need_coarse, colors=_colors(source), fine_voxel=fine_voxel,
-                     remove_outliers=params.remove_outliers, viewpoint=vs)
-        pt = prepare(xt, radii, features=need_coarse, colors=_colors(target), fine_voxel=fine_voxel,
+        # a source of unknown scale is prepared per scale hypothesis (coarse) or not at all (fine)
+        ps = None if method == "similarity" else prepare(
+            xs, radii, features=need_coarse, colors=_colors(source), fine_voxel=fine_voxel,
+            remove_outliers=params.remove_outliers, viewpoint=vs)
+        pt = prepare(xt, radii, features=need_coarse or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
                      remove_outliers=params.remove_outliers, viewpoint=vt)
     timings["prepare"] = time.perf_counter() - t0
 
@@ -184,13 +189,23 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
         T0, coarse_meta = _coarse(ps, pt, method, params)
         meta.update(coarse_meta)
         timings["coarse"] = time.perf_counter() - t0
+    elif scale_coarse:
+        t0 = time.perf_counter()
+        T0, coarse_meta = scale_search(xs, pt, params.coarse, viewpoint=vs, remove_outliers=params.remove_outliers)
+        meta.update(coarse_meta)
+        timings["coarse"] = time.perf_counter() - t0
     if T0 is None:
         T0 = np.eye(4)
 
     t0 = time.perf_counter()
     if method == "similarity":
-        fine_p = replace(params.fine, method="point_to_point", with_scale=True)
-        res = refine(ps.full, pt.full, voxel, T0, fine_p)
+        src_pts = xs
+        if src_pts.shape[0] > params.fine_max_points:  # the source's scale is unknown: thin it by count
+            src_pts = src_pts[np.random.default_rng(0).choice(src_pts.shape[0], params.fine_max_points, replace=False)]
+        res = similarity_plane_icp(src_pts, np.asarray(pt.full.points), np.asarray(pt.full.normals),
+                                   [f * voxel for f in params.fine.schedule], T0, params.fine.max_iterations,
+                                   params.fine.kernel_scale)
+        res = _overlap(res, points_to_legacy(src_pts), pt.full, params.fine.schedule[0] * voxel)
     elif fine_method == "voxel_plane":
         src_pts = xs if ps is None else np.asarray(ps.full.points)
         tgt_pts = xt if pt is None else np.asarray(pt.full.points)
@@ -207,7 +222,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     timings["total"] = time.perf_counter() - t_start
 
     T = world_transform(res.transform, origin, origin)
-    meta.update({"method": method, "fine_method": "point_to_point_scaled" if method == "similarity" else fine_method,
+    meta.update({"method": method, "fine_method": "similarity_point_to_plane" if method == "similarity" else fine_method,
                  "seconds": timings, **{k: v for k, v in res.meta.items() if k != "method"}})
     out = RegistrationResult(transform=T, scale=res.scale, fitness=res.fitness, inlier_rmse=res.inlier_rmse,
                              converged=res.converged, correspondences=res.correspondences,
