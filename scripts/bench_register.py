@@ -10,6 +10,10 @@
    constant once correspondences settle), so a shared machine is not held for minutes.
 3. ``--tls-laz``: every pair of stations of a simulated TLS survey, each station in a random
    frame, and a pose graph over all of them from the identity.
+4. ``--colorize-sim``: colour a simulated TLS station from 8 synthetic photos (z-buffer, depth
+   maps at pixel centres, footprint-minimum depth maps) and check against the scene.
+5. ``--sfm-tls WORKDIR``: SfM-dense cloud of the heritage photo rig (render, ``ws sfm``, CPU
+   dense, cached in WORKDIR) registered in 7 DoF to a simulated TLS survey of the same scene.
 Wall times on a shared machine are contended: CPU seconds (process_time) are given beside them.
 """
 
@@ -402,6 +406,58 @@ def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, r
     return dense, tls, sim, resid, times
 
 
+def bench_sfm_tls(work: Path, seed: int = 0, calibrated: bool = True):
+    """SfM-dense cloud of the heritage rig (arbitrary frame and scale, then moved once more by a
+    random similarity: rotation up to 180 degrees, scale 0.1-10, +-100 units) registered to the
+    simulated TLS cloud of the same scene by ``register(method="similarity")`` from the identity.
+    Truth: the similarity from the SfM frame to the scene frame fitted on the camera centres
+    (SfM vs the rig's true cameras). Reference: the same dense cloud fitted by 7-DoF ICP to a
+    dense sampling of the true mesh (the best alignment this cloud admits); its distance from
+    the camera truth is the SfM + dense cloud's own error, not the registration's."""
+    from workstation.core.cloud import Cloud
+    from workstation.photogrammetry.rigs import load_truth
+    from workstation.registration.icp import similarity_plane_icp
+    from workstation.registration.register import RegisterParams, register
+    from workstation.registration.transforms import make_transform, random_rotation
+
+    dense, tls, sim, resid, times = sfm_tls_data(work, calibrated=calibrated)
+    rng = np.random.default_rng(seed)
+    G = make_transform(random_rotation(rng, 180.0), rng.uniform(-100, 100, 3), 10 ** rng.uniform(-1, 1))
+    src = Cloud(dense.xyz @ G[:3, :3].T + G[:3, 3])
+    S = make_transform(sim.R, sim.t, sim.scale) @ np.linalg.inv(G)  # true similarity src -> scene
+    s_true = float(np.cbrt(np.linalg.det(S[:3, :3])))
+    w0, c0 = time.perf_counter(), time.process_time()
+    r = register(src, tls, RegisterParams(method="similarity"))
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+
+    def errors(T):
+        e = np.linalg.norm(src.xyz @ T[:3, :3].T + T[:3, 3] - (src.xyz @ S[:3, :3].T + S[:3, 3]), axis=1)
+        sc = float(np.cbrt(np.linalg.det(T[:3, :3])))
+        return {"scale_error_pct": round(100 * (sc / s_true - 1), 4), "position_error_mean_m": round(float(e.mean()), 4),
+                "position_error_median_m": round(float(np.median(e)), 4), "position_error_max_m": round(float(e.max()), 4)}
+
+    import open3d as o3d
+
+    truth = load_truth(work / "rig")
+    mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(truth["vertices"]), o3d.utility.Vector3iVector(truth["faces"]))
+    mesh.compute_triangle_normals()
+    pc = mesh.sample_points_uniformly(2_000_000, use_triangle_normal=True)
+    ref = similarity_plane_icp(src.xyz, np.asarray(pc.points), np.asarray(pc.normals), [1.0, 0.5, 0.25, 0.12], S, 30)
+    e_ref = np.linalg.norm(src.xyz @ (r.transform[:3, :3] - ref.transform[:3, :3]).T + r.transform[:3, 3] - ref.transform[:3, 3], axis=1)
+    emit({"bench": "sfm_dense_to_tls_7dof", "calibrated_sfm": calibrated, "dense_points": dense.n, "tls_points": tls.n,
+          "cameras_registered": int(resid.size), "camera_truth_rms_m": round(float(np.sqrt(np.mean(resid**2))), 4),
+          "camera_truth_max_m": round(float(resid.max()), 4), "sfm_scale_to_metres": round(s_true, 6),
+          **errors(r.transform), "fitness": round(r.fitness, 4), "inlier_rmse_m": round(r.inlier_rmse, 4),
+          "scale0_guess": round(r.meta.get("scale0", float("nan")) / s_true, 3),
+          "hypotheses": len(r.meta.get("hypotheses", [])), "voxel_m": round(r.meta["voxel_size"], 3),
+          "reference_dense_to_true_mesh": errors(ref.transform),
+          "registration_vs_reference": {"scale_diff_pct": round(100 * (r.scale / ref.scale - 1), 4),
+                                        "position_diff_mean_m": round(float(e_ref.mean()), 4),
+                                        "position_diff_max_m": round(float(e_ref.max()), 4)},
+          "wall_s": round(wall, 1), "cpu_s": round(cpu, 1), "data_s": {k: round(v, 1) for k, v in times.items()},
+          "load1": os.getloadavg()[0]})
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
@@ -410,6 +466,9 @@ def main():
     ap.add_argument("--skip-bunny", action="store_true")
     ap.add_argument("--skip-icp", action="store_true")
     ap.add_argument("--colorize-sim", action="store_true", help="colour a simulated TLS station from synthetic photos")
+    ap.add_argument("--sfm-tls", type=Path, default=None, metavar="WORKDIR",
+                    help="SfM-dense cloud of the heritage rig to its simulated TLS cloud (7 DoF); data cached in WORKDIR")
+    ap.add_argument("--sfm-self-calibrated", action="store_true", help="with --sfm-tls: SfM self-calibrates the focal length")
     ap.add_argument("--tls-laz", type=Path, default=None,
                     help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
     a = ap.parse_args()
@@ -420,6 +479,8 @@ def main():
             bench_bunny_open3d(a.data, v)
     if a.colorize_sim:
         bench_colorize_sim()
+    if a.sfm_tls is not None:
+        bench_sfm_tls(a.sfm_tls, calibrated=not a.sfm_self_calibrated)
     if a.tls_laz is not None:
         bench_tls(a.tls_laz)
     if not a.skip_icp:

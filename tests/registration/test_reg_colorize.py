@@ -202,3 +202,41 @@ def test_a_cell_across_an_edge_gives_no_mixed_colour():
     assert painted[red].sum() > 30 and painted[~red].sum() > 30
     assert np.all(rgb[painted & red] == [200, 0, 0]) and np.all(rgb[painted & ~red] == [0, 0, 200])
     assert not painted[(u > 100.0) & (u < 102.0)].any()  # the cells touching the edge
+
+
+def test_ws_colorize_with_the_depth_maps_of_a_dense_workspace(tmp_path, capsys):
+    import cv2
+
+    from workstation.cli.main import main
+    from workstation.io import read_cloud, write_cloud
+    from workstation.photogrammetry.dense import write_array
+
+    xyz, truth, is_front = _scene()
+    cam = Camera(320, 240, 250.0, 250.0, 159.5, 119.5)
+    pose = Pose(np.eye(3), np.zeros(3))
+    img = _render(xyz, truth.astype(np.uint8), cam, pose)
+    dense = tmp_path / "work" / "dense"
+    (dense / "sparse").mkdir(parents=True)
+    (dense / "sparse" / "cameras.txt").write_text("1 PINHOLE 320 240 250 250 159.5 119.5\n")
+    (dense / "sparse" / "images.txt").write_text("1 1 0 0 0 0 0 0 1 view.png\n\n")
+    (dense / "sparse" / "points3D.txt").write_text("")
+    (dense / "images").mkdir()
+    cv2.imwrite(str(dense / "images" / "view.png"), img[:, :, ::-1])
+    depth = np.full((240, 320), 8.0, np.float32)
+    depth[119 - 51:119 + 52, 159 - 51:159 + 52] = 5.0  # the front wall: +-50 px around the centre
+    depth[:, :20] = 0.0  # no depth: not used
+    (dense / "stereo" / "depth_maps").mkdir(parents=True)
+    write_array(depth, dense / "stereo" / "depth_maps" / "view.png.geometric.bin")
+    write_cloud(Cloud(xyz), tmp_path / "walls.laz")
+    rc = main(["colorize", str(tmp_path / "walls.laz"), "--reconstruction", str(tmp_path / "work"), "--depth-maps",
+               "--depth-tolerance", "0.05", "-o", str(tmp_path / "out.laz"), "--json"])
+    assert rc == 0
+    out = read_cloud(tmp_path / "out.laz")
+    painted = out.attrs["colorized"].astype(bool)
+    hidden = ~is_front & (np.abs(xyz[:, 0]) < 1.5) & (np.abs(xyz[:, 1]) < 1.5)
+    assert hidden.sum() > 1000 and not painted[hidden].any()
+    u, v, z = project(xyz, cam, pose)
+    assert not painted[u < 20.0].any()  # cells with a corner where the depth map has no depth
+    inner_front = is_front & (np.abs(xyz[:, 0]) < 0.9) & (np.abs(xyz[:, 1]) < 0.9)
+    assert painted[inner_front].all()
+    assert json.loads(capsys.readouterr().out)["painted"] == int(painted.sum())

@@ -16,24 +16,37 @@ from workstation.cli.options import emit_json, json_option, output_option, overw
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Folder of the images (default WORKDIR/images).")
 @click.option("--max-views", type=int, default=3, show_default=True, help="Best views blended per point.")
+@click.option("--depth-maps", "use_depth_maps", is_flag=True,
+              help="Test visibility against the MVS depth maps of WORKDIR/dense (ws sfm --dense) and colour from "
+                   "its undistorted images, instead of a z-buffer of the cloud (also catches occluders the cloud "
+                   "does not hold; pixels without a depth are not used).")
 @click.option("--depth-tolerance", type=float, default=None,
               help="Metres a point may lie behind the visible surface and still be painted (default 3 x spacing).")
 @overwrite_option
 @json_option
-def colorize(cloud, workdir, output, image_dir, max_views, depth_tolerance, overwrite, as_json):
+def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth_tolerance, overwrite, as_json):
     """Colour CLOUD from the oriented photos of a reconstruction; occluded points are not painted.
 
     Adds rgb, colorized (1 painted, 0 seen by no image) and color_views.
     """
     from workstation.interop.pycolmap import read_model
     from workstation.io import check_output, read_cloud, write_cloud
-    from workstation.registration.colorize import ColorizeParams
+    from pathlib import Path
+
+    from workstation.registration.colorize import ColorizeParams, read_depth_maps
     from workstation.registration.colorize import colorize as run_colorize
 
     check_output(output, overwrite, inputs=[cloud])
     c = read_cloud(cloud)
-    rec = read_model(workdir, image_dir)
-    out = run_colorize(c, rec, ColorizeParams(max_views=max_views, depth_tolerance=depth_tolerance))
+    depth_maps = None
+    if use_depth_maps:
+        dense = Path(workdir) / "dense"
+        rec = read_model(dense, image_dir)
+        depth_maps = read_depth_maps(dense, rec)
+    else:
+        rec = read_model(workdir, image_dir)
+    out = run_colorize(c, rec, ColorizeParams(max_views=max_views, depth_tolerance=depth_tolerance),
+                       depth_maps=depth_maps)
     write_cloud(out, output, overwrite=overwrite, inputs=[cloud])
     if as_json:
         painted = int(out.attrs["colorized"].sum())

@@ -250,6 +250,29 @@ def _zbuffer_visible(u, v, z, idx, w, h, cell: int, tol: np.ndarray, fill_holes:
     return z <= zb[cid] + tol
 
 
+def read_depth_maps(dense_dir, reconstruction: Reconstruction) -> dict[int, np.ndarray]:
+    """Depth maps of a dense workspace (``ws sfm --dense``, COLMAP layout) for the images of
+    ``reconstruction`` (its ``dense/sparse`` model): ``stereo/depth_maps/NAME.geometric.bin``,
+    else ``NAME.photometric.bin``; (h, w) float32 metres along the optical axis, 0 = no depth.
+    Images without a depth map are left out (they fall back to the z-buffer test)."""
+    from workstation.photogrammetry.dense import read_array
+
+    folder = Path(dense_dir) / "stereo" / "depth_maps"
+    if not folder.is_dir():
+        raise InvalidInputError("no depth maps in the dense workspace", "run ws sfm --dense first",
+                                path=folder)
+    out = {}
+    for iid, im in reconstruction.images.items():
+        for kind in ("geometric", "photometric"):
+            f = folder / f"{im.name}.{kind}.bin"
+            if f.exists():
+                out[iid] = read_array(f)
+                break
+    if not out:
+        raise InvalidInputError("no depth map matches an image of the model", path=folder)
+    return out
+
+
 def _load_image(img, root) -> np.ndarray:
     p = Path(img.path) if img.path else Path(img.name)
     if root is not None and not p.is_absolute():
