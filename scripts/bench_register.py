@@ -458,6 +458,95 @@ def bench_sfm_tls(work: Path, seed: int = 0, calibrated: bool = True):
           "load1": os.getloadavg()[0]})
 
 
+def bench_colorize_rig(work: Path, supersample: int = 3):
+    """Colour the simulated TLS survey of the heritage scene (4 stations, the cloud of
+    :func:`sfm_tls_data`) from the rig's 24 photos (the rig's own anti-aliased renders of the
+    procedurally textured mesh), three ways: z-buffer of the cloud and exact depth maps of the
+    true cameras (footprint minimum over ``supersample``² rays), both with the true cameras; and
+    the MVS depth maps and undistorted images of the SfM dense workspace (``--depth-maps``), with
+    the TLS cloud moved into the SfM frame by the camera-truth similarity. Truth: the texture at
+    the nearest mesh point of each TLS point (``rigs.surface_colour``) and visibility by ray
+    casting from the true camera centres."""
+    import cv2
+    import open3d as o3d
+
+    from workstation.core.cloud import Cloud
+    from workstation.interop.pycolmap import read_model
+    from workstation.photogrammetry.rigs import _target_scene, load_rig, surface_colour
+    from workstation.raster.ortho import read_reconstruction
+    from workstation.raster.synthetic_aerial import camera_rays
+    from workstation.registration.colorize import ColorizeParams, colorize, read_depth_maps
+
+    dense, tls, sim, resid, _ = sfm_tls_data(work)
+    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
+    V, F, alb, _, _, _, _ = _target_scene(recipe, spec)
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor(V.astype(np.float32)), o3d.core.Tensor(F.astype(np.uint32)))
+    cloud = tls.without_attrs("rgb") if "rgb" in tls.attrs else tls
+    local = cloud.xyz
+    cp = rs.compute_closest_points(o3d.core.Tensor(local.astype(np.float32)))
+    prim = cp["primitive_ids"].numpy().astype(np.int64)
+    tri = V[F[prim]]
+    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    nrm /= np.linalg.norm(nrm, axis=1, keepdims=True)
+    truth = np.round(255 * surface_colour(cp["points"].numpy().astype(np.float64), nrm, alb[prim]))
+    rec = read_reconstruction(work / "rig" / "cameras.json")
+    cam = rec.cameras[1]
+    images = {k: cv2.imread(str(work / "rig" / "images" / im.name))[:, :, ::-1].copy() for k, im in rec.images.items()}
+    ss = int(supersample)
+    rays = camera_rays(cam, ss)
+    dmin = {}
+    for k, im in rec.images.items():
+        d = rays.reshape(-1, 3) @ np.asarray(im.pose.R)
+        hit = rs.cast_rays(o3d.core.Tensor(np.hstack([np.broadcast_to(im.pose.center, d.shape), d]).astype(np.float32)))
+        depth = hit["t_hit"].numpy().astype(np.float64) * rays.reshape(-1, 3)[:, 2]
+        dmin[k] = depth.reshape(cam.height, ss, cam.width, ss).min(axis=(1, 3))
+    # visibility truth per true camera (by image name)
+    vis_by_name = {}
+    for k, im in rec.images.items():
+        from workstation.registration.colorize import project
+
+        u, v, z = project(local, cam, im.pose)
+        inside = (z > 0) & (u >= 0) & (u <= cam.width - 1) & (v >= 0) & (v <= cam.height - 1)
+        C = im.pose.center
+        dd = local[inside] - C
+        dist = np.linalg.norm(dd, axis=1)
+        t = rs.cast_rays(o3d.core.Tensor(np.hstack([np.broadcast_to(C, dd.shape), dd / dist[:, None]]).astype(np.float32)))["t_hit"].numpy()
+        vis = np.zeros(cloud.n, bool)
+        vis[np.flatnonzero(inside)] = t >= dist - 0.05
+        vis_by_name[im.name] = vis
+    seen_any = np.any(list(vis_by_name.values()), axis=0)
+    sfm_dir = work / "rig_sfm_cal" / "dense"
+    mvs_rec = read_model(sfm_dir)
+    mvs_depth = read_depth_maps(sfm_dir, mvs_rec)
+    mvs_images = {k: cv2.imread(str(sfm_dir / "images" / im.name))[:, :, ::-1].copy() for k, im in mvs_rec.images.items()}
+    xyz_sfm = (local - sim.t) @ sim.R / sim.scale  # inverse of x = s R y + t
+    exact = {"depth_tolerance": 0.03, "depth_tolerance_rel": 0.0, "depth_footprint_px": (ss - 1) / (2 * ss)}
+    runs = [("zbuffer", cloud, rec, images, None, {}),
+            ("exact_depth_maps_footprint_min", cloud, rec, images, dmin, exact),
+            ("mvs_depth_maps_sfm_frame", Cloud(xyz_sfm), mvs_rec, mvs_images, mvs_depth, {})]
+    for mode, c, r, imgs, dm, kw in runs:
+        prm = ColorizeParams(**kw)
+        w0, c0 = time.perf_counter(), time.process_time()
+        out = colorize(c, r, prm, images=imgs, depth_maps=dm)
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        painted = out.attrs["colorized"].astype(bool)
+        bad_view = painted_view = 0
+        for k, im in r.images.items():
+            pv = _colorize_one(c, r, k, prm, imgs, dm).astype(bool)
+            painted_view += int(pv.sum())
+            bad_view += int((pv & ~vis_by_name[im.name]).sum())
+        err = np.abs(out.attrs["rgb"][painted] / 257.0 - truth[painted]).mean(axis=1)
+        emit({"bench": "colorize_rig_tls", "visibility": mode, "params": kw, "points": cloud.n, "images": len(r.images),
+              "truly_visible": int(seen_any.sum()), "painted": int(painted.sum()),
+              "coverage_of_visible": round(float((painted & seen_any).sum() / seen_any.sum()), 4),
+              "painted_but_hidden_from_all": int((painted & ~seen_any).sum()),
+              "per_view_painted": painted_view, "per_view_painted_but_hidden_in_that_view": bad_view,
+              "mean_colour_error_255": round(float(err.mean()), 2), "median_colour_error_255": round(float(np.median(err)), 2),
+              "p90_colour_error_255": round(float(np.percentile(err, 90)), 2),
+              "wall_s": round(wall, 1), "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
@@ -468,6 +557,8 @@ def main():
     ap.add_argument("--colorize-sim", action="store_true", help="colour a simulated TLS station from synthetic photos")
     ap.add_argument("--sfm-tls", type=Path, default=None, metavar="WORKDIR",
                     help="SfM-dense cloud of the heritage rig to its simulated TLS cloud (7 DoF); data cached in WORKDIR")
+    ap.add_argument("--colorize-rig", type=Path, default=None, metavar="WORKDIR",
+                    help="colour the simulated TLS of the heritage scene from the rig photos (needs --sfm-tls data)")
     ap.add_argument("--sfm-self-calibrated", action="store_true", help="with --sfm-tls: SfM self-calibrates the focal length")
     ap.add_argument("--tls-laz", type=Path, default=None,
                     help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
@@ -481,6 +572,8 @@ def main():
         bench_colorize_sim()
     if a.sfm_tls is not None:
         bench_sfm_tls(a.sfm_tls, calibrated=not a.sfm_self_calibrated)
+    if a.colorize_rig is not None:
+        bench_colorize_rig(a.colorize_rig)
     if a.tls_laz is not None:
         bench_tls(a.tls_laz)
     if not a.skip_icp:
