@@ -458,7 +458,7 @@ def bench_sfm_tls(work: Path, seed: int = 0, calibrated: bool = True):
           "load1": os.getloadavg()[0]})
 
 
-def bench_colorize_rig(work: Path, supersample: int = 3):
+def bench_colorize_rig(work: Path, supersample: int = 3, modes=("zbuffer", "exact_depth_maps_footprint_min", "mvs_depth_maps_sfm_frame")):
     """Colour the simulated TLS survey of the heritage scene (4 stations, the cloud of
     :func:`sfm_tls_data`) from the rig's 24 photos (the rig's own anti-aliased renders of the
     procedurally textured mesh), three ways: z-buffer of the cloud and exact depth maps of the
@@ -526,6 +526,8 @@ def bench_colorize_rig(work: Path, supersample: int = 3):
             ("exact_depth_maps_footprint_min", cloud, rec, images, dmin, exact),
             ("mvs_depth_maps_sfm_frame", Cloud(xyz_sfm), mvs_rec, mvs_images, mvs_depth, {})]
     for mode, c, r, imgs, dm, kw in runs:
+        if mode not in modes:
+            continue
         prm = ColorizeParams(**kw)
         w0, c0 = time.perf_counter(), time.process_time()
         out = colorize(c, r, prm, images=imgs, depth_maps=dm)

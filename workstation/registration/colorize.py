@@ -31,6 +31,7 @@ from workstation.core.products import Camera, Pose, Reconstruction
 log = get_logger(__name__)
 STAGE = "colorize"
 CREASE_SLACK = 0.5
+ZBUFFER_SLOPE = 1.0
 
 
 @dataclass(frozen=True)
@@ -228,26 +229,53 @@ def depth_map_visible(depth: np.ndarray, u: np.ndarray, v: np.ndarray, z: np.nda
     return vis, x0, y0, wts
 
 
-def _zbuffer_visible(u, v, z, idx, w, h, cell: int, tol: np.ndarray, fill_holes: bool = True) -> np.ndarray:
-    """Visibility of the projected points ``idx`` by a z-buffer of ``cell``-pixel cells.
+def _zbuffer_visible(u, v, z, footprint_px, w, h, tol: np.ndarray, fill_holes: bool = True,
+                     f_px: float = 1.0, slope: float = ZBUFFER_SLOPE) -> np.ndarray:
+    """Visibility of projected points by a z-buffer of the cloud with a splat per point.
 
-    With ``fill_holes`` each cell takes the median depth of its 3 x 3 neighbourhood when that is
-    nearer: a gap of one or two cells in a nearer surface (where a farther surface shows
-    through between sparse points) is closed, while slopes and silhouette edges, where the
-    median is the cell's own depth, are kept (screen-space hole filling in the spirit of
-    Pintus, Gobbetti & Agus 2011, "Real-time rendering of massive unstructured raw point
-    clouds using screen-space operators")."""
-    cw = (w + cell - 1) // cell
-    ch = (h + cell - 1) // cell
-    cid = (np.floor(v / cell).astype(np.int64) * cw + np.floor(u / cell).astype(np.int64))
-    zb = np.full(cw * ch, np.inf)
-    np.minimum.at(zb, cid, z)
-    if fill_holes:
-        from scipy.ndimage import median_filter
+    A point covers about ``footprint_px`` pixels (its local spacing seen from the camera);
+    drawn as one pixel, a sparse surface leaves holes through which the points behind it are
+    wrongly seen. Each point is therefore drawn into the level of a z-buffer pyramid whose
+    cells (``2**level`` pixels) are at least its footprint (a splat of about its own size, as
+    in surface splatting: Zwicker et al. 2001, "Surface splatting", SIGGRAPH), and each point is
+    tested against the nearest depth over all levels at its position. With ``fill_holes`` each
+    cell also takes the median depth of its 3 x 3 neighbourhood when that is nearer: a gap of
+    one or two cells in a nearer surface is closed, while slopes and silhouette edges, where
+    the median is the cell's own depth, are kept (screen-space hole filling in the spirit of
+    Pintus, Gobbetti & Agus 2011, "Real-time rendering of massive unstructured raw point clouds
+    using screen-space operators")."""
+    from scipy.ndimage import median_filter
 
-        g = np.where(np.isfinite(zb), zb, 1e30).reshape(ch, cw)
-        zb = np.minimum(g, median_filter(g, size=3, mode="nearest")).ravel()
-    return z <= zb[cid] + tol
+    level = np.clip(np.ceil(np.log2(np.maximum(footprint_px, 1.0))), 0, 6).astype(np.int64)
+    bound = np.full(z.shape, np.inf)
+    for lev in np.unique(level):
+        cell = 1 << int(lev)
+        cw = (w + cell - 1) // cell
+        ch = (h + cell - 1) // cell
+        cid = np.floor(v / cell).astype(np.int64) * cw + np.floor(u / cell).astype(np.int64)
+        zb = np.full(cw * ch, np.inf)
+        sel = level == lev
+        np.minimum.at(zb, cid[sel], z[sel])
+        if fill_holes:
+            g = np.where(np.isfinite(zb), zb, 1e30).reshape(ch, cw)
+            zb = np.minimum(g, median_filter(g, size=3, mode="nearest")).ravel()
+        zc = zb[cid]
+        # a splat of a surface seen obliquely spans a depth range: allow ``slope`` times its size
+        bound = np.minimum(bound, zc * (1.0 + slope * cell / f_px))
+    return z <= bound + tol
+
+
+def _local_spacing(xyz: np.ndarray, nominal: float | None) -> np.ndarray:
+    """Per-point spacing (n,) metres: the given nominal spacing, or the distance to the 8th
+    nearest neighbour over sqrt(2) (the spacing on a square grid; on a scan pattern three
+    times denser along the line than across, about the larger spacing), so a multi-station
+    TLS cloud gets small splats near the scanners and large ones far away."""
+    if nominal:
+        return np.full(xyz.shape[0], float(nominal))
+    from scipy.spatial import cKDTree
+
+    d, _ = cKDTree(xyz).query(xyz, k=9, workers=-1)
+    return d[:, 8] / np.sqrt(2.0)
 
 
 def read_depth_maps(dense_dir, reconstruction: Reconstruction) -> dict[int, np.ndarray]:
@@ -328,6 +356,7 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
     W = np.zeros((cloud.n, k))
     C = np.zeros((cloud.n, k, 3))
     scale16 = None
+    local_spacing = None
     for iid, im in reconstruction.images.items():
         cam = reconstruction.cameras[im.camera_id]
         img = images[iid] if images is not None and iid in images else _load_image(im, image_root)
@@ -348,9 +377,10 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
             vis, x0, y0, cw = depth_map_visible(depth_maps[iid], ui, vi, zi, tol, cam, params.min_cos,
                                                 params.depth_footprint_px)
         else:
-            f = 0.5 * (cam.fx + cam.fy)
-            cell = int(np.clip(np.ceil(2.0 * f * spacing / np.median(zi)), 1, 64))
-            vis = _zbuffer_visible(ui, vi, zi, idx, cam.width, cam.height, cell, tol, params.fill_holes)
+            if local_spacing is None:
+                local_spacing = _local_spacing(xyz, params.point_spacing)
+            fp = 2.0 * 0.5 * (cam.fx + cam.fy) * local_spacing[idx] / zi
+            vis = _zbuffer_visible(ui, vi, zi, fp, cam.width, cam.height, tol, params.fill_holes, 0.5 * (cam.fx + cam.fy))
             x0, y0, cw = _corners(ui, vi, cam.width, cam.height)
         idx, x0, y0, cw = idx[vis], x0[vis], y0[vis], cw[vis]
         ray = xyz[idx] - im.pose.center
