@@ -1,8 +1,12 @@
 """Dense reconstruction benchmarks (issue 7). Prints one JSON line per result.
 
     python scripts/bench_dense.py rig       # synthetic heritage rig, 24 images, SfM cameras
+    python scripts/bench_dense.py rig --recipe rig_aerial --samples-on all   # aerial block
+    python scripts/bench_dense.py rig --dist -0.12 0.05 [--camera given]    # radial distortion
     python scripts/bench_dense.py temple    # Middlebury templeSparseRing, true cameras
     python scripts/bench_dense.py fountain  # Strecha fountain-P11 at 1536 px, true cameras
+    python scripts/bench_dense.py fountain --images 6   # same size, fewer images (memory)
+    python scripts/bench_dense.py fusion --dense-dir DIR --fusion-cache-gb 0   # fusion alone
 
 Options: --work DIR (scratch folder, default /tmp/bench_dense), --reuse (keep a rendered rig
 and its SfM workdir), --render PNG (off-screen view of the dense cloud).
@@ -82,22 +86,40 @@ def _render(cloud, path, view=None) -> None:
 
 
 def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 1, min_ncc: float = 0.4,
-              fusion_min_pixels: int = 2) -> None:
+              fusion_min_pixels: int = 2, recipe_name: str = "rig_heritage", dist=None, camera: str = "self",
+              samples_on: str = "target") -> None:
+    """Render a synthetic rig, orient it by SfM, densify, compare with the true mesh.
+
+    ``dist``: (k1, k2) radial distortion rendered into the images; ``camera``: "self" (SfM
+    self-calibrates: RADIAL with distortion, else the SfM default) or "given" (the true
+    intrinsics and distortion, held fixed, as ``ws sfm --camera``); ``samples_on``: "target"
+    (completeness on the target object) or "all" (every surface seen by ≥ 2 true cameras).
+    """
+    from dataclasses import replace
+
     from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
     from workstation.raster.ortho import read_reconstruction
 
-    rigdir, sfmdir = work / "rig", work / "rig_sfm"
-    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
+    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / f"{recipe_name}.toml")
+    tag = recipe_name
+    if dist is not None:
+        spec = replace(spec, dist=(float(dist[0]), float(dist[1]), 0.0, 0.0, 0.0))
+        tag += f"_k1_{dist[0]:g}_k2_{dist[1]:g}"
+    rigdir, sfmdir = work / tag, work / f"{tag}_sfm_{camera}"
     t0 = time.perf_counter()
     if not (reuse and (rigdir / "truth_mesh.npz").exists()):
         make_rig(recipe, spec, rigdir, overwrite=True)
     t_render = time.perf_counter() - t0
     t0 = time.perf_counter()
+    if camera == "given":
+        sfm_cam, sfm_params = spec.camera(), SfMParams()
+    else:
+        sfm_cam, sfm_params = None, SfMParams(camera_model="RADIAL") if dist is not None else SfMParams()
     if not (reuse and (sfmdir / "sparse" / "0").exists()):
-        run_sfm(rigdir / "images", sfmdir, params=SfMParams(), overwrite=True)
+        run_sfm(rigdir / "images", sfmdir, sfm_cam, params=sfm_params, overwrite=True)
     t_sfm = time.perf_counter() - t0
     c0, t0 = time.process_time(), time.perf_counter()
     cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc,
@@ -106,20 +128,30 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     true = read_reconstruction(rigdir / "cameras.json")
     est = read_reconstruction(sfmdir / "sparse" / "0")
+    est_cam = next(iter(est.cameras.values()))
     by_name = {im.name: im for im in true.images.values()}
     pairs = [(im.pose.center, by_name[im.name].pose.center) for im in est.images.values() if im.name in by_name]
     sim = fit_similarity(np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs]))
     xyz = sim.apply(cloud.xyz)
     T = load_truth(rigdir)
     cams = [(true.cameras[im.camera_id], im.pose) for im in true.images.values()]
-    samples = _surface_samples(T["vertices"], T["faces"], T["target"], cams)
+    mask = T["target"] if samples_on == "target" else np.ones(len(T["faces"]), bool)
+    samples = _surface_samples(T["vertices"], T["faces"], mask, cams)
     ev = evaluate(xyz, T["vertices"], T["faces"], float(T["extent"]), samples)
-    _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels, "registered": len(pairs), "images": len(true.images),
+    gsd = None
+    if spec.layout == "grid":
+        gsd = spec.distance / spec.focal_px  # ground sampling distance at the base of the target, m
+    _emit({"bench": f"dense_{tag}", "layout": spec.layout, "camera": camera, "true_dist": list(spec.dist[:2]),
+           "sfm_camera": {"model": est_cam.model, "f": round(est_cam.fx, 1), "dist": [round(float(x), 4) for x in est_cam.dist[:2]]},
+           "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels,
+           "registered": len(pairs), "images": len(true.images), "sim_scale": round(float(sim.scale), 5),
            "render_s": round(t_render, 1), "sfm_s": round(t_sfm, 1), "dense_wall_s": round(wall, 1),
-           "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
-           "samples": len(samples), "summary": summary["timings_s"]})
+           "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2),
+           **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
+           "accuracy_gsd": None if gsd is None else round(ev["accuracy_median"] / gsd, 3),
+           "samples_on": samples_on, "samples": len(samples), "summary": summary["timings_s"]})
     if render:
-        _render(xyz, cloud.attrs["rgb"], render, f"synthetic heritage rig: {cloud.n} dense points (CPU plane sweep)")
+        _render(cloud.with_xyz(xyz), render)
 
 
 def _true_workdir(work: Path, name: str, cams: list) -> Path:
@@ -224,6 +256,10 @@ def main() -> None:
     ap.add_argument("--min-consistent", type=int, default=1)
     ap.add_argument("--min-ncc", type=float, default=0.4)
     ap.add_argument("--fusion-min-pixels", type=int, default=2)
+    ap.add_argument("--recipe", default="rig_heritage", help="rig: datasets_synth/NAME.toml")
+    ap.add_argument("--dist", type=float, nargs=2, metavar=("K1", "K2"), help="rig: render with radial distortion")
+    ap.add_argument("--camera", choices=["self", "given"], default="self", help="rig: SfM self-calibrates or gets the true camera")
+    ap.add_argument("--samples-on", choices=["target", "all"], default="target", help="rig: completeness samples")
     ap.add_argument("--images", type=int, default=0, help="fountain: keep the first N images (0: all)")
     ap.add_argument("--fusion-cache-gb", type=float, default=1.0)
     ap.add_argument("--dense-dir", help="fusion: an existing dense workspace")
@@ -231,7 +267,8 @@ def main() -> None:
     work = Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     if a.what == "rig":
-        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels)
+        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels, a.recipe, a.dist,
+                  a.camera, a.samples_on)
     elif a.what == "temple":
         bench_temple(work, a.render)
     elif a.what == "fountain":

@@ -5,7 +5,10 @@ fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused
 
 - ``cuda``: COLMAP PatchMatch stereo (Schönberger et al., *Pixelwise View Selection for
   Unstructured Multi-View Stereo*, ECCV 2016) through ``pycolmap.patch_match_stereo``; needs a
-  CUDA build of pycolmap (``pycolmap.has_cuda``).
+  CUDA build of pycolmap (``pycolmap.has_cuda``). Geometric consistency is on, so it writes
+  the same ``*.geometric.bin`` maps the CPU path writes; source views come from
+  ``stereo/patch-match.cfg`` (COLMAP's ``__auto__, 20`` for an SfM model; for a model without
+  sparse points, e.g. true rig cameras, the CPU path's selection and ``depth_range``).
 - ``cpu``: our plane-sweep stereo (Collins, *A space-sweep approach to true multi-image
   matching*, CVPR 1996; Gallup et al., *Real-time plane-sweeping stereo with multiple sweeping
   directions*, CVPR 2007): for each reference image, fronto-parallel planes uniformly spaced in
@@ -18,7 +21,10 @@ fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused
   agree with at least ``min_consistent`` source depth maps. Normals come from the depth map's
   local plane (cross product of back-projected neighbours).
 
-Memory is bounded by the image size: a handful of float32 arrays of one image at a time.
+Memory is bounded by the image size: the sweep holds a handful of float32 arrays of one
+reference image and its sources at a time, and fusion reads the maps through COLMAP's cached
+workspace (``fusion_cache_gb``) instead of loading all of them, so the image count adds only
+the fused points.
 
 Depth and normal maps use COLMAP's array format: a text header ``width&height&channels&``
 followed by float32 data in column-major (width, height, channels) order (COLMAP's
