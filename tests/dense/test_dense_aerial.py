@@ -27,7 +27,7 @@ def test_dense_aerial_block_sfm_then_dense(tmp_path):
     # is ill-posed (focal length and flying height trade off; see docs/benchmarks.md)
     sfm = run_sfm(tmp_path / "rig" / "images", tmp_path / "wd", spec.camera())
     assert sfm.summary["registered"] == len(C)
-    cloud, summary = run_dense(tmp_path / "wd", tmp_path / "rig" / "images", DenseParams(device="cpu"))
+    cloud, _ = run_dense(tmp_path / "wd", tmp_path / "rig" / "images", DenseParams(device="cpu"))
     by_name = {im.name: im.pose.center for im in rig.reconstruction.images.values()}
     est = sfm.reconstruction.images.values()
     sim = fit_similarity(np.array([im.pose.center for im in est]), np.array([by_name[im.name] for im in est]))

@@ -10,7 +10,11 @@ import pytest
 
 from workstation.core.products import Reconstruction
 from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
-from workstation.photogrammetry.rigs import box_wall_rig, box_wall_scene, write_colmap_text
+from workstation.photogrammetry.rigs import (
+    box_wall_rig,
+    box_wall_scene,
+    write_colmap_text,
+)
 
 
 @pytest.mark.slow
