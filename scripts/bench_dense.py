@@ -87,13 +87,14 @@ def _render(cloud, path, view=None) -> None:
 
 def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 1, min_ncc: float = 0.4,
               fusion_min_pixels: int = 2, recipe_name: str = "rig_heritage", dist=None, camera: str = "self",
-              samples_on: str = "target") -> None:
+              samples_on: str = "target", scale: float = 1.0) -> None:
     """Render a synthetic rig, orient it by SfM, densify, compare with the true mesh.
 
     ``dist``: (k1, k2) radial distortion rendered into the images; ``camera``: "self" (SfM
     self-calibrates: RADIAL with distortion, else the SfM default) or "given" (the true
     intrinsics and distortion, held fixed, as ``ws sfm --camera``); ``samples_on``: "target"
-    (completeness on the target object) or "all" (every surface seen by ≥ 2 true cameras).
+    (completeness on the target object) or "all" (every surface seen by ≥ 2 true cameras);
+    ``scale``: image size and focal length times this (same footprint), one ray per pixel below 1.
     """
     from dataclasses import replace
 
@@ -105,6 +106,10 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
 
     recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / f"{recipe_name}.toml")
     tag = recipe_name
+    if scale != 1.0:
+        spec = replace(spec, width=round(spec.width * scale), height=round(spec.height * scale),
+                       focal_px=spec.focal_px * scale, supersample=spec.supersample if scale >= 1 else 1)
+        tag += f"_x{scale:g}"
     if dist is not None:
         spec = replace(spec, dist=(float(dist[0]), float(dist[1]), 0.0, 0.0, 0.0))
         tag += f"_k1_{dist[0]:g}_k2_{dist[1]:g}"
@@ -259,6 +264,7 @@ def main() -> None:
     ap.add_argument("--recipe", default="rig_heritage", help="rig: datasets_synth/NAME.toml")
     ap.add_argument("--dist", type=float, nargs=2, metavar=("K1", "K2"), help="rig: render with radial distortion")
     ap.add_argument("--camera", choices=["self", "given"], default="self", help="rig: SfM self-calibrates or gets the true camera")
+    ap.add_argument("--scale", type=float, default=1.0, help="rig: image size and focal length times this")
     ap.add_argument("--samples-on", choices=["target", "all"], default="target", help="rig: completeness samples")
     ap.add_argument("--images", type=int, default=0, help="fountain: keep the first N images (0: all)")
     ap.add_argument("--fusion-cache-gb", type=float, default=1.0)
@@ -268,7 +274,7 @@ def main() -> None:
     work.mkdir(parents=True, exist_ok=True)
     if a.what == "rig":
         bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels, a.recipe, a.dist,
-                  a.camera, a.samples_on)
+                  a.camera, a.samples_on, a.scale)
     elif a.what == "temple":
         bench_temple(work, a.render)
     elif a.what == "fountain":
