@@ -113,6 +113,69 @@ def poisson_1m(threads, backend="pymeshlab"):
          wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
 
 
+def torus_radial_error(v: np.ndarray) -> np.ndarray:
+    """Distance (m) of points to the bumpy torus of :func:`torus_1m` along the tube's radius
+    (the bumps are gentle, 0.3 m over 6-12 m wavelengths, so this is the surface distance to
+    within a few per cent)."""
+    p = v - [500_000, 4_000_000, 100]
+    u = np.arctan2(p[:, 1], p[:, 0])
+    rho = np.hypot(p[:, 0], p[:, 1]) - 10.0
+    w = np.arctan2(p[:, 2], rho)
+    return np.abs(np.hypot(rho, p[:, 2]) - (3.0 + 0.3 * np.sin(5 * u) * np.cos(3 * w)))
+
+
+def _capture_fd1(fn, *a, **k):
+    """Run fn with the process's stdout (fd 1, where Open3D's C++ logger writes) captured."""
+    import tempfile
+
+    sys.stdout.flush()
+    saved = os.dup(1)
+    with tempfile.TemporaryFile(mode="w+b") as tmp:
+        os.dup2(tmp.fileno(), 1)
+        try:
+            out = fn(*a, **k)
+        finally:
+            sys.stdout.flush()
+            os.dup2(saved, 1)
+            os.close(saved)
+        tmp.seek(0)
+        text = tmp.read().decode("utf-8", "replace")
+    return out, text
+
+
+def poisson_profile(threads, variants):
+    """Where the time of Open3D's Poisson (depth 10, 1 M points) goes, per PoissonRecon stage
+    (its own profiler, Debug verbosity), for parameter variants; accuracy against the analytic
+    torus. ``variants``: "spn:pw:full_depth" strings."""
+    import re
+
+    import open3d as o3d
+
+    cloud = torus_1m()
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - [500_000, 4_000_000, 100]))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], float))
+    o3d.utility.set_verbosity_level(o3d.utility.VerbosityLevel.Debug)
+    for var in variants:
+        spn, pw, fd = (float(x) for x in var.split(":"))
+        call = lambda: o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(  # noqa: E731
+            pc, depth=10, n_threads=threads, samples_per_node=spn, point_weight=pw, full_depth=int(fd))
+        ((m, _), text), wall, cpu = timed(_capture_fd1, call)
+        stages = {}
+        for key in ("Got kernel density", "Got normal field", "Finalized tree", "Set FEM constraints",
+                    "Set point constraints", "Linear system solved", "Got average", "Got Iso-surface"):
+            hit = re.search(re.escape(key) + r":\s*([0-9.]+) \(s\)", text)
+            if hit:
+                stages[key] = round(float(hit.group(1)), 1)
+        err = torus_radial_error(np.asarray(m.vertices) + [500_000, 4_000_000, 100])
+        emit(bench="poisson_depth10_1M_profile", backend="open3d", samples_per_node=spn, point_weight=pw,
+             full_depth=int(fd), threads=threads, faces=len(m.triangles), wall_s=round(wall, 1), cpu_s=round(cpu, 1),
+             stages_wall_s=stages, radial_error_mm={"p50": round(1000 * float(np.median(err)), 2),
+                                                     "p95": round(1000 * float(np.percentile(err, 95)), 2),
+                                                     "rms": round(1000 * float(np.sqrt(np.mean(err ** 2))), 2)},
+             omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"), loadavg=os.getloadavg()[0])
+    o3d.utility.set_verbosity_level(o3d.utility.VerbosityLevel.Warning)
+
+
 def poisson_1m_open3d():
     """The same cloud and depth through Open3D's Poisson (the anchor for the ratio)."""
     import open3d as o3d
@@ -192,6 +255,8 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
+                    help="poisson_profile: samples_per_node:point_weight:full_depth, comma separated")
     a = ap.parse_args()
     todo = a.only.split(",")
     if "render" in todo:
@@ -200,6 +265,9 @@ if __name__ == "__main__":
         poisson_1m(a.threads)
     if "poisson_backend_open3d" in todo:
         poisson_1m(a.threads, backend="open3d")
+    if "poisson_profile" in todo:
+        os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+        poisson_profile(a.threads, a.variants.split(","))
     if "poisson_open3d" in todo:
         poisson_1m_open3d()
     if "bunny" in todo:
