@@ -365,6 +365,19 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     return np.ascontiguousarray(img[:, :, :3])
 
 
+def find_image(rec: Reconstruction, ref) -> int:
+    """Id of the image of ``rec`` named ``ref`` (file name, or its stem), or with id ``ref``."""
+    s = str(ref)
+    for iid, im in rec.images.items():
+        if s in (im.name, im.name.rsplit("/", 1)[-1], im.name.rsplit("/", 1)[-1].rsplit(".", 1)[0]):
+            return int(iid)
+    if s.isdigit() and int(s) in rec.images:
+        return int(s)
+    names = ", ".join(im.name for im in list(rec.images.values())[:10])
+    raise InvalidInputError(f"no image '{s}' in the reconstruction", f"give a name or id, e.g. {names}",
+                            field="camera")
+
+
 def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pose]:
     """The (Camera, Pose) of one oriented image of a reconstruction, for ``render(camera=...)``.
 
@@ -377,7 +390,11 @@ def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pos
     im = rec.images[image_id]
     if im.camera_id not in rec.cameras:
         raise InvalidInputError(f"camera {im.camera_id} of image {image_id} is missing", field="cameras")
-    return rec.cameras[im.camera_id], im.pose
+    cam = rec.cameras[im.camera_id]
+    if any(abs(float(d)) > 0 for d in cam.dist):
+        log.warning("camera %d has lens distortion: the render is the ideal pinhole image "
+                    "(compare it with the undistorted photo)", im.camera_id)
+    return cam, im.pose
 
 
 def turntable(obj, params: RenderParams = RenderParams(), frames: int = 36, elevation_deg: float = 25.0):
