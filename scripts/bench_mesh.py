@@ -11,6 +11,10 @@
   OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
 - heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
+- texture: the true heritage-church mesh textured from the 24 photos of the synthetic rig,
+  texture colour vs the true surface colour.
+- poisson_profile: Open3D's Poisson depth 10 on the 1 M-point torus, per PoissonRecon stage,
+  for ``--variants`` (samples per node : point weight : full depth), accuracy vs the torus.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
 shared machine).
 """
@@ -239,6 +243,65 @@ def heritage():
          mesh_cpu_s=round(cpu, 1))
 
 
+def subdivide_long(V, F, values, max_edge):
+    """Midpoint subdivision of the whole mesh until its longest edge is <= max_edge (metres);
+    ``values`` (m, ...) per face are carried to the children."""
+    while True:
+        t = V[F]
+        if np.linalg.norm(t - np.roll(t, 1, axis=1), axis=2).max() <= max_edge:
+            return V, F, values
+        m = len(F)
+        e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+        uniq, inv = np.unique(e, axis=0, return_inverse=True)
+        base = len(V)
+        V = np.vstack([V, 0.5 * (V[uniq[:, 0]] + V[uniq[:, 1]])])
+        a, b, c = base + inv.reshape(3, m)
+        F = np.concatenate([np.stack([F[:, 0], a, c], 1), np.stack([a, F[:, 1], b], 1),
+                            np.stack([c, b, F[:, 2]], 1), np.stack([a, b, c], 1)])
+        values = np.concatenate([values] * 4)
+
+
+def texture_heritage(workdir):
+    """Texture the true heritage-church mesh from the 24 photos of the synthetic convergent rig
+    (datasets_synth/rig_heritage.toml, true cameras); texture colour at random points of the
+    textured church faces against the scene's true surface colour (0-255)."""
+    from workstation.core.products import Mesh
+    from workstation.mesh import TextureParams, texture_from_photos
+    from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig, surface_colour
+    from workstation.registration.colorize import bilinear
+
+    recipe, spec = load_rig("rig_heritage")
+    (rig, wall_r, cpu_r) = timed(make_rig, recipe, spec, workdir, overwrite=True)
+    V, F, alb, tmask, *_ = _target_scene(recipe, spec)
+    vals = np.column_stack([alb, tmask.astype(float)])
+    V, F, vals = subdivide_long(V, F, vals, 1.0)
+    mesh = Mesh(V, F)
+    (out, step), wall, cpu = timed(texture_from_photos, mesh, rig.reconstruction, TextureParams(),
+                                   image_root=rig.folder)
+    tex = out.meta["texture"]
+    h, w = tex.shape[:2]
+    rng = np.random.default_rng(0)
+    ok = np.flatnonzero((out.face_attrs["texture_view"] >= 0) & (vals[:, 3] > 0.5))
+    faces = rng.choice(ok, 100_000)
+    bary = rng.dirichlet([2.0, 2.0, 2.0], len(faces))
+    t = out.vertices[out.faces[faces]]
+    P = np.einsum("nk,nkd->nd", bary, t)
+    uv = np.einsum("nk,nkd->nd", bary, np.asarray(out.vertex_attrs["uv"], float)[out.faces[faces]])
+    col = bilinear(tex, uv[:, 0] * w - 0.5, (1 - uv[:, 1]) * h - 0.5)
+    n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
+    truth = 255 * surface_colour(P, n / np.linalg.norm(n, axis=1, keepdims=True), vals[faces, :3])
+    err = np.abs(col - truth)
+    area = mesh.face_areas()
+    church = vals[:, 3] > 0.5
+    seen = out.face_attrs["texture_view"] >= 0
+    emit(bench="texture_heritage_rig", images=len(rig.reconstruction.images), faces=mesh.n_faces,
+         texture_px=[int(w), int(h)], texel_size_m=round(step.params["texel_size"], 4),
+         church_area_textured_fraction=round(float(area[church & seen].sum() / area[church].sum()), 3),
+         abs_error_0_255={"p50": round(float(np.median(err)), 2), "mean": round(float(err.mean()), 2),
+                          "p95": round(float(np.percentile(err, 95)), 2)},
+         texture_wall_s=round(wall, 1), texture_cpu_s=round(cpu, 1), rig_render_wall_s=round(wall_r, 1))
+
+
 def render_10m():
     from workstation.render import RenderParams, render
 
@@ -274,3 +337,8 @@ if __name__ == "__main__":
         bunny(a.threads)
     if "heritage" in todo:
         heritage()
+    if "texture" in todo:
+        import tempfile
+
+        with tempfile.TemporaryDirectory() as d:
+            texture_heritage(Path(d) / "rig")

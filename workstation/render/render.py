@@ -25,7 +25,7 @@ from workstation.core.products import Camera, Mesh, Pose, Reconstruction
 log = get_logger(__name__)
 
 VIEWS = ("top", "front", "iso")
-NAMED_COLORS = ("auto", "rgb", "class", "classification", "elevation", "intensity", "hag", "uniform")
+NAMED_COLORS = ("auto", "texture", "rgb", "class", "classification", "elevation", "intensity", "hag", "uniform")
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,8 @@ class RenderParams:
     size : (int, int)
         Image width and height in pixels.
     color : str
-        ``auto`` (rgb, else classification, else elevation), ``rgb``, ``class``,
+        ``auto`` (a mesh's texture, else rgb, else classification, else elevation),
+        ``texture`` (a textured mesh's image, unlit), ``rgb``, ``class``,
         ``elevation``, ``intensity``, ``hag``, ``uniform`` or the name of any attribute.
     view : {"top", "front", "iso"}
         Ignored when a camera is given.
@@ -108,6 +109,13 @@ def _scalar_colors(obj, params: RenderParams):
     attrs = obj.attrs if isinstance(obj, Cloud) else obj.vertex_attrs
     xyz = obj.xyz if isinstance(obj, Cloud) else obj.vertices
     c = params.color
+    textured = isinstance(obj, Mesh) and "uv" in attrs and obj.meta.get("texture") is not None
+    if c == "texture" and not textured:
+        raise InvalidInputError("the mesh has no texture", "use --color rgb or elevation", field="texture")
+    if c == "auto" and textured:
+        c = "texture"
+    if c == "texture":
+        return c, None, None, None
     if c == "auto":
         if "rgb" in attrs:
             c = "rgb"
@@ -319,7 +327,13 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
             kw.update(style="points", point_size=_point_size(params, lo, hi, n_points, size), render_points_as_spheres=False)
         else:
             kw.update(smooth_shading=True)
-        if rgb is not None:
+        if kind == "texture":
+            poly.active_texture_coordinates = np.asarray(obj.vertex_attrs["uv"], dtype=np.float32)
+            tex = pv.Texture(np.ascontiguousarray(np.asarray(obj.meta["texture"], dtype=np.uint8)[:, :, :3]))
+            tex.interpolate = True
+            # the photos' own shading is in the texture: draw it unlit, as seen
+            pl.add_mesh(poly, texture=tex, **{**kw, "lighting": False, "smooth_shading": False})
+        elif rgb is not None:
             if kind == "class-face":
                 poly.cell_data["_rgb"] = rgb
             else:
