@@ -106,15 +106,19 @@ def torus_1m():
     return Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
 
 
-def poisson_1m(threads, backend="pymeshlab"):
+def poisson_1m(threads, backend="pymeshlab", samples_per_node=1.5):
     from workstation.mesh import PoissonParams, poisson
 
     cloud = torus_1m()
     n = cloud.n
     (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads,
-                                                                 backend=backend))
-    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"], faces=mesh.n_faces,
-         wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
+                                                                 backend=backend, samples_per_node=samples_per_node))
+    err = torus_radial_error(mesh.vertices)
+    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"],
+         samples_per_node=samples_per_node, faces=mesh.n_faces, wall_s=round(wall, 1), cpu_s=round(cpu, 1),
+         radial_error_mm={"p50": round(1000 * float(np.median(err)), 2),
+                          "p95": round(1000 * float(np.percentile(err, 95)), 2)},
+         omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"), loadavg=os.getloadavg()[0])
 
 
 def torus_radial_error(v: np.ndarray) -> np.ndarray:
@@ -318,6 +322,7 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--samples-per-node", type=float, default=1.5, help="poisson, poisson_backend_open3d")
     ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
                     help="poisson_profile: samples_per_node:point_weight:full_depth, comma separated")
     a = ap.parse_args()
@@ -325,9 +330,9 @@ if __name__ == "__main__":
     if "render" in todo:
         render_10m()
     if "poisson" in todo:
-        poisson_1m(a.threads)
+        poisson_1m(a.threads, samples_per_node=a.samples_per_node)
     if "poisson_backend_open3d" in todo:
-        poisson_1m(a.threads, backend="open3d")
+        poisson_1m(a.threads, backend="open3d", samples_per_node=a.samples_per_node)
     if "poisson_profile" in todo:
         os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
         poisson_profile(a.threads, a.variants.split(","))
