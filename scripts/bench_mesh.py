@@ -46,11 +46,11 @@ def timed(fn, *a, **k):
     return out, time.perf_counter() - t, time.process_time() - c
 
 
-def bunny(threads):
+def bunny(threads, trims=(0.05,)):
     from scipy.spatial.transform import Rotation
 
-    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
-                                  QualityParams, estimate_normals, mesh_cloud, mesh_quality)
+    from workstation.mesh import (CleanParams, DecimateParams, NormalParams, PoissonParams, QualityParams, clean,
+                                  decimate, estimate_normals, keep_vertices, mesh_quality, poisson)
     from workstation.core.products import Mesh
     from workstation.io import read_cloud
 
@@ -68,16 +68,23 @@ def bunny(threads):
         local, _ = estimate_normals(Cloud(xyz), NormalParams(k=10), viewpoints=np.array([0.0, 0.0, 1.0]))
         scans.append(Cloud(xyz @ R + np.array(s[2:5], float), {"normal": np.asarray(local.attrs["normal"], float) @ R}))
     merged = concatenate(scans)
-    res, wall, cpu = timed(mesh_cloud, merged, MeshChainParams(
-        method="poisson", poisson=PoissonParams(depth=9, trim_quantile=0.05, threads=threads),
-        clean=CleanParams(min_piece_fraction=0.1), decimate=DecimateParams(target_faces=20000),
-        quality=QualityParams(mesh_samples=200_000)))
-    q = res.quality
     mm = lambda d: {k: round(v * 1000, 4) for k, v in d.items() if k != "n"}  # noqa: E731
-    emit(bench="bunny_poisson_pymeshlab", points=merged.n, faces=q["faces"], wall_s=round(wall, 1),
-         cpu_s=round(cpu, 1), steps={s.name: round(s.seconds, 2) for s in res.steps},
-         non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
-         mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
+    # one Poisson surface, then each density trim through the rest of the chain
+    (raw, prec), wall_p, cpu_p = timed(poisson, merged, PoissonParams(depth=9, trim_quantile=0.0, threads=threads))
+    dens = np.asarray(raw.vertex_attrs["quality"], dtype=np.float64)
+    for trim in trims:
+        t0, c0 = time.perf_counter(), time.process_time()
+        m = keep_vertices(raw, dens >= np.quantile(dens, trim)) if trim > 0 else raw
+        m, _ = clean(m, CleanParams(min_piece_fraction=0.1, report_self_intersections=False))
+        m, _ = decimate(m, DecimateParams(target_faces=20000))
+        m, _ = clean(m, CleanParams(report_self_intersections=False))
+        wall, cpu = time.perf_counter() - t0 + wall_p, time.process_time() - c0 + cpu_p
+        q = mesh_quality(Mesh(m.vertices, m.faces), Cloud(merged.xyz), QualityParams(mesh_samples=200_000))
+        emit(bench="bunny_poisson_pymeshlab", points=merged.n, trim_quantile=trim, faces=q["faces"],
+             wall_s=round(wall, 1), cpu_s=round(cpu, 1), poisson_wall_s=round(wall_p, 1),
+             non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+             mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
+             mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
     import open3d as o3d
 
     pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.array(merged.xyz)))
@@ -92,6 +99,7 @@ def bunny(threads):
                      QualityParams(mesh_samples=200_000))
     emit(bench="bunny_poisson_open3d_anchor", faces=q["faces"], wall_s=round(wall, 1), cpu_s=round(cpu, 1),
          non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+         mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
          mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
 
 
@@ -322,6 +330,7 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
     ap.add_argument("--samples-per-node", type=float, default=1.5, help="poisson, poisson_backend_open3d")
     ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
                     help="poisson_profile: samples_per_node:point_weight:full_depth, comma separated")
@@ -339,7 +348,7 @@ if __name__ == "__main__":
     if "poisson_open3d" in todo:
         poisson_1m_open3d()
     if "bunny" in todo:
-        bunny(a.threads)
+        bunny(a.threads, tuple(float(t) for t in a.trims.split(",")))
     if "heritage" in todo:
         heritage()
     if "texture" in todo:
