@@ -356,8 +356,8 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         atlas = build_atlas(mesh, texel, params)
         order = _corner_order(mesh.vertices[mesh.faces])
         corners = np.take_along_axis(mesh.faces, order, axis=1)  # (right angle, p, q) vertex ids
-        tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float64)
-        tex_w = np.zeros((atlas.height, atlas.width))
+        tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float32)
+        tex_w = np.zeros((atlas.height, atlas.width), dtype=np.float32)
         cache: dict[int, np.ndarray] = {}
 
         def image(iid):
