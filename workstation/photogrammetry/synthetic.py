@@ -7,20 +7,52 @@ from __future__ import annotations
 
 import numpy as np
 
+from workstation.core.errors import InvalidInputError
 from workstation.core.products import Camera, Image, Pose, Reconstruction, Tracks
 
 from .collinearity import intersect, pose_from_opk, project
 from .georef import Similarity
 
 
-def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
-    """A random camera looking at a 3-D control field (a calibration cage as deep as it is wide,
-    filling 80 % of the frame), all points in view.
+def dlt_case(
+    rng: np.random.Generator,
+    noise_px: float = 0.1,
+    n: int = 20,
+    layout: str = "frame",
+    focal_range: tuple[float, float] = (2500.0, 3500.0),
+    depth_range: float = 0.4,
+):
+    """A random camera looking at a 3-D control field, all points in view.
+
+    Layouts:
+
+    * ``"frame"`` — a textbook calibration control frame: the image is divided into a grid of
+      about ``n`` cells over its central 90 %, one point per cell (jittered inside it), and
+      the points' depths are stratified over ``distance · (1 ± depth_range)`` in random
+      order, so near and far points are interleaved across the whole frame.
+    * ``"random"`` — points drawn uniformly in a cube as deep as it is wide that fills 80 %
+      of the frame (keeping those in view); 20 random points often leave parts of the image
+      or of the depth range empty.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+    noise_px : float
+        Gaussian noise per pixel coordinate.
+    n : int
+        Number of control points.
+    layout : {"frame", "random"}
+    focal_range : (float, float)
+        Focal length drawn uniformly in this range, pixels (the image is 4000 px wide:
+        2500–3500 px is a 77°–60° horizontal field of view, 22–31 mm in 35 mm terms).
+    depth_range : float
+        Half depth extent of the "frame" layout, relative to the object distance.
 
     Returns
     -------
     camera : Camera
-        The true camera (4000 × 3000 px, f 2500–4500 px, principal point within 40 px of centre).
+        The true camera (4000 × 3000 px, fy = fx · U(0.995, 1.005), principal point within
+        40 px of centre).
     pose : Pose
         The true pose.
     X : (n, 3) float
@@ -30,23 +62,37 @@ def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
     distance : float
         Object distance, metres.
     """
+    if layout not in ("frame", "random"):
+        raise InvalidInputError(f"layout must be 'frame' or 'random', got {layout!r}")
     w, h = 4000, 3000
-    f = rng.uniform(2500, 4500)
+    f = rng.uniform(*focal_range)
     cam = Camera(w, h, f, f * rng.uniform(0.995, 1.005), w / 2 + rng.uniform(-40, 40), h / 2 + rng.uniform(-40, 40))
     dist = rng.uniform(20, 60)
     width = dist * w / f * 0.8
     om, ph, ka = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-np.pi, np.pi)
     C = np.array([0.0, 0.0, dist]) + rng.normal(0, 0.5, 3)
     pose = pose_from_opk(om, ph, ka, C)
-    kept = np.empty((0, 3))
-    while kept.shape[0] < n:
-        X = np.column_stack(
-            [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
-        )
-        uv, z = project(X, cam, pose, return_depth=True)
-        ok = (z > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
-        kept = np.vstack([kept, X[ok]])
-    X = kept[:n]
+    if layout == "frame":
+        nx = int(np.ceil(np.sqrt(n * w / h)))
+        ny = int(np.ceil(n / nx))
+        cells = rng.permutation(nx * ny)[:n]
+        ix, iy = cells % nx, cells // nx
+        fill = 0.9
+        u = (0.5 - fill / 2 + fill * (ix + rng.uniform(0, 1, n)) / nx) * w
+        v = (0.5 - fill / 2 + fill * (iy + rng.uniform(0, 1, n)) / ny) * h
+        z = dist * (1 + depth_range * (2 * (rng.permutation(n) + rng.uniform(0, 1, n)) / n - 1))
+        rays = np.column_stack([(u - cam.cx) / cam.fx, (v - cam.cy) / cam.fy, np.ones(n)])
+        X = (rays * z[:, None]) @ np.asarray(pose.R) + pose.center
+    else:
+        kept = np.empty((0, 3))
+        while kept.shape[0] < n:
+            Xr = np.column_stack(
+                [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
+            )
+            uv, zc = project(Xr, cam, pose, return_depth=True)
+            ok = (zc > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
+            kept = np.vstack([kept, Xr[ok]])
+        X = kept[:n]
     uv = project(X, cam, pose)
     return cam, pose, X, uv + rng.normal(0, noise_px, uv.shape), dist
 
