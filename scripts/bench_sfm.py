@@ -37,7 +37,10 @@ def emit(d):
 
 
 def part_zhang(data: Path):
-    from workstation.photogrammetry.calibration import ZhangParams, calibrate_zhang_images
+    from workstation.photogrammetry.calibration import (
+        ZhangParams,
+        calibrate_zhang_images,
+    )
 
     t = time.perf_counter()
     r = calibrate_zhang_images(data / "images/calibration/bouguet_calib_example", 13, 12, 30.0, ZhangParams())
@@ -163,8 +166,10 @@ def part_gcp(data: Path, seeds: int = 10):
                          expected["rmse_h"], expected["rmse_z"], st["rms_px_before"], st["rms_px_after"], cpu,
                          st["rejected_observations"]])
         a = np.array(rows)
-        # RMSE pooled over the seeds (root mean of squares)
-        q = lambda col: round(float(np.sqrt(np.mean(a[:, col] ** 2))), 4)  # noqa: E731
+
+        def q(col, a=a):  # RMSE pooled over the seeds (root mean of squares)
+            return round(float(np.sqrt(np.mean(a[:, col] ** 2))), 4)
+
         emit(
             {
                 "bench": "gcp_bundle_synthetic",

@@ -125,8 +125,13 @@ def test_gcp_sigma_weights_the_ground_coordinates():
 
 
 def test_analytic_jacobians_match_finite_differences():
-    from workstation.photogrammetry.bundle import _left_jacobian_so3, project_many, projection_jacobians
     from scipy.spatial.transform import Rotation
+
+    from workstation.photogrammetry.bundle import (
+        _left_jacobian_so3,
+        project_many,
+        projection_jacobians,
+    )
 
     rng = np.random.default_rng(2)
     m = 5

@@ -91,7 +91,12 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     if gcps is not None:
         import pycolmap
 
-        from workstation.interop.pycolmap import apply_similarity, reconstruction_from_pycolmap, set_poses_and_points, write_model
+        from workstation.interop.pycolmap import (
+            apply_similarity,
+            reconstruction_from_pycolmap,
+            set_poses_and_points,
+            write_model,
+        )
         from workstation.photogrammetry.georef import georeference
 
         rec = pycolmap.Reconstruction(str(wd / "sparse" / "0"))
