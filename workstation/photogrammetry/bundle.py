@@ -15,12 +15,18 @@ control points together, minimising
     + \sum_{g \in \mathrm{control}} \rho\Big(\big\| (\mathbf X_g - \mathbf X_g^{survey}) / \sigma_g \big\|^2\Big)
 
 with the collinearity equations and OpenCV distortion (:func:`.collinearity.project`), a
-robust loss ρ (Huber by default, Triggs et al. 2000, "Bundle adjustment — a modern synthesis",
-§3 and §6) and each control point's surveyed σ as the weight of its ground coordinates
-(a weighted, not a fixed, datum). It is solved by
-:func:`scipy.optimize.least_squares` (trust-region reflective, LSMR on the sparse normal
-equations) with the Jacobian's sparsity pattern given, so finite differences group
-independent columns (Curtis, Powell & Reid 1974) and no dense matrix is formed.
+robust loss ρ (soft-L1, ``2(√(1 + z) − 1)``, by default; Triggs et al. 2000, "Bundle
+adjustment — a modern synthesis", §3 and §6) and each control point's surveyed σ as the weight
+of its ground coordinates (a weighted, not a fixed, datum); as in scipy, ρ acts on each
+whitened residual component (u, v, X, Y, Z) separately. It is solved by
+:func:`scipy.optimize.least_squares` (trust-region reflective, LSMR on the sparse system) with
+the analytic sparse Jacobian (block-sparse: each observation touches one pose, one camera and
+one point), or, as a check, finite differences over the same sparsity pattern
+(``jac_sparsity``, grouping independent columns; Curtis, Powell & Reid 1974); no dense matrix
+is formed. Residuals and Jacobian are computed for all observations at once (no Python loop
+over observations). Two safeguards against gross errors: the loss starts at the spread of the
+starting residuals and ends at 3σ (graduated robustness), then tie observations beyond 5σ are
+dropped and the adjustment repeated.
 
 Only points whose role is ``control`` may enter; :func:`bundle_adjust` refuses any other, so
 check points remain independent (they are intersected afterwards from the adjusted images).
@@ -359,7 +365,7 @@ def bundle_adjust(rec: Reconstruction, control: Sequence, params: BundleParams =
     by_name = _image_ids_by_name(rec)
     g_used, g_xyz, g_sig, co_g, co_img, co_uv = [], [], [], [], [], []
     for g in control:
-        rows = [(by_name.get(img) or by_name.get(str(img).rsplit("/", 1)[-1]), u, v) for img, u, v in g.observations]
+        rows = [(by_name.get(img, by_name.get(str(img).rsplit("/", 1)[-1])), u, v) for img, u, v in g.observations]
         rows = [r for r in rows if r[0] is not None]
         if len(rows) < 2:
             continue
