@@ -123,6 +123,8 @@ class DenseParams:
             raise InvalidInputError(f"device must be one of {DEVICES}", field="device")
         if self.window < 3 or self.window % 2 == 0:
             raise InvalidInputError("window must be an odd number ≥ 3", field="window")
+        if self.fusion_cache_gb < 0:
+            raise InvalidInputError("fusion_cache_gb must be ≥ 0 (0: no cache)", field="fusion_cache_gb")
         if self.num_sources < 1 or not 1 <= self.top_k <= self.num_sources:
             raise InvalidInputError("need num_sources ≥ 1 and 1 ≤ top_k ≤ num_sources", field="top_k")
 
