@@ -110,7 +110,13 @@ def bench_icp(n: int, o3d_iterations: int):
     import open3d as o3d
 
     from workstation.interop.open3d import points_to_legacy
-    from workstation.registration.transforms import apply_transform, invert, make_transform, random_rotation, transform_error
+    from workstation.registration.transforms import (
+        apply_transform,
+        invert,
+        make_transform,
+        random_rotation,
+        transform_error,
+    )
     from workstation.registration.voxelmap import VoxelPlanes, point_to_plane_voxel
 
     rng = np.random.default_rng(0)
@@ -154,7 +160,11 @@ def bench_tls(path: Path, seed: int = 0):
     from workstation.io import read_cloud
     from workstation.registration.merge import transform_cloud
     from workstation.registration.posegraph import MultiwayParams, register_multiway
-    from workstation.registration.transforms import invert, make_transform, transform_error
+    from workstation.registration.transforms import (
+        invert,
+        make_transform,
+        transform_error,
+    )
 
     cloud = read_cloud(path)
     ids = np.unique(cloud.attrs["point_source_id"])
@@ -496,9 +506,13 @@ def bench_colorize_rig(work: Path, supersample: int = 3, modes=("zbuffer", "exac
     from workstation.photogrammetry.rigs import _target_scene, load_rig, surface_colour
     from workstation.raster.ortho import read_reconstruction
     from workstation.raster.synthetic_aerial import camera_rays
-    from workstation.registration.colorize import ColorizeParams, colorize, read_depth_maps
+    from workstation.registration.colorize import (
+        ColorizeParams,
+        colorize,
+        read_depth_maps,
+    )
 
-    dense, tls, sim, resid, _ = sfm_tls_data(work)
+    _, tls, sim, _, _ = sfm_tls_data(work)
     recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
     V, F, alb, _, _, _, _ = _target_scene(recipe, spec)
     rs = o3d.t.geometry.RaycastingScene()

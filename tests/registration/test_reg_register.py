@@ -5,13 +5,18 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-from regutil import shape_points  # noqa: E402
+from regutil import shape_points
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import StageError
 from workstation.registration.icp import ICPParams
 from workstation.registration.register import RegisterParams, register
-from workstation.registration.transforms import apply_transform, make_transform, random_rotation, transform_error
+from workstation.registration.transforms import (
+    apply_transform,
+    make_transform,
+    random_rotation,
+    transform_error,
+)
 
 OFFSET = np.array([500_000.0, 5_000_000.0, 200.0])  # georeferenced-looking coordinates
 

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
-
 import click
 
-from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+from workstation.cli.options import (
+    emit_json,
+    json_option,
+    output_option,
+    overwrite_option,
+)
 
 
 @click.command("colorize")
@@ -29,10 +33,10 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
 
     Adds rgb, colorized (1 painted, 0 seen by no image) and color_views.
     """
-    from workstation.interop.pycolmap import read_model
-    from workstation.io import check_output, read_cloud, write_cloud
     from pathlib import Path
 
+    from workstation.interop.pycolmap import read_model
+    from workstation.io import check_output, read_cloud, write_cloud
     from workstation.registration.colorize import ColorizeParams, read_depth_maps
     from workstation.registration.colorize import colorize as run_colorize
 

@@ -8,7 +8,12 @@ from pathlib import Path
 import click
 import numpy as np
 
-from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+from workstation.cli.options import (
+    emit_json,
+    json_option,
+    output_option,
+    overwrite_option,
+)
 
 
 def read_matrix(path) -> np.ndarray:

@@ -17,9 +17,9 @@ weights. Points seen by no image keep their colour (or get black) and ``colorize
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Mapping
 
 import numpy as np
 

@@ -135,13 +135,13 @@ def refine(source, target, voxel: float, init: np.ndarray | None = None, params:
             raise InvalidInputError("voxel_plane runs through voxel_plane_icp()", field="method")
         T = np.asarray(res.transformation)
         levels.append({"distance": d, "fitness": float(res.fitness), "inlier_rmse": float(res.inlier_rmse),
-                       "correspondences": int(len(res.correspondence_set))})
+                       "correspondences": len(res.correspondence_set)})
     d_last = float(params.schedule[-1] * voxel)
     info = np.asarray(reg.get_information_matrix_from_point_clouds(source, target, d_last, T))
     scale = float(np.cbrt(np.linalg.det(T[:3, :3])))
     ok = res is not None and len(res.correspondence_set) >= 6 and np.isfinite(T).all()
     return RegistrationResult(transform=T, scale=scale, fitness=float(res.fitness), inlier_rmse=float(res.inlier_rmse),
-                              converged=bool(ok), correspondences=int(len(res.correspondence_set)), information=info,
+                              converged=bool(ok), correspondences=len(res.correspondence_set), information=info,
                               meta={"method": params.method, "kernel": params.kernel, "levels": levels})
 
 

@@ -150,7 +150,12 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
         When the result does not converge, the overlap (fitness) is below
         ``params.min_fitness`` or the RMSE is above ``params.max_rmse * voxel``.
     """
-    from workstation.interop.open3d import default_origin, local_transform, points_to_legacy, world_transform
+    from workstation.interop.open3d import (
+        default_origin,
+        local_transform,
+        points_to_legacy,
+        world_transform,
+    )
 
     _check_cloud(source, "source")
     _check_cloud(target, "target")
