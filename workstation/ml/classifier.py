@@ -81,6 +81,10 @@ class PointClassifier:
         The PyTorch MLP or the random-forest baseline.
     hidden : tuple of int
         MLP hidden widths.
+    dropout : float
+        MLP dropout probability after each hidden layer.
+    weight_decay : float
+        Adam L2 weight decay.
     epochs : int
         Maximum MLP epochs.
     batch : int
@@ -111,19 +115,27 @@ class PointClassifier:
         points take the network's best non-ground class. The physical prior that keeps the
         network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
     gate_threshold, gate_scalar, gate_min_probability : float
+    gate_promote_probability, gate_promote_height : float
+        A point outside the band is still ground when the network gives ground at least
+        ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
+        provisional surface: the network repairs the surface where the morphological filter
+        cut into the terrain (ridges, embankments, steep edges).
     """
 
-    def __init__(self, model: str = "mlp", hidden=(64, 64), epochs: int = 40, batch: int = 2048,
+    def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
                  lr: float = 2e-3, patience: int = 5, time_budget_s: float = 3000.0,
                  n_estimators: int = 60, max_depth: int = 18, seed: int = 0, device: str = "auto",
                  feature_params: FeatureParams | None = None, tile_points: int = 3_000_000,
                  veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
-                 gate_min_probability: float = 0.02):
+                 gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
+                 gate_promote_height: float = 1.5):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
         self.hidden = tuple(int(h) for h in hidden)
+        self.dropout = float(dropout)
+        self.weight_decay = float(weight_decay)
         self.epochs = int(epochs)
         self.batch = int(batch)
         self.lr = float(lr)
@@ -145,6 +157,8 @@ class PointClassifier:
         self.gate_threshold = float(gate_threshold)
         self.gate_scalar = float(gate_scalar)
         self.gate_min_probability = float(gate_min_probability)
+        self.gate_promote_probability = float(gate_promote_probability)
+        self.gate_promote_height = float(gate_promote_height)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -248,10 +262,10 @@ class PointClassifier:
         if dev.type == "cpu":
             # a small MLP gains nothing from intra-op threads; on a busy machine they spin
             torch.set_num_threads(1)
-        net = build_mlp(X.shape[1], len(MODEL_CLASSES), self.hidden).to(dev)
+        net = build_mlp(X.shape[1], len(MODEL_CLASSES), self.hidden, self.dropout).to(dev)
         set_standardisation(net, X)
         net.to(dev)
-        opt = torch.optim.Adam(net.parameters(), lr=self.lr, weight_decay=1e-5)
+        opt = torch.optim.Adam(net.parameters(), lr=self.lr, weight_decay=self.weight_decay)
         sched = torch.optim.lr_scheduler.CosineAnnealingLR(opt, T_max=max(self.epochs, 1))
         lossf = torch.nn.CrossEntropyLoss()
         Xt = torch.from_numpy(X).to(dev)
@@ -352,9 +366,11 @@ class PointClassifier:
             sub = cloud if len(sel) == cloud.n else cloud[sel]
             F = self.features(sub)
             p = self.predict_proba_features(F)
+            if len(sel) == cloud.n and core.all():  # one tile: no copies
+                return p, F[:, [_HAG_COL, _SLOPE_COL]]
             keep = core[sel]
             P[sel[keep]] = p[keep]
-            hag[sel[keep]] = F[keep][:, [_HAG_COL, _SLOPE_COL]]
+            hag[sel[keep]] = F[:, [_HAG_COL, _SLOPE_COL]][keep]
         return P, hag
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
@@ -369,6 +385,7 @@ class PointClassifier:
         if self.ground_gate:
             band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
             ground = band & (P[:, 0] >= self.gate_min_probability)
+            ground |= (P[:, 0] >= self.gate_promote_probability) & (np.abs(hag) <= self.gate_promote_height)
             rest = P[:, 1:]
             k2 = rest.argmax(axis=1) + 1
             c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
@@ -402,14 +419,16 @@ class PointClassifier:
     # -- persistence -------------------------------------------------------------------------
     def config(self) -> dict:
         """JSON-able constructor settings."""
-        return {"model": self.model, "hidden": list(self.hidden), "epochs": self.epochs, "batch": self.batch,
+        return {"model": self.model, "hidden": list(self.hidden), "dropout": self.dropout,
+                "weight_decay": self.weight_decay, "epochs": self.epochs, "batch": self.batch,
                 "lr": self.lr, "patience": self.patience, "time_budget_s": self.time_budget_s,
                 "n_estimators": self.n_estimators, "max_depth": self.max_depth, "seed": self.seed,
                 "device": self.device, "feature_params": self.feature_params.to_dict(),
                 "tile_points": self.tile_points, "veg_low_max": self.veg_low_max,
                 "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features),
                 "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
-                "gate_min_probability": self.gate_min_probability}
+                "gate_min_probability": self.gate_min_probability,
+                "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""
@@ -459,7 +478,7 @@ class PointClassifier:
         self = cls(**cfg, feature_params=FeatureParams(**fp))
         from .model import build_mlp
 
-        net = build_mlp(len(FEATURE_NAMES), len(json.loads(payload["classes"])), self.hidden)
+        net = build_mlp(len(FEATURE_NAMES), len(json.loads(payload["classes"])), self.hidden, self.dropout)
         net.load_state_dict(payload["state_dict"])
         net.eval()
         self.net_ = net
