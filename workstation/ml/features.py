@@ -43,6 +43,7 @@ with strongly varying density. ISPRS Annals III-3:177-184.
 
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
 
 import numpy as np
@@ -366,6 +367,29 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     return out
 
 
+def _voxel_eigen(xyz: np.ndarray, voxel: float, k: int, workers: int):
+    """Eigen features of one representative point per ``voxel`` (m; 0 = every point).
+
+    Returns
+    -------
+    e : (v, 8) float32
+        :func:`_eigen` features of the representatives.
+    z : (v,) float64
+        Their heights.
+    dist : (v,) float64
+        Their mean kNN distance.
+    inv : (n,) int64
+        Each point's representative.
+    """
+    if voxel > 0:
+        first, inv = _voxel_ids(xyz, voxel)
+        ref = xyz[first]
+    else:
+        ref, inv = xyz, np.arange(len(xyz))
+    e, dist = _eigen(ref, ref, k, workers)
+    return e, ref[:, 2], dist, inv
+
+
 def _echo_features(cloud: Cloud) -> np.ndarray:
     n = cloud.n
     out = np.zeros((n, 5), np.float32)
@@ -427,6 +451,11 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     xyz, _, _ = metric_xyz(cloud)
     n = len(xyz)
     p = params
+    # the two kNN scales run in worker threads (KD-tree queries and numpy release the GIL)
+    # while this thread does the grid features
+    pool = ThreadPoolExecutor(max_workers=1 if p.workers == 1 else 2)
+    futures = [pool.submit(_voxel_eigen, xyz, v, k, p.workers)
+               for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
     F = np.empty((n, len(FEATURE_NAMES)), np.float32)
     cell = p.cell
     r, c, shape = _grid(xyz[:, :2], cell)
@@ -455,24 +484,14 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
-    # fine eigen scale: one query per fine voxel among the voxel representatives, broadcast
-    if p.fine_voxel > 0:
-        ffirst, finv = _voxel_ids(xyz, p.fine_voxel)
-        ref = xyz[ffirst]
-        ef, dh = _eigen(ref, ref, p.k_fine, p.workers)
-        F[:, 10:16] = ef[finv, :6]
-        # extremes relative to each point's own height
-        zr = ref[:, 2]
-        F[:, 16] = np.clip(z - (zr[finv] - ef[finv, 6]), 0, 30)
-        F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
-        dh = dh[finv]
-    else:
-        ef, dh = _eigen(xyz, xyz, p.k_fine, p.workers)
-        F[:, 10:18] = ef
-    # coarse eigen scale per voxel, broadcast
-    first, inv = _voxel_ids(xyz, p.coarse_voxel)
-    vx = xyz[first]
-    ec, _ = _eigen(vx, vx, p.k_coarse, p.workers)
+    # both eigen scales: one query per voxel among the voxel representatives, broadcast
+    (ef, zr, dh, finv), (ec, _, _, inv) = [f.result() for f in futures]
+    pool.shutdown()
+    F[:, 10:16] = ef[finv, :6]
+    # extremes relative to each point's own height
+    F[:, 16] = np.clip(z - (zr[finv] - ef[finv, 6]), 0, 30)
+    F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
+    dh = dh[finv]
     F[:, 18:24] = ec[inv, :6]
     F[:, 24:29] = _echo_features(cloud)
     F[:, 29:31] = _intensity_features(cloud)
