@@ -5,7 +5,12 @@ from __future__ import annotations
 import numpy as np
 
 from workstation.core.cloud import Cloud
-from workstation.ml.features import FEATURE_NAMES, FeatureParams, _eigen, compute_features
+from workstation.ml.features import (
+    FEATURE_NAMES,
+    FeatureParams,
+    _eigen,
+    compute_features,
+)
 
 
 def test_knn_eigen_features_match_numpy_covariance():
