@@ -50,3 +50,28 @@ def test_object_areas_tell_a_house_from_a_car():
     assert np.median(raised[car]) < 25
     assert np.median(area[car]) < 25
     assert (raised[ground] == 0).mean() > 0.95
+
+
+def test_planar_segments_group_a_roof_and_the_context_step_follows_them():
+    from workstation.ml.classifier import _segment_mean
+    from workstation.ml.features import planar_segments
+
+    c, roof, car = _roof_and_car_scene(1)
+    fp = FeatureParams(ground_window=20.0)
+    F = compute_features(c, fp)
+    lab = planar_segments(c, F, fp)
+    roof_labels, counts = np.unique(lab[roof], return_counts=True)
+    main = roof_labels[counts.argmax()]
+    assert main > 0 and counts.max() > 0.9 * roof.sum()  # one object holds the roof
+    assert not np.isin(lab[car], [main]).any()  # the car is not part of it
+    assert (lab[~roof & ~car] == 0).mean() > 0.95
+    # a roof point the network calls vegetation follows its roof
+    P = np.zeros((c.n, 3), np.float32)
+    P[:, 0] = 1.0
+    P[roof] = [0.0, 1.0, 0.0]
+    odd = np.flatnonzero(roof & (lab == main))[0]
+    P[odd] = [0.0, 0.0, 1.0]
+    Q = _segment_mean(P, lab, 0.8)
+    assert Q[odd].argmax() == 1
+    np.testing.assert_allclose(Q.sum(axis=1), 1.0, atol=1e-6)
+    assert np.array_equal(Q[lab == 0], P[lab == 0])

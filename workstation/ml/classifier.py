@@ -33,7 +33,7 @@ from workstation.core.errors import InvalidInputError, NotFittedError, StageErro
 from workstation.core.log import get_logger
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
-from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz
+from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz, planar_segments
 
 log = get_logger(__name__)
 
@@ -42,6 +42,21 @@ FORMAT = "workstation-point-classifier/1"
 SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
 _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
+
+
+def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarray:
+    """Blend each labelled point's probabilities (n, c) with its segment's mean (labels > 0)."""
+    sel = labels > 0
+    if not sel.any():
+        return P
+    lab = labels[sel]
+    k = int(lab.max()) + 1
+    cnt = np.maximum(np.bincount(lab, minlength=k), 1).astype(np.float64)
+    out = P.copy()
+    for j in range(P.shape[1]):
+        mean = np.bincount(lab, weights=P[sel, j], minlength=k) / cnt
+        out[sel, j] = (1.0 - weight) * P[sel, j] + weight * mean[lab]
+    return out
 
 
 @dataclass
@@ -115,6 +130,12 @@ class PointClassifier:
         points take the network's best non-ground class. The physical prior that keeps the
         network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
     gate_threshold, gate_scalar, gate_min_probability : float
+    segment_weight : float
+        Context step (0-1): the probabilities of a point in a planar raised object (a roof
+        candidate, :func:`workstation.ml.features.planar_segments`) become
+        ``(1 - w) * own + w * mean over the object``, so a roof decides as one object and
+        the few points the network calls canopy or car follow the rest (segment-based
+        classification, Vosselman et al. 2017). 0 switches it off.
     gate_promote_probability, gate_promote_height : float
         A point outside the band is still ground when the network gives ground at least
         ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
@@ -129,7 +150,7 @@ class PointClassifier:
                  veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
-                 gate_promote_height: float = 1.5):
+                 gate_promote_height: float = 1.5, segment_weight: float = 0.8):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -159,6 +180,7 @@ class PointClassifier:
         self.gate_min_probability = float(gate_min_probability)
         self.gate_promote_probability = float(gate_promote_probability)
         self.gate_promote_height = float(gate_promote_height)
+        self.segment_weight = float(segment_weight)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -366,6 +388,8 @@ class PointClassifier:
             sub = cloud if len(sel) == cloud.n else cloud[sel]
             F = self.features(sub)
             p = self.predict_proba_features(F)
+            if self.segment_weight > 0:
+                p = _segment_mean(p, planar_segments(sub, F, self.feature_params), self.segment_weight)
             if len(sel) == cloud.n and core.all():  # one tile: no copies
                 return p, F[:, [_HAG_COL, _SLOPE_COL]]
             keep = core[sel]
@@ -428,7 +452,8 @@ class PointClassifier:
                 "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features),
                 "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
                 "gate_min_probability": self.gate_min_probability,
-                "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height}
+                "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
+                "segment_weight": self.segment_weight}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

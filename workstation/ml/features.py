@@ -345,26 +345,60 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     """
     from scipy import ndimage
 
-    n = len(hag)
-    out = np.zeros((n, 2), np.float32)
+    out = np.zeros((len(hag), 2), np.float32)
     up = hag > height
     if not up.any():
         return out
     flat = r * shape[1] + c
-    size = shape[0] * shape[1]
-    n_up = np.bincount(flat[up], minlength=size)
-    n_pl = np.bincount(flat[up & (nz > 0.5) & (scat < 0.1)], minlength=size)
-    st = np.ones((3, 3), bool)
-    for j, mask in enumerate(((n_up > 0), (n_pl * 5 >= n_up * 2) & (n_up > 0))):
-        m = ndimage.binary_closing(mask.reshape(shape), structure=st) | mask.reshape(shape)
-        lab, k = ndimage.label(m, structure=st)
+    for j, (lab, k) in enumerate(_raised_components(hag, nz, scat, flat, shape, height)):
         if k == 0:
             continue
         area = np.bincount(lab.ravel(), minlength=k + 1).astype(np.float32) * (cell * cell)
         area[0] = 0.0
-        a = area[lab.ravel()[flat]]
-        out[:, j] = np.where(up, np.log1p(a), 0.0)
+        out[:, j] = np.where(up, np.log1p(area[lab.ravel()[flat]]), 0.0)
     return out
+
+
+def _raised_components(hag, nz, scat, flat, shape, height):
+    """Connected components (grid labels, count) of the raised and the planar-raised cells
+    (definitions in :func:`_object_areas`)."""
+    from scipy import ndimage
+
+    up = hag > height
+    size = shape[0] * shape[1]
+    n_up = np.bincount(flat[up], minlength=size)
+    n_pl = np.bincount(flat[up & (nz > 0.5) & (scat < 0.1)], minlength=size)
+    st = np.ones((3, 3), bool)
+    out = []
+    for mask in ((n_up > 0), (n_pl * 5 >= n_up * 2) & (n_up > 0)):
+        m = mask.reshape(shape)
+        m = ndimage.binary_closing(m, structure=st) | m
+        out.append(ndimage.label(m, structure=st))
+    return out
+
+
+def planar_segments(cloud: Cloud, F: np.ndarray, params: FeatureParams = FeatureParams()) -> np.ndarray:
+    """Planar raised object of each point (the components behind the ``planar_area`` feature).
+
+    Parameters
+    ----------
+    cloud : Cloud
+    F : (n, len(FEATURE_NAMES)) float32
+        The cloud's features (:func:`compute_features` with the same ``params``).
+    params : FeatureParams
+
+    Returns
+    -------
+    (n,) int64
+        Component label, 0 for points not in a planar raised region.
+    """
+    xyz, _, _ = metric_xyz(cloud)
+    r, c, shape = _grid(xyz[:, :2], params.cell)
+    flat = r * shape[1] + c
+    hag = F[:, FEATURE_NAMES.index("hag_prov")]
+    _, (lab, _k) = _raised_components(hag, F[:, FEATURE_NAMES.index("nz_f")], F[:, FEATURE_NAMES.index("scat_f")],
+                                      flat, shape, params.object_height)
+    return np.where(hag > params.object_height, lab.ravel()[flat], 0)
 
 
 def _voxel_eigen(xyz: np.ndarray, voxel: float, k: int, workers: int):
