@@ -45,17 +45,26 @@ _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
 
 
 def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarray:
-    """Blend each labelled point's probabilities (n, c) with its segment's mean (labels > 0)."""
+    """Blend each labelled point's object-class probabilities with its segment's mean.
+
+    Column 0 (ground) is kept: the gate decides ground; the segment only decides among the
+    other classes, whose blended probabilities are rescaled to the point's own ``1 - P0``.
+    Rows with ``labels == 0`` are returned unchanged.
+    """
     sel = labels > 0
     if not sel.any():
         return P
     lab = labels[sel]
     k = int(lab.max()) + 1
     cnt = np.maximum(np.bincount(lab, minlength=k), 1).astype(np.float64)
+    obj = P[sel, 1:].astype(np.float64)
+    obj /= np.maximum(obj.sum(axis=1, keepdims=True), 1e-12)
+    blend = np.empty_like(obj)
+    for j in range(obj.shape[1]):
+        mean = np.bincount(lab, weights=obj[:, j], minlength=k) / cnt
+        blend[:, j] = (1.0 - weight) * obj[:, j] + weight * mean[lab]
     out = P.copy()
-    for j in range(P.shape[1]):
-        mean = np.bincount(lab, weights=P[sel, j], minlength=k) / cnt
-        out[sel, j] = (1.0 - weight) * P[sel, j] + weight * mean[lab]
+    out[sel, 1:] = blend * (1.0 - P[sel, :1])
     return out
 
 
@@ -131,11 +140,12 @@ class PointClassifier:
         network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
     gate_threshold, gate_scalar, gate_min_probability : float
     segment_weight : float
-        Context step (0-1): the probabilities of a point in a planar raised object (a roof
-        candidate, :func:`workstation.ml.features.planar_segments`) become
+        Context step (0-1): the non-ground class probabilities of a point in a planar raised
+        object (a roof candidate, :func:`workstation.ml.features.planar_segments`) become
         ``(1 - w) * own + w * mean over the object``, so a roof decides as one object and
         the few points the network calls canopy or car follow the rest (segment-based
-        classification, Vosselman et al. 2017). 0 switches it off.
+        classification, Vosselman et al. 2017); the ground probability is left to the gate.
+        0 switches it off.
     gate_promote_probability, gate_promote_height : float
         A point outside the band is still ground when the network gives ground at least
         ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
