@@ -53,10 +53,10 @@ def test_lidarhd_vegetation_and_house(shipped, shared_data):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / "lidarhd_extra_bytes.laz")
-    # measured vegetation 0.90 (goal 0.85), building 0.60 (goal 0.85, not reached: a house
+    # measured vegetation 0.90 (goal 0.85), building 0.685 (goal 0.85, not reached: a house
     # under trees), ground 0.997
     assert r["vegetation_f1"] >= 0.85, r
-    assert r["building_f1"] >= 0.5, r
+    assert r["building_f1"] >= 0.62, r
     assert r["ground_f1"] >= 0.99, r
 
 
