@@ -359,9 +359,9 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     return out
 
 
-def _raised_components(hag, nz, scat, flat, shape, height):
-    """Connected components (grid labels, count) of the raised and the planar-raised cells
-    (definitions in :func:`_object_areas`)."""
+def _raised_components(hag, nz, scat, flat, shape, height, raised: bool = True):
+    """Connected components (grid labels, count) of the raised (unless ``raised`` is False)
+    and the planar-raised cells (definitions in :func:`_object_areas`)."""
     from scipy import ndimage
 
     up = hag > height
@@ -370,7 +370,8 @@ def _raised_components(hag, nz, scat, flat, shape, height):
     n_pl = np.bincount(flat[up & (nz > 0.5) & (scat < 0.1)], minlength=size)
     st = np.ones((3, 3), bool)
     out = []
-    for mask in ((n_up > 0), (n_pl * 5 >= n_up * 2) & (n_up > 0)):
+    masks = ((n_up > 0), (n_pl * 5 >= n_up * 2) & (n_up > 0))
+    for mask in masks if raised else masks[1:]:
         m = mask.reshape(shape)
         m = ndimage.binary_closing(m, structure=st) | m
         out.append(ndimage.label(m, structure=st))
@@ -396,8 +397,8 @@ def planar_segments(cloud: Cloud, F: np.ndarray, params: FeatureParams = Feature
     r, c, shape = _grid(xyz[:, :2], params.cell)
     flat = r * shape[1] + c
     hag = F[:, FEATURE_NAMES.index("hag_prov")]
-    _, (lab, _k) = _raised_components(hag, F[:, FEATURE_NAMES.index("nz_f")], F[:, FEATURE_NAMES.index("scat_f")],
-                                      flat, shape, params.object_height)
+    ((lab, _k),) = _raised_components(hag, F[:, FEATURE_NAMES.index("nz_f")], F[:, FEATURE_NAMES.index("scat_f")],
+                                      flat, shape, params.object_height, raised=False)
     return np.where(hag > params.object_height, lab.ravel()[flat], 0)
 
 
