@@ -66,6 +66,10 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
             )
     if not Path(images).is_dir():
         raise InvalidInputError("image folder not found", path=images)
+    if do_dense:
+        from workstation.photogrammetry.dense import resolve_device
+
+        device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
     params = SfMParams(
         matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
         camera_model=camera_model, refine_intrinsics=refine_intrinsics,
