@@ -332,8 +332,10 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
     images : mapping of image id to (h, w, 3) uint8/uint16 array, optional
         Pixels of each image; read from ``Image.path`` (relative to ``image_root``) otherwise.
     depth_maps : mapping of image id to (h, w) float array, optional
-        Depth along the optical axis (metres, 0 or NaN = unknown); replaces the z-buffer test
-        for that image.
+        Depth along the optical axis (metres; ``inf`` = nothing hit, 0 or NaN = unknown);
+        replaces the z-buffer test for that image (:func:`depth_map_visible`). Give
+        ``params.depth_tolerance`` from the depth maps' accuracy (exact renders: the cloud's
+        noise, a few cm; MVS maps: the default ``3 * spacing + 0.5 %`` of the depth).
     image_root : path, optional
 
     Returns
