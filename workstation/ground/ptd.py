@@ -162,12 +162,18 @@ def _locate(tri, q: np.ndarray) -> np.ndarray:
         return tri.find_simplex(q)
 
 
-def densify(cand: np.ndarray, p: PTDParams) -> np.ndarray:
+def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> np.ndarray:
     """Ground flags (k,) bool of candidate points (k, 3), metres, in raster order (the point
-    location walks from one query to the next, so spatially coherent order is ~100x faster)."""
+    location walks from one query to the next, so spatially coherent order is ~100x faster).
+
+    ``seeds`` (k,) bool replaces the lowest points per ``seed_cell`` as the initial TIN.
+    """
     k = cand.shape[0]
-    ground = np.zeros(k, dtype=bool)
-    ground[_seeds(cand, p.seed_cell)] = True
+    if seeds is None:
+        ground = np.zeros(k, dtype=bool)
+        ground[_seeds(cand, p.seed_cell)] = True
+    else:
+        ground = np.asarray(seeds, dtype=bool).copy()
     tan_a = np.tan(np.radians(p.max_angle))
     for _ in range(int(p.max_iterations)):
         gi = np.flatnonzero(ground)
@@ -259,15 +265,23 @@ def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: fl
     return out
 
 
-def ptd_ground(xyz: np.ndarray, p: PTDParams) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points by PTD."""
+def ptd_ground(xyz: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points by PTD.
+
+    ``seeds`` (m,) bool: points known to be ground, the initial TIN (with the corner seeds)
+    instead of the lowest point per ``seed_cell``.
+    """
     from .noise import isolated_low_points
 
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.candidate_cell, origin=xyz[:, :2].min(axis=0))
     _, imin = common.grid_min(xyz[:, 2], r, c, shape)
     ci = imin[imin >= 0]  # raster order
     ci = ci[~isolated_low_points(xyz[ci])]
-    g_c = densify(xyz[ci], p)
+    init = None
+    if seeds is not None:
+        init = np.asarray(seeds, dtype=bool)[ci]
+        init[_seeds(xyz[ci], 1e9)] = True  # the corners, so the TIN covers the extent
+    g_c = densify(xyz[ci], p, init)
     order = np.argsort(r * shape[1] + c, kind="stable")
     return final_ground(xyz, ci[g_c], p.final_threshold, p.final_scalar, order)
 
