@@ -169,6 +169,8 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
 
     ``seeds`` (k,) bool replaces the lowest points per ``seed_cell`` as the initial TIN.
     """
+    from scipy.spatial import QhullError
+
     k = cand.shape[0]
     if seeds is None:
         ground = np.zeros(k, dtype=bool)
@@ -183,7 +185,7 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
             break
         try:
             tri = common.delaunay(cand[gi, :2])
-        except Exception:  # collinear seeds
+        except QhullError:  # collinear seeds
             break
         s = _locate(tri, cand[oi, :2])
         inside = s >= 0
@@ -195,7 +197,7 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
         a, b, c = cand[v[:, 0]], cand[v[:, 1]], cand[v[:, 2]]
         e = np.maximum.reduce([np.hypot(*(b - a)[:, :2].T), np.hypot(*(c - b)[:, :2].T), np.hypot(*(a - c)[:, :2].T)])
         big = e > p.min_edge
-        ok, d, dist_ok = facet_test(q, a, b, c, tan_a, p.max_distance)
+        ok, d, _ = facet_test(q, a, b, c, tan_a, p.max_distance)
         ok &= big
         if p.mirror:
             f = np.flatnonzero(~ok & big & (np.abs(d) < p.mirror_distance))
@@ -235,7 +237,7 @@ def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: fl
 
     ``order`` (m,) is a spatially coherent order of the points (faster point location).
     """
-    from scipy.spatial import cKDTree
+    from scipy.spatial import QhullError, cKDTree
 
     m = xyz.shape[0]
     out = np.zeros(m, dtype=bool)
@@ -247,7 +249,7 @@ def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: fl
         tri = common.delaunay(xyz[gidx, :2])
         s = np.empty(m, dtype=np.int64)
         s[order] = _locate(tri, xyz[order, :2])
-    except Exception:  # collinear ground
+    except QhullError:  # collinear ground
         s = np.full(m, -1, dtype=np.int64)
     ins = s >= 0
     ii = np.flatnonzero(ins)
