@@ -51,7 +51,12 @@ def speed(model=None):
 
 def goals(clf, label):
     from workstation.core.classes import ASPRSClass as C
-    from workstation.ml.realdata import BUILDING_FILES, DTM_FILES, isprs_scores, tile_scores
+    from workstation.ml.realdata import (
+        BUILDING_FILES,
+        DTM_FILES,
+        isprs_scores,
+        tile_scores,
+    )
 
     s = isprs_scores(lambda c: clf.predict(c) == C.GROUND, DATA / "isprs")
     emit(bench="isprs", model=label, **{k: (v if not isinstance(v, dict) else {a: round(b, 2) for a, b in v.items()})
@@ -80,10 +85,9 @@ def _tileset():
 
 def baseline():
     from workstation.ml.classifier import PointClassifier
-    from workstation.ml.train import split_scores
-
     from workstation.ml.dataset import load_dataset_recipe
     from workstation.ml.features import FEATURE_NAMES
+    from workstation.ml.train import split_scores
 
     ts = _tileset()
     recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")

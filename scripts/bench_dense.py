@@ -1,8 +1,12 @@
 """Dense reconstruction benchmarks (issue 7). Prints one JSON line per result.
 
     python scripts/bench_dense.py rig       # synthetic heritage rig, 24 images, SfM cameras
+    python scripts/bench_dense.py rig --recipe rig_aerial --samples-on all   # aerial block
+    python scripts/bench_dense.py rig --dist -0.12 0.05 [--camera given]    # radial distortion
     python scripts/bench_dense.py temple    # Middlebury templeSparseRing, true cameras
     python scripts/bench_dense.py fountain  # Strecha fountain-P11 at 1536 px, true cameras
+    python scripts/bench_dense.py fountain --images 6   # same size, fewer images (memory)
+    python scripts/bench_dense.py fusion --dense-dir DIR --fusion-cache-gb 0   # fusion alone
 
 Options: --work DIR (scratch folder, default /tmp/bench_dense), --reuse (keep a rendered rig
 and its SfM workdir), --render PNG (off-screen view of the dense cloud).
@@ -62,44 +66,65 @@ def _surface_samples(V, F, mask, cams, n=60_000, seed=0):
     return P[seen >= 2]
 
 
-def _render(cloud_xyz, rgb, path, title):
-    import matplotlib
+def _render(cloud, path, view=None) -> None:
+    """Off-screen render (workstation.render, pyvista/VTK) of a dense cloud in its RGB colours:
+    from ``view`` = (Camera, Pose) scaled to 900 px wide, else the iso view."""
+    from dataclasses import replace
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from workstation.render.render import RenderParams, render, save_png
 
-    rng = np.random.default_rng(0)
-    idx = rng.choice(len(cloud_xyz), min(len(cloud_xyz), 60_000), replace=False)
-    x = cloud_xyz[idx] - cloud_xyz[idx].mean(0)
-    fig = plt.figure(figsize=(4.2, 3.4), dpi=90)
-    ax = fig.add_subplot(projection="3d")
-    ax.scatter(x[:, 0], x[:, 1], x[:, 2], s=0.3, c=np.asarray(rgb)[idx] / 65535.0, linewidths=0)
-    ax.set_title(title, fontsize=8)
-    ax.set_axis_off()
-    ax.set_box_aspect(np.ptp(x, axis=0))
-    ax.view_init(elev=20, azim=-60)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    params = RenderParams(size=(900, 675), color="rgb", view="iso", point_size=2.0)
+    if view is not None:
+        cam, pose = view
+        s = 900.0 / cam.width
+        cam = replace(cam, width=900, height=round(cam.height * s), fx=cam.fx * s, fy=cam.fy * s,
+                      cx=(cam.cx + 0.5) * s - 0.5, cy=(cam.cy + 0.5) * s - 0.5, dist=(0.0,) * 5, model="PINHOLE")
+        img = render(cloud, params, camera=(cam, pose))
+    else:
+        img = render(cloud, params)
+    save_png(img, path, overwrite=True)
 
 
 def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int = 1, min_ncc: float = 0.4,
-              fusion_min_pixels: int = 2) -> None:
+              fusion_min_pixels: int = 2, recipe_name: str = "rig_heritage", dist=None, camera: str = "self",
+              samples_on: str = "target", scale: float = 1.0) -> None:
+    """Render a synthetic rig, orient it by SfM, densify, compare with the true mesh.
+
+    ``dist``: (k1, k2) radial distortion rendered into the images; ``camera``: "self" (SfM
+    self-calibrates: RADIAL with distortion, else the SfM default) or "given" (the true
+    intrinsics and distortion, held fixed, as ``ws sfm --camera``); ``samples_on``: "target"
+    (completeness on the target object) or "all" (every surface seen by ≥ 2 true cameras);
+    ``scale``: image size and focal length times this (same footprint), one ray per pixel below 1.
+    """
+    from dataclasses import replace
+
     from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
     from workstation.raster.ortho import read_reconstruction
 
-    rigdir, sfmdir = work / "rig", work / "rig_sfm"
-    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / "rig_heritage.toml")
+    recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / f"{recipe_name}.toml")
+    tag = recipe_name
+    if scale != 1.0:
+        spec = replace(spec, width=round(spec.width * scale), height=round(spec.height * scale),
+                       focal_px=spec.focal_px * scale, supersample=spec.supersample if scale >= 1 else 1)
+        tag += f"_x{scale:g}"
+    if dist is not None:
+        spec = replace(spec, dist=(float(dist[0]), float(dist[1]), 0.0, 0.0, 0.0))
+        tag += f"_k1_{dist[0]:g}_k2_{dist[1]:g}"
+    rigdir, sfmdir = work / tag, work / f"{tag}_sfm_{camera}"
     t0 = time.perf_counter()
     if not (reuse and (rigdir / "truth_mesh.npz").exists()):
         make_rig(recipe, spec, rigdir, overwrite=True)
     t_render = time.perf_counter() - t0
     t0 = time.perf_counter()
+    if camera == "given":
+        sfm_cam, sfm_params = spec.camera(), SfMParams()
+    else:
+        sfm_cam, sfm_params = None, SfMParams(camera_model="RADIAL") if dist is not None else SfMParams()
     if not (reuse and (sfmdir / "sparse" / "0").exists()):
-        run_sfm(rigdir / "images", sfmdir, params=SfMParams(), overwrite=True)
+        run_sfm(rigdir / "images", sfmdir, sfm_cam, params=sfm_params, overwrite=True)
     t_sfm = time.perf_counter() - t0
     c0, t0 = time.process_time(), time.perf_counter()
     cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc,
@@ -108,20 +133,30 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     true = read_reconstruction(rigdir / "cameras.json")
     est = read_reconstruction(sfmdir / "sparse" / "0")
+    est_cam = next(iter(est.cameras.values()))
     by_name = {im.name: im for im in true.images.values()}
     pairs = [(im.pose.center, by_name[im.name].pose.center) for im in est.images.values() if im.name in by_name]
     sim = fit_similarity(np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs]))
     xyz = sim.apply(cloud.xyz)
     T = load_truth(rigdir)
     cams = [(true.cameras[im.camera_id], im.pose) for im in true.images.values()]
-    samples = _surface_samples(T["vertices"], T["faces"], T["target"], cams)
+    mask = T["target"] if samples_on == "target" else np.ones(len(T["faces"]), bool)
+    samples = _surface_samples(T["vertices"], T["faces"], mask, cams)
     ev = evaluate(xyz, T["vertices"], T["faces"], float(T["extent"]), samples)
-    _emit({"bench": "dense_rig_heritage_24", "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels, "registered": len(pairs), "images": len(true.images),
+    gsd = None
+    if spec.layout == "grid":
+        gsd = spec.distance / spec.focal_px  # ground sampling distance at the base of the target, m
+    _emit({"bench": f"dense_{tag}", "layout": spec.layout, "camera": camera, "true_dist": list(spec.dist[:2]),
+           "sfm_camera": {"model": est_cam.model, "f": round(est_cam.fx, 1), "dist": [round(float(x), 4) for x in est_cam.dist[:2]]},
+           "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels,
+           "registered": len(pairs), "images": len(true.images), "sim_scale": round(float(sim.scale), 5),
            "render_s": round(t_render, 1), "sfm_s": round(t_sfm, 1), "dense_wall_s": round(wall, 1),
-           "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
-           "samples": len(samples), "summary": summary["timings_s"]})
+           "dense_cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2),
+           **{k: (round(v, 5) if isinstance(v, float) else v) for k, v in ev.items()},
+           "accuracy_gsd": None if gsd is None else round(ev["accuracy_median"] / gsd, 3),
+           "samples_on": samples_on, "samples": len(samples), "summary": summary["timings_s"]})
     if render:
-        _render(xyz, cloud.attrs["rgb"], render, f"synthetic heritage rig: {cloud.n} dense points (CPU plane sweep)")
+        _render(cloud.with_xyz(xyz), render)
 
 
 def _true_workdir(work: Path, name: str, cams: list) -> Path:
@@ -163,12 +198,20 @@ def bench_temple(work: Path, render: str | None) -> None:
            "cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), "inside_bbox": round(float(inside.mean()), 4),
            "goal_wall_s": 180, "summary": summary["timings_s"]})
     if render:
-        _render(cloud.xyz, cloud.attrs["rgb"], render, f"Middlebury templeSR: {cloud.n} points")
+        _render(cloud, render, view=cams[0][1:])
 
 
-def bench_fountain(work: Path, size: int, render: str | None) -> None:
+def bench_fountain(work: Path, size: int, render: str | None, n_images: int = 0, fusion_cache_gb: float = 1.0) -> None:
+    """fountain-P11 with true cameras, stage by stage (undistort, depth maps, fusion: what
+    ``run_dense`` does on the CPU) so that the peak RSS after each stage is reported.
+    ``n_images`` > 0 keeps the first n images (memory against image count at one size)."""
     from workstation.core.products import Camera, Pose
-    from workstation.photogrammetry.dense import DenseParams, run_dense
+    from workstation.photogrammetry.dense import (
+        DenseParams,
+        compute_depth_maps,
+        fuse,
+        undistort,
+    )
 
     folder = DATA / "strecha_fountain-P11"
     cams = []
@@ -177,20 +220,40 @@ def bench_fountain(work: Path, size: int, render: str | None) -> None:
         K, Rcw, C, (w, h) = v[:9].reshape(3, 3), v[12:21].reshape(3, 3), v[21:24], v[24:26]
         R = Rcw.T
         cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, -R @ C)))
-    wd = _true_workdir(work, "fountain", cams)
+    if n_images > 0:
+        cams = cams[:n_images]
+    name = f"fountain_{len(cams)}"
+    wd = _true_workdir(work, name, cams)
+    params = DenseParams(device="cpu", depth_range=(3.0, 25.0), max_image_size=size, fusion_cache_gb=fusion_cache_gb)
     c0, t0 = time.process_time(), time.perf_counter()
-    cloud, summary = run_dense(wd, folder / "images", DenseParams(device="cpu", depth_range=(3.0, 25.0), max_image_size=size), overwrite=True)
+    dense_dir = undistort(wd, folder / "images", size, overwrite=True)
+    stats = compute_depth_maps(dense_dir, params)
+    peak_depth, t_depth = _peak_gb(), time.perf_counter() - t0
+    cloud = fuse(dense_dir, params)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     _emit({"bench": f"dense_fountain_P11_{size}", "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
-           "cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), "goal_wall_s": 900, "goal_peak_gb": 6,
-           "summary": summary["timings_s"]})
+           "cpu_s": round(cpu, 1), "depth_maps_wall_s": round(t_depth, 1), "peak_gb_after_depth_maps": round(peak_depth, 2),
+           "peak_gb": round(_peak_gb(), 2), "fusion_cache_gb": fusion_cache_gb, "goal_wall_s": 900, "goal_peak_gb": 6,
+           "valid_geometric": stats["valid_geometric"], "workdir": str(wd)})
     if render:
-        _render(cloud.xyz, cloud.attrs["rgb"], render, f"fountain-P11: {cloud.n} points")
+        _render(cloud, render, view=cams[len(cams) // 2][1:])
+
+
+def bench_fusion(dense_dir: Path, fusion_cache_gb: float) -> None:
+    """Fusion alone on an existing workspace (its peak RSS, with and without the cache)."""
+    from workstation.photogrammetry.dense import DenseParams, fuse
+
+    base = _peak_gb()
+    c0, t0 = time.process_time(), time.perf_counter()
+    cloud = fuse(dense_dir, DenseParams(device="cpu", fusion_cache_gb=fusion_cache_gb))
+    _emit({"bench": "dense_fusion", "workspace": str(dense_dir), "fusion_cache_gb": fusion_cache_gb, "points": cloud.n,
+           "wall_s": round(time.perf_counter() - t0, 1), "cpu_s": round(time.process_time() - c0, 1),
+           "peak_gb_before": round(base, 2), "peak_gb": round(_peak_gb(), 2)})
 
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("what", choices=["rig", "temple", "fountain"])
+    ap.add_argument("what", choices=["rig", "temple", "fountain", "fusion"])
     ap.add_argument("--work", default="/tmp/bench_dense")
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--render")
@@ -198,15 +261,26 @@ def main() -> None:
     ap.add_argument("--min-consistent", type=int, default=1)
     ap.add_argument("--min-ncc", type=float, default=0.4)
     ap.add_argument("--fusion-min-pixels", type=int, default=2)
+    ap.add_argument("--recipe", default="rig_heritage", help="rig: datasets_synth/NAME.toml")
+    ap.add_argument("--dist", type=float, nargs=2, metavar=("K1", "K2"), help="rig: render with radial distortion")
+    ap.add_argument("--camera", choices=["self", "given"], default="self", help="rig: SfM self-calibrates or gets the true camera")
+    ap.add_argument("--scale", type=float, default=1.0, help="rig: image size and focal length times this")
+    ap.add_argument("--samples-on", choices=["target", "all"], default="target", help="rig: completeness samples")
+    ap.add_argument("--images", type=int, default=0, help="fountain: keep the first N images (0: all)")
+    ap.add_argument("--fusion-cache-gb", type=float, default=1.0)
+    ap.add_argument("--dense-dir", help="fusion: an existing dense workspace")
     a = ap.parse_args()
     work = Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     if a.what == "rig":
-        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels)
+        bench_rig(work, a.reuse, a.render, a.min_consistent, a.min_ncc, a.fusion_min_pixels, a.recipe, a.dist,
+                  a.camera, a.samples_on, a.scale)
     elif a.what == "temple":
         bench_temple(work, a.render)
+    elif a.what == "fountain":
+        bench_fountain(work, a.size, a.render, a.images, a.fusion_cache_gb)
     else:
-        bench_fountain(work, a.size, a.render)
+        bench_fusion(Path(a.dense_dir), a.fusion_cache_gb)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,10 @@
   OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
 - heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
+- texture: the true heritage-church mesh textured from the 24 photos of the synthetic rig,
+  texture colour vs the true surface colour.
+- poisson_profile: Open3D's Poisson depth 10 on the 1 M-point torus, per PoissonRecon stage,
+  for ``--variants`` (samples per node : point weight : full depth), accuracy vs the torus.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
 shared machine).
 """
@@ -42,11 +46,28 @@ def timed(fn, *a, **k):
     return out, time.perf_counter() - t, time.process_time() - c
 
 
-def bunny(threads):
+def mls_plane_projection(vertices: np.ndarray, xyz: np.ndarray, k: int = 16) -> np.ndarray:
+    """One first-order MLS projection step (Alexa et al., "Computing and rendering point set
+    surfaces", IEEE TVCG 2003, with a plane as the local fit): every vertex moved to its foot on
+    the Gaussian-weighted least-squares plane of its k nearest points (bandwidth = the median
+    distance to the k-th neighbour)."""
+    from scipy.spatial import cKDTree
+
+    d, idx = cKDTree(xyz).query(vertices, k=k)
+    nb = xyz[idx]
+    w = np.exp(-(d / np.median(d[:, -1])) ** 2)
+    c = (w[..., None] * nb).sum(1) / w.sum(1, keepdims=True)
+    x = nb - c[:, None]
+    _, vec = np.linalg.eigh(np.einsum("mk,mki,mkj->mij", w, x, x))
+    n = vec[:, :, 0]
+    return vertices - np.einsum("mi,mi->m", vertices - c, n)[:, None] * n
+
+
+def bunny(threads, trims=(0.05,), mls=False):
     from scipy.spatial.transform import Rotation
 
-    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
-                                  QualityParams, estimate_normals, mesh_cloud, mesh_quality)
+    from workstation.mesh import (CleanParams, DecimateParams, NormalParams, PoissonParams, QualityParams, clean,
+                                  decimate, estimate_normals, keep_vertices, mesh_quality, poisson)
     from workstation.core.products import Mesh
     from workstation.io import read_cloud
 
@@ -64,16 +85,31 @@ def bunny(threads):
         local, _ = estimate_normals(Cloud(xyz), NormalParams(k=10), viewpoints=np.array([0.0, 0.0, 1.0]))
         scans.append(Cloud(xyz @ R + np.array(s[2:5], float), {"normal": np.asarray(local.attrs["normal"], float) @ R}))
     merged = concatenate(scans)
-    res, wall, cpu = timed(mesh_cloud, merged, MeshChainParams(
-        method="poisson", poisson=PoissonParams(depth=9, trim_quantile=0.05, threads=threads),
-        clean=CleanParams(min_piece_fraction=0.1), decimate=DecimateParams(target_faces=20000),
-        quality=QualityParams(mesh_samples=200_000)))
-    q = res.quality
     mm = lambda d: {k: round(v * 1000, 4) for k, v in d.items() if k != "n"}  # noqa: E731
-    emit(bench="bunny_poisson_pymeshlab", points=merged.n, faces=q["faces"], wall_s=round(wall, 1),
-         cpu_s=round(cpu, 1), steps={s.name: round(s.seconds, 2) for s in res.steps},
-         non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
-         mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
+    # one Poisson surface, then each density trim through the rest of the chain
+    (raw, prec), wall_p, cpu_p = timed(poisson, merged, PoissonParams(depth=9, trim_quantile=0.0, threads=threads))
+    dens = np.asarray(raw.vertex_attrs["quality"], dtype=np.float64)
+    for trim in trims:
+        t0, c0 = time.perf_counter(), time.process_time()
+        m = keep_vertices(raw, dens >= np.quantile(dens, trim)) if trim > 0 else raw
+        m, _ = clean(m, CleanParams(min_piece_fraction=0.1, report_self_intersections=False))
+        m, _ = decimate(m, DecimateParams(target_faces=20000))
+        m, _ = clean(m, CleanParams(report_self_intersections=False))
+        wall, cpu = time.perf_counter() - t0 + wall_p, time.process_time() - c0 + cpu_p
+        q = mesh_quality(Mesh(m.vertices, m.faces), Cloud(merged.xyz), QualityParams(mesh_samples=200_000))
+        emit(bench="bunny_poisson_pymeshlab", points=merged.n, trim_quantile=trim, faces=q["faces"],
+             wall_s=round(wall, 1), cpu_s=round(cpu, 1), poisson_wall_s=round(wall_p, 1),
+             non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+             mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
+             mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
+        if mls:
+            pm = Mesh(mls_plane_projection(m.vertices, merged.xyz), m.faces)
+            q = mesh_quality(pm, Cloud(merged.xyz), QualityParams(mesh_samples=200_000))
+            emit(bench="bunny_poisson_pymeshlab_mls_projected", trim_quantile=trim, faces=q["faces"],
+                 non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+                 mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
+                 mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]),
+                 scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
     import open3d as o3d
 
     pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.array(merged.xyz)))
@@ -88,6 +124,7 @@ def bunny(threads):
                      QualityParams(mesh_samples=200_000))
     emit(bench="bunny_poisson_open3d_anchor", faces=q["faces"], wall_s=round(wall, 1), cpu_s=round(cpu, 1),
          non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
+         mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
          mesh_to_scans_local_plane_mm=mm(q["mesh_to_cloud_local_plane"]), scans_to_mesh_mm=mm(q["cloud_to_mesh"]))
 
 
@@ -102,15 +139,82 @@ def torus_1m():
     return Cloud(xyz + [500_000, 4_000_000, 100], {"normal": nrm})
 
 
-def poisson_1m(threads, backend="pymeshlab"):
+def poisson_1m(threads, backend="pymeshlab", samples_per_node=1.5):
     from workstation.mesh import PoissonParams, poisson
 
     cloud = torus_1m()
     n = cloud.n
     (mesh, rec), wall, cpu = timed(poisson, cloud, PoissonParams(depth=10, trim_quantile=0.0, threads=threads,
-                                                                 backend=backend))
-    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"], faces=mesh.n_faces,
-         wall_s=round(wall, 1), cpu_s=round(cpu, 1), omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"))
+                                                                 backend=backend, samples_per_node=samples_per_node))
+    err = torus_radial_error(mesh.vertices)
+    emit(bench="poisson_depth10_1M", backend=backend, points=n, threads=rec.params["threads"],
+         samples_per_node=samples_per_node, faces=mesh.n_faces, wall_s=round(wall, 1), cpu_s=round(cpu, 1),
+         radial_error_mm={"p50": round(1000 * float(np.median(err)), 2),
+                          "p95": round(1000 * float(np.percentile(err, 95)), 2)},
+         omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"), loadavg=os.getloadavg()[0])
+
+
+def torus_radial_error(v: np.ndarray) -> np.ndarray:
+    """Distance (m) of points to the bumpy torus of :func:`torus_1m` along the tube's radius
+    (the bumps are gentle, 0.3 m over 6-12 m wavelengths, so this is the surface distance to
+    within a few per cent)."""
+    p = v - [500_000, 4_000_000, 100]
+    u = np.arctan2(p[:, 1], p[:, 0])
+    rho = np.hypot(p[:, 0], p[:, 1]) - 10.0
+    w = np.arctan2(p[:, 2], rho)
+    return np.abs(np.hypot(rho, p[:, 2]) - (3.0 + 0.3 * np.sin(5 * u) * np.cos(3 * w)))
+
+
+def _capture_fd1(fn, *a, **k):
+    """Run fn with the process's stdout (fd 1, where Open3D's C++ logger writes) captured."""
+    import tempfile
+
+    sys.stdout.flush()
+    saved = os.dup(1)
+    with tempfile.TemporaryFile(mode="w+b") as tmp:
+        os.dup2(tmp.fileno(), 1)
+        try:
+            out = fn(*a, **k)
+        finally:
+            sys.stdout.flush()
+            os.dup2(saved, 1)
+            os.close(saved)
+        tmp.seek(0)
+        text = tmp.read().decode("utf-8", "replace")
+    return out, text
+
+
+def poisson_profile(threads, variants):
+    """Where the time of Open3D's Poisson (depth 10, 1 M points) goes, per PoissonRecon stage
+    (its own profiler, Debug verbosity), for parameter variants; accuracy against the analytic
+    torus. ``variants``: "spn:pw:full_depth" strings."""
+    import re
+
+    import open3d as o3d
+
+    cloud = torus_1m()
+    pc = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(cloud.xyz - [500_000, 4_000_000, 100]))
+    pc.normals = o3d.utility.Vector3dVector(np.asarray(cloud.attrs["normal"], float))
+    o3d.utility.set_verbosity_level(o3d.utility.VerbosityLevel.Debug)
+    for var in variants:
+        spn, pw, fd = (float(x) for x in var.split(":"))
+        call = lambda: o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(  # noqa: E731
+            pc, depth=10, n_threads=threads, samples_per_node=spn, point_weight=pw, full_depth=int(fd))
+        ((m, _), text), wall, cpu = timed(_capture_fd1, call)
+        stages = {}
+        for key in ("Got kernel density", "Got normal field", "Finalized tree", "Set FEM constraints",
+                    "Set point constraints", "Linear system solved", "Got average", "Got Iso-surface"):
+            hit = re.search(re.escape(key) + r":\s*([0-9.]+) \(s\)", text)
+            if hit:
+                stages[key] = round(float(hit.group(1)), 1)
+        err = torus_radial_error(np.asarray(m.vertices) + [500_000, 4_000_000, 100])
+        emit(bench="poisson_depth10_1M_profile", backend="open3d", samples_per_node=spn, point_weight=pw,
+             full_depth=int(fd), threads=threads, faces=len(m.triangles), wall_s=round(wall, 1), cpu_s=round(cpu, 1),
+             stages_wall_s=stages, radial_error_mm={"p50": round(1000 * float(np.median(err)), 2),
+                                                     "p95": round(1000 * float(np.percentile(err, 95)), 2),
+                                                     "rms": round(1000 * float(np.sqrt(np.mean(err ** 2))), 2)},
+             omp_wait_policy=os.environ.get("OMP_WAIT_POLICY"), loadavg=os.getloadavg()[0])
+    o3d.utility.set_verbosity_level(o3d.utility.VerbosityLevel.Warning)
 
 
 def poisson_1m_open3d():
@@ -176,6 +280,72 @@ def heritage():
          mesh_cpu_s=round(cpu, 1))
 
 
+def subdivide_long(V, F, values, max_edge):
+    """Midpoint subdivision of the whole mesh until its longest edge is <= max_edge (metres);
+    ``values`` (m, ...) per face are carried to the children."""
+    while True:
+        t = V[F]
+        if np.linalg.norm(t - np.roll(t, 1, axis=1), axis=2).max() <= max_edge:
+            return V, F, values
+        m = len(F)
+        e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+        uniq, inv = np.unique(e, axis=0, return_inverse=True)
+        base = len(V)
+        V = np.vstack([V, 0.5 * (V[uniq[:, 0]] + V[uniq[:, 1]])])
+        a, b, c = base + inv.reshape(3, m)
+        F = np.concatenate([np.stack([F[:, 0], a, c], 1), np.stack([a, F[:, 1], b], 1),
+                            np.stack([c, b, F[:, 2]], 1), np.stack([a, b, c], 1)])
+        values = np.concatenate([values] * 4)
+
+
+def texture_heritage(workdir):
+    """Texture the true heritage-church mesh from the 24 photos of the synthetic convergent rig
+    (datasets_synth/rig_heritage.toml, true cameras); texture colour at random points of the
+    textured church faces against the scene's true surface colour (0-255)."""
+    from workstation.core.products import Mesh
+    from workstation.mesh import TextureParams, texture_from_photos
+    from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig, surface_colour
+    from workstation.registration.colorize import bilinear
+
+    from workstation.raster.ortho import read_reconstruction
+
+    recipe, spec = load_rig("rig_heritage")
+    wall_r = None
+    if not (Path(workdir) / "cameras.json").exists():  # the rig is kept between runs (--work)
+        _, wall_r, _ = timed(make_rig, recipe, spec, workdir, overwrite=True)
+    rec = read_reconstruction(workdir)
+    V, F, alb, tmask, *_ = _target_scene(recipe, spec)
+    # the church only (the ground around it is not what is measured), subdivided so that no
+    # face is longer than 2 m (the true mesh has 30 m wall triangles, rarely whole in a photo)
+    used, inv = np.unique(F[tmask], return_inverse=True)
+    V, F, vals = subdivide_long(V[used], inv.reshape(-1, 3), np.column_stack([alb[tmask], np.ones(tmask.sum())]), 2.0)
+    mesh = Mesh(V, F)
+    (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams())
+    tex = out.meta["texture"]
+    h, w = tex.shape[:2]
+    rng = np.random.default_rng(0)
+    ok = np.flatnonzero((out.face_attrs["texture_view"] >= 0) & (vals[:, 3] > 0.5))
+    faces = rng.choice(ok, 100_000)
+    bary = rng.dirichlet([2.0, 2.0, 2.0], len(faces))
+    t = out.vertices[out.faces[faces]]
+    P = np.einsum("nk,nkd->nd", bary, t)
+    uv = np.einsum("nk,nkd->nd", bary, np.asarray(out.vertex_attrs["uv"], float)[out.faces[faces]])
+    col = bilinear(tex, uv[:, 0] * w - 0.5, (1 - uv[:, 1]) * h - 0.5)
+    n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
+    truth = 255 * surface_colour(P, n / np.linalg.norm(n, axis=1, keepdims=True), vals[faces, :3])
+    err = np.abs(col - truth)
+    area = mesh.face_areas()
+    church = vals[:, 3] > 0.5
+    seen = out.face_attrs["texture_view"] >= 0
+    emit(bench="texture_heritage_rig", images=len(rec.images), faces=mesh.n_faces,
+         texture_px=[int(w), int(h)], texel_size_m=round(step.params["texel_size"], 4),
+         church_area_textured_fraction=round(float(area[church & seen].sum() / area[church].sum()), 3),
+         abs_error_0_255={"p50": round(float(np.median(err)), 2), "mean": round(float(err.mean()), 2),
+                          "p95": round(float(np.percentile(err, 95)), 2)},
+         texture_wall_s=round(wall, 1), texture_cpu_s=round(cpu, 1),
+         rig_render_wall_s=None if wall_r is None else round(wall_r, 1))
+
+
 def render_10m():
     from workstation.render import RenderParams, render
 
@@ -192,17 +362,28 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--work", default="/tmp/bench_mesh_rig", help="texture: folder of the rendered rig (kept)")
+    ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
+    ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
+    ap.add_argument("--samples-per-node", type=float, default=1.5, help="poisson, poisson_backend_open3d")
+    ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
+                    help="poisson_profile: samples_per_node:point_weight:full_depth, comma separated")
     a = ap.parse_args()
     todo = a.only.split(",")
     if "render" in todo:
         render_10m()
     if "poisson" in todo:
-        poisson_1m(a.threads)
+        poisson_1m(a.threads, samples_per_node=a.samples_per_node)
     if "poisson_backend_open3d" in todo:
-        poisson_1m(a.threads, backend="open3d")
+        poisson_1m(a.threads, backend="open3d", samples_per_node=a.samples_per_node)
+    if "poisson_profile" in todo:
+        os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+        poisson_profile(a.threads, a.variants.split(","))
     if "poisson_open3d" in todo:
         poisson_1m_open3d()
     if "bunny" in todo:
-        bunny(a.threads)
+        bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls)
     if "heritage" in todo:
         heritage()
+    if "texture" in todo:
+        texture_heritage(Path(a.work))

@@ -114,7 +114,7 @@ def test_dense_cli_writes_fused_and_output(tmp_path, capsys):
         images[k] = Image(f"im{k}.png", 1, p)
     write_colmap_text(Reconstruction({1: cam}, images), tmp_path / "sparse" / "0")
     out = tmp_path / "dense.ply"
-    rc = main(["dense", str(tmp_path), "--device", "cpu", "--depth-range", "5", "20", "--sources", "3", "-o", str(out), "--json"])
+    rc = main(["dense", str(tmp_path), "--device", "cpu", "--depth-range", "5", "20", "--sources", "3", "--fusion-cache-gb", "0.5", "-o", str(out), "--json"])
     assert rc in (0, None)
     summary = json.loads(capsys.readouterr().out)
     assert summary["device"] == "cpu" and summary["points"] > 100

@@ -12,7 +12,7 @@ from workstation.mesh import (BallPivotingParams, CleanParams, ColorTransferPara
                               MeshChainParams, NormalParams, PoissonParams, QualityParams, SmoothParams,
                               ball_pivoting, clean, decimate, delaunay25d, estimate_normals, mesh_cloud, mesh_quality,
                               point_spacing, poisson, smooth, transfer_colors)
-from workstation.mesh.quality import local_plane_distance
+from workstation.mesh.quality import local_plane_distance, nearest_point_floor
 
 R = 2.0
 CENTRE = np.array([500_000.0, 4_000_000.0, 100.0])  # projected coordinates: origin handling matters
@@ -264,6 +264,18 @@ def test_local_plane_distance_has_no_sampling_floor():
     assert np.allclose(d, 0.1, atol=1e-9)  # point-to-point would be up to 0.72
     far = local_plane_distance(np.array([[100.0, 25.0, 0.0]]), xyz)
     assert far[0] > 40  # invented surface far from the data still counts
+
+
+def test_nearest_point_floor_of_a_unit_grid():
+    """Samples 0.1 above a unit grid: their feet on the plane lie, in RMS, sqrt(1/6) = 0.408 of
+    the spacing from the nearest grid point (uniform over a cell), whatever the height."""
+    g = np.stack(np.meshgrid(np.arange(50.0), np.arange(50.0)), -1).reshape(-1, 2)
+    xyz = np.column_stack([g, np.zeros(len(g))])
+    rng = np.random.default_rng(0)
+    s = np.column_stack([rng.uniform(5, 45, (20000, 2)), np.full(20000, 0.1)])
+    f = nearest_point_floor(s, xyz)
+    assert np.sqrt(np.mean(f ** 2)) == pytest.approx(np.sqrt(1 / 6), rel=0.02)
+    assert np.sqrt(np.mean(nearest_point_floor(s, xyz * 2) ** 2)) == pytest.approx(2 * np.sqrt(1 / 6), rel=0.02)
 
 
 def test_chain_records_every_step_and_colours(sphere_cloud):

@@ -27,9 +27,9 @@ def test_isprs_mean_total_error(shipped, shared_data):
 
     s = isprs_scores(lambda c: shipped.predict(c) == C.GROUND, shared_data / "isprs")
     assert len(s) == 7
-    # measured 4.35 % (goal 3.5 %); the provisional-ground gate alone gives 3.93 %
-    assert s["mean_total"] <= 4.6, s["mean_total"]
-    assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.2
+    # measured 3.62 % (goal 3.5 %); the provisional-ground gate alone gives 3.95 %
+    assert s["mean_total"] <= 3.8, s["mean_total"]
+    assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 3.2
 
 
 @pytest.mark.parametrize("name, rmse_max", [("MixedConifer.laz", 0.12), ("Topography.laz", 0.34)])
@@ -37,8 +37,27 @@ def test_dtm_under_predicted_ground(shipped, shared_data, name, rmse_max):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / name)
-    # measured 0.084 m and 0.304 m (autzen_trim, a feet file: 0.187 m, in the benchmark)
+    # measured 0.093 m and 0.315 m (autzen_trim, a feet file: 0.192 m, in the benchmark)
     assert r["dtm_rmse_m"] <= rmse_max, r
+
+
+def test_building_roof_of_sample_c(shipped, shared_data):
+    from workstation.ml.realdata import tile_scores
+
+    r = tile_scores(shipped.predict, shared_data / "lidar" / "sample_c.las")
+    # measured 0.982: a roof 26 m up that fills the crop (the goal is 0.85)
+    assert r["building_f1"] >= 0.9, r
+
+
+def test_lidarhd_vegetation_and_house(shipped, shared_data):
+    from workstation.ml.realdata import tile_scores
+
+    r = tile_scores(shipped.predict, shared_data / "lidar" / "lidarhd_extra_bytes.laz")
+    # measured vegetation 0.90 (goal 0.85), building 0.685 (goal 0.85, not reached: a house
+    # under trees), ground 0.997
+    assert r["vegetation_f1"] >= 0.85, r
+    assert r["building_f1"] >= 0.62, r
+    assert r["ground_f1"] >= 0.99, r
 
 
 def test_ml_ground_function_marks_ground_only(shipped, shared_data):

@@ -21,3 +21,7 @@ def test_demo_step(tmp_path):
     exp = rep["expected_check_rmse_from_image_noise"]
     assert geo["check_n"] == 12 and geo["check_rmse_h"] < 3 * exp["rmse_h"] and geo["check_rmse_z"] < 3 * exp["rmse_z"]
     assert rep["resection"]["converged"] and rep["resection"]["sigma0_px"] < 1.0
+    bent = rep["bent_block"]["georeference"]
+    assert bent["adjustment"] == "bundle"
+    assert bent["metrics"]["check_rmse_z"] < 0.5 * bent["metrics"]["similarity_check_rmse_z"]
+    assert bent["metrics"]["check_rmse_z"] < 2 * rep["bent_block"]["expected_check_rmse_from_image_noise"]["rmse_z"]

@@ -11,6 +11,7 @@ MODULES = [
     "workstation.photogrammetry.collinearity",
     "workstation.photogrammetry.calibration",
     "workstation.photogrammetry.georef",
+    "workstation.photogrammetry.bundle",
     "workstation.photogrammetry.sfm",
     "workstation.io.camera",
     "workstation.io.gcp",

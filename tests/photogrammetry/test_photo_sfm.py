@@ -100,8 +100,23 @@ def test_sfm_cli_temple_subset_with_camera(shared_data, tmp_path, capsys):
     geo = doc["georef"]["metrics"]
     assert geo["control_n"] == 5 and geo["check_n"] == 4
     assert geo["check_rmse_3d"] < 0.002, geo  # metres, on an object 0.16 m across
+    # the control points' image observations allow the bundle adjustment with GCP constraints
+    assert doc["georef"]["adjustment"] == "bundle" and doc["georef"]["bundle"]["tie_points"] > 100
+    assert geo["check_rmse_3d"] <= 1.2 * geo["similarity_check_rmse_3d"]
     assert (tmp_path / "work/georef/0/images.bin").exists() and (tmp_path / "work/georef_report.json").exists()
-    assert "check points 4" in out.err
+    assert "check points 4" in out.err and "bundle adjustment" in out.err
+    import pycolmap as _pc
+
+    from workstation.interop.pycolmap import reconstruction_from_pycolmap
+    from workstation.io.gcp import read_gcp
+    from workstation.photogrammetry.georef import triangulate_gcps
+
+    # the written georef/0 model holds the adjusted poses: check points intersect where surveyed
+    georef = reconstruction_from_pycolmap(_pc.Reconstruction(str(tmp_path / "work/georef/0")))
+    pts = read_gcp(tmp_path / "gcp.csv")
+    pos, _, _ = triangulate_gcps([g for g in pts if g.role == "check"], georef)
+    err = [np.linalg.norm(pos[g.name] - g.xyz) for g in pts if g.role == "check"]
+    assert np.sqrt(np.mean(np.square(err))) == pytest.approx(geo["check_rmse_3d"], rel=1e-3, abs=1e-6)
 
     import pycolmap
 

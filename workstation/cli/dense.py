@@ -18,10 +18,11 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--sources", "num_sources", type=int, default=5, show_default=True, help="Source views per reference image (CPU path).")
 @click.option("--min-ncc", type=float, default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
 @click.option("--min-consistent", type=int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
+@click.option("--fusion-cache-gb", type=float, default=1.0, show_default=True, help="GB of images and depth/normal maps fusion keeps in memory (0 = load all: faster for a few images, memory grows with the image count).")
 @click.option("--depth-range", nargs=2, type=float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
 @overwrite_option
 @json_option
-def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_ncc, min_consistent, depth_range, overwrite, as_json):
+def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_ncc, min_consistent, fusion_cache_gb, depth_range, overwrite, as_json):
     """Dense reconstruction of WORKDIR (from `ws sfm`, or a synthetic rig folder).
 
     Undistorts the images into WORKDIR/dense (COLMAP layout), computes depth and normal maps
@@ -41,6 +42,7 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
         raise OutputExistsError(output)
     params = DenseParams(device=device, max_image_size=max_image_size, num_sources=num_sources,
                          top_k=min(2, num_sources), min_ncc=min_ncc, min_consistent=min_consistent,
+                         fusion_cache_gb=fusion_cache_gb,
                          depth_range=tuple(depth_range) if depth_range else None)
     cloud, summary = run_dense(workdir, image_dir, params, overwrite=overwrite)
     if output is not None:

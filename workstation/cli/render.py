@@ -32,10 +32,15 @@ def _size(ctx, param, value):
               help="Draw a seeded random subset of at most this many points (0 = all).")
 @click.option("--turntable", type=click.IntRange(0, 720), default=0, show_default=True,
               help="Frames of a turntable orbit: OUT.gif is an animation, OUT.png a numbered PNG sequence.")
+@click.option("--reconstruction", "workdir", type=click.Path(exists=True), default=None,
+              help="COLMAP work folder (or model folder, or cameras.json) holding the camera of --camera.")
+@click.option("--camera", "camera_ref", default=None, metavar="IMAGE",
+              help="Render through the camera of this image (name or id) of --reconstruction: its intrinsics, "
+                   "pose and image size (replaces --view and --size), so the render overlays the photo.")
 @overwrite_option
 @json_option
 def render(src, output, color, view, size, background, point_size, edl, no_legend, max_points, turntable,
-           overwrite, as_json):
+           workdir, camera_ref, overwrite, as_json):
     """Render the cloud or mesh IN to OUT (.png, or .gif with --turntable)."""
     import time
     from pathlib import Path
@@ -52,8 +57,21 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
         raise InvalidInputError("the output must be .png or .gif", path=out)
     if out.suffix.lower() == ".gif" and not turntable:
         raise InvalidInputError("a .gif output needs --turntable N", path=out)
+    if (workdir is None) != (camera_ref is None):
+        raise InvalidInputError("--camera and --reconstruction go together",
+                                "give the reconstruction and the image whose camera to use")
+    if camera_ref is not None and turntable:
+        raise InvalidInputError("--turntable orbits its own camera", "leave out --camera or --turntable")
     check_output(out, overwrite, inputs=[src])
     t0 = time.perf_counter()
+    view_camera = None
+    if camera_ref is not None:
+        from workstation.raster.ortho import read_reconstruction
+        from workstation.render.render import find_image, reconstruction_view
+
+        rec = read_reconstruction(workdir)
+        view_camera = reconstruction_view(rec, find_image(rec, camera_ref))
+        size = (view_camera[0].width, view_camera[0].height)
     obj = load_product(src)
     params = RenderParams(size=size, color=color, view=view, background=background, point_size=point_size, edl=edl,
                           legend=not no_legend, max_points=max_points)
@@ -69,8 +87,9 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
                 save_png(f, p, overwrite=overwrite, inputs=[src])
                 files.append(str(p))
     else:
-        save_png(render_image(obj, params), out, overwrite=overwrite, inputs=[src])
+        save_png(render_image(obj, params, camera=view_camera), out, overwrite=overwrite, inputs=[src])
         files.append(str(out))
     if as_json:
-        emit_json({"input": src, "files": files, "size": list(size), "view": view, "color": color,
+        emit_json({"input": src, "files": files, "size": list(size), "color": color,
+                   "view": f"camera {camera_ref}" if camera_ref is not None else view,
                    "seconds": time.perf_counter() - t0})

@@ -16,7 +16,8 @@ from workstation.core.jsonutil import json_clean
 @click.option("-o", "--output", "workdir", required=True, type=click.Path(file_okay=False), help="Work folder (COLMAP layout: database.db, sparse/0 = largest model).")
 @click.option("--camera", "camera_file", type=click.Path(dir_okay=False), help="CAMERA.json from `ws calibrate`; intrinsics kept fixed unless --refine-intrinsics.")
 @click.option("--refine-intrinsics", is_flag=True, help="Refine the --camera intrinsics in the bundle adjustments.")
-@click.option("--gcp", "gcp_file", type=click.Path(dir_okay=False), help="GCP.csv (schema in workstation.io.gcp): control points fix a 7-parameter similarity, check points give the accuracy.")
+@click.option("--gcp", "gcp_file", type=click.Path(dir_okay=False), help="GCP.csv (schema in workstation.io.gcp): control points fix a 7-parameter similarity (then a bundle adjustment with GCP constraints), check points give the accuracy.")
+@click.option("--gcp-adjustment", type=click.Choice(["auto", "similarity", "bundle"]), default="auto", show_default=True, help="After the similarity: bundle adjustment with the control points' image observations and σ (auto = when ≥ 3 control points have ≥ 2 image observations), or the similarity alone.")
 @click.option("--crs", help="CRS of the GCP coordinates (EPSG code or WKT), recorded on the georeferenced outputs.")
 @click.option("--matcher", type=click.Choice(["auto", "exhaustive", "sequential", "spatial"]), default="auto", show_default=True, help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential.")
 @click.option("--mapper", type=click.Choice(["incremental", "global"]), default="incremental", show_default=True, help="Incremental (COLMAP) or global (GLOMAP) mapping.")
@@ -31,14 +32,16 @@ from workstation.core.jsonutil import json_clean
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU plane sweep.")
 @overwrite_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, do_dense, device, overwrite, as_json):
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustment, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, do_dense, device, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
     reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud) and
     WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
-    model in the survey frame) and WORKDIR/georef_report.json (control and check residuals,
-    RMSE, CE90/LE90, DEM cell size and contour interval supported).
+    model in the survey frame; bundle-adjusted with the control points when their image
+    observations allow, intrinsics kept) and WORKDIR/georef_report.json (control and check
+    residuals, RMSE before/after the adjustment, CE90/LE90, DEM cell size and contour
+    interval supported).
     """
     from workstation.core.errors import InvalidInputError
     from workstation.io.atomic import atomic_path
@@ -63,6 +66,10 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
             )
     if not Path(images).is_dir():
         raise InvalidInputError("image folder not found", path=images)
+    if do_dense:
+        from workstation.photogrammetry.dense import resolve_device
+
+        device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
     params = SfMParams(
         matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
         camera_model=camera_model, refine_intrinsics=refine_intrinsics,
@@ -88,17 +95,31 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, crs, matcher,
     if gcps is not None:
         import pycolmap
 
-        from workstation.interop.pycolmap import apply_similarity, write_model
+        from workstation.interop.pycolmap import (
+            apply_similarity,
+            reconstruction_from_pycolmap,
+            set_poses_and_points,
+            write_model,
+        )
         from workstation.photogrammetry.georef import georeference
 
-        geo = georeference(gcps, result.reconstruction, sigma_px=sigma_px, crs=crs)
         rec = pycolmap.Reconstruction(str(wd / "sparse" / "0"))
+        core = reconstruction_from_pycolmap(rec, images, with_tracks=gcp_adjustment != "similarity")
+        geo = georeference(gcps, core, sigma_px=sigma_px, crs=crs, adjustment=gcp_adjustment)
         apply_similarity(rec, geo.similarity)
+        if geo.meta.get("adjustment") == "bundle":
+            set_poses_and_points(rec, geo.reconstruction)
         write_model(rec, wd / "georef" / "0")
         rep = geo.to_dict()
         with atomic_path(wd / "georef_report.json", overwrite=True) as tmp:
             Path(tmp).write_text(json.dumps(json_clean(rep), indent=2) + "\n")
         m = geo.report.metrics
+        if geo.meta.get("adjustment") == "bundle" and m.get("check_n"):
+            click.echo(
+                f"bundle adjustment: check RMSE 3D {m['similarity_check_rmse_3d']:.4f} with the similarity alone -> "
+                f"{m['check_rmse_3d']:.4f}",
+                err=True,
+            )
         if m.get("check_n"):
             click.echo(
                 f"check points {m['check_n']}: RMSE X {m['check_rmse_x']:.4f} Y {m['check_rmse_y']:.4f} Z {m['check_rmse_z']:.4f} "

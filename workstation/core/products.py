@@ -183,6 +183,38 @@ class Image:
 
 
 @dataclass(frozen=True)
+class Tracks:
+    """Image observations of the sparse points of a reconstruction, one row per observation.
+
+    Attributes
+    ----------
+    point : (m,) int64
+        Row of the observed point in ``Reconstruction.points``.
+    image : (m,) int64
+        Id of the observing image (a key of ``Reconstruction.images``).
+    uv : (m, 2) float64
+        Measured pixel, OpenCV convention (origin at the centre of the top-left pixel).
+    """
+
+    point: np.ndarray
+    image: np.ndarray
+    uv: np.ndarray
+
+    def __post_init__(self):
+        p = np.asarray(self.point, dtype=np.int64).reshape(-1)
+        i = np.asarray(self.image, dtype=np.int64).reshape(-1)
+        uv = np.asarray(self.uv, dtype=np.float64)
+        if uv.shape != (p.shape[0], 2) or i.shape != p.shape:
+            raise InvalidInputError(f"tracks need (m,) point, (m,) image and (m, 2) uv, got {p.shape}, {i.shape}, {uv.shape}")
+        for name, a in (("point", p), ("image", i), ("uv", uv)):
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
+
+    def __len__(self) -> int:
+        return int(self.point.shape[0])
+
+
+@dataclass(frozen=True)
 class Reconstruction:
     """Cameras, oriented images and (optionally) sparse points with colours.
 
@@ -194,6 +226,9 @@ class Reconstruction:
     colors : (n, 3) uint8 or None
     crs : str or None
         Set once the reconstruction is georeferenced.
+    meta : mapping
+    tracks : Tracks or None
+        Image observations of ``points`` (needed by a bundle adjustment); None when not loaded.
     """
 
     cameras: Mapping[int, Camera]
@@ -202,6 +237,7 @@ class Reconstruction:
     colors: np.ndarray | None = None
     crs: str | None = None
     meta: Mapping[str, Any] = field(default_factory=dict)
+    tracks: Tracks | None = None
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError, MissingDependencyError
 from workstation.core.log import get_logger
-from workstation.core.products import Camera, Image, Pose, Reconstruction
+from workstation.core.products import Camera, Image, Pose, Reconstruction, Tracks
 
 log = get_logger(__name__)
 
@@ -121,10 +121,31 @@ def pose_from_pycolmap(im) -> Pose:
     return Pose(np.asarray(T.rotation.matrix(), dtype=float), np.asarray(T.translation, dtype=float))
 
 
-def reconstruction_from_pycolmap(rec, image_dir=None) -> Reconstruction:
+def tracks_from_pycolmap(rec, point_ids: np.ndarray) -> Tracks:
+    """The image observations of a ``pycolmap.Reconstruction``'s 3-D points as :class:`Tracks`.
+
+    ``point_ids`` gives the point3D id of each row of the core ``points`` array; pixels are
+    moved to OpenCV's convention (−0.5 px).
+    """
+    row = {int(pid): k for k, pid in enumerate(np.asarray(point_ids).tolist())}
+    pts, imgs, uv = [], [], []
+    for iid, im in rec.images.items():
+        if not im.has_pose:
+            continue
+        obs = im.get_observation_points2D()
+        pts.extend(row[int(p2.point3D_id)] for p2 in obs)
+        imgs.extend([int(iid)] * len(obs))
+        uv.extend(p2.xy for p2 in obs)
+    uv_a = np.asarray(uv, dtype=float).reshape(-1, 2) - _HALF
+    return Tracks(np.asarray(pts, dtype=np.int64), np.asarray(imgs, dtype=np.int64), uv_a)
+
+
+def reconstruction_from_pycolmap(rec, image_dir=None, with_tracks: bool = False) -> Reconstruction:
     """Core :class:`Reconstruction` of a ``pycolmap.Reconstruction`` (registered images only).
 
-    ``meta`` holds ``point_errors`` (reprojection error per point, px) and ``track_lengths``.
+    ``meta`` holds ``point_errors`` (reprojection error per point, px), ``track_lengths`` and
+    ``point_ids`` (COLMAP point3D id of each row). ``with_tracks`` also loads the image
+    observations (:func:`tracks_from_pycolmap`), needed by a bundle adjustment.
     """
     cameras = {int(cid): camera_from_pycolmap(c) for cid, c in rec.cameras.items()}
     images = {}
@@ -138,12 +159,38 @@ def reconstruction_from_pycolmap(rec, image_dir=None) -> Reconstruction:
     cols = np.empty((n, 3), dtype=np.uint8)
     err = np.empty(n)
     tl = np.empty(n, dtype=np.int64)
+    ids = np.empty(n, dtype=np.int64)
     for i, (pid, p) in enumerate(rec.points3D.items()):
         pts[i] = p.xyz
         cols[i] = p.color
         err[i] = p.error
         tl[i] = p.track.length()
-    return Reconstruction(cameras, images, pts, cols, None, {"point_errors": err, "track_lengths": tl})
+        ids[i] = pid
+    tracks = tracks_from_pycolmap(rec, ids) if with_tracks else None
+    return Reconstruction(cameras, images, pts, cols, None, {"point_errors": err, "track_lengths": tl, "point_ids": ids}, tracks)
+
+
+def set_poses_and_points(rec, core: Reconstruction) -> None:
+    """Write the poses and point positions of a core reconstruction into a ``pycolmap.Reconstruction``
+    in place (a fresh copy should be passed), e.g. after a bundle adjustment.
+
+    Images are matched by id, points by ``core.meta["point_ids"]`` (as made by
+    :func:`reconstruction_from_pycolmap`); intrinsics are left as they are.
+    """
+    pycolmap = import_pycolmap()
+    ids = core.meta.get("point_ids")
+    if ids is None or core.points is None or len(ids) != core.points.shape[0]:
+        raise InvalidInputError("the core reconstruction has no point ids matching its points", "read it with reconstruction_from_pycolmap")
+    for iid, im in core.images.items():
+        T = pycolmap.Rigid3d(pycolmap.Rotation3d(np.asarray(im.pose.R, dtype=float)), np.asarray(im.pose.t, dtype=float))
+        pim = rec.images[int(iid)]
+        frame = rec.frames[pim.frame_id]
+        if hasattr(frame, "set_cam_from_world"):
+            frame.set_cam_from_world(int(pim.camera_id), T)
+        else:  # pragma: no cover - older pycolmap
+            pim.cam_from_world = T
+    for pid, X in zip(np.asarray(ids).tolist(), np.asarray(core.points, dtype=float)):
+        rec.points3D[int(pid)].xyz = X
 
 
 def find_model(path) -> Path | None:
@@ -155,7 +202,7 @@ def find_model(path) -> Path | None:
     return None
 
 
-def read_model(path, image_dir=None) -> Reconstruction:
+def read_model(path, image_dir=None, with_tracks: bool = False) -> Reconstruction:
     """Core :class:`Reconstruction` of a COLMAP model (binary or text) in a work folder.
 
     ``path`` is a model folder or an SfM work folder (``sparse/0`` or ``sparse``). Image paths
@@ -171,7 +218,7 @@ def read_model(path, image_dir=None) -> Reconstruction:
                 image_dir = cand
                 break
     pycolmap = import_pycolmap()
-    return reconstruction_from_pycolmap(pycolmap.Reconstruction(str(model)), image_dir)
+    return reconstruction_from_pycolmap(pycolmap.Reconstruction(str(model)), image_dir, with_tracks)
 
 
 def cloud_from_reconstruction(rec: Reconstruction):

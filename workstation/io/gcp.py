@@ -15,7 +15,9 @@ X, Y, Z   surveyed (world) coordinates in the target CRS units; required on the 
           point, may be left empty on its further observation rows
 role      ``control`` (used in the fit) or ``check`` (held out: only used to measure accuracy);
           default ``control``
-sigma     optional standard deviation of the surveyed coordinates (same units)
+sigma     optional standard deviation of the surveyed coordinates (same units); weighs a
+          control point's ground coordinates in the bundle adjustment with GCP constraints
+          (:mod:`workstation.photogrammetry.bundle`; when empty: σ_px × its mean GSD)
 image     optional image name of an observation (as in the reconstruction)
 u, v      pixel coordinates of the observation (OpenCV convention: origin at the centre of the
           top-left pixel)

@@ -16,6 +16,9 @@ keeps the ones the cloud was read with when its attributes still fit.
 
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
@@ -30,6 +33,7 @@ log = get_logger(__name__)
 
 CHUNK_LAS = 262_144  # uncompressed: small enough that per-field copies stay in cache
 CHUNK_LAZ = 1_048_576  # compressed: large enough for lazrs to decompress chunks in parallel
+FILL_SLICE = 131_072  # points per field-copy job: a few MB of records, copied out of cache
 SCAN_ANGLE_UNIT = 0.006  # degrees per unit of the LAS 1.4 (formats 6-10) scan angle
 _DEFAULT_SCALE = 0.001  # metres (or feet) for projected CRSs
 _GEOGRAPHIC_SCALE = 1e-7  # degrees
@@ -271,6 +275,20 @@ class _Filler:
         return end
 
 
+@contextmanager
+def _fill_pool():
+    """A thread pool for the field copies when more than one core is available, else None."""
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        cores = os.cpu_count() or 1
+    if cores < 2:
+        yield None
+        return
+    with ThreadPoolExecutor(max_workers=min(cores, 4), thread_name_prefix="las-fill") as pool:
+        yield pool
+
+
 def _open(path):
     laspy = _laspy()
     try:
@@ -339,11 +357,20 @@ def read(path, *, chunk_size: int | None = None) -> Cloud:
             chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
         filler = _Filler(header, n)
         got = 0
-        for rec in _records(reader, path, n, chunk_size):
-            # copy fields in cache-sized slices of a decoded chunk: each slice comes from memory
-            # once, then its fields are copied out of cache (halves the copy time for LAZ)
-            for a in range(0, len(rec), CHUNK_LAS):
-                got = filler.fill(rec[a : a + CHUNK_LAS] if len(rec) > CHUNK_LAS else rec, got)
+        with _fill_pool() as pool:
+            for rec in _records(reader, path, n, chunk_size):
+                # copy fields in cache-sized slices of a decoded chunk, the slices spread over
+                # the cores (numpy releases the GIL while copying; lazrs holds it while decoding,
+                # so the copy cannot overlap the decoding, only be shared out)
+                m = len(rec)
+                starts = range(0, m, FILL_SLICE)
+                jobs = [(rec[a : a + FILL_SLICE] if m > FILL_SLICE else rec, got + a) for a in starts]
+                if pool is None or len(jobs) == 1:
+                    for sub, at in jobs:
+                        filler.fill(sub, at)
+                else:
+                    list(pool.map(lambda job: filler.fill(*job), jobs))
+                got += m
         meta, crs = _meta_and_crs(header, path)
         if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0):
             evlrs = reader.evlrs if reader.evlrs is not None else []

@@ -103,6 +103,22 @@ class SceneRecipe:
         Courtyard blocks (four flat-roofed wings around an open yard).
     building_height : (float, float)
         Eave height range of ordinary buildings (m).
+    building_length, building_width : (float, float)
+        Footprint ranges of ordinary buildings (m, long and short side).
+    large_buildings : int
+        Large flat-roofed blocks (halls, department stores, schools) with roof furniture
+        (HVAC boxes, stairwells, skylight rows) on the roof.
+    large_size : (float, float)
+        Side range of the large blocks (m).
+    large_height : (float, float)
+        Roof height range of the large blocks (m).
+    houses : int
+        Small detached houses and sheds with gabled, hipped or flat roofs, each with one to
+        three garden trees planted beside its walls so their crowns overhang the roof.
+    house_size : (float, float)
+        Side range of the houses (m).
+    house_height : (float, float)
+        Eave height range of the houses (m).
     heritage : bool
         Add the church (nave, portico with columns, tower with spire).
     trees : int
@@ -129,6 +145,14 @@ class SceneRecipe:
     buildings: int = 8
     courtyards: int = 1
     building_height: tuple = (5.0, 12.0)
+    building_length: tuple = (8.0, 20.0)
+    building_width: tuple = (7.0, 12.0)
+    large_buildings: int = 0
+    large_size: tuple = (30.0, 90.0)
+    large_height: tuple = (6.0, 30.0)
+    houses: int = 0
+    house_size: tuple = (4.0, 12.0)
+    house_height: tuple = (2.5, 6.0)
     heritage: bool = True
     trees: int = 120
     forest_fraction: float = 0.5
@@ -585,9 +609,9 @@ def _bridge(b: _Builder, L: _Layout):
     L.occupy(*(float(c[0]), float(c[1]), length / 2))
 
 
-def _building(b: _Builder, L: _Layout, rng, x, y, lx, ly, yaw, kind: str):
+def _building(b: _Builder, L: _Layout, rng, x, y, lx, ly, yaw, kind: str, height=None):
     zg = float(L.height(np.array([x - lx / 2, x + lx / 2, x, x]), np.array([y, y, y - ly / 2, y + ly / 2])).min()) - 0.3
-    h = rng.uniform(*L.r.building_height) + 0.3
+    h = rng.uniform(*(L.r.building_height if height is None else height)) + 0.3
     oid = b.new_object(f"building_{kind}")
     walls = rng.choice([M["brick"], M["plaster"], M["concrete"]])
     wv, wf = S.box(lx, ly, h)
@@ -614,6 +638,44 @@ def _building(b: _Builder, L: _Layout, rng, x, y, lx, ly, yaw, kind: str):
         b.add((S.place(pv, [x, y, zg + h], yaw), pf), C.BUILDING, M["concrete"], oid)
         hv, hf = S.box(min(3.0, lx / 3), min(3.0, ly / 3), 2.2)
         b.add((S.place(hv + [lx / 5, 0, 0], [x, y, zg + h], yaw), hf), C.BUILDING, M["roof_metal"], oid)
+
+
+def _large_block(b: _Builder, L: _Layout, rng, x, y, lx, ly, yaw):
+    """A large flat-roofed block with a parapet and roof furniture (HVAC boxes, stairwells,
+    a row of skylight ridges)."""
+    corners = np.array([[-lx, -ly], [lx, -ly], [-lx, ly], [lx, ly], [0, 0]]) / 2 @ S.rot_z(yaw)[:2, :2].T
+    zg = float(L.height(x + corners[:, 0], y + corners[:, 1]).min()) - 0.3
+    h = rng.uniform(*L.r.large_height) + 0.3
+    oid = b.new_object("building_large")
+    wv, wf = S.box(lx, ly, h)
+    b.add((S.place(wv, [x, y, zg], yaw), wf), C.BUILDING, rng.choice([M["concrete"], M["plaster"], M["brick"]]), oid)
+    pv, pf = S.box(lx + 0.3, ly + 0.3, rng.uniform(0.3, 1.2))
+    b.add((S.place(pv, [x, y, zg + h], yaw), pf), C.BUILDING, M["concrete"], oid)
+    for _ in range(int(rng.integers(2, 9))):
+        bx, by, bz = rng.uniform(1.5, 6.0), rng.uniform(1.5, 6.0), rng.uniform(0.8, 3.5)
+        cx = rng.uniform(-lx / 2 + bx, lx / 2 - bx)
+        cy = rng.uniform(-ly / 2 + by, ly / 2 - by)
+        v, f = S.box(bx, by, bz)
+        b.add((S.place(v + [cx, cy, 0], [x, y, zg + h], yaw), f), C.BUILDING, M["roof_metal"], oid)
+    if rng.uniform() < 0.5:  # skylight ridges: small gables in a row
+        n = int(rng.integers(3, 8))
+        for cx in np.linspace(-lx / 3, lx / 3, n):
+            v, f = S.gable_roof(ly * 0.5, 2.5, 1.0)
+            b.add((S.place(v, [x + cx * np.cos(yaw), y + cx * np.sin(yaw), zg + h], yaw + np.pi / 2), f),
+                  C.BUILDING, M["roof_metal"], oid)
+
+
+def _house(b: _Builder, L: _Layout, rng, x, y, size, yaw):
+    """A small house or shed and garden trees beside its walls (crowns over the roof)."""
+    lx = size
+    ly = size * rng.uniform(0.6, 1.0)
+    _building(b, L, rng, x, y, lx, ly, yaw, str(rng.choice(["gabled", "hipped", "flat"])), height=L.r.house_height)
+    for _ in range(int(rng.integers(1, 4))):
+        a = rng.uniform(0, 2 * np.pi)
+        d = 0.5 * np.hypot(lx, ly) + rng.uniform(0.5, 3.0)
+        tx, ty = x + d * np.cos(a), y + d * np.sin(a)
+        if abs(tx) < L.hx - 3 and abs(ty) < L.hy - 3:
+            _tree(b, L, rng, tx, ty, bool(rng.uniform() < L.r.conifer_fraction))
 
 
 def _courtyard(b: _Builder, L: _Layout, rng, x, y, size, yaw):
@@ -809,8 +871,18 @@ def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Sc
         spot = L.find_spot(rng, size * 0.72)
         if spot:
             _courtyard(b, L, rng, *spot, size, L.road.angle)
+    for i in range(recipe.large_buildings):
+        lx, ly = rng.uniform(*recipe.large_size), rng.uniform(*recipe.large_size)
+        spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
+        if spot:
+            _large_block(b, L, rng, *spot, lx, ly, L.road.angle + rng.uniform(-0.3, 0.3))
+    for i in range(recipe.houses):
+        size = rng.uniform(*recipe.house_size)
+        spot = L.find_spot(rng, 0.7 * size + 4.0)
+        if spot:
+            _house(b, L, rng, *spot, size, rng.uniform(0, np.pi))
     for i in range(recipe.buildings):
-        lx, ly = rng.uniform(8.0, 20.0), rng.uniform(7.0, 12.0)
+        lx, ly = rng.uniform(*recipe.building_length), rng.uniform(*recipe.building_width)
         spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
         if spot:
             _building(b, L, rng, *spot, lx, ly, L.road.angle + rng.choice([0.0, np.pi / 2]), kinds[i % 3])

@@ -1,5 +1,6 @@
 """Meshing with MeshLab filters (pymeshlab): normals, screened Poisson, ball pivoting, 2.5D
-Delaunay, cleaning, decimation, smoothing, colour transfer and a quality summary.
+Delaunay, cleaning, decimation, smoothing, colour transfer, a quality summary, and texture
+from oriented photos.
 
 pymeshlab is imported inside the functions; importing this package is cheap.
 """
@@ -13,10 +14,12 @@ from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, 
                           keep_vertices, poisson)
 from .simplify import DecimateParams, SmoothParams, decimate, smooth
 from .steps import StepRecord, point_spacing
+from .texture import TextureParams, texture_from_photos
 
 __all__ = [
     "METHODS", "MeshChainParams", "MeshResult", "mesh_cloud", "CleanParams", "clean", "ColorTransferParams",
     "transfer_colors", "NormalParams", "estimate_normals", "QualityParams", "mesh_quality", "BallPivotingParams",
     "Delaunay25dParams", "PoissonParams", "ball_pivoting", "delaunay25d", "keep_vertices", "poisson",
-    "DecimateParams", "SmoothParams", "decimate", "smooth", "StepRecord", "point_spacing",
+    "DecimateParams", "SmoothParams", "decimate", "smooth", "StepRecord", "point_spacing", "TextureParams",
+    "texture_from_photos",
 ]

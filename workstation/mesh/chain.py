@@ -13,7 +13,7 @@ from typing import Any, Mapping
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
-from workstation.core.products import Mesh
+from workstation.core.products import Mesh, Reconstruction
 
 from .clean import CleanParams, clean
 from .color import ColorTransferParams, transfer_colors
@@ -23,6 +23,7 @@ from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, 
                           poisson)
 from .simplify import DecimateParams, SmoothParams, decimate, smooth
 from .steps import StepRecord, Timer
+from .texture import TextureParams, texture_from_photos
 
 log = get_logger(__name__)
 
@@ -48,6 +49,9 @@ class MeshChainParams:
         Applied when the cloud has ``rgb``.
     quality : QualityParams or None
         Quality summary with distances to the input cloud.
+    texture : TextureParams or None
+        Texture from the oriented photos, applied when a reconstruction is given (last step;
+        the quality summary is taken on the mesh before its corners are split for the atlas).
     """
 
     method: str = "poisson"
@@ -60,6 +64,7 @@ class MeshChainParams:
     smooth: SmoothParams | None = None
     color: ColorTransferParams | None = ColorTransferParams()
     quality: QualityParams | None = QualityParams()
+    texture: TextureParams | None = TextureParams()
 
     def __post_init__(self):
         if self.method not in METHODS:
@@ -81,7 +86,8 @@ class MeshResult:
                 "steps": [s.to_dict() for s in self.steps], "quality": dict(self.quality)}
 
 
-def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpoints=None) -> MeshResult:
+def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpoints=None, *,
+               reconstruction: Reconstruction | None = None, images=None) -> MeshResult:
     """Run the meshing chain on a cloud.
 
     Parameters
@@ -90,6 +96,11 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
     params : MeshChainParams
     viewpoints : (3,) or (n, 3) float, or Reconstruction, optional
         Scanner positions or cameras for normal orientation.
+    reconstruction : Reconstruction, optional
+        Oriented photos in the cloud's frame: the mesh is textured from them
+        (``params.texture``).
+    images : mapping of image id to (h, w, 3) uint8, optional
+        The photos' pixels (read from their paths otherwise).
 
     Returns
     -------
@@ -138,4 +149,9 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
             with Timer() as tq:
                 quality = mesh_quality(mesh, cloud, params.quality)
             steps.append(StepRecord("quality", {"mesh_samples": params.quality.mesh_samples}, tq.seconds))
+        if reconstruction is not None and params.texture is not None:
+            mesh, rec = texture_from_photos(mesh, reconstruction, params.texture, images=images)
+            steps.append(rec)
+            mesh = Mesh(mesh.vertices, mesh.faces, mesh.vertex_attrs, mesh.face_attrs, crs=mesh.crs,
+                        meta={**mesh.meta, "steps": [s.to_dict() for s in steps]})
     return MeshResult(mesh, tuple(steps), quality, t.seconds)

@@ -33,7 +33,7 @@ from workstation.core.errors import InvalidInputError, NotFittedError, StageErro
 from workstation.core.log import get_logger
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
-from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz
+from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz, planar_segments
 
 log = get_logger(__name__)
 
@@ -42,6 +42,30 @@ FORMAT = "workstation-point-classifier/1"
 SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
 _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
+
+
+def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarray:
+    """Blend each labelled point's object-class probabilities with its segment's mean.
+
+    Column 0 (ground) is kept: the gate decides ground; the segment only decides among the
+    other classes, whose blended probabilities are rescaled to the point's own ``1 - P0``.
+    Rows with ``labels == 0`` are returned unchanged.
+    """
+    sel = labels > 0
+    if not sel.any():
+        return P
+    lab = labels[sel]
+    k = int(lab.max()) + 1
+    cnt = np.maximum(np.bincount(lab, minlength=k), 1).astype(np.float64)
+    obj = P[sel, 1:].astype(np.float64)
+    obj /= np.maximum(obj.sum(axis=1, keepdims=True), 1e-12)
+    blend = np.empty_like(obj)
+    for j in range(obj.shape[1]):
+        mean = np.bincount(lab, weights=obj[:, j], minlength=k) / cnt
+        blend[:, j] = (1.0 - weight) * obj[:, j] + weight * mean[lab]
+    out = P.copy()
+    out[sel, 1:] = blend * (1.0 - P[sel, :1])
+    return out
 
 
 @dataclass
@@ -81,6 +105,10 @@ class PointClassifier:
         The PyTorch MLP or the random-forest baseline.
     hidden : tuple of int
         MLP hidden widths.
+    dropout : float
+        MLP dropout probability after each hidden layer.
+    weight_decay : float
+        Adam L2 weight decay.
     epochs : int
         Maximum MLP epochs.
     batch : int
@@ -111,19 +139,34 @@ class PointClassifier:
         points take the network's best non-ground class. The physical prior that keeps the
         network's sim-to-real errors off the terrain (see models/MODEL_CARD.md).
     gate_threshold, gate_scalar, gate_min_probability : float
+    segment_weight : float
+        Context step (0-1): the non-ground class probabilities of a point in a planar raised
+        object (a roof candidate, :func:`workstation.ml.features.planar_segments`) become
+        ``(1 - w) * own + w * mean over the object``, so a roof decides as one object and
+        the few points the network calls canopy or car follow the rest (segment-based
+        classification, Vosselman et al. 2017); the ground probability is left to the gate.
+        0 switches it off.
+    gate_promote_probability, gate_promote_height : float
+        A point outside the band is still ground when the network gives ground at least
+        ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
+        provisional surface: the network repairs the surface where the morphological filter
+        cut into the terrain (ridges, embankments, steep edges).
     """
 
-    def __init__(self, model: str = "mlp", hidden=(64, 64), epochs: int = 40, batch: int = 2048,
+    def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
                  lr: float = 2e-3, patience: int = 5, time_budget_s: float = 3000.0,
                  n_estimators: int = 60, max_depth: int = 18, seed: int = 0, device: str = "auto",
                  feature_params: FeatureParams | None = None, tile_points: int = 3_000_000,
                  veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
-                 gate_min_probability: float = 0.02):
+                 gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
+                 gate_promote_height: float = 1.5, segment_weight: float = 0.8):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
         self.hidden = tuple(int(h) for h in hidden)
+        self.dropout = float(dropout)
+        self.weight_decay = float(weight_decay)
         self.epochs = int(epochs)
         self.batch = int(batch)
         self.lr = float(lr)
@@ -145,6 +188,9 @@ class PointClassifier:
         self.gate_threshold = float(gate_threshold)
         self.gate_scalar = float(gate_scalar)
         self.gate_min_probability = float(gate_min_probability)
+        self.gate_promote_probability = float(gate_promote_probability)
+        self.gate_promote_height = float(gate_promote_height)
+        self.segment_weight = float(segment_weight)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -248,10 +294,10 @@ class PointClassifier:
         if dev.type == "cpu":
             # a small MLP gains nothing from intra-op threads; on a busy machine they spin
             torch.set_num_threads(1)
-        net = build_mlp(X.shape[1], len(MODEL_CLASSES), self.hidden).to(dev)
+        net = build_mlp(X.shape[1], len(MODEL_CLASSES), self.hidden, self.dropout).to(dev)
         set_standardisation(net, X)
         net.to(dev)
-        opt = torch.optim.Adam(net.parameters(), lr=self.lr, weight_decay=1e-5)
+        opt = torch.optim.Adam(net.parameters(), lr=self.lr, weight_decay=self.weight_decay)
         sched = torch.optim.lr_scheduler.CosineAnnealingLR(opt, T_max=max(self.epochs, 1))
         lossf = torch.nn.CrossEntropyLoss()
         Xt = torch.from_numpy(X).to(dev)
@@ -352,9 +398,13 @@ class PointClassifier:
             sub = cloud if len(sel) == cloud.n else cloud[sel]
             F = self.features(sub)
             p = self.predict_proba_features(F)
+            if self.segment_weight > 0:
+                p = _segment_mean(p, planar_segments(sub, F, self.feature_params), self.segment_weight)
+            if len(sel) == cloud.n and core.all():  # one tile: no copies
+                return p, F[:, [_HAG_COL, _SLOPE_COL]]
             keep = core[sel]
             P[sel[keep]] = p[keep]
-            hag[sel[keep]] = F[keep][:, [_HAG_COL, _SLOPE_COL]]
+            hag[sel[keep]] = F[:, [_HAG_COL, _SLOPE_COL]][keep]
         return P, hag
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
@@ -369,6 +419,7 @@ class PointClassifier:
         if self.ground_gate:
             band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
             ground = band & (P[:, 0] >= self.gate_min_probability)
+            ground |= (P[:, 0] >= self.gate_promote_probability) & (np.abs(hag) <= self.gate_promote_height)
             rest = P[:, 1:]
             k2 = rest.argmax(axis=1) + 1
             c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
@@ -402,14 +453,17 @@ class PointClassifier:
     # -- persistence -------------------------------------------------------------------------
     def config(self) -> dict:
         """JSON-able constructor settings."""
-        return {"model": self.model, "hidden": list(self.hidden), "epochs": self.epochs, "batch": self.batch,
+        return {"model": self.model, "hidden": list(self.hidden), "dropout": self.dropout,
+                "weight_decay": self.weight_decay, "epochs": self.epochs, "batch": self.batch,
                 "lr": self.lr, "patience": self.patience, "time_budget_s": self.time_budget_s,
                 "n_estimators": self.n_estimators, "max_depth": self.max_depth, "seed": self.seed,
                 "device": self.device, "feature_params": self.feature_params.to_dict(),
                 "tile_points": self.tile_points, "veg_low_max": self.veg_low_max,
                 "veg_medium_max": self.veg_medium_max, "ignore_features": list(self.ignore_features),
                 "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
-                "gate_min_probability": self.gate_min_probability}
+                "gate_min_probability": self.gate_min_probability,
+                "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
+                "segment_weight": self.segment_weight}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""
@@ -459,7 +513,7 @@ class PointClassifier:
         self = cls(**cfg, feature_params=FeatureParams(**fp))
         from .model import build_mlp
 
-        net = build_mlp(len(FEATURE_NAMES), len(json.loads(payload["classes"])), self.hidden)
+        net = build_mlp(len(FEATURE_NAMES), len(json.loads(payload["classes"])), self.hidden, self.dropout)
         net.load_state_dict(payload["state_dict"])
         net.eval()
         self.net_ = net

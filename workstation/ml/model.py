@@ -81,7 +81,7 @@ def resolve_device(device: str = "auto"):
     return torch.device(device)
 
 
-def predict_logits(model, X: np.ndarray, device, batch: int = 262_144) -> np.ndarray:
+def predict_logits(model, X: np.ndarray, device, batch: int = 65_536) -> np.ndarray:
     """Softmax probabilities (m, c) float32 of feature rows, in batches, without gradients."""
     import torch
 

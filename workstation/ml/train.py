@@ -17,7 +17,7 @@ from .dataset import MODEL_CLASSES, build_tileset, load_dataset_recipe
 
 log = get_logger(__name__)
 
-_TRAIN_KEYS = ("model", "hidden", "epochs", "batch", "lr", "patience", "time_budget_s", "n_estimators",
+_TRAIN_KEYS = ("model", "hidden", "dropout", "weight_decay", "epochs", "batch", "lr", "patience", "time_budget_s", "n_estimators",
                "max_depth", "seed", "device", "ignore_features")
 
 

@@ -5,7 +5,10 @@ fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused
 
 - ``cuda``: COLMAP PatchMatch stereo (Schönberger et al., *Pixelwise View Selection for
   Unstructured Multi-View Stereo*, ECCV 2016) through ``pycolmap.patch_match_stereo``; needs a
-  CUDA build of pycolmap (``pycolmap.has_cuda``).
+  CUDA build of pycolmap (``pycolmap.has_cuda``). Geometric consistency is on, so it writes
+  the same ``*.geometric.bin`` maps the CPU path writes; source views come from
+  ``stereo/patch-match.cfg`` (COLMAP's ``__auto__, 20`` for an SfM model; for a model without
+  sparse points, e.g. true rig cameras, the CPU path's selection and ``depth_range``).
 - ``cpu``: our plane-sweep stereo (Collins, *A space-sweep approach to true multi-image
   matching*, CVPR 1996; Gallup et al., *Real-time plane-sweeping stereo with multiple sweeping
   directions*, CVPR 2007): for each reference image, fronto-parallel planes uniformly spaced in
@@ -18,7 +21,10 @@ fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused
   agree with at least ``min_consistent`` source depth maps. Normals come from the depth map's
   local plane (cross product of back-projected neighbours).
 
-Memory is bounded by the image size: a handful of float32 arrays of one image at a time.
+Memory is bounded by the image size: the sweep holds a handful of float32 arrays of one
+reference image and its sources at a time, and fusion reads the maps through COLMAP's cached
+workspace (``fusion_cache_gb``) instead of loading all of them, so the image count adds only
+the fused points.
 
 Depth and normal maps use COLMAP's array format: a text header ``width&height&channels&``
 followed by float32 data in column-major (width, height, channels) order (COLMAP's
@@ -85,6 +91,10 @@ class DenseParams:
     fusion_min_pixels : int
         ``StereoFusionOptions.min_num_pixels``: pixels (in different images) that must agree
         for a fused point; itself a multi-view consistency check.
+    fusion_cache_gb : float
+        Fusion keeps at most this many GB of images, depth and normal maps in memory (COLMAP's
+        cached workspace, least recently used out first); 0 loads every map at once (faster
+        for a few images, but memory grows with the image count).
     num_threads : int
         OpenCV / fusion threads (-1: all).
     """
@@ -104,6 +114,7 @@ class DenseParams:
     max_rel_depth: float = 0.01
     min_texture: float = 2.0
     fusion_min_pixels: int = 2
+    fusion_cache_gb: float = 1.0
     num_threads: int = -1
     depth_range: tuple | None = None
 
@@ -112,6 +123,8 @@ class DenseParams:
             raise InvalidInputError(f"device must be one of {DEVICES}", field="device")
         if self.window < 3 or self.window % 2 == 0:
             raise InvalidInputError("window must be an odd number ≥ 3", field="window")
+        if self.fusion_cache_gb < 0:
+            raise InvalidInputError("fusion_cache_gb must be ≥ 0 (0: no cache)", field="fusion_cache_gb")
         if self.num_sources < 1 or not 1 <= self.top_k <= self.num_sources:
             raise InvalidInputError("need num_sources ≥ 1 and 1 ≤ top_k ≤ num_sources", field="top_k")
 
@@ -441,9 +454,13 @@ def find_model(workdir) -> Path:
     raise InvalidInputError("no COLMAP model found", "give an SfM workdir (ws sfm -o WORKDIR) with sparse/0", path=w)
 
 
-def undistort(workdir, image_dir, max_image_size: int = -1, overwrite: bool = False) -> Path:
+def undistort(workdir, image_dir, max_image_size: int = -1, overwrite: bool = False, num_src_images: int = 20) -> Path:
     """Undistort the images of the workdir's model into ``WORKDIR/dense`` (COLMAP layout:
-    ``images/``, ``sparse/``, ``stereo/``) with ``pycolmap.undistort_images``."""
+    ``images/``, ``sparse/``, ``stereo/``) with ``pycolmap.undistort_images``.
+
+    ``num_src_images`` goes to ``stereo/patch-match.cfg`` (``__auto__, N``: COLMAP PatchMatch
+    picks the N images sharing most sparse points; 20 is COLMAP's command-line default).
+    """
     from workstation.interop.pycolmap import import_pycolmap
 
     pycolmap = import_pycolmap()
@@ -458,8 +475,74 @@ def undistort(workdir, image_dir, max_image_size: int = -1, overwrite: bool = Fa
         shutil.rmtree(out)
     opt = pycolmap.UndistortCameraOptions()
     opt.max_image_size = int(max_image_size)
-    pycolmap.undistort_images(str(out), str(find_model(workdir)), str(image_dir), undistort_options=opt)
+    pycolmap.undistort_images(str(out), str(find_model(workdir)), str(image_dir),
+                              num_patch_match_src_images=int(num_src_images), undistort_options=opt)
     return out
+
+
+def patch_match_options(params: DenseParams):
+    """``pycolmap.PatchMatchOptions`` for the CUDA path: geometric consistency on (so that
+    ``stereo_fusion`` reads ``*.geometric.bin`` as on the CPU path), the same image size, NCC
+    window and depth range as the CPU path; COLMAP's defaults for the rest."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    opt = import_pycolmap().PatchMatchOptions()
+    opt.geom_consistency = True
+    opt.max_image_size = int(params.max_image_size)
+    opt.window_radius = int(params.window // 2)
+    if params.depth_range is not None:
+        opt.depth_min, opt.depth_max = float(params.depth_range[0]), float(params.depth_range[1])
+    return opt
+
+
+def write_patch_match_config(dense_dir, views, sources) -> Path:
+    """Write ``stereo/patch-match.cfg`` naming the source images of every reference image
+    (COLMAP's format: the reference name on one line, its comma-separated sources on the next),
+    replacing the ``__auto__`` lines that need shared sparse points."""
+    path = Path(dense_dir) / "stereo" / "patch-match.cfg"
+    lines = []
+    for i in sorted(views):
+        if sources.get(i):
+            lines += [views[i].name, ", ".join(views[j].name for j in sources[i])]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def prepare_patch_match(dense_dir, params: DenseParams) -> dict[int, list[int]] | None:
+    """Make an undistorted workspace whose model has no sparse points (true rig cameras) ready
+    for COLMAP PatchMatch: source views chosen as on the CPU path and written to
+    ``stereo/patch-match.cfg``, and one overlap point per (image, source) pair in ``sparse/``
+    for fusion. Returns the sources by image id, or None when the model has points (COLMAP's
+    ``__auto__`` selection and depth ranges are then used as they are)."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    d = Path(dense_dir)
+    rec = import_pycolmap().Reconstruction(str(d / "sparse"))
+    if rec.num_points3D() > 0:
+        return None
+    if params.depth_range is None:
+        raise InvalidInputError("the model has no sparse points", "give a depth range (--depth-range NEAR FAR)",
+                                field="depth_range")
+    views, pts, _, obs = _load_views(rec, params.depth_range)
+    sources = select_sources(views, pts, obs, params)
+    _add_overlap_points(rec, views, sources, d / "sparse")
+    write_patch_match_config(d, views, sources)
+    return sources
+
+
+def _patch_match_cuda(dense_dir, params: DenseParams) -> dict:
+    """COLMAP PatchMatch stereo (CUDA) on an undistorted workspace, writing the same
+    ``stereo/{depth,normal}_maps/*.geometric.bin`` as :func:`compute_depth_maps`."""
+    from workstation.interop.pycolmap import import_pycolmap
+
+    d = Path(dense_dir)
+    prepare_patch_match(d, params)
+    import_pycolmap().patch_match_stereo(str(d), options=patch_match_options(params))
+    maps = sorted((d / "stereo" / "depth_maps").glob("*.geometric.bin"))
+    if not maps:
+        raise StageError("dense", "COLMAP PatchMatch wrote no geometric depth maps",
+                         "check stereo/patch-match.cfg and the depth range")
+    return {"depth_maps": len(maps)}
 
 
 def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
@@ -562,6 +645,9 @@ def fuse(dense_dir, params: DenseParams = DenseParams()):
     opt = pycolmap.StereoFusionOptions()
     opt.min_num_pixels = int(params.fusion_min_pixels)
     opt.num_threads = int(params.num_threads)
+    if params.fusion_cache_gb > 0:
+        opt.use_cache = True
+        opt.cache_size = float(params.fusion_cache_gb)
     out = d / "fused.ply"
     pycolmap.stereo_fusion(str(out), str(d), input_type="geometric", options=opt, output_type="PLY")
     if not out.exists():
@@ -592,9 +678,6 @@ def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), over
     summary : dict
         Device, timings (s), image count, points.
     """
-    from workstation.interop.pycolmap import import_pycolmap
-
-    pycolmap = import_pycolmap()
     workdir = Path(workdir)
     image_dir = Path(image_dir) if image_dir is not None else workdir / "images"
     if not image_dir.is_dir():
@@ -606,12 +689,7 @@ def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), over
     t["undistort"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if device == "cuda":
-        opt = pycolmap.PatchMatchOptions()
-        opt.geom_consistency = True
-        if params.max_image_size > 0:
-            opt.max_image_size = int(params.max_image_size)
-        pycolmap.patch_match_stereo(str(dense_dir), options=opt)
-        stats = {}
+        stats = _patch_match_cuda(dense_dir, params)
     else:
         stats = compute_depth_maps(dense_dir, params)
     t["depth_maps"] = time.perf_counter() - t0
@@ -665,11 +743,14 @@ __all__ = [
     "evaluate",
     "fuse",
     "geometric_filter",
+    "patch_match_options",
     "plane_sweep",
+    "prepare_patch_match",
     "read_array",
     "resolve_device",
     "run_dense",
     "select_sources",
     "undistort",
     "write_array",
+    "write_patch_match_config",
 ]

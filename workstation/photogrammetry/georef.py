@@ -21,6 +21,12 @@ residuals give the accuracy report:
 
 Points given by image observations are triangulated first by space intersection from the
 oriented images of the reconstruction (:func:`~.collinearity.intersect`).
+
+When the reconstruction carries its tie-point tracks and at least 3 control points have ≥ 2
+image observations, the similarity is followed by a bundle adjustment with GCP constraints
+(:mod:`.bundle`): it removes the bends and scale drifts of the SfM model that a similarity
+cannot. Check points stay out of it too; the report then gives their RMSE after the
+adjustment (``check_*``) and with the similarity alone (``similarity_check_*``).
 """
 
 from __future__ import annotations
@@ -204,7 +210,11 @@ class GeorefResult:
         ``tables["points"]``: per-point residuals (name, role, dX, dY, dZ, dH, d3D, and the
         triangulation std and ray count when triangulated); ``notes``.
     reconstruction : Reconstruction or None
-        The input reconstruction moved into the survey frame.
+        The input reconstruction moved into the survey frame (and adjusted when the bundle
+        adjustment ran).
+    meta : mapping
+        ``adjustment``: "bundle" or "similarity"; ``bundle``: the adjustment's statistics
+        (:class:`.bundle.BundleResult` ``stats``) when it ran.
     """
 
     similarity: Similarity
@@ -213,12 +223,16 @@ class GeorefResult:
     meta: Mapping[str, Any] = field(default_factory=dict)
 
     def to_dict(self) -> dict:
-        return {
+        out = {
+            "adjustment": self.meta.get("adjustment", "similarity"),
             "similarity": self.similarity.to_dict(),
             "metrics": dict(self.report.metrics),
             "points": list(self.report.tables.get("points", [])),
             "notes": list(self.report.notes),
         }
+        if "bundle" in self.meta:
+            out["bundle"] = dict(self.meta["bundle"])
+        return out
 
 
 def _image_lookup(rec: Reconstruction) -> dict[str, Image]:
@@ -268,14 +282,72 @@ def triangulate_gcps(gcps: Sequence, rec: Reconstruction, sigma_px: float = 1.0)
 
 
 def transform_reconstruction(rec: Reconstruction, sim: Similarity, crs: str | None = None) -> Reconstruction:
-    """A new reconstruction with poses and points mapped by ``sim``."""
+    """A new reconstruction with poses and points mapped by ``sim`` (tracks carried over)."""
     images = {
         k: Image(im.name, im.camera_id, sim.apply_pose(im.pose), im.path) for k, im in rec.images.items()
     }
     pts = None if rec.points is None else sim.apply(rec.points)
     meta = dict(rec.meta)
     meta["georeference"] = sim.to_dict()
-    return Reconstruction(dict(rec.cameras), images, pts, rec.colors, crs if crs is not None else rec.crs, meta)
+    return Reconstruction(dict(rec.cameras), images, pts, rec.colors, crs if crs is not None else rec.crs, meta, rec.tracks)
+
+
+ADJUSTMENTS = ("auto", "similarity", "bundle")
+
+
+def _residual_rows(points: Sequence, positions: Mapping[str, np.ndarray], info: Mapping[str, dict], to_survey, scale: float) -> list[dict]:
+    rows = []
+    for g in points:
+        est = to_survey(positions[g.name][None])[0]
+        d = est - np.asarray(g.xyz)
+        row = {
+            "name": g.name,
+            "role": g.role,
+            "X": float(g.xyz[0]),
+            "Y": float(g.xyz[1]),
+            "Z": float(g.xyz[2]),
+            "dX": float(d[0]),
+            "dY": float(d[1]),
+            "dZ": float(d[2]),
+            "dH": float(np.hypot(d[0], d[1])),
+            "d3D": float(np.linalg.norm(d)),
+        }
+        if g.name in info:
+            row["rays"] = info[g.name]["rays"]
+            row["std_xyz"] = [scale * s for s in info[g.name]["std_model"]]
+            row["image_rms_px"] = info[g.name]["rms_px"]
+        rows.append(row)
+    return rows
+
+
+def _metrics(rows: list[dict], prefix_check: str = "check_") -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    ctrl = np.array([[r["dX"], r["dY"], r["dZ"]] for r in rows if r["role"] == "control"])
+    if len(ctrl):
+        c = accuracy_report(ctrl, np.zeros_like(ctrl))
+        out.update({f"control_{k}": c[k] for k in ("rmse_x", "rmse_y", "rmse_z", "rmse_h", "rmse_3d")})
+    chk = np.array([[r["dX"], r["dY"], r["dZ"]] for r in rows if r["role"] == "check"])
+    if len(chk):
+        out.update({f"{prefix_check}{k}": v for k, v in accuracy_report(chk, np.zeros_like(chk)).items()})
+    else:
+        out[f"{prefix_check}n"] = 0
+    return out
+
+
+def bundle_possible(gcps: Sequence, reconstruction: Reconstruction | None, info: Mapping[str, dict]) -> tuple[bool, str]:
+    """Whether :func:`georeference` can run the bundle adjustment, and why not.
+
+    It runs when the reconstruction carries tie-point tracks and at least 3 control points
+    were intersected from ≥ 2 image observations in its oriented images.
+    """
+    if reconstruction is None:
+        return False, "no reconstruction (control points given in model coordinates only)"
+    if reconstruction.tracks is None or reconstruction.points is None or len(reconstruction.tracks) == 0:
+        return False, "the reconstruction carries no tie-point observations (tracks)"
+    n = sum(1 for g in gcps if g.role == "control" and g.name in info)
+    if n < 3:
+        return False, f"only {n} control point(s) have ≥ 2 image observations in oriented images (3 needed)"
+    return True, ""
 
 
 def georeference(
@@ -283,18 +355,38 @@ def georeference(
     reconstruction: Reconstruction | None = None,
     sigma_px: float = 1.0,
     crs: str | None = None,
+    adjustment: str = "auto",
+    bundle: Any = None,
 ) -> GeorefResult:
-    """Fix the model -> survey similarity from control points and report check-point accuracy.
+    """Fix the model -> survey similarity from control points, refine by a bundle adjustment
+    with GCP constraints where the observations allow, and report check-point accuracy.
+
+    1. Every GCP with image observations is intersected in the model (space intersection);
+       control points fix the 7-parameter similarity (Umeyama 1991).
+    2. With ``adjustment`` "auto" or "bundle", and when :func:`bundle_possible` (tie-point
+       tracks in the reconstruction, ≥ 3 control points with ≥ 2 image observations), the
+       similarity-transformed model goes through :func:`.bundle.bundle_adjust`: poses, tie
+       points and control points (intrinsics with ``bundle.refine_intrinsics``) are refined
+       on the image observations and the control points' surveyed coordinates weighted by
+       their σ. Check points never enter it. Otherwise (or with "similarity") the similarity
+       alone georeferences the model, and a note says why.
+    3. Check points are intersected from the final images and compared with their survey
+       coordinates; with the bundle adjustment the similarity-only figures are kept as
+       ``similarity_check_*`` (before) beside ``check_*`` (after).
 
     Parameters
     ----------
     gcps : sequence of :class:`workstation.io.gcp.GCP`
     reconstruction : Reconstruction, optional
-        Needed for points given by image observations; returned transformed.
+        Needed for points given by image observations; returned transformed (and adjusted).
     sigma_px : float
-        A-priori image measurement precision for the intersections, pixels.
+        A-priori image measurement precision for the intersections and the adjustment, pixels.
     crs : str, optional
         CRS of the survey coordinates, recorded on the result.
+    adjustment : {"auto", "similarity", "bundle"}
+        "bundle" raises when the bundle adjustment cannot run.
+    bundle : BundleParams, optional
+        Options of the adjustment (``sigma_px`` is taken from the argument above).
 
     Returns
     -------
@@ -303,7 +395,8 @@ def georeference(
     Raises
     ------
     InvalidInputError
-        ≤ 2 usable control points (no similarity can be fixed), or collinear control points.
+        ≤ 2 usable control points (no similarity can be fixed), collinear control points, an
+        unknown ``adjustment``, or "bundle" asked where it cannot run.
 
     Examples
     --------
@@ -315,7 +408,15 @@ def georeference(
     >>> res = georeference(pts)
     >>> round(res.similarity.scale, 1), res.report.metrics["check_n"], res.report.metrics["check_rmse_3d"] < 0.1
     (20.0, 3, True)
+    >>> res.meta["adjustment"]
+    'similarity'
     """
+    import dataclasses
+
+    from .bundle import BundleParams, bundle_adjust
+
+    if adjustment not in ADJUSTMENTS:
+        raise InvalidInputError(f"adjustment {adjustment!r} is not one of {', '.join(ADJUSTMENTS)}", field="adjustment")
     if not gcps:
         raise InvalidInputError("no ground control points")
     positions, info, problems = triangulate_gcps(gcps, reconstruction, sigma_px) if reconstruction is not None else (
@@ -337,43 +438,48 @@ def georeference(
     src = np.array([positions[g.name] for g in control])
     dst = np.array([g.xyz for g in control])
     sim = fit_similarity(src, dst)
-    rows = []
-    for g in control + check:
-        est = sim.apply(positions[g.name][None])[0]
-        d = est - np.asarray(g.xyz)
-        row = {
-            "name": g.name,
-            "role": g.role,
-            "X": float(g.xyz[0]),
-            "Y": float(g.xyz[1]),
-            "Z": float(g.xyz[2]),
-            "dX": float(d[0]),
-            "dY": float(d[1]),
-            "dZ": float(d[2]),
-            "dH": float(np.hypot(d[0], d[1])),
-            "d3D": float(np.linalg.norm(d)),
-        }
-        if g.name in info:
-            row["rays"] = info[g.name]["rays"]
-            row["std_xyz"] = [sim.scale * s for s in info[g.name]["std_model"]]
-            row["image_rms_px"] = info[g.name]["rms_px"]
-        rows.append(row)
+    if not np.isfinite(sim.scale) or sim.scale <= 0:
+        raise StageError("georeference", "the similarity has a non-positive scale", "check the GCP names and coordinates")
+    rows = _residual_rows(control + check, positions, info, sim.apply, sim.scale)
     metrics: dict[str, Any] = {"control_n": len(control), "scale": sim.scale}
-    ctrl = np.array([[r["dX"], r["dY"], r["dZ"]] for r in rows if r["role"] == "control"])
-    c = accuracy_report(ctrl, np.zeros_like(ctrl))
-    metrics.update({f"control_{k}": c[k] for k in ("rmse_x", "rmse_y", "rmse_z", "rmse_h", "rmse_3d")})
-    if check:
-        chk = np.array([[r["dX"], r["dY"], r["dZ"]] for r in rows if r["role"] == "check"])
-        metrics.update({f"check_{k}": v for k, v in accuracy_report(chk, np.zeros_like(chk)).items()})
+    metrics.update(_metrics(rows))
+    rec_out = transform_reconstruction(reconstruction, sim, crs) if reconstruction is not None else None
+    meta: dict[str, Any] = {"adjustment": "similarity"}
+    ok, why = bundle_possible(gcps, reconstruction, info)
+    if adjustment == "bundle" and not ok:
+        raise InvalidInputError(f"the bundle adjustment cannot run: {why}", "use adjustment='similarity' (the default 'auto' falls back to it)")
+    if adjustment != "similarity" and ok:
+        bp = dataclasses.replace(bundle if bundle is not None else BundleParams(), sigma_px=sigma_px)
+        ba = bundle_adjust(rec_out, [g for g in control if g.name in info], bp)
+        pos2, info2, problems2 = triangulate_gcps(control + check, ba.reconstruction, sigma_px)
+        lost = [g for g in control + check if g.name not in pos2]
+        for g in lost:
+            notes.append(f"{g.name}: not intersected after the bundle adjustment ({problems2.get(g.name, '')}); similarity position kept")
+            pos2[g.name] = sim.apply(positions[g.name][None])[0]
+        sim_metrics = metrics
+        rows = _residual_rows(control + check, pos2, info2, lambda X: np.asarray(X, dtype=float), 1.0)
+        metrics = {"control_n": len(control), "scale": sim.scale}
+        metrics.update(_metrics(rows))
+        metrics.update({f"similarity_{k}": v for k, v in sim_metrics.items() if k.startswith(("check_rmse", "control_rmse"))})
+        meta = {"adjustment": "bundle", "bundle": dict(ba.stats)}
+        rec_out = ba.reconstruction
+        notes.append(
+            f"bundle adjustment with {ba.stats['control_points']} control points, {ba.stats['tie_points']} tie points and "
+            f"{ba.stats['free_images']} images: image RMS {ba.stats['rms_px_before']:.3f} -> {ba.stats['rms_px_after']:.3f} px"
+            + (
+                f"; check RMSE 3D {sim_metrics['check_rmse_3d']:.4g} (similarity) -> {metrics['check_rmse_3d']:.4g}"
+                if check else ""
+            )
+        )
+    elif adjustment == "similarity":
+        notes.append("similarity only (bundle adjustment not asked)")
     else:
-        metrics["check_n"] = 0
+        notes.append(f"similarity only: {why}")
+    if not check:
         notes.append(
             "no check points: the accuracy is unknown (control residuals measure the fit only); "
             "mark some surveyed points as role=check"
         )
     if len(check) and len(check) < 20:
         notes.append(f"{len(check)} check points: ASPRS (2014) asks for at least 20 for a formal accuracy statement")
-    rec_out = transform_reconstruction(reconstruction, sim, crs) if reconstruction is not None else None
-    if not np.isfinite(sim.scale) or sim.scale <= 0:
-        raise StageError("georeference", "the similarity has a non-positive scale", "check the GCP names and coordinates")
-    return GeorefResult(sim, QCReport(metrics=metrics, tables={"points": rows}, notes=tuple(notes)), rec_out)
+    return GeorefResult(sim, QCReport(metrics=metrics, tables={"points": rows}, notes=tuple(notes)), rec_out, meta)

@@ -67,6 +67,9 @@ class RigSpec:
         Grid overlaps (0-1).
     terrain_radius : float
         Terrain faces farther than this from the target centre (metres) are dropped.
+    context : bool
+        Also keep the scene's other objects (buildings, trees, cars...) within
+        ``terrain_radius``; by default only the target and the terrain are rendered.
     supersample : int
         Sub-pixel rays per pixel side.
     target : str
@@ -87,6 +90,7 @@ class RigSpec:
     forward_overlap: float = 0.8
     side_overlap: float = 0.6
     terrain_radius: float = 40.0
+    context: bool = False
     supersample: int = 2
     target: str = "heritage_church"
     seed: int = 0
@@ -121,7 +125,7 @@ class RigResult:
     extent : float
         Diagonal of the target's bounding box, metres (the scale of the accuracy goals).
     target_faces : (m,) bool
-        Faces of the target object (the rest is terrain around it).
+        Faces of the target object (the rest is terrain and, with ``context``, other objects).
     """
 
     folder: Path
@@ -267,7 +271,8 @@ def _target_scene(recipe, spec: RigSpec):
     tv = V[np.unique(scene.faces[tmask])]
     centre = np.r_[(tv.min(0)[:2] + tv.max(0)[:2]) / 2, tv[:, 2].min()]
     cen = V[scene.faces].mean(1)
-    keep = tmask | ((scene.object_id == 0) & (np.hypot(*(cen[:, :2] - centre[:2]).T) < spec.terrain_radius))
+    near = np.hypot(*(cen[:, :2] - centre[:2]).T) < spec.terrain_radius
+    keep = tmask | (near & ((scene.object_id == 0) | bool(spec.context)))
     faces = scene.faces[keep]
     used, inv = np.unique(faces, return_inverse=True)
     faces = inv.reshape(-1, 3).astype(np.int64)
@@ -381,20 +386,27 @@ def box_wall_scene() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return V, F, np.full((len(F), 3), 0.8)
 
 
-def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_px: float = 150.0) -> Reconstruction:
+def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_px: float = 150.0,
+                 dist=(0.0, 0.0, 0.0, 0.0, 0.0)) -> Reconstruction:
     """Render :func:`box_wall_scene` from ``n`` cameras on a 5 m baseline looking at the box into
     ``folder/images`` and write the true cameras as ``folder/sparse/0`` (a tiny rig for tests
-    and the demo; depth range 5-20 m)."""
+    and the demo; depth range 5-20 m). ``dist``: OpenCV (k1, k2, p1, p2, k3) applied to the
+    images (the model is then OPENCV)."""
     import cv2
 
+    from workstation.raster.synthetic_aerial import camera_rays
+
     V, F, alb = box_wall_scene()
-    cam = Camera(width, height, focal_px, focal_px, (width - 1) / 2, (height - 1) / 2)
+    d = tuple(float(x) for x in (list(dist) + [0.0] * 5)[:5])
+    cam = Camera(width, height, focal_px, focal_px, (width - 1) / 2, (height - 1) / 2, 0.0, d,
+                 "OPENCV" if any(d) else "PINHOLE")
+    rays = camera_rays(cam, 2)
     folder = Path(folder)
     (folder / "images").mkdir(parents=True, exist_ok=True)
     images = {}
     for k, x in enumerate(np.linspace(-2.5, 2.5, n), start=1):
         pose = look_at(np.array([x, 0.0, 0.5 * ((k - 1) % 2)]), np.array([0.0, 10.0, 0.0]))
-        cv2.imwrite(str(folder / "images" / f"im{k}.png"), render(V, F, alb, cam, pose, 2)[:, :, ::-1])
+        cv2.imwrite(str(folder / "images" / f"im{k}.png"), render(V, F, alb, cam, pose, 2, rays=rays)[:, :, ::-1])
         images[k] = Image(f"im{k}.png", 1, pose)
     rec = Reconstruction({1: cam}, images)
     write_colmap_text(rec, folder / "sparse" / "0")

@@ -352,6 +352,16 @@ def run_sfm(
         log.warning("disconnected model sparse/%d: %s", o["index"], ", ".join(o["images"]))
 
     rec = reconstruction_from_pycolmap(best, image_dir)
+    if not fixed:
+        spread = viewing_spread_deg(rec)
+        if spread < NADIR_BLOCK_SPREAD_DEG:
+            note = (
+                f"every camera looks within {spread:.1f} deg of one direction (a nadir-only block): "
+                "focal length and flying height are nearly inseparable when self-calibrating, so the "
+                "scale along the view may be wrong; give --camera CAMERA.json from a calibration"
+            )
+            log.warning(note)
+            summary_notes.append(note)
     cloud = cloud_from_reconstruction(rec)
     tl = rec.meta["track_lengths"]
     summary = {
@@ -371,6 +381,34 @@ def run_sfm(
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
+
+
+NADIR_BLOCK_SPREAD_DEG = 10.0  # optical axes all within this of their mean: parallel-axis block
+
+
+def viewing_spread_deg(rec) -> float:
+    """Largest angle (degrees) between a registered image's optical axis and the mean axis.
+
+    A block whose axes are all nearly parallel (a nadir-only aerial grid) cannot separate the
+    focal length from the object distance when the camera is self-calibrated (the textbook
+    reason for oblique images or a calibrated camera in aerial blocks).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from workstation.core.products import Image, Pose, Reconstruction
+    >>> tilt = np.deg2rad(4.0)
+    >>> R2 = np.array([[1, 0, 0], [0, np.cos(tilt), -np.sin(tilt)], [0, np.sin(tilt), np.cos(tilt)]])
+    >>> imgs = {1: Image("a", 1, Pose(np.eye(3), np.zeros(3))), 2: Image("b", 1, Pose(R2, np.zeros(3)))}
+    >>> round(viewing_spread_deg(Reconstruction(cameras={}, images=imgs)), 1)
+    2.0
+    """
+    axes = np.array([np.asarray(im.pose.R)[2] for im in rec.images.values() if im.pose is not None])
+    if len(axes) < 2:
+        return 0.0
+    mean = axes.mean(axis=0)
+    mean /= np.linalg.norm(mean)
+    return float(np.degrees(np.arccos(np.clip(axes @ mean, -1.0, 1.0)).max()))
 
 
 def _principal_point_drift(rec) -> float:

@@ -7,20 +7,52 @@ from __future__ import annotations
 
 import numpy as np
 
-from workstation.core.products import Camera, Image, Reconstruction
+from workstation.core.errors import InvalidInputError
+from workstation.core.products import Camera, Image, Pose, Reconstruction, Tracks
 
 from .collinearity import intersect, pose_from_opk, project
 from .georef import Similarity
 
 
-def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
-    """A random camera looking at a 3-D control field (a calibration cage as deep as it is wide,
-    filling 80 % of the frame), all points in view.
+def dlt_case(
+    rng: np.random.Generator,
+    noise_px: float = 0.1,
+    n: int = 20,
+    layout: str = "frame",
+    focal_range: tuple[float, float] = (2500.0, 3500.0),
+    depth_range: float = 0.4,
+):
+    """A random camera looking at a 3-D control field, all points in view.
+
+    Layouts:
+
+    * ``"frame"`` — a textbook calibration control frame: the image is divided into a grid of
+      about ``n`` cells over its central 90 %, one point per cell (jittered inside it), and
+      the points' depths are stratified over ``distance · (1 ± depth_range)`` in random
+      order, so near and far points are interleaved across the whole frame.
+    * ``"random"`` — points drawn uniformly in a cube as deep as it is wide that fills 80 %
+      of the frame (keeping those in view); 20 random points often leave parts of the image
+      or of the depth range empty.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+    noise_px : float
+        Gaussian noise per pixel coordinate.
+    n : int
+        Number of control points.
+    layout : {"frame", "random"}
+    focal_range : (float, float)
+        Focal length drawn uniformly in this range, pixels (the image is 4000 px wide:
+        2500–3500 px is a 77°–60° horizontal field of view, 22–31 mm in 35 mm terms).
+    depth_range : float
+        Half depth extent of the "frame" layout, relative to the object distance.
 
     Returns
     -------
     camera : Camera
-        The true camera (4000 × 3000 px, f 2500–4500 px, principal point within 40 px of centre).
+        The true camera (4000 × 3000 px, fy = fx · U(0.995, 1.005), principal point within
+        40 px of centre).
     pose : Pose
         The true pose.
     X : (n, 3) float
@@ -30,25 +62,54 @@ def dlt_case(rng: np.random.Generator, noise_px: float = 0.1, n: int = 20):
     distance : float
         Object distance, metres.
     """
+    if layout not in ("frame", "random"):
+        raise InvalidInputError(f"layout must be 'frame' or 'random', got {layout!r}")
     w, h = 4000, 3000
-    f = rng.uniform(2500, 4500)
+    f = rng.uniform(*focal_range)
     cam = Camera(w, h, f, f * rng.uniform(0.995, 1.005), w / 2 + rng.uniform(-40, 40), h / 2 + rng.uniform(-40, 40))
     dist = rng.uniform(20, 60)
     width = dist * w / f * 0.8
     om, ph, ka = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-np.pi, np.pi)
     C = np.array([0.0, 0.0, dist]) + rng.normal(0, 0.5, 3)
     pose = pose_from_opk(om, ph, ka, C)
-    kept = np.empty((0, 3))
-    while kept.shape[0] < n:
-        X = np.column_stack(
-            [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
-        )
-        uv, z = project(X, cam, pose, return_depth=True)
-        ok = (z > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
-        kept = np.vstack([kept, X[ok]])
-    X = kept[:n]
+    if layout == "frame":
+        nx = int(np.ceil(np.sqrt(n * w / h)))
+        ny = int(np.ceil(n / nx))
+        cells = rng.permutation(nx * ny)[:n]
+        ix, iy = cells % nx, cells // nx
+        fill = 0.9
+        u = (0.5 - fill / 2 + fill * (ix + rng.uniform(0, 1, n)) / nx) * w
+        v = (0.5 - fill / 2 + fill * (iy + rng.uniform(0, 1, n)) / ny) * h
+        z = dist * (1 + depth_range * (2 * (rng.permutation(n) + rng.uniform(0, 1, n)) / n - 1))
+        rays = np.column_stack([(u - cam.cx) / cam.fx, (v - cam.cy) / cam.fy, np.ones(n)])
+        X = (rays * z[:, None]) @ np.asarray(pose.R) + pose.center
+    else:
+        kept = np.empty((0, 3))
+        while kept.shape[0] < n:
+            Xr = np.column_stack(
+                [rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-width / 2, width / 2, 4 * n), rng.uniform(-0.5, 0.5, 4 * n) * width]
+            )
+            uv, zc = project(Xr, cam, pose, return_depth=True)
+            ok = (zc > 0) & np.all((uv >= 0) & (uv < [w, h]), axis=1)
+            kept = np.vstack([kept, Xr[ok]])
+        X = kept[:n]
     uv = project(X, cam, pose)
     return cam, pose, X, uv + rng.normal(0, noise_px, uv.shape), dist
+
+
+def _warp(X: np.ndarray, centre: np.ndarray, half: float, bend: float, scale_drift: float):
+    """A smooth deformation of survey coordinates and its Jacobian: a scale that drifts along x
+    (local scale ``1 + scale_drift · x / half``) and a dome that lowers points by
+    ``bend · (r / half)²`` at horizontal distance r from ``centre``."""
+    q = np.asarray(X, dtype=float) - centre
+    out = np.asarray(X, dtype=float).copy()
+    out[:, 0] += scale_drift * q[:, 0] ** 2 / (2 * half)
+    out[:, 2] -= bend * (q[:, 0] ** 2 + q[:, 1] ** 2) / half**2
+    J = np.repeat(np.eye(3)[None], q.shape[0], axis=0)
+    J[:, 0, 0] += scale_drift * q[:, 0] / half
+    J[:, 2, 0] -= 2 * bend * q[:, 0] / half**2
+    J[:, 2, 1] -= 2 * bend * q[:, 1] / half**2
+    return out, J
 
 
 def gcp_scene(
@@ -57,6 +118,10 @@ def gcp_scene(
     n_control: int = 6,
     n_check: int = 12,
     flying_height: float = 120.0,
+    n_tie: int = 0,
+    bend: float = 0.0,
+    scale_drift: float = 0.0,
+    gcp_sigma: float | None = None,
 ):
     """An aerial block in a local model frame, with surveyed GCPs observed in its images.
 
@@ -65,15 +130,24 @@ def gcp_scene(
     1/25, rotated, shifted from the survey frame, as SfM would return it). Each GCP is observed
     in every image that sees it, with Gaussian pixel noise ``noise_px``.
 
+    With ``n_tie`` > 0 the reconstruction also carries that many tie points with their tracks
+    (observed in every image that sees them, same noise). ``bend`` and ``scale_drift`` deform
+    the SfM model the way a self-calibrated block often is: camera centres and tie points are
+    moved by a dome of ``bend`` metres at the block's half-width and a scale drifting by
+    ``scale_drift`` (relative) across it, and each camera is turned by the local rotation of
+    that deformation (so the model stays nearly self-consistent). The image observations are
+    always the true projections plus noise.
+
     Returns
     -------
     reconstruction : Reconstruction
-        Oriented images in the model frame (exact poses).
+        Oriented images in the model frame (exact poses unless deformed).
     gcps : list of GCP
-        Survey coordinates (UTM-like, metres), role control/check, image observations.
+        Survey coordinates (UTM-like, metres), role control/check, image observations, σ
+        ``gcp_sigma`` (None: not given).
     expected : dict
         ``rmse_h`` and ``rmse_z`` the check points should show from the image noise alone
-        (root mean of the intersection variances, metres).
+        (root mean of the intersection variances with exact poses, metres).
     """
     from workstation.io.gcp import GCP
 
@@ -99,7 +173,15 @@ def gcp_scene(
     to_model = Similarity(1 / 25.0, Rm, -Rm @ (origin + [60, 40, 0]) / 25.0)
     cams = {1: cam}
     images = {}
+    centre = origin + [0.4 * foot_x, 0.4 * foot_y, 0.0]
+    half = 0.5 * max(hi - lo)
+    deformed = bend != 0 or scale_drift != 0
     for k, p in enumerate(poses_w, 1):
+        if deformed:
+            Cw, J = _warp(p.center[None], centre, half, bend, scale_drift)
+            U, _, Vt = np.linalg.svd(J[0])
+            Rd = p.R @ (U @ Vt).T
+            p = Pose(Rd, -Rd @ Cw[0])
         images[k] = Image(f"IMG_{k:04d}.JPG", 1, to_model.apply_pose(p))
     rec = Reconstruction(cams, images, to_model.apply(Xw), None, None, {"synthetic": True})
     gcps = []
@@ -115,11 +197,27 @@ def gcp_scene(
                 cs.append(cam)
                 ps.append(p)
         role = "control" if i < n_control else "check"
-        gcps.append(GCP(f"{'GCP' if role == 'control' else 'CHK'}{i + 1:02d}", Xw[i], role, None, tuple(obs)))
+        gcps.append(GCP(f"{'GCP' if role == 'control' else 'CHK'}{i + 1:02d}", Xw[i], role, gcp_sigma, tuple(obs)))
         if role == "check" and len(obs) >= 2:
             uv_exact = np.vstack([project(Xw[i : i + 1], c, q) for c, q in zip(cs, ps)])
             res = intersect(uv_exact, cs, ps, sigma_px=noise_px, a_posteriori=False)
             var_h.append(res.covariance[0, 0] + res.covariance[1, 1])
             var_z.append(res.covariance[2, 2])
     expected = {"rmse_h": float(np.sqrt(np.mean(var_h))), "rmse_z": float(np.sqrt(np.mean(var_z)))}
+    if n_tie > 0:
+        txy = rng.uniform(lo, hi, (n_tie, 2))
+        tz = origin[2] + 5 * np.sin(txy[:, 0] / 40.0) * np.cos(txy[:, 1] / 55.0) + rng.uniform(0, 3, n_tie)
+        Tw = np.column_stack([txy, tz])
+        t_pt, t_img, t_uv = [], [], []
+        for k, p in enumerate(poses_w, 1):
+            uv, d = project(Tw, cam, p, return_depth=True)
+            ok = np.flatnonzero((d > 0) & np.all((uv >= 0) & (uv < [cam.width, cam.height]), axis=1))
+            t_pt.append(ok)
+            t_img.append(np.full(ok.shape[0], k))
+            t_uv.append(uv[ok] + rng.normal(0, noise_px, (ok.shape[0], 2)))
+        Tm = _warp(Tw, centre, half, bend, scale_drift)[0] if deformed else Tw
+        rec = Reconstruction(
+            cams, images, to_model.apply(Tm), None, None, {"synthetic": True},
+            Tracks(np.concatenate(t_pt), np.concatenate(t_img), np.vstack(t_uv)),
+        )
     return rec, gcps, expected

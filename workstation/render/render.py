@@ -25,7 +25,7 @@ from workstation.core.products import Camera, Mesh, Pose, Reconstruction
 log = get_logger(__name__)
 
 VIEWS = ("top", "front", "iso")
-NAMED_COLORS = ("auto", "rgb", "class", "classification", "elevation", "intensity", "hag", "uniform")
+NAMED_COLORS = ("auto", "texture", "rgb", "class", "classification", "elevation", "intensity", "hag", "uniform")
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,8 @@ class RenderParams:
     size : (int, int)
         Image width and height in pixels.
     color : str
-        ``auto`` (rgb, else classification, else elevation), ``rgb``, ``class``,
+        ``auto`` (a mesh's texture, else rgb, else classification, else elevation),
+        ``texture`` (a textured mesh's image, unlit), ``rgb``, ``class``,
         ``elevation``, ``intensity``, ``hag``, ``uniform`` or the name of any attribute.
     view : {"top", "front", "iso"}
         Ignored when a camera is given.
@@ -108,6 +109,13 @@ def _scalar_colors(obj, params: RenderParams):
     attrs = obj.attrs if isinstance(obj, Cloud) else obj.vertex_attrs
     xyz = obj.xyz if isinstance(obj, Cloud) else obj.vertices
     c = params.color
+    textured = isinstance(obj, Mesh) and "uv" in attrs and obj.meta.get("texture") is not None
+    if c == "texture" and not textured:
+        raise InvalidInputError("the mesh has no texture", "use --color rgb or elevation", field="texture")
+    if c == "auto" and textured:
+        c = "texture"
+    if c == "texture":
+        return c, None, None, None
     if c == "auto":
         if "rgb" in attrs:
             c = "rgb"
@@ -319,7 +327,13 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
             kw.update(style="points", point_size=_point_size(params, lo, hi, n_points, size), render_points_as_spheres=False)
         else:
             kw.update(smooth_shading=True)
-        if rgb is not None:
+        if kind == "texture":
+            poly.active_texture_coordinates = np.asarray(obj.vertex_attrs["uv"], dtype=np.float32)
+            tex = pv.Texture(np.ascontiguousarray(np.asarray(obj.meta["texture"], dtype=np.uint8)[:, :, :3]))
+            tex.interpolate = True
+            # the photos' own shading is in the texture: draw it unlit, as seen
+            pl.add_mesh(poly, texture=tex, **{**kw, "lighting": False, "smooth_shading": False})
+        elif rgb is not None:
             if kind == "class-face":
                 poly.cell_data["_rgb"] = rgb
             else:
@@ -365,6 +379,19 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     return np.ascontiguousarray(img[:, :, :3])
 
 
+def find_image(rec: Reconstruction, ref) -> int:
+    """Id of the image of ``rec`` named ``ref`` (file name, or its stem), or with id ``ref``."""
+    s = str(ref)
+    for iid, im in rec.images.items():
+        if s in (im.name, im.name.rsplit("/", 1)[-1], im.name.rsplit("/", 1)[-1].rsplit(".", 1)[0]):
+            return int(iid)
+    if s.isdigit() and int(s) in rec.images:
+        return int(s)
+    names = ", ".join(im.name for im in list(rec.images.values())[:10])
+    raise InvalidInputError(f"no image '{s}' in the reconstruction", f"give a name or id, e.g. {names}",
+                            field="camera")
+
+
 def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pose]:
     """The (Camera, Pose) of one oriented image of a reconstruction, for ``render(camera=...)``.
 
@@ -377,7 +404,11 @@ def reconstruction_view(rec: Reconstruction, image_id: int) -> tuple[Camera, Pos
     im = rec.images[image_id]
     if im.camera_id not in rec.cameras:
         raise InvalidInputError(f"camera {im.camera_id} of image {image_id} is missing", field="cameras")
-    return rec.cameras[im.camera_id], im.pose
+    cam = rec.cameras[im.camera_id]
+    if any(abs(float(d)) > 0 for d in cam.dist):
+        log.warning("camera %d has lens distortion: the render is the ideal pinhole image "
+                    "(compare it with the undistorted photo)", im.camera_id)
+    return cam, im.pose
 
 
 def turntable(obj, params: RenderParams = RenderParams(), frames: int = 36, elevation_deg: float = 25.0):

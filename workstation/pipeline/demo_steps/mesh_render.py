@@ -1,4 +1,5 @@
-"""Demo step of meshing and rendering: renders of the demo clouds, a terrain mesh, the HTML report."""
+"""Demo step of meshing and rendering: renders of the demo clouds, a terrain mesh, a mesh of the
+dense rig cloud textured from its photos, the HTML report."""
 
 from __future__ import annotations
 
@@ -63,7 +64,36 @@ def step(ctx) -> dict:
     made.update({"terrain_mesh": mesh_path, "terrain_mesh_summary": summary_path,
                  "render_terrain_mesh": ctx.outdir / "render_terrain_mesh.png"})
     ctx.summaries["mesh_render"] = {"faces": res.mesh.n_faces, "rms_to_cloud": res.quality["cloud_to_mesh"]["rms"]}
+    made.update(_textured_rig_mesh(ctx))
     report = ctx.outdir / "report.html"
     write_report(ctx.outdir, report, overwrite=True, params=ReportParams(render_size=(400, 300), max_points=200_000))
     made["report"] = report
     return made
+
+
+def _textured_rig_mesh(ctx) -> dict:
+    """Screened Poisson mesh of the dense step's cloud (box and wall), textured from the rig's
+    oriented photos: ``ws mesh dense_box.ply --reconstruction dense_rig -o textured_box.obj``."""
+    from workstation.io import read_cloud
+    from workstation.io.mesh import write_mesh
+    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
+                                  TextureParams, mesh_cloud)
+    from workstation.raster.ortho import read_reconstruction
+
+    dense = ctx.products.get("dense_ply")
+    work = ctx.outdir / "dense_rig"
+    if dense is None or not Path(dense).exists() or not (work / "sparse" / "0").is_dir():
+        return {}
+    cloud = read_cloud(dense)
+    rec = read_reconstruction(work, work / "images")
+    res = mesh_cloud(cloud, MeshChainParams(method="poisson", normals=NormalParams(k=12),
+                                            poisson=PoissonParams(depth=7, trim_quantile=0.1),
+                                            clean=CleanParams(min_piece_fraction=0.1),
+                                            decimate=DecimateParams(target_faces=6000), quality=None,
+                                            texture=TextureParams(max_texture_size=1024)),
+                     viewpoints=rec, reconstruction=rec)
+    out = ctx.outdir / "textured_box.obj"
+    write_mesh(res.mesh, out, overwrite=True)
+    tex = next(s for s in res.steps if s.name == "texture")
+    ctx.summaries["textured_mesh"] = {"faces": res.mesh.n_faces, **tex.summary}
+    return {"textured_mesh": out}

@@ -1,0 +1,77 @@
+"""Neighbourhood and object-level features: float32 kNN moments and raised-object areas."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from workstation.core.cloud import Cloud
+from workstation.ml.features import (
+    FEATURE_NAMES,
+    FeatureParams,
+    _eigen,
+    compute_features,
+)
+
+
+def test_knn_eigen_features_match_numpy_covariance():
+    rng = np.random.default_rng(4)
+    pts = rng.uniform(0, 20, (3000, 3)) * [1, 1, 0.3] + [700.0, 300.0, 50.0]
+    out, _ = _eigen(pts[:200], pts, 12, 1)
+    from scipy.spatial import cKDTree
+
+    _, j = cKDTree(pts).query(pts[:200], k=12)
+    for q in range(0, 200, 23):
+        w, v = np.linalg.eigh(np.cov(pts[j[q]].T, bias=True))
+        l3, l2, l1 = w
+        assert abs(out[q, 1] - (l2 - l3) / l1) < 1e-3  # planarity
+        assert abs(out[q, 4] - abs(v[2, 0])) < 1e-3  # |n_z| of the smallest eigenvector
+
+
+def _roof_and_car_scene(seed=0):
+    """Flat ground, a 12 x 12 m flat roof 4 m up and a 2 x 4.5 m car 1.5 m up, 8 pts/m²."""
+    rng = np.random.default_rng(seed)
+    xy = rng.uniform(0, 60, (int(60 * 60 * 8), 2))
+    z = 100.0 + rng.normal(0, 0.02, len(xy))
+    roof = (np.abs(xy[:, 0] - 20) < 6) & (np.abs(xy[:, 1] - 30) < 6)
+    car = (np.abs(xy[:, 0] - 45) < 1.0) & (np.abs(xy[:, 1] - 30) < 2.25)
+    z[roof] += 4.0
+    z[car] += 1.5
+    return Cloud(np.column_stack([xy, z])), roof, car
+
+
+def test_object_areas_tell_a_house_from_a_car():
+    c, roof, car = _roof_and_car_scene()
+    F = compute_features(c, FeatureParams(ground_window=20.0))
+    area = np.expm1(F[:, FEATURE_NAMES.index("planar_area")])
+    raised = np.expm1(F[:, FEATURE_NAMES.index("elev_area")])
+    ground = ~roof & ~car
+    # the roof's footprint is 144 m² (cells at its border add a little), the car's 9 m²
+    assert 110 < np.median(area[roof]) < 200
+    assert np.median(raised[car]) < 25
+    assert np.median(area[car]) < 25
+    assert (raised[ground] == 0).mean() > 0.95
+
+
+def test_planar_segments_group_a_roof_and_the_context_step_follows_them():
+    from workstation.ml.classifier import _segment_mean
+    from workstation.ml.features import planar_segments
+
+    c, roof, car = _roof_and_car_scene(1)
+    fp = FeatureParams(ground_window=20.0)
+    F = compute_features(c, fp)
+    lab = planar_segments(c, F, fp)
+    roof_labels, counts = np.unique(lab[roof], return_counts=True)
+    main = roof_labels[counts.argmax()]
+    assert main > 0 and counts.max() > 0.9 * roof.sum()  # one object holds the roof
+    assert not np.isin(lab[car], [main]).any()  # the car is not part of it
+    assert (lab[~roof & ~car] == 0).mean() > 0.95
+    # a roof point the network calls vegetation follows its roof
+    P = np.zeros((c.n, 3), np.float32)
+    P[:, 0] = 1.0
+    P[roof] = [0.0, 1.0, 0.0]
+    odd = np.flatnonzero(roof & (lab == main))[0]
+    P[odd] = [0.0, 0.0, 1.0]
+    Q = _segment_mean(P, lab, 0.8)
+    assert Q[odd].argmax() == 1
+    np.testing.assert_allclose(Q.sum(axis=1), 1.0, atol=1e-6)
+    assert np.array_equal(Q[lab == 0], P[lab == 0])

@@ -1,0 +1,439 @@
+"""Texture a mesh from oriented photos: per-face view selection, a per-triangle atlas, resampling.
+
+MeshLab's own route (``compute_texcoord_parametrization_and_texture_from_registered_rasters``)
+needs rasters loaded with their cameras and an OpenGL context for its projections (the filter
+family that crashes headless, PyMeshLab #214), so the texture is built here with numpy and
+Open3D ray casting, and works on any machine:
+
+1. **View selection per face** (Allène, Pons & Keriven, "Seamless image-based texture atlases
+   using multi-band blending", ICPR 2008; Waechter, Moehrle & Goesele, "Let there be color!",
+   ECCV 2014, without their MRF smoothing term): a view is a candidate for a face when the
+   face lies wholly inside the image, faces the camera (cosine of the viewing angle above
+   ``min_cos``) and is visible: rays from the camera centre to the face centroid and to three
+   points near its corners reach the face before any other surface (Open3D
+   ``RaycastingScene``). Among the candidates the face takes the ``max_views`` with the
+   largest projected area in pixels (closest and most frontal views, sharpest texture).
+2. **Atlas**: each pair of triangles shares a square cell of the texture, each triangle
+   mapped affinely onto one half as a right isosceles triangle (MeshLab's "trivial per-triangle
+   parametrization"), with the longest edge on the hypotenuse and one texel of separation so
+   bilinear filtering never mixes two faces. Cell sides are powers of two chosen from the
+   face's size and a texel size (metres per texel; by default the median ground sample
+   distance of the chosen views, so the texture holds what the photos resolve), within a
+   texture-size budget; cells are shelf-packed class by class.
+3. **Resampling**: every texel centre is mapped back to its 3-D point on the face
+   (barycentric coordinates) and projected into the face's views with the collinearity
+   equations and lens distortion (the same projection as ``ws colorize`` and the orthophoto,
+   :func:`workstation.registration.colorize.project`), sampled bilinearly and blended with the
+   view weights.
+
+Faces seen by no photo get their vertex colours (or grey) and ``texture_view = -1``.
+The textured mesh has one vertex per face corner (``uv`` per vertex, as OBJ and glTF store
+texture coordinates) and its image in ``meta["texture"]`` (see :mod:`workstation.io.mesh`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.log import get_logger
+from workstation.core.products import Mesh, Reconstruction
+
+from .steps import StepRecord, Timer
+
+log = get_logger(__name__)
+STAGE = "texture"
+
+
+@dataclass(frozen=True)
+class TextureParams:
+    """Parameters of :func:`texture_from_photos`.
+
+    Attributes
+    ----------
+    texel_size : float or None
+        Size of one texel on the surface, in mesh (CRS) units; None = the median ground sample
+        distance (depth / focal length) of the faces' best views.
+    max_texture_size : int
+        Largest side of the texture image, pixels; the texel size grows until the atlas fits.
+    max_cell : int
+        Largest cell side for a pair of triangles, texels (a power of two, >= 4).
+    max_views : int
+        Views blended per face, weighted by their projected area (1 = the sharpest view only).
+    min_cos : float
+        Views seeing a face at a cosine of the viewing angle below this are not used.
+    border_px : float
+        Image margin, pixels, that a face must keep clear of.
+    depth_tolerance : float or None
+        How far, in mesh units, a ray may stop short of the face and still count it visible;
+        None = 5 % of the median edge length (plus 1e-4 of the distance for float32 ray casting).
+    fallback_rgb : (int, int, int)
+        Colour of faces seen by no photo when the mesh has no vertex colours (0-255).
+    """
+
+    texel_size: float | None = None
+    max_texture_size: int = 4096
+    max_cell: int = 64
+    max_views: int = 1
+    min_cos: float = 0.2
+    border_px: float = 2.0
+    depth_tolerance: float | None = None
+    fallback_rgb: tuple = (128, 128, 128)
+
+    def __post_init__(self):
+        if self.texel_size is not None and not self.texel_size > 0:
+            raise InvalidInputError("texel_size must be positive", field="texel_size")
+        if not 16 <= self.max_texture_size <= 32768:
+            raise InvalidInputError("max_texture_size must be in 16..32768 pixels", field="max_texture_size")
+        if self.max_cell < 4 or self.max_cell & (self.max_cell - 1):
+            raise InvalidInputError("max_cell must be a power of two >= 4", field="max_cell")
+        if self.max_views < 1:
+            raise InvalidInputError("max_views must be >= 1", field="max_views")
+        if not 0.0 <= self.min_cos < 1.0:
+            raise InvalidInputError("min_cos must be in [0, 1)", field="min_cos")
+
+
+# ------------------------------------------------------------------------------ view selection
+def _corner_order(tri: np.ndarray) -> np.ndarray:
+    """(m, 3) permutation of each face's corners: the corner opposite the longest edge first."""
+    e = np.stack([np.linalg.norm(tri[:, 1] - tri[:, 2], axis=1), np.linalg.norm(tri[:, 2] - tri[:, 0], axis=1),
+                  np.linalg.norm(tri[:, 0] - tri[:, 1], axis=1)], axis=1)  # edge opposite corner i
+    r = np.argmax(e, axis=1)
+    return np.stack([r, (r + 1) % 3, (r + 2) % 3], axis=1)
+
+
+def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams()):
+    """Best views of every face.
+
+    Returns
+    -------
+    views : (m, k) int64
+        Image ids, best first; -1 where fewer than k views see the face.
+    weights : (m, k) float64
+        Projected area of the face in each view, pixels² (0 where no view).
+    gsd : (m,) float64
+        Ground sample distance of the best view at the face (mesh units per pixel; NaN if none).
+    """
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.interop.pymeshlab import default_origin
+    from workstation.registration.colorize import project
+
+    V, F = mesh.vertices, mesh.faces
+    m = len(F)
+    k = int(params.max_views)
+    origin = default_origin(V)
+    tri = V[F]
+    cen = tri.mean(axis=1)
+    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    nlen = np.linalg.norm(nrm, axis=1)
+    nrm = nrm / np.maximum(nlen, 1e-300)[:, None]
+    edges = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2)
+    tol_abs = params.depth_tolerance if params.depth_tolerance is not None else 0.05 * float(np.median(edges))
+    # probe points: the centroid and three points 20 % of the way from each corner to it
+    probes = np.concatenate([cen[:, None], 0.8 * tri + 0.2 * cen[:, None]], axis=1)  # (m, 4, 3)
+    caster = RaycastScene(V - origin, F)
+    views = np.full((m, k), -1, dtype=np.int64)
+    weights = np.zeros((m, k))
+    gsd_slot = np.full((m, k), np.nan)
+    for iid, im in rec.images.items():
+        cam = rec.cameras[im.camera_id]
+        u, v, z = project(tri.reshape(-1, 3), cam, im.pose)
+        u, v, z = u.reshape(m, 3), v.reshape(m, 3), z.reshape(m, 3)
+        b = params.border_px
+        ok = ((z > 0) & (u >= b) & (u <= cam.width - 1 - b) & (v >= b) & (v <= cam.height - 1 - b)).all(axis=1)
+        C = np.asarray(im.pose.center, dtype=np.float64)
+        ray = C - cen
+        dist = np.linalg.norm(ray, axis=1)
+        cosang = np.abs(np.einsum("ij,ij->i", nrm, ray)) / np.maximum(dist, 1e-300)
+        ok &= (cosang >= params.min_cos) & (nlen > 0)
+        idx = np.flatnonzero(ok)
+        if idx.size == 0:
+            continue
+        p = probes[idx].reshape(-1, 3)
+        d = p - C
+        dl = np.linalg.norm(d, axis=1)
+        t, _ = caster.cast(np.broadcast_to(C - origin, d.shape), d / dl[:, None])
+        seen = (t >= dl - (tol_abs + 1e-4 * dl)).reshape(-1, 4).all(axis=1)
+        idx = idx[seen]
+        if idx.size == 0:
+            continue
+        area = 0.5 * np.abs((u[idx, 1] - u[idx, 0]) * (v[idx, 2] - v[idx, 0])
+                            - (u[idx, 2] - u[idx, 0]) * (v[idx, 1] - v[idx, 0]))
+        slot = np.argmin(weights[idx], axis=1)
+        better = area > weights[idx, slot]
+        j, s = idx[better], slot[better]
+        views[j, s] = iid
+        weights[j, s] = area[better]
+        gsd_slot[j, s] = z[j].mean(axis=1) / (0.5 * (cam.fx + cam.fy))
+    order = np.argsort(-weights, axis=1, kind="stable")
+    views = np.take_along_axis(views, order, axis=1)
+    weights = np.take_along_axis(weights, order, axis=1)
+    gsd = np.take_along_axis(gsd_slot, order, axis=1)[:, 0]
+    return views, weights, gsd
+
+
+# ------------------------------------------------------------------------------------- atlas
+@dataclass(frozen=True)
+class Atlas:
+    """A per-triangle atlas.
+
+    Attributes
+    ----------
+    width, height : int
+        Texture size, pixels.
+    cell : (m,) int64
+        Cell side of each face's pair, texels.
+    x0, y0 : (m,) int64
+        Upper-left texel of each face's cell (x right, y down).
+    half : (m,) int8
+        0: the face is the cell's lower-left half, 1: its upper-right half.
+    texel_size : float
+        Mesh units per texel used for the cell sizes.
+    """
+
+    width: int
+    height: int
+    cell: np.ndarray
+    x0: np.ndarray
+    y0: np.ndarray
+    half: np.ndarray
+    texel_size: float
+
+
+def _half_corners(c: np.ndarray, half: np.ndarray) -> np.ndarray:
+    """(m, 3, 2) texel coordinates (cell-local, pixel centres at +0.5) of the right-angle corner
+    and the two others, for cells of side ``c`` and halves ``half``.
+
+    The lower half covers texel centres with a + b <= c - 1 (hypotenuse x + y = c - 1), the
+    upper half a + b >= c (hypotenuse x + y = c + 2): bilinear lookups inside one half never
+    touch a texel of the other."""
+    c = c.astype(np.float64)
+    lower = np.stack([np.stack([np.full_like(c, 0.5), np.full_like(c, 0.5)], 1),
+                      np.stack([c - 1.5, np.full_like(c, 0.5)], 1),
+                      np.stack([np.full_like(c, 0.5), c - 1.5], 1)], axis=1)
+    upper = np.stack([np.stack([c - 0.5, c - 0.5], 1),
+                      np.stack([np.full_like(c, 2.5), c - 0.5], 1),
+                      np.stack([c - 0.5, np.full_like(c, 2.5)], 1)], axis=1)
+    return np.where((half == 1)[:, None, None], upper, lower)
+
+
+def _cell_sides(longest: np.ndarray, texel: float, max_cell: int) -> np.ndarray:
+    leg = longest / (math.sqrt(2.0) * texel)  # the longest edge lies on the hypotenuse
+    c = 2 ** np.ceil(np.log2(np.maximum(leg + 3.0, 4.0)))
+    return np.clip(c, 4, max_cell).astype(np.int64)
+
+
+def _pack(cell: np.ndarray, width: int):
+    """Shelf packing of square cells (two faces per cell, power-of-two sides), largest first.
+
+    Returns (x0, y0, half, height)."""
+    m = len(cell)
+    order = np.lexsort((np.arange(m), -cell))
+    x0 = np.zeros(m, np.int64)
+    y0 = np.zeros(m, np.int64)
+    half = np.zeros(m, np.int8)
+    y = 0
+    start = 0
+    for c in np.unique(cell)[::-1]:
+        n = int((cell == c).sum())
+        faces = order[start:start + n]
+        start += n
+        j = np.arange(n)
+        pair = j // 2
+        per_row = width // int(c)
+        x0[faces] = (pair % per_row) * c
+        y0[faces] = y + (pair // per_row) * c
+        half[faces] = (j % 2).astype(np.int8)
+        y += int(math.ceil(math.ceil(n / 2) / per_row)) * int(c)
+    return x0, y0, half, y
+
+
+def build_atlas(mesh: Mesh, texel_size: float, params: TextureParams = TextureParams()) -> Atlas:
+    """Cells and their places for every face, within the texture-size budget.
+
+    The texel size grows (by the square root of the overflow) until the packed atlas fits in
+    ``max_texture_size`` on both sides.
+    """
+    tri = mesh.vertices[mesh.faces]
+    longest = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
+    limit = int(params.max_texture_size)
+    texel = float(texel_size)
+    for _ in range(40):
+        cell = _cell_sides(longest, texel, params.max_cell)
+        area = float((cell.astype(np.float64) ** 2).sum() / 2.0)
+        width = int(min(limit, max(int(cell.max()), 2 ** math.ceil(math.log2(max(math.sqrt(area), 1.0))))))
+        x0, y0, half, height = _pack(cell, width)
+        if height <= limit:
+            height = max(4, int(math.ceil(height / 4.0)) * 4)
+            return Atlas(width, height, cell, x0, y0, half, texel)
+        if int(cell.max()) == 4:
+            break
+        texel *= max(1.05, math.sqrt(height / limit))
+    raise StageError(STAGE, f"{mesh.n_faces} faces do not fit a {limit} px texture at 4 texels per face pair",
+                     "raise the texture size or decimate the mesh (--target-faces)")
+
+
+def atlas_uv(mesh: Mesh, atlas: Atlas) -> np.ndarray:
+    """(m, 3, 2) texture coordinates of every face corner, in [0, 1], v up (OBJ/glTF)."""
+    order = _corner_order(mesh.vertices[mesh.faces])
+    loc = _half_corners(atlas.cell, atlas.half)  # corners in the order (right angle, p, q)
+    xy = np.empty((mesh.n_faces, 3, 2))
+    rows = np.arange(mesh.n_faces)[:, None]
+    xy[rows, order] = loc + np.stack([atlas.x0, atlas.y0], 1)[:, None, :]
+    uv = np.empty_like(xy)
+    uv[..., 0] = xy[..., 0] / atlas.width
+    uv[..., 1] = 1.0 - xy[..., 1] / atlas.height
+    return uv
+
+
+def _texels_of(cell_c: int, faces: np.ndarray, atlas: Atlas):
+    """Texels of the faces (all of side ``cell_c``): (face, x, y, barycentric (n, 3) in the
+    (right angle, p, q) corner order)."""
+    c = int(cell_c)
+    a, b = np.meshgrid(np.arange(c), np.arange(c), indexing="xy")
+    a, b = a.ravel(), b.ravel()
+    lower = a + b <= c - 1
+    out_f, out_x, out_y, out_w = [], [], [], []
+    for h, sel in ((0, lower), (1, ~lower)):
+        fs = faces[atlas.half[faces] == h]
+        if fs.size == 0:
+            continue
+        aa, bb = a[sel].astype(np.float64) + 0.5, b[sel].astype(np.float64) + 0.5
+        if h == 0:
+            beta, gamma = (aa - 0.5) / (c - 2), (bb - 0.5) / (c - 2)
+        else:
+            beta, gamma = (c - 0.5 - aa) / (c - 3), (c - 0.5 - bb) / (c - 3)
+        w = np.stack([1.0 - beta - gamma, beta, gamma], axis=1)
+        w = np.clip(w, 0.0, None)
+        w /= w.sum(axis=1, keepdims=True)
+        n = sel.sum()
+        out_f.append(np.repeat(fs, n))
+        out_x.append((atlas.x0[fs][:, None] + a[sel][None, :]).ravel())
+        out_y.append((atlas.y0[fs][:, None] + b[sel][None, :]).ravel())
+        out_w.append(np.tile(w, (fs.size, 1)))
+    return np.concatenate(out_f), np.concatenate(out_x), np.concatenate(out_y), np.concatenate(out_w)
+
+
+# ----------------------------------------------------------------------------------- texture
+def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), *,
+                        images: Mapping[int, np.ndarray] | None = None, image_root=None) -> tuple[Mesh, StepRecord]:
+    """Texture ``mesh`` from the oriented photos of ``rec`` (same frame and units).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    rec : Reconstruction
+        Cameras and oriented images.
+    params : TextureParams
+    images : mapping of image id to (h, w, 3) uint8 array, optional
+        Pixels of each image; read from ``Image.path`` (relative to ``image_root``) otherwise.
+    image_root : path, optional
+
+    Returns
+    -------
+    (Mesh, StepRecord)
+        One vertex per face corner with ``uv`` (3m, 2) float32 (v up), the input's ``normal``
+        and ``rgb`` carried per corner, ``face_attrs["texture_view"]`` (m,) int32 (best image
+        id, -1 unseen) and the texture (h, w, 3) uint8 in ``meta["texture"]``.
+    """
+    from workstation.registration.colorize import _load_image, bilinear, project
+
+    if mesh.n_faces == 0:
+        raise InvalidInputError("the mesh has no faces", field="faces")
+    if not rec.images:
+        raise InvalidInputError("the reconstruction has no oriented images", field="reconstruction")
+    with Timer() as t:
+        views, weights, gsd = select_views(mesh, rec, params)
+        seen = views[:, 0] >= 0
+        if not seen.any():
+            raise StageError(STAGE, "no face is seen whole by any photo",
+                             "check that the mesh and the reconstruction share one frame and unit")
+        texel = params.texel_size if params.texel_size is not None else float(np.nanmedian(gsd[seen]))
+        atlas = build_atlas(mesh, texel, params)
+        order = _corner_order(mesh.vertices[mesh.faces])
+        corners = np.take_along_axis(mesh.faces, order, axis=1)  # (right angle, p, q) vertex ids
+        tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float32)
+        tex_w = np.zeros((atlas.height, atlas.width), dtype=np.float32)
+        cache: dict[int, np.ndarray] = {}
+
+        def image(iid):
+            if iid not in cache:
+                im = rec.images[iid]
+                cam = rec.cameras[im.camera_id]
+                a = images[iid] if images is not None and iid in images else _load_image(im, image_root)
+                if a.shape[0] != cam.height or a.shape[1] != cam.width:
+                    raise InvalidInputError(f"image {im.name} is {a.shape[1]}x{a.shape[0]} but its camera says "
+                                            f"{cam.width}x{cam.height}", field="images")
+                if a.dtype != np.uint8:
+                    a = np.round(a.astype(np.float64) / 257.0).clip(0, 255).astype(np.uint8)
+                cache[iid] = a[:, :, :3]
+            return cache[iid]
+
+        chunk = 2_000_000
+        for c in np.unique(atlas.cell):
+            faces_c = np.flatnonzero((atlas.cell == c) & seen)
+            per = max(1, chunk // int(c * c))
+            for s0 in range(0, faces_c.size, per):
+                f, x, y, w = _texels_of(int(c), faces_c[s0:s0 + per], atlas)
+                P = np.einsum("nk,nkd->nd", w, mesh.vertices[corners[f]])
+                for slot in range(views.shape[1]):
+                    vid = views[f, slot]
+                    for iid in np.unique(vid[vid >= 0]):
+                        sel = np.flatnonzero(vid == iid)
+                        im = rec.images[int(iid)]
+                        cam = rec.cameras[im.camera_id]
+                        u, v, _ = project(P[sel], cam, im.pose)
+                        u = np.clip(u, 0, cam.width - 1)
+                        v = np.clip(v, 0, cam.height - 1)
+                        col = bilinear(image(int(iid)), u, v)[:, :3]
+                        wt = weights[f[sel], slot]
+                        # a texel belongs to one face: indices are unique within one call
+                        tex_w[y[sel], x[sel]] += wt
+                        tex[y[sel], x[sel]] += col * wt[:, None]
+        filled = tex_w > 0
+        tex[filled] /= tex_w[filled][:, None]
+        # faces no photo sees: their vertex colours, or the fallback colour
+        unseen = np.flatnonzero(~seen)
+        if unseen.size:
+            rgb = None
+            if "rgb" in mesh.vertex_attrs:
+                from workstation.interop.pymeshlab import rgb_to_u8
+
+                rgb = rgb_to_u8(np.asarray(mesh.vertex_attrs["rgb"])).astype(np.float64)
+            for c in np.unique(atlas.cell[unseen]):
+                f, x, y, w = _texels_of(int(c), unseen[atlas.cell[unseen] == c], atlas)
+                if rgb is not None:
+                    tex[y, x] = np.einsum("nk,nkd->nd", w, rgb[corners[f]])
+                else:
+                    tex[y, x] = np.asarray(params.fallback_rgb, dtype=np.float64)
+        texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
+        uv = atlas_uv(mesh, atlas).reshape(-1, 2).astype(np.float32)
+        wedge = mesh.faces.reshape(-1)
+        vattrs = {"uv": uv}
+        for name in ("normal", "rgb"):
+            if name in mesh.vertex_attrs:
+                vattrs[name] = np.asarray(mesh.vertex_attrs[name])[wedge]
+        fattrs = {k: np.asarray(a) for k, a in mesh.face_attrs.items()}
+        fattrs["texture_view"] = views[:, 0].astype(np.int32)
+        meta = dict(mesh.meta)
+        meta["texture"] = texture
+        out = Mesh(mesh.vertices[wedge], np.arange(3 * mesh.n_faces, dtype=np.int64).reshape(-1, 3), vattrs,
+                   fattrs, crs=mesh.crs, meta=meta)
+    area = mesh.face_areas()
+    rec_ = StepRecord(
+        STAGE,
+        {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
+         "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos},
+        t.seconds,
+        {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
+         "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
+         "area_textured_fraction": float(area[seen].sum() / max(area.sum(), 1e-300)),
+         "views_used": int(np.unique(views[seen, 0]).size)},
+    )
+    log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
+             int(seen.sum()), mesh.n_faces)
+    return out, rec_
