@@ -59,7 +59,7 @@ def test_isprs_auto_beats_smrf(isprs):
 @pytest.mark.slow
 def test_isprs_ptd(isprs):
     mean, errs = _mean_total(isprs, "ptd", ["samp21", "samp31", "samp42", "samp51"])
-    assert mean <= 0.055, errs
+    assert mean <= 0.032, errs
 
 
 @pytest.mark.realdata

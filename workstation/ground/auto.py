@@ -1,10 +1,13 @@
-"""``auto``: a majority vote of three complementary filters, one parameter set for all terrain.
+"""``auto``: a majority vote of five complementary filters, one parameter set for all terrain.
 
 Members: SMRF with a 30 m window (catches wide roofs), SMRF with a tighter elevation test
-(threshold 0.3 m, scalar 1.0; fewer low objects accepted) and PMF (square windows, a
-different failure mode on slopes). A point is ground when at least two say so. Measured on
-the six ISPRS samples (docs/benchmarks.md): the vote beats each member's mean total error,
-but does not reach the 2.7 % of per-sample tuned SMRF.
+(threshold 0.3 m, scalar 1.0; fewer low objects accepted), PMF (square windows, a different
+failure mode on slopes), CSF (a cloth: bridges objects, follows terraces) and PTD (a TIN grown
+from seeds: follows slopes and breaklines). A point is ground when at least three say so.
+Measured on the six ISPRS samples (docs/benchmarks.md): the vote beats each member's mean
+total error, but does not reach the 2.7 % of per-sample tuned SMRF. Tried and not better there
+(one parameter set): unanimous members refined by a slope-scaled TIN test, unanimous members
+as PTD seeds, a slope-adaptive switch between a 3-of-5 and a 5-of-5 vote.
 """
 
 from __future__ import annotations
@@ -17,7 +20,9 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .csf import CSFParams, csf_ground
 from .pmf import PMFParams, pmf_ground
+from .ptd import PTDParams, ptd_ground
 from .smrf import SMRFParams, smrf_ground
 
 STAGE = "ground.auto"
@@ -35,8 +40,12 @@ class AutoParams:
         Second member (slope 0.15, window 30 m, threshold 0.3 m, scalar 1.0).
     pmf : PMFParams
         Third member (PMF defaults).
+    csf : CSFParams
+        Fourth member (CSF defaults).
+    ptd : PTDParams
+        Fifth member (PTD defaults).
     min_votes : int
-        Votes needed for ground (2 of 3).
+        Votes needed for ground (3 of 5).
     reclassify, last_returns_only : bool
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
@@ -44,7 +53,9 @@ class AutoParams:
     smrf_wide: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0))
     smrf_tight: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0, threshold=0.3, scalar=1.0))
     pmf: PMFParams = field(default_factory=PMFParams)
-    min_votes: int = 2
+    csf: CSFParams = field(default_factory=CSFParams)
+    ptd: PTDParams = field(default_factory=PTDParams)
+    min_votes: int = 3
     reclassify: bool = False
     last_returns_only: bool = True
 
@@ -55,12 +66,13 @@ PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "
 def auto_ground(xyz: np.ndarray, p: AutoParams) -> np.ndarray:
     """Ground flags (m,) bool of local metric points by the majority vote."""
     votes = (smrf_ground(xyz, p.smrf_wide).astype(np.int8) + smrf_ground(xyz, p.smrf_tight).astype(np.int8)
-             + pmf_ground(xyz, p.pmf).astype(np.int8))
+             + pmf_ground(xyz, p.pmf).astype(np.int8) + csf_ground(xyz, p.csf).astype(np.int8)
+             + ptd_ground(xyz, p.ptd).astype(np.int8))
     return votes >= p.min_votes
 
 
 def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
-    """Classify ground by the ``auto`` vote (SMRF wide, SMRF tight, PMF).
+    """Classify ground by the ``auto`` vote (SMRF wide, SMRF tight, PMF, CSF, PTD).
 
     Returns
     -------

@@ -39,7 +39,7 @@ def _table() -> dict[str, Method]:
         "csf": Method("csf", csf.csf, csf.CSFParams, csf.PRESETS, "cloth simulation filter (Zhang et al. 2016)"),
         "pmf": Method("pmf", pmf.pmf, pmf.PMFParams, pmf.PRESETS, "progressive morphological filter (Zhang et al. 2003)"),
         "ptd": Method("ptd", ptd.ptd, ptd.PTDParams, ptd.PRESETS, "progressive TIN densification (Axelsson 2000)"),
-        "auto": Method("auto", auto.auto, auto.AutoParams, auto.PRESETS, "consensus of SMRF, CSF and PTD"),
+        "auto": Method("auto", auto.auto, auto.AutoParams, auto.PRESETS, "majority vote of SMRF (2 settings), PMF, CSF and PTD"),
         "lowest": Method("lowest", baselines.lowest, baselines.LowestParams, flat, "lowest point per cell (baseline)"),
         "local_min": Method("local_min", baselines.local_min, baselines.LocalMinParams, lm,
                             "local minimum with a slope threshold (Vosselman 2000, baseline)"),
