@@ -107,3 +107,16 @@ def test_face_parts_split_roofs_walls_trunks_crowns(demo_scene):
     assert {PART_ID["trunk"], PART_ID["crown"]} == set(np.unique(part[hv]).tolist())
     assert np.all(s.classification[part == PART_ID["vehicle"]] == C.UNCLASSIFIED)
     assert "part" in s.to_mesh().face_attrs
+
+
+def test_new_recipe_options_at_their_defaults_keep_the_scene():
+    """A (recipe, seed) pair builds the same scene after recipe options were added."""
+    from dataclasses import replace
+
+    from workstation.lidar.scene import SceneRecipe, _recipe_key
+
+    r = SceneRecipe()
+    assert "houses" not in _recipe_key(r) and "large_buildings" not in _recipe_key(r)
+    assert "houses=3" in _recipe_key(replace(r, houses=3))
+    # demo_small as built before the options existed (vertex count of the first release)
+    assert build_scene("demo_small", 0).vertices.shape[0] == 58382

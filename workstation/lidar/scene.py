@@ -395,8 +395,30 @@ def _unit(a):
     return np.array([np.cos(a), np.sin(a)])
 
 
+# Recipe fields added after the first release. At their default values they are left out of
+# the recipe's digest, so that a (recipe, seed) pair keeps building the same scene when new
+# options appear; only a recipe that uses them gets a different random stream.
+_LATER_FIELDS = frozenset({
+    "building_length", "building_width", "large_buildings", "large_size", "large_height",
+    "houses", "house_size", "house_height",
+})
+
+
+def _recipe_key(recipe: SceneRecipe) -> str:
+    """The recipe's dataclass repr without later fields that are at their defaults."""
+    parts = []
+    for f in dataclasses.fields(recipe):
+        if not f.repr:
+            continue
+        value = getattr(recipe, f.name)
+        if f.name in _LATER_FIELDS and value == f.default:
+            continue
+        parts.append(f"{f.name}={value!r}")
+    return f"{type(recipe).__qualname__}({', '.join(parts)})"
+
+
 def _seed_for(recipe: SceneRecipe, seed: int) -> np.random.Generator:
-    digest = hashlib.sha256(repr(recipe).encode()).digest()
+    digest = hashlib.sha256(_recipe_key(recipe).encode()).digest()
     return np.random.default_rng([int(seed), int.from_bytes(digest[:8], "little")])
 
 
