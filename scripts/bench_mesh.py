@@ -280,30 +280,12 @@ def heritage():
          mesh_cpu_s=round(cpu, 1))
 
 
-def subdivide_long(V, F, values, max_edge):
-    """Midpoint subdivision of the whole mesh until its longest edge is <= max_edge (metres);
-    ``values`` (m, ...) per face are carried to the children."""
-    while True:
-        t = V[F]
-        if np.linalg.norm(t - np.roll(t, 1, axis=1), axis=2).max() <= max_edge:
-            return V, F, values
-        m = len(F)
-        e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-        uniq, inv = np.unique(e, axis=0, return_inverse=True)
-        base = len(V)
-        V = np.vstack([V, 0.5 * (V[uniq[:, 0]] + V[uniq[:, 1]])])
-        a, b, c = base + inv.reshape(3, m)
-        F = np.concatenate([np.stack([F[:, 0], a, c], 1), np.stack([a, F[:, 1], b], 1),
-                            np.stack([c, b, F[:, 2]], 1), np.stack([a, b, c], 1)])
-        values = np.concatenate([values] * 4)
-
-
 def texture_heritage(workdir):
     """Texture the true heritage-church mesh from the 24 photos of the synthetic convergent rig
     (datasets_synth/rig_heritage.toml, true cameras); texture colour at random points of the
     textured church faces against the scene's true surface colour (0-255)."""
     from workstation.core.products import Mesh
-    from workstation.mesh import TextureParams, texture_from_photos
+    from workstation.mesh import TextureParams, subdivide_midpoint, texture_from_photos
     from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig, surface_colour
     from workstation.registration.colorize import bilinear
 
@@ -318,7 +300,8 @@ def texture_heritage(workdir):
     # the church only (the ground around it is not what is measured), subdivided so that no
     # face is longer than 2 m (the true mesh has 30 m wall triangles, rarely whole in a photo)
     used, inv = np.unique(F[tmask], return_inverse=True)
-    V, F, vals = subdivide_long(V[used], inv.reshape(-1, 3), np.column_stack([alb[tmask], np.ones(tmask.sum())]), 2.0)
+    V, F, vals = subdivide_midpoint(V[used], inv.reshape(-1, 3), np.column_stack([alb[tmask], np.ones(tmask.sum())]),
+                                    max_edge=2.0)
     mesh = Mesh(V, F)
     (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams())
     tex = out.meta["texture"]

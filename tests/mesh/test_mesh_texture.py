@@ -9,22 +9,8 @@ import numpy as np
 import pytest
 
 from workstation.core.products import Camera, Image, Mesh, Reconstruction
+from workstation.mesh.simplify import subdivide_midpoint
 from workstation.mesh.texture import TextureParams, build_atlas, atlas_uv, texture_from_photos
-
-
-def subdivide(V, F, face_values, times: int):
-    """Midpoint subdivision (each triangle into four), carrying a per-face array."""
-    for _ in range(times):
-        m = len(F)
-        e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-        uniq, inv = np.unique(e, axis=0, return_inverse=True)
-        base = len(V)
-        V = np.vstack([V, 0.5 * (V[uniq[:, 0]] + V[uniq[:, 1]])])
-        a, b, c = base + inv.reshape(3, m)
-        F = np.concatenate([np.stack([F[:, 0], a, c], 1), np.stack([a, F[:, 1], b], 1),
-                            np.stack([c, b, F[:, 2]], 1), np.stack([a, b, c], 1)])
-        face_values = np.tile(face_values, (4, 1))
-    return V, F, face_values
 
 
 @pytest.fixture(scope="module")
@@ -40,7 +26,7 @@ def rig():
         pose = look_at(np.array([x, 0.0, 0.5 * ((k - 1) % 2)]), np.array([0.0, 10.0, 0.0]))
         images[k] = Image(f"im{k}.png", 1, pose)
         pix[k] = render(V, F, alb, cam, pose, 1)
-    Vs, Fs, As = subdivide(np.asarray(V, float), F, alb, 3)
+    Vs, Fs, As = subdivide_midpoint(np.asarray(V, float), F, alb, times=3)
     return Reconstruction({1: cam}, images), pix, Mesh(Vs, Fs), As
 
 

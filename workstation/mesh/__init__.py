@@ -12,7 +12,7 @@ from .normals import NormalParams, estimate_normals
 from .quality import QualityParams, mesh_quality
 from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, ball_pivoting, delaunay25d,
                           keep_vertices, poisson)
-from .simplify import DecimateParams, SmoothParams, decimate, smooth
+from .simplify import DecimateParams, SmoothParams, decimate, smooth, subdivide_midpoint
 from .steps import StepRecord, point_spacing
 from .texture import TextureParams, texture_from_photos
 
@@ -21,5 +21,5 @@ __all__ = [
     "transfer_colors", "NormalParams", "estimate_normals", "QualityParams", "mesh_quality", "BallPivotingParams",
     "Delaunay25dParams", "PoissonParams", "ball_pivoting", "delaunay25d", "keep_vertices", "poisson",
     "DecimateParams", "SmoothParams", "decimate", "smooth", "StepRecord", "point_spacing", "TextureParams",
-    "texture_from_photos",
+    "texture_from_photos", "subdivide_midpoint",
 ]

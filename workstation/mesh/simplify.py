@@ -159,3 +159,60 @@ def smooth(mesh: Mesh, params: SmoothParams = SmoothParams()) -> tuple[Mesh, Ste
     p.update({"lambda": params.lambda_, "mu": params.mu} if params.method == "taubin"
              else {"cotangent": params.cotangent, "keep_boundary": params.keep_boundary})
     return out, StepRecord("smooth", p, t.seconds, {"faces": out.n_faces})
+
+
+def subdivide_midpoint(vertices, faces, face_values=None, *, times: int | None = None,
+                       max_edge: float | None = None):
+    """Midpoint subdivision: every triangle into four, sharing the new edge midpoints.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    faces : (m, 3) int
+    face_values : (m, ...) array, optional
+        Per-face values (colour, albedo, labels) carried to the four children of each face.
+    times : int, optional
+        Number of rounds.
+    max_edge : float, optional
+        Subdivide until no edge is longer than this (CRS units). Give ``times`` or ``max_edge``.
+
+    Returns
+    -------
+    vertices, faces, face_values
+        The refined mesh (the input vertices keep their indices) and the carried values
+        (None when none were given).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> V, F, _ = subdivide_midpoint(np.eye(3), np.array([[0, 1, 2]]), times=2)
+    >>> V.shape, F.shape
+    ((15, 3), (16, 3))
+    """
+    import numpy as np
+
+    if (times is None) == (max_edge is None):
+        raise InvalidInputError("give either times or max_edge", field="times")
+    V = np.asarray(vertices, dtype=np.float64)
+    F = np.asarray(faces, dtype=np.int64)
+    values = None if face_values is None else np.asarray(face_values)
+    rounds = 0
+    while True:
+        if times is not None and rounds >= times:
+            break
+        if max_edge is not None:
+            t = V[F]
+            if len(F) == 0 or np.linalg.norm(t - np.roll(t, 1, axis=1), axis=2).max() <= max_edge:
+                break
+        m = len(F)
+        e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+        uniq, inv = np.unique(e, axis=0, return_inverse=True)
+        base = len(V)
+        V = np.vstack([V, 0.5 * (V[uniq[:, 0]] + V[uniq[:, 1]])])
+        a, b, c = base + inv.reshape(3, m)
+        F = np.concatenate([np.stack([F[:, 0], a, c], 1), np.stack([a, F[:, 1], b], 1),
+                            np.stack([c, b, F[:, 2]], 1), np.stack([a, b, c], 1)])
+        if values is not None:
+            values = np.concatenate([values] * 4)
+        rounds += 1
+    return V, F, values
