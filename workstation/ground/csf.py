@@ -151,10 +151,138 @@ class _StdoutToStderr:
         return False
 
 
-def _neighbour_mean(z: np.ndarray) -> np.ndarray:
-    """Mean of the 4 neighbours (edges repeat the border particle)."""
-    p = np.pad(z, 1, mode="edge")
-    return (p[:-2, 1:-1] + p[2:, 1:-1] + p[1:-1, :-2] + p[1:-1, 2:]) * 0.25
+def _neighbour_mean(z: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+    """Mean of the 4 neighbours (edges repeat the border particle), into ``out`` when given.
+
+    Examples
+    --------
+    >>> _neighbour_mean(np.array([[0.0, 4.0], [8.0, 12.0]]))
+    array([[3., 5.],
+           [7., 9.]])
+    """
+    if min(z.shape) < 2:
+        p = np.pad(z, 1, mode="edge")
+        res = (p[:-2, 1:-1] + p[2:, 1:-1] + p[1:-1, :-2] + p[1:-1, 2:]) * 0.25
+        if out is None:
+            return res
+        out[...] = res
+        return out
+    if out is None:
+        out = np.empty_like(z)
+    # rows above + below (the border row is its own neighbour outside the grid)
+    np.add(z[:-2], z[2:], out=out[1:-1])
+    np.add(z[0], z[1], out=out[0])
+    np.add(z[-2], z[-1], out=out[-1])
+    # columns left + right
+    out[:, 1:-1] += z[:, :-2]
+    out[:, 1:-1] += z[:, 2:]
+    out[:, 0] += z[:, 0]
+    out[:, 0] += z[:, 1]
+    out[:, -1] += z[:, -2]
+    out[:, -1] += z[:, -1]
+    out *= 0.25
+    return out
+
+
+def _bands(rows: int, cols: int) -> list[tuple[int, int]]:
+    """Row bands of the cloth, one per core for cloths large enough to share (>= 100k particles)."""
+    import os
+
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        cores = os.cpu_count() or 1
+    k = min(cores, 4, rows // 8) if rows * cols >= 100_000 and cols >= 2 else 1
+    if k <= 1:
+        return [(0, rows)]
+    edges = np.linspace(0, rows, k + 1).round().astype(int)
+    return [(int(edges[i]), int(edges[i + 1])) for i in range(k)]
+
+
+def _neighbour_mean_rows(z: np.ndarray, out: np.ndarray, r0: int, r1: int) -> None:
+    """:func:`_neighbour_mean` of rows ``r0:r1`` only (reads the rows beside the band)."""
+    n = z.shape[0]
+    a0, b1 = max(r0, 1), min(r1, n - 1)
+    if a0 < b1:
+        np.add(z[a0 - 1 : b1 - 1], z[a0 + 1 : b1 + 1], out=out[a0:b1])
+    if r0 == 0:
+        np.add(z[0], z[1], out=out[0])
+    if r1 == n:
+        np.add(z[n - 2], z[n - 1], out=out[n - 1])
+    o, zb = out[r0:r1], z[r0:r1]
+    o[:, 1:-1] += zb[:, :-2]
+    o[:, 1:-1] += zb[:, 2:]
+    o[:, 0] += zb[:, 0]
+    o[:, 0] += zb[:, 1]
+    o[:, -1] += zb[:, -2]
+    o[:, -1] += zb[:, -1]
+    o *= 0.25
+
+
+def _simulate_band(z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i, state) -> None:
+    """The cloth's time steps on rows ``r0:r1`` of the shared arrays.
+
+    Each band moves its own particles; the springs read the neighbouring band's edge row, so
+    the bands meet at a barrier before and after every spring pass (Jacobi: all of the new
+    heights come from the old ones), and agree on convergence through ``change``. The
+    arithmetic is that of one band over the whole cloth, so the result does not depend on
+    the number of bands.
+    """
+    zb, ib, mb = z[r0:r1], ihv[r0:r1], movable[r0:r1]
+    single = barrier is None
+    nm = np.empty_like(z) if single else _shared_nm(state, z)
+    nmb = nm[r0:r1]
+    zold = zb.copy()
+    prev = np.empty_like(zb)
+    tmp = np.empty_like(zb)
+    hit = np.empty(zb.shape, dtype=bool)
+    steps = 0
+    for steps in range(1, int(p.iterations) + 1):
+        prev[...] = zb
+        # Verlet step of the movable particles: z + (z - zold)(1 - damping) - g dt^2
+        np.subtract(zb, zold, out=tmp)
+        tmp *= 1.0 - DAMPING
+        tmp += zb
+        tmp -= fall
+        np.copyto(zb, tmp, where=mb)
+        for _ in range(passes):  # internal springs: move towards the neighbours' mean
+            if single:
+                _neighbour_mean(z, out=nm)
+            else:
+                barrier.wait()
+                _neighbour_mean_rows(z, nm, r0, r1)
+                barrier.wait()
+            np.add(zb, nmb, out=tmp)
+            tmp *= 0.5
+            np.copyto(zb, tmp, where=mb)
+        np.less_equal(zb, ib, out=hit)
+        hit &= mb
+        if hit.any():
+            zb[hit] = ib[hit]
+            mb &= ~hit
+        zold, prev = prev, zold
+        if steps > 10:
+            np.subtract(zb, zold, out=tmp)
+            change[i] = float(np.abs(tmp, out=tmp).max()) if tmp.size else 0.0
+            if not single:
+                barrier.wait()
+            if max(change) < p.tolerance:
+                break
+            if not single:
+                barrier.wait()  # everyone has read ``change`` before it is written again
+    if i == 0:
+        state["steps"] = steps
+
+
+def _shared_nm(state: dict, z: np.ndarray) -> np.ndarray:
+    """One neighbour-mean array shared by the bands (created once, under the GIL)."""
+    import threading
+
+    lock = state.setdefault("lock", threading.Lock())
+    with lock:
+        if "nm" not in state:
+            state["nm"] = np.empty_like(z)
+    return state["nm"]
 
 
 def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
@@ -179,22 +307,29 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
 
         raise InvalidInputError(f"rigidness must be 1, 2 or 3, not {p.rigidness}", field="rigidness")
     z = np.full(ihv.shape, float(np.max(ihv)) + 0.05)
-    zold = z.copy()
     movable = np.ones(ihv.shape, dtype=bool)
     fall = GRAVITY * float(p.time_step) ** 2
-    steps = 0
-    for steps in range(1, int(p.iterations) + 1):
-        prev = z
-        z = np.where(movable, z + (z - zold) * (1.0 - DAMPING) - fall, z)
-        for _ in range(passes):
-            z = np.where(movable, 0.5 * (z + _neighbour_mean(z)), z)
-        hit = movable & (z <= ihv)
-        if hit.any():
-            z[hit] = ihv[hit]
-            movable &= ~hit
-        zold = prev
-        if steps > 10 and float(np.max(np.abs(z - prev))) < p.tolerance:
-            break
+    rows = ihv.shape[0]
+    bands = _bands(rows, ihv.shape[1])
+    state = {"steps": 0}
+    if len(bands) == 1:
+        _simulate_band(z, ihv, movable, p, passes, fall, 0, rows, None, [0.0], 0, state)
+    else:
+        import threading
+        from concurrent.futures import ThreadPoolExecutor
+
+        barrier = threading.Barrier(len(bands))
+        change = [0.0] * len(bands)
+        with ThreadPoolExecutor(max_workers=len(bands), thread_name_prefix="csf-cloth") as pool:
+            futures = [pool.submit(_simulate_band, z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i, state)
+                       for i, (r0, r1) in enumerate(bands)]
+            try:
+                for f in futures:
+                    f.result()
+            except BaseException:
+                barrier.abort()
+                raise
+    steps = state["steps"]
     if p.slope_smooth:
         for _ in range(max(ihv.shape)):
             fixed = np.pad(~movable, 1, mode="constant", constant_values=False)
@@ -222,6 +357,18 @@ def csf_ground(xyz: np.ndarray, p: CSFParams) -> np.ndarray:
     r, c, shape, _ = common.grid_index(xyz[:, :2] + res / 2, res, origin=origin)
     zmin, imin = common.grid_min(xyz[:, 2], r, c, shape)
     use = np.ones(m, dtype=bool)
+    surface_job = None
+    if p.empty_fill == "ground":
+        # SMRF's provisional surface (it sets low outliers aside itself) is computed on a second
+        # core while the isolated low points are found
+        from concurrent.futures import ThreadPoolExecutor
+
+        from .smrf import SMRFParams, smrf_surface
+
+        sp = SMRFParams()
+        pool = ThreadPoolExecutor(max_workers=1, thread_name_prefix="csf-smrf")
+        surface_job = pool.submit(smrf_surface, xyz, sp)
+        pool.shutdown(wait=False)
     if p.remove_low_outliers:
         lowest = imin[imin >= 0]  # a low outlier is the lowest point of its particle
         low = isolated_low_points(xyz[lowest])
@@ -229,11 +376,8 @@ def csf_ground(xyz: np.ndarray, p: CSFParams) -> np.ndarray:
             use[lowest[low]] = False
             zmin, _ = common.grid_min(np.where(use, xyz[:, 2], np.inf), r, c, shape)
             zmin[np.isinf(zmin)] = np.nan
-    if p.empty_fill == "ground":
-        from .smrf import SMRFParams, smrf_surface
-
-        sp = SMRFParams()
-        zpro, zo, _ = smrf_surface(xyz[use], sp)
+    if surface_job is not None:
+        zpro, zo, _ = surface_job.result()
         gy, gx = np.mgrid[0:shape[0], 0:shape[1]]
         q = np.column_stack([origin[0] + gx.ravel() * res, origin[1] + gy.ravel() * res])
         surface = np.where(np.isnan(zmin), common.bilinear(zpro, q, sp.cell, zo).reshape(shape), zmin)

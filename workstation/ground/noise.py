@@ -74,9 +74,12 @@ def isolated_low_points(xyz: np.ndarray, depth: float = 1.5, k: int = 10) -> np.
     if m < 3 or depth <= 0:
         return np.zeros(m, dtype=bool)
     kk = min(k + 1, m)
-    _, j = cKDTree(xyz[:, :2]).query(xyz[:, :2], k=kk)
-    nz = np.sort(xyz[j[:, 1:], 2], axis=1)
-    ref = nz[:, 1] if nz.shape[1] > 1 else nz[:, 0]
+    _, j = cKDTree(xyz[:, :2]).query(xyz[:, :2], k=kk, workers=-1)
+    nz = xyz[j[:, 1:], 2]
+    if nz.shape[1] > 1:
+        ref = np.partition(nz, 1, axis=1)[:, 1]  # 2nd-lowest neighbour, O(k) per point
+    else:
+        ref = nz[:, 0]
     return xyz[:, 2] < ref - depth
 
 
