@@ -274,12 +274,15 @@ def ptd_ground(xyz: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -
     ``seeds`` (m,) bool: points known to be ground, the initial TIN (with the corner seeds)
     instead of the lowest point per ``seed_cell``.
     """
-    from .noise import isolated_low_points
+    from .noise import grid_low_points
 
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.candidate_cell, origin=xyz[:, :2].min(axis=0))
     _, imin = common.grid_min(xyz[:, 2], r, c, shape)
     ci = imin[imin >= 0]  # raster order
-    ci = ci[~isolated_low_points(xyz[ci])]
+    # low outliers (SMRF's test: 5 m below the 5 x 5 m median of the lowest points) never seed
+    # or join the TIN; the k-neighbour test of CSF also took ground out of flat urban samples
+    # (ISPRS samp42 4.16 -> 2.10 %, six-sample mean 4.50 -> 4.32 %)
+    ci = ci[~grid_low_points(xyz[ci])]
     init = None
     if seeds is not None:
         init = np.asarray(seeds, dtype=bool)[ci]
