@@ -169,18 +169,7 @@ def _neighbour_mean(z: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         return out
     if out is None:
         out = np.empty_like(z)
-    # rows above + below (the border row is its own neighbour outside the grid)
-    np.add(z[:-2], z[2:], out=out[1:-1])
-    np.add(z[0], z[1], out=out[0])
-    np.add(z[-2], z[-1], out=out[-1])
-    # columns left + right
-    out[:, 1:-1] += z[:, :-2]
-    out[:, 1:-1] += z[:, 2:]
-    out[:, 0] += z[:, 0]
-    out[:, 0] += z[:, 1]
-    out[:, -1] += z[:, -2]
-    out[:, -1] += z[:, -1]
-    out *= 0.25
+    _neighbour_mean_rows(z, out, 0, z.shape[0])
     return out
 
 
@@ -200,7 +189,9 @@ def _bands(rows: int, cols: int) -> list[tuple[int, int]]:
 
 
 def _neighbour_mean_rows(z: np.ndarray, out: np.ndarray, r0: int, r1: int) -> None:
-    """:func:`_neighbour_mean` of rows ``r0:r1`` only (reads the rows beside the band)."""
+    """:func:`_neighbour_mean` of rows ``r0:r1`` only (reads the rows beside the band; the
+    border rows and columns are their own neighbours outside the grid; needs 2+ rows and
+    columns)."""
     n = z.shape[0]
     a0, b1 = max(r0, 1), min(r1, n - 1)
     if a0 < b1:
