@@ -175,13 +175,9 @@ def _neighbour_mean(z: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
 
 def _bands(rows: int, cols: int) -> list[tuple[int, int]]:
     """Row bands of the cloth, one per core for cloths large enough to share (>= 100k particles)."""
-    import os
+    from workstation.core.cpu import available_cores
 
-    try:
-        cores = len(os.sched_getaffinity(0))
-    except AttributeError:  # not Linux
-        cores = os.cpu_count() or 1
-    k = min(cores, 4, rows // 8) if rows * cols >= 100_000 and cols >= 2 else 1
+    k = min(available_cores(), 4, rows // 8) if rows * cols >= 100_000 and cols >= 2 else 1
     if k <= 1:
         return [(0, rows)]
     edges = np.linspace(0, rows, k + 1).round().astype(int)
@@ -210,7 +206,7 @@ def _neighbour_mean_rows(z: np.ndarray, out: np.ndarray, r0: int, r1: int) -> No
     o *= 0.25
 
 
-def _simulate_band(z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i, state) -> None:
+def _simulate_band(z, nm, ihv, movable, p, passes, fall, r0, r1, barrier, change, i, state) -> None:
     """The cloth's time steps on rows ``r0:r1`` of the shared arrays.
 
     Each band moves its own particles; the springs read the neighbouring band's edge row, so
@@ -221,7 +217,6 @@ def _simulate_band(z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i,
     """
     zb, ib, mb = z[r0:r1], ihv[r0:r1], movable[r0:r1]
     single = barrier is None
-    nm = np.empty_like(z) if single else _shared_nm(state, z)
     nmb = nm[r0:r1]
     zold = zb.copy()
     prev = np.empty_like(zb)
@@ -265,17 +260,6 @@ def _simulate_band(z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i,
         state["steps"] = steps
 
 
-def _shared_nm(state: dict, z: np.ndarray) -> np.ndarray:
-    """One neighbour-mean array shared by the bands (created once, under the GIL)."""
-    import threading
-
-    lock = state.setdefault("lock", threading.Lock())
-    with lock:
-        if "nm" not in state:
-            state["nm"] = np.empty_like(z)
-    return state["nm"]
-
-
 def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
     """Drop the cloth onto the inverted surface.
 
@@ -303,8 +287,9 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
     rows = ihv.shape[0]
     bands = _bands(rows, ihv.shape[1])
     state = {"steps": 0}
+    nm = np.empty_like(z)  # the springs' neighbour means, shared by the bands
     if len(bands) == 1:
-        _simulate_band(z, ihv, movable, p, passes, fall, 0, rows, None, [0.0], 0, state)
+        _simulate_band(z, nm, ihv, movable, p, passes, fall, 0, rows, None, [0.0], 0, state)
     else:
         import threading
         from concurrent.futures import ThreadPoolExecutor
@@ -312,8 +297,8 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
         barrier = threading.Barrier(len(bands))
         change = [0.0] * len(bands)
         with ThreadPoolExecutor(max_workers=len(bands), thread_name_prefix="csf-cloth") as pool:
-            futures = [pool.submit(_simulate_band, z, ihv, movable, p, passes, fall, r0, r1, barrier, change, i, state)
-                       for i, (r0, r1) in enumerate(bands)]
+            futures = [pool.submit(_simulate_band, z, nm, ihv, movable, p, passes, fall, r0, r1, barrier, change,
+                                   i, state) for i, (r0, r1) in enumerate(bands)]
             try:
                 for f in futures:
                     f.result()

@@ -16,7 +16,6 @@ keeps the ones the cloud was read with when its attributes still fit.
 
 from __future__ import annotations
 
-import os
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from pathlib import Path
@@ -25,6 +24,7 @@ from typing import Iterator
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.cpu import available_cores
 from workstation.core.dims import DIMS, LAS_FLAGS
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
@@ -278,10 +278,7 @@ class _Filler:
 @contextmanager
 def _fill_pool():
     """A thread pool for the field copies when more than one core is available, else None."""
-    try:
-        cores = len(os.sched_getaffinity(0))
-    except AttributeError:  # not Linux
-        cores = os.cpu_count() or 1
+    cores = available_cores()
     if cores < 2:
         yield None
         return

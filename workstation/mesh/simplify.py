@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.products import Mesh
 
@@ -189,8 +191,6 @@ def subdivide_midpoint(vertices, faces, face_values=None, *, times: int | None =
     >>> V.shape, F.shape
     ((15, 3), (16, 3))
     """
-    import numpy as np
-
     if (times is None) == (max_edge is None):
         raise InvalidInputError("give either times or max_edge", field="times")
     V = np.asarray(vertices, dtype=np.float64)
