@@ -1,11 +1,13 @@
 """Ground-filter benchmarks; one JSON line per result on stdout.
 
   python scripts/bench_ground.py isprs  [--data DIR] [--methods smrf,csf,...]   per-sample ISPRS errors
-  python scripts/bench_ground.py tiles  [--data DIR] [--methods ...]           1 m TIN DTM RMSE vs the file's class 2
+  python scripts/bench_ground.py tiles  [--data DIR] [--methods ...]           1 m TIN DTM RMSE vs the file's class 2,
+                                        with the bias and where our extra ground lies above the file's TIN
   python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
   python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
                                         datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
 
+--set NAME=VALUE (repeatable) overrides a parameter of every method, e.g. ``--set threshold=0.3``.
 DIR defaults to ../shared/data (or $WS_SHARED_DATA). Timings: wall and process (CPU) seconds.
 """
 
@@ -33,6 +35,7 @@ PUBLISHED = {  # total error %, /work/shared/data/README.md
     "csf_paper": {"samp11": 12.01, "samp21": 3.42, "samp31": 1.61, "samp42": 1.58, "samp51": 3.08, "samp61": 1.49},
     "smrf_tuned": {"samp11": 9.19, "samp21": 1.47, "samp31": 1.18, "samp42": 2.04, "samp51": 1.68, "samp61": 0.88},
 }
+OVERRIDES: dict = {}
 TILES = ["Topography.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las", "MixedConifer.laz"]
 
 
@@ -52,7 +55,7 @@ def bench_isprs(data: Path, methods):
         for s in SAMPLES:
             ref = read_isprs_text(data / "isprs" / f"{s}.txt")
             cloud = Cloud(ref.xyz)
-            out, wall, cpu = timed(lambda: ground_filter(cloud, m))
+            out, wall, cpu = timed(lambda: ground_filter(cloud, m, **OVERRIDES))
             e = ground_errors(np.asarray(ref.attrs["label"]) == 0, np.asarray(out.attrs["classification"]) == 2)
             tot.append(e.total_error)
             emit({"bench": "isprs", "method": m, "sample": s, "type1": e.type1, "type2": e.type2,
@@ -75,7 +78,17 @@ def dtm_rmse(xyz, ours, theirs, cell):
             zs.append(tin_eval(tri, xyz[g, 2], q))
     ok = np.isfinite(zs[0]) & np.isfinite(zs[1])
     d = zs[0][ok] - zs[1][ok]
-    return float(np.sqrt(np.mean(d * d))), int(ok.sum())
+    return float(np.sqrt(np.mean(d * d))), int(ok.sum()), float(np.mean(d))
+
+
+def height_above_tin(xyz, ground):
+    """Height (CRS z unit) of every point above the TIN of ``ground`` (NaN outside its hull)."""
+    from workstation.ground.common import _one_blas_thread, delaunay, tin_eval
+
+    o = xyz[:, :2].min(axis=0)
+    tri = delaunay(xyz[ground, :2] - o)
+    with _one_blas_thread():
+        return xyz[:, 2] - tin_eval(tri, xyz[ground, 2], xyz[:, :2] - o)
 
 
 def bench_tiles(data: Path, methods):
@@ -85,13 +98,22 @@ def bench_tiles(data: Path, methods):
     for f in TILES:
         c = read_cloud(data / "lidar" / f)
         hf, vf = crs_unit_factors(c.crs)
-        ref = np.asarray(c.attrs["classification"]) == 2
+        cls = np.asarray(c.attrs["classification"])
+        ref = cls == 2
+        # the file's ground as a surface: how many of its other last returns lie under it
+        h = height_above_tin(c.xyz, ref) * vf
+        last = np.asarray(c.attrs["return_number"]) == np.asarray(c.attrs["number_of_returns"])
+        other = ~ref & last & np.isfinite(h) & (cls != 9)
         for m in methods:
-            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True))
+            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True, **OVERRIDES))
             g = np.asarray(out.attrs["classification"]) == 2
-            rmse, cells = dtm_rmse(c.xyz, g, ref, 1.0 / hf)
-            emit({"bench": "tiles", "file": f, "method": m, "dtm_rmse_m": rmse * vf, "cells": cells,
-                  "ground_ours": int(g.sum()), "ground_file": int(ref.sum()), "points": c.n,
+            rmse, cells, bias = dtm_rmse(c.xyz, g, ref, 1.0 / hf)
+            extra = g & ~ref & np.isfinite(h)
+            emit({"bench": "tiles", "file": f, "method": m, "overrides": OVERRIDES, "dtm_rmse_m": rmse * vf,
+                  "dtm_bias_m": bias * vf, "dtm_rmse_without_water_m": dtm_rmse(c.xyz, g & (cls != 9), ref, 1.0 / hf)[0] * vf,
+                  "cells": cells, "ground_ours": int(g.sum()), "ground_file": int(ref.sum()), "points": c.n,
+                  "file_other_last_returns_below_file_tin_0.1m": float(np.mean(h[other] < -0.1)),
+                  "our_extra_ground_above_file_tin_p5_p50_p95_m": [round(float(x), 3) for x in np.percentile(h[extra], [5, 50, 95])] if extra.any() else None,
                   "seconds": wall, "cpu_seconds": cpu})
 
 
@@ -172,7 +194,12 @@ def main(argv=None):
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="override a parameter of every method (isprs, tiles), e.g. threshold=0.3")
     a = ap.parse_args(argv)
+    for kv in a.set:
+        k, v = kv.split("=", 1)
+        OVERRIDES[k] = json.loads(v)
     methods = a.methods.split(",")
     data = Path(a.data)
     if a.what == "isprs":

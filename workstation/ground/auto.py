@@ -1,6 +1,7 @@
 """``auto``: a majority vote of five complementary filters, one parameter set for all terrain.
 
-Members: SMRF with a 30 m window (catches wide roofs), SMRF with a tighter elevation test
+Members: SMRF with a 30 m window (catches wide roofs) whose object test follows the terrain's
+trend slope (``trend_slope=1``: mountainsides are not cut as objects), SMRF with a tighter elevation test
 (threshold 0.3 m, scalar 1.0; fewer low objects accepted), PMF (square windows, a different
 failure mode on slopes), CSF (a cloth: bridges objects, follows terraces) and PTD (a TIN grown
 from seeds: follows slopes and breaklines). A point is ground when at least three say so.
@@ -35,7 +36,7 @@ class AutoParams:
     Attributes
     ----------
     smrf_wide : SMRFParams
-        First member (slope 0.15, window 30 m).
+        First member (slope 0.15, window 30 m, slope-adaptive object test ``trend_slope=1``).
     smrf_tight : SMRFParams
         Second member (slope 0.15, window 30 m, threshold 0.3 m, scalar 1.0).
     pmf : PMFParams
@@ -50,7 +51,7 @@ class AutoParams:
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
-    smrf_wide: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0))
+    smrf_wide: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0, trend_slope=1.0))
     smrf_tight: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0, threshold=0.3, scalar=1.0))
     pmf: PMFParams = field(default_factory=PMFParams)
     csf: CSFParams = field(default_factory=CSFParams)

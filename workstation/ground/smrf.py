@@ -18,6 +18,13 @@ Steps (as in PDAL's ``filters.smrf``, vectorised on a grid):
 5. classification: a point is ground when its height lies within
    ``threshold + scalar · slope`` of the provisional DEM interpolated bilinearly at the point,
    ``slope`` being the DEM's gradient magnitude there.
+
+Optional (off by default, PDAL has no such step): ``trend_slope`` makes step 3 follow the
+terrain. Pingel's ``slope`` is the steepest terrain the filter expects; on a mountainside every
+convex break steeper than it is cut as an object. With ``trend_slope = k > 0`` the object test
+is run a second time with a per-cell slope ``max(slope, k · trend)``, ``trend`` being the
+gradient of the first pass's provisional DEM smoothed over the ``window`` (a box mean), so
+objects are still judged against a flat-terrain slope where the terrain is flat.
 """
 
 from __future__ import annotations
@@ -53,6 +60,10 @@ class SMRFParams:
         of slope).
     low_outliers : bool
         Run the low-outlier step (True).
+    trend_slope : float
+        Slope-adaptive object test (dimensionless factor; 0 = off, PDAL's behaviour): the
+        per-cell slope is ``max(slope, trend_slope · terrain trend slope)``, see the module
+        notes.
     reclassify : bool
         Overwrite classes other than 0/1/2 and use noise points (False).
     last_returns_only : bool
@@ -65,6 +76,7 @@ class SMRFParams:
     threshold: float = 0.5
     scalar: float = 1.25
     low_outliers: bool = True
+    trend_slope: float = 0.0
     reclassify: bool = False
     last_returns_only: bool = True
 
@@ -86,8 +98,8 @@ def progressive_filter(surface: np.ndarray, cell: float, slope: float, window: f
     surface : (rows, cols) float64, no NaN
     cell : float
         Cell size, metres.
-    slope : float
-        Rise over run.
+    slope : float or (rows, cols) float64
+        Rise over run (one value, or one per cell).
     window : float
         Largest radius, metres.
 
@@ -129,6 +141,8 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
             z2[low] = np.nan
             zfill = common.inpaint(z2)
     obj = progressive_filter(zfill, p.cell, p.slope, p.window)
+    if p.trend_slope > 0:
+        obj = progressive_filter(zfill, p.cell, _trend_slope(zmin, empty | low | obj, p), p.window)
     bad = empty | low | obj
     zp = zmin.copy()
     zp[bad] = np.nan
@@ -136,6 +150,20 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
         zp = zfill
     zpro = common.inpaint(zp)
     return zpro, origin, bad
+
+
+def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams) -> np.ndarray:
+    """Per-cell slope of the object test: ``max(slope, trend_slope · |grad|)`` of the first
+    provisional DEM (``zmin`` without ``bad`` cells, inpainted) box-smoothed over the window."""
+    from scipy.ndimage import uniform_filter
+
+    if bad.all():
+        return np.full(zmin.shape, p.slope)
+    z = zmin.copy()
+    z[bad] = np.nan
+    width = max(3, int(round(p.window / p.cell)) | 1)
+    gy, gx = np.gradient(common.inpaint(z), p.cell)
+    return np.maximum(p.slope, p.trend_slope * uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
 
 
 def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:
