@@ -2,6 +2,7 @@
 
     WS_SHARED_DATA=../../shared/data PYTHONPATH=. python scripts/bench_mesh.py \
         [--only render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage] [--threads 2]
+    PYTHONPATH=. python scripts/bench_mesh.py --only heritage_fused --with-truth-pose [--sfm-work /tmp/reg_sfm]
 
 - bunny: Stanford bunny, 3 scans merged with bun.conf poses, screened Poisson depth 9,
   decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
@@ -10,6 +11,10 @@
   poisson_backend_open3d: the same through ``PoissonParams(backend="open3d")`` (passive
   OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
 - heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
+- heritage_fused: the church of the synthetic photo rig meshed from its simulated TLS (4
+  stations) merged with the rig's dense cloud, registered in 7 DoF to the TLS (data of
+  ``bench_register.py --sfm-tls``, cached in ``--sfm-work``), against the true mesh; the TLS
+  alone as the control (``--with-truth-pose``: also the dense cloud placed by the camera truth).
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 - texture: the true heritage-church mesh textured from the 24 photos of the synthetic rig,
   texture colour vs the true surface colour.
