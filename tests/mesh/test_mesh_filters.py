@@ -95,10 +95,11 @@ def test_poisson_sphere_is_closed_with_the_right_volume(sphere_poisson, sphere_c
     assert np.abs(np.linalg.norm(mesh.vertices - CENTRE, axis=1) - R).max() < 0.03 * R
 
 
-def test_poisson_open3d_backend_agrees(sphere_cloud, sphere_poisson):
+def test_poisson_pymeshlab_backend_agrees(sphere_cloud, sphere_poisson):
+    assert sphere_poisson[1].params["backend"] == "open3d"  # the default (PyMeshLab #408)
     oriented, _ = estimate_normals(sphere_cloud, NormalParams(k=10))
-    mesh, rec = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.0, backend="open3d", threads=1))
-    assert rec.params["backend"] == "open3d"
+    mesh, rec = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.0, backend="pymeshlab", threads=1))
+    assert rec.params["backend"] == "pymeshlab"
     q = mesh_quality(mesh, sphere_cloud)
     assert q["watertight"] and q["volume"] == pytest.approx(4 / 3 * np.pi * R ** 3, rel=0.03)
     assert q["cloud_to_mesh"]["p95"] < 0.01 * R

@@ -50,13 +50,19 @@ class PoissonParams:
     scale : float
         Ratio of the reconstruction cube to the bounding cube of the points (dimensionless).
     iterations : int
-        Gauss-Seidel iterations per level (count).
+        Gauss-Seidel iterations per level (count; the ``pymeshlab`` backend only: Open3D keeps
+        PoissonRecon's default of 8).
     trim_quantile : float
         Vertices whose density is below this quantile of the output vertices' densities are
         removed, with their faces (fraction in [0, 1); 0 = keep the closed surface).
-    backend : {"pymeshlab", "open3d"}
-        MeshLab's filter, or Open3D's build of the same PoissonRecon code (faster here: 118 s
-        against 200 s CPU for depth 10 on a million points; no ``iterations`` setting).
+    backend : {"open3d", "pymeshlab"}
+        Open3D's build of Kazhdan's screened PoissonRecon (default) or MeshLab's filter (the
+        same algorithm and parameters). MeshLab's build is the slow Linux Poisson of PyMeshLab
+        issue #408, measured here: depth 10 on a million points took 140 s on 2 idle cores
+        against 57-60 s through Open3D, with the same surface error (``scripts/bench_mesh.py
+        --only poisson,poisson_backend_open3d``); part of #408 is OpenMP's spinning wait (see
+        :func:`workstation.mesh.steps.passive_openmp`), the rest is the build itself. So the
+        Poisson step of the chain runs through Open3D unless ``pymeshlab`` is asked for.
     threads : int
         OpenMP threads of the solver (count; 0 = all cores, or 1 when OpenMP would spin:
         see :func:`workstation.mesh.steps.openmp_threads`).
@@ -69,7 +75,7 @@ class PoissonParams:
     scale: float = 1.1
     iterations: int = 8
     trim_quantile: float = 0.05
-    backend: str = "pymeshlab"
+    backend: str = "open3d"
     threads: int = 0
 
     def __post_init__(self):
@@ -78,7 +84,7 @@ class PoissonParams:
         if not 0.0 <= self.trim_quantile < 1.0:
             raise InvalidInputError(f"trim_quantile={self.trim_quantile} not in [0, 1)", field="trim_quantile")
         if self.backend not in ("pymeshlab", "open3d"):
-            raise InvalidInputError(f"unknown Poisson backend '{self.backend}'", "use pymeshlab or open3d",
+            raise InvalidInputError(f"unknown Poisson backend '{self.backend}'", "use open3d or pymeshlab",
                                     field="backend")
         if self.samples_per_node <= 0:
             raise InvalidInputError("samples_per_node must be positive", field="samples_per_node")
