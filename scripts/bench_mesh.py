@@ -237,14 +237,17 @@ def poisson_1m_open3d():
 HERITAGE_MAX_POINTS = 600_000  # church points meshed at most (a seeded random subset beyond)
 
 
-def heritage_chain():
+def heritage_chain(poisson_backend: str | None = None):
     """The meshing chain of the heritage benches: normals from 12 neighbours oriented toward
-    each point's viewpoint, screened Poisson depth 9 trimmed at the 5 % density quantile,
-    pieces < 5 % of the diagonal removed, quadric decimation to 200,000 faces."""
+    each point's viewpoint, screened Poisson depth 9 trimmed at the 5 % density quantile
+    (``poisson_backend``: None = the package default), pieces < 5 % of the diagonal removed,
+    quadric decimation to 200,000 faces."""
     from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
                                   QualityParams)
 
-    return MeshChainParams(method="poisson", normals=NormalParams(k=12), poisson=PoissonParams(depth=9, trim_quantile=0.05),
+    backend = {} if poisson_backend is None else {"backend": poisson_backend}
+    return MeshChainParams(method="poisson", normals=NormalParams(k=12),
+                           poisson=PoissonParams(depth=9, trim_quantile=0.05, **backend),
                            clean=CleanParams(min_piece_fraction=0.05), decimate=DecimateParams(target_faces=200_000),
                            quality=QualityParams(max_cloud_points=300_000))
 
@@ -261,7 +264,7 @@ def mesh_vs_truth(mesh, truth, samples: int = 300_000):
     return _stats(_hausdorff(a, b, True, samples, 200.0)), {**_stats(d_t2m), "within_0.1m": float(np.mean(d_t2m <= 0.1))}
 
 
-def heritage():
+def heritage(poisson_backend: str | None = None):
     """Synthetic heritage church (simulator scene), 8 TLS stations on a 35 m circle, screened
     Poisson of the church returns (normals toward each point's station) against the true mesh."""
     from dataclasses import replace
@@ -291,7 +294,7 @@ def heritage():
     spos = np.array([traj.position[np.searchsorted(traj.time, sg.t0)] for sg in traj.segments]) + scene.origin
     vp = spos[np.asarray(ch.attrs["point_source_id"]).astype(int) - 1]
     keep = np.sort(np.random.default_rng(0).choice(ch.n, min(HERITAGE_MAX_POINTS, ch.n), replace=False))
-    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), heritage_chain(), vp[keep])
+    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), heritage_chain(poisson_backend), vp[keep])
     remap = -np.ones(len(scene.vertices), int)
     remap[used] = np.arange(len(used))
     truth = Mesh(scene.vertices[used] + scene.origin, remap[scene.faces[fm]])
@@ -367,7 +370,7 @@ def coverage(samples: dict, mesh, tol: float = 0.1) -> dict:
     return out
 
 
-def heritage_fused(work: Path, with_truth_pose: bool = False):
+def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: str | None = None):
     """The heritage church of the synthetic photo rig (``datasets_synth/rig_heritage.toml``)
     meshed from its simulated TLS survey merged with the rig's dense cloud, against the true
     church mesh (data of ``bench_register.py --sfm-tls WORKDIR``, made there if missing).
@@ -443,10 +446,11 @@ def heritage_fused(work: Path, with_truth_pose: bool = False):
             n_dense = d.n
         keep = np.sort(np.random.default_rng(0).choice(len(xyz), min(HERITAGE_MAX_POINTS, len(xyz)), replace=False))
         t, c = time.perf_counter(), time.process_time()
-        out = mesh_cloud(Cloud(xyz[keep]), heritage_chain(), vp[keep])
+        out = mesh_cloud(Cloud(xyz[keep]), heritage_chain(poisson_backend), vp[keep])
         wall, cpu = time.perf_counter() - t, time.process_time() - c
         m2t, t2m = mesh_vs_truth(out.mesh, church)
-        emit(bench=f"heritage_fused_{label}", church_height_m=round(height, 3), tls_church_points=int(ch.n),
+        emit(bench=f"heritage_fused_{label}", poisson_backend=next(st.params["backend"] for st in out.steps if st.name == "poisson"),
+             church_height_m=round(height, 3), tls_church_points=int(ch.n),
              dense_church_points=int(n_dense), dense_church_points_to_truth_m=d_dense, meshed_points=int(keep.size),
              faces=out.mesh.n_faces,
              mesh_to_truth_m={k: round(v, 4) for k, v in m2t.items()},
@@ -531,6 +535,8 @@ if __name__ == "__main__":
     ap.add_argument("--work", default="/tmp/bench_mesh_rig", help="texture: folder of the rendered rig (kept)")
     ap.add_argument("--sfm-work", default="/tmp/reg_sfm",
                     help="heritage_fused: data folder of bench_register.py --sfm-tls (made there if missing)")
+    ap.add_argument("--poisson-backend", choices=("open3d", "pymeshlab"), default=None,
+                    help="heritage, heritage_fused: Poisson backend (default: the package's)")
     ap.add_argument("--with-truth-pose", action="store_true",
                     help="heritage_fused: also mesh with the dense cloud placed by the camera-truth similarity")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
@@ -554,8 +560,8 @@ if __name__ == "__main__":
     if "bunny" in todo:
         bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls)
     if "heritage" in todo:
-        heritage()
+        heritage(a.poisson_backend)
     if "texture" in todo:
         texture_heritage(Path(a.work))
     if "heritage_fused" in todo:
-        heritage_fused(Path(a.sfm_work), a.with_truth_pose)
+        heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)
