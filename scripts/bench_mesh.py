@@ -2,6 +2,7 @@
 
     WS_SHARED_DATA=../../shared/data PYTHONPATH=. python scripts/bench_mesh.py \
         [--only render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage] [--threads 2]
+    PYTHONPATH=. python scripts/bench_mesh.py --only heritage_fused --with-truth-pose [--sfm-work /tmp/reg_sfm]
 
 - bunny: Stanford bunny, 3 scans merged with bun.conf poses, screened Poisson depth 9,
   decimated to 20,000 faces; distances to the scans; Open3D's Poisson depth 9 + quadric
@@ -10,6 +11,10 @@
   poisson_backend_open3d: the same through ``PoissonParams(backend="open3d")`` (passive
   OpenMP); poisson_open3d: Open3D called directly, default OpenMP settings (anchor).
 - heritage: the simulator's heritage church, 8 TLS stations, Poisson vs the true mesh.
+- heritage_fused: the church of the synthetic photo rig meshed from its simulated TLS (4
+  stations) merged with the rig's dense cloud, registered in 7 DoF to the TLS (data of
+  ``bench_register.py --sfm-tls``, cached in ``--sfm-work``), against the true mesh; the TLS
+  alone as the control (``--with-truth-pose``: also the dense cloud placed by the camera truth).
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 - texture: the true heritage-church mesh textured from the 24 photos of the synthetic rig,
   texture colour vs the true surface colour.
@@ -229,19 +234,46 @@ def poisson_1m_open3d():
          cpu_s=round(cpu, 1))
 
 
-def heritage():
+HERITAGE_MAX_POINTS = 600_000  # church points meshed at most (a seeded random subset beyond)
+
+
+def heritage_chain(poisson_backend: str | None = None):
+    """The meshing chain of the heritage benches: normals from 12 neighbours oriented toward
+    each point's viewpoint, screened Poisson depth 9 trimmed at the 5 % density quantile
+    (``poisson_backend``: None = the package default), pieces < 5 % of the diagonal removed,
+    quadric decimation to 200,000 faces."""
+    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
+                                  QualityParams)
+
+    backend = {} if poisson_backend is None else {"backend": poisson_backend}
+    return MeshChainParams(method="poisson", normals=NormalParams(k=12),
+                           poisson=PoissonParams(depth=9, trim_quantile=0.05, **backend),
+                           clean=CleanParams(min_piece_fraction=0.05), decimate=DecimateParams(target_faces=200_000),
+                           quality=QualityParams(max_cloud_points=300_000))
+
+
+def mesh_vs_truth(mesh, truth, samples: int = 300_000):
+    """Distance statistics (m) mesh -> true mesh and true mesh -> mesh, each from ``samples``
+    area-uniform samples of one surface to the other surface (MeshLab Hausdorff)."""
+    from workstation.interop.pymeshlab import mesh_to_pymeshlab
+    from workstation.mesh.quality import _hausdorff, _stats
+
+    a, o = mesh_to_pymeshlab(mesh)
+    b, _ = mesh_to_pymeshlab(truth, origin=o)
+    d_t2m = _hausdorff(b, a, True, samples, 200.0)
+    return _stats(_hausdorff(a, b, True, samples, 200.0)), {**_stats(d_t2m), "within_0.1m": float(np.mean(d_t2m <= 0.1))}
+
+
+def heritage(poisson_backend: str | None = None):
     """Synthetic heritage church (simulator scene), 8 TLS stations on a 35 m circle, screened
     Poisson of the church returns (normals toward each point's station) against the true mesh."""
     from dataclasses import replace
 
     from workstation.core.products import Mesh
-    from workstation.interop.pymeshlab import mesh_to_pymeshlab
     from workstation.lidar.platforms import Station
     from workstation.lidar.scene import SceneRecipe, build_scene
     from workstation.lidar.survey import default_survey, run_survey
-    from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
-                                  QualityParams, mesh_cloud)
-    from workstation.mesh.quality import _hausdorff, _stats
+    from workstation.mesh import mesh_cloud
 
     rec = SceneRecipe(name="heritage", extent=(120.0, 120.0), buildings=0, courtyards=0, heritage=True, trees=0,
                       bushes=0, grass_patches=0, cars=0, stream=False, pond=False, powerline=False)
@@ -261,23 +293,178 @@ def heritage():
     traj = res.true_trajectory  # station i is point source i + 1
     spos = np.array([traj.position[np.searchsorted(traj.time, sg.t0)] for sg in traj.segments]) + scene.origin
     vp = spos[np.asarray(ch.attrs["point_source_id"]).astype(int) - 1]
-    keep = np.sort(np.random.default_rng(0).choice(ch.n, min(600_000, ch.n), replace=False))
-    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), MeshChainParams(
-        method="poisson", normals=NormalParams(k=12), poisson=PoissonParams(depth=9, trim_quantile=0.05),
-        clean=CleanParams(min_piece_fraction=0.05), decimate=DecimateParams(target_faces=200_000),
-        quality=QualityParams(max_cloud_points=300_000)), vp[keep])
+    keep = np.sort(np.random.default_rng(0).choice(ch.n, min(HERITAGE_MAX_POINTS, ch.n), replace=False))
+    out, wall, cpu = timed(mesh_cloud, Cloud(ch[keep].xyz), heritage_chain(poisson_backend), vp[keep])
     remap = -np.ones(len(scene.vertices), int)
     remap[used] = np.arange(len(used))
     truth = Mesh(scene.vertices[used] + scene.origin, remap[scene.faces[fm]])
-    a, o = mesh_to_pymeshlab(out.mesh)
-    b, _ = mesh_to_pymeshlab(truth, origin=o)
-    m2t = _stats(_hausdorff(a, b, True, 300_000, 200.0))
-    t2m = _stats(_hausdorff(b, a, True, 300_000, 200.0))
+    m2t, t2m = mesh_vs_truth(out.mesh, truth)
     emit(bench="heritage_church_tls_poisson", tls_points=int(c.n), church_points=int(ch.n), meshed_points=int(keep.size),
          height_m=height, faces=out.mesh.n_faces, mesh_to_truth_m={k: round(v, 4) for k, v in m2t.items()},
          truth_to_mesh_m={k: round(v, 4) for k, v in t2m.items()},
          rms_over_height_percent=round(100 * m2t["rms"] / height, 3), mesh_wall_s=round(wall, 1),
          mesh_cpu_s=round(cpu, 1))
+
+
+def nearest_face(vertices: np.ndarray, faces: np.ndarray, xyz: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Index (n,) of the nearest face of a triangle mesh to each point of ``xyz`` (n, 3), and the
+    distance (n,) in the mesh's units (Open3D's closest-point query)."""
+    import open3d as o3d
+
+    rs = o3d.t.geometry.RaycastingScene()
+    o = vertices.mean(0)
+    rs.add_triangles(o3d.core.Tensor((vertices - o).astype(np.float32)), o3d.core.Tensor(faces.astype(np.uint32)))
+    q = rs.compute_closest_points(o3d.core.Tensor((xyz - o).astype(np.float32)))
+    return q["primitive_ids"].numpy().astype(np.int64), np.linalg.norm(q["points"].numpy() + o - xyz, axis=1)
+
+
+def truth_samples(truth, n: int = 300_000, n_dirs: int = 64, seed: int = 0, occluders=None) -> dict:
+    """``n`` area-uniform samples (n, 3) of a true mesh with the orientation class of their face
+    (``up``: normal z > 0.3, roofs and ledges; ``wall``: |z| <= 0.3; ``down``: z < -0.3,
+    soffits) and whether they are ``open``: at least one of ``n_dirs`` random rays over the
+    outer hemisphere (from 2 cm off the face) escapes ``occluders`` (a mesh, default ``truth``;
+    give the whole scene so that the terrain counts). Samples that are not open lie below the
+    ground or on faces enclosed by other parts: no survey sees them."""
+    import open3d as o3d
+
+    rng = np.random.default_rng(seed)
+    a = truth.face_areas()
+    f = rng.choice(truth.n_faces, size=n, p=a / a.sum())
+    u, v = rng.random((2, n))
+    flip = u + v > 1
+    u, v = np.where(flip, 1 - u, u), np.where(flip, 1 - v, v)
+    t = truth.vertices[truth.faces]
+    nrm = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
+    nrm = (nrm / np.linalg.norm(nrm, axis=1, keepdims=True))[f]
+    t = t[f]
+    xyz = t[:, 0] + u[:, None] * (t[:, 1] - t[:, 0]) + v[:, None] * (t[:, 2] - t[:, 0])
+    occ = truth if occluders is None else occluders
+    o = truth.vertices.mean(0)
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor((occ.vertices - o).astype(np.float32)),
+                     o3d.core.Tensor(occ.faces.astype(np.uint32)))
+    dirs = rng.normal(size=(n_dirs, 3))
+    dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
+    org = xyz + 0.02 * nrm - o
+    open_ = np.zeros(n, bool)
+    for d in dirs:
+        dd = np.where((nrm @ d)[:, None] > 0, d, -d)
+        hit = rs.cast_rays(o3d.core.Tensor(np.hstack([org, dd]).astype(np.float32)))["t_hit"].numpy()
+        open_ |= ~np.isfinite(hit)
+    cls = np.where(nrm[:, 2] > 0.3, "up", np.where(nrm[:, 2] < -0.3, "down", "wall"))
+    return {"xyz": xyz, "class": cls, "open": open_}
+
+
+def coverage(samples: dict, mesh, tol: float = 0.1) -> dict:
+    """Share of the true surface samples (:func:`truth_samples`) within ``tol`` (m) of ``mesh``:
+    all of them, the open ones, and per orientation class (with its share of the true area and
+    of its open part)."""
+    _, d = nearest_face(mesh.vertices, mesh.faces, samples["xyz"])
+    near, op = d <= tol, samples["open"]
+    out = {"tol_m": tol, "all": round(float(near.mean()), 3), "open": round(float(near[op].mean()), 3),
+           "open_share": round(float(op.mean()), 3)}
+    for name in ("up", "wall", "down"):
+        m = samples["class"] == name
+        out[name] = {"area_share": round(float(m.mean()), 3), "open_share": round(float(op[m].mean()), 3),
+                     "all": round(float(near[m].mean()), 3), "open": round(float(near[m & op].mean()), 3)}
+    return out
+
+
+def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: str | None = None):
+    """The heritage church of the synthetic photo rig (``datasets_synth/rig_heritage.toml``)
+    meshed from its simulated TLS survey merged with the rig's dense cloud, against the true
+    church mesh (data of ``bench_register.py --sfm-tls WORKDIR``, made there if missing).
+
+    The dense cloud (SfM frame, arbitrary scale) is brought into the scene frame as a user would:
+    ``register(dense, tls, method="similarity")``; the camera-truth similarity (SfM camera
+    centres fitted to the rig's true cameras) is reported as a check. Church points: the TLS
+    returns the simulator labels as the church, and the dense points whose nearest true face is
+    a church face (the same truth-based selection for both). Normals are oriented toward each
+    point's viewpoint: its station for TLS points, the nearest registered camera centre for
+    dense points. Then the chain of :func:`heritage` (same parameters) and the same distances.
+    Rows: the TLS alone (the control on the same survey), TLS + dense, and with
+    ``with_truth_pose`` TLS + dense placed by the camera-truth similarity."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    from bench_register import sfm_tls_data, sfm_tls_survey, similarity_errors
+
+    from workstation.core.products import Mesh
+    from workstation.lidar.scene import build_scene
+    from workstation.lidar.survey import survey_trajectory
+    from workstation.mesh import mesh_cloud
+    from workstation.mesh.normals import viewpoints_from_reconstruction
+    from workstation.photogrammetry.georef import Similarity, transform_reconstruction
+    from workstation.photogrammetry.rigs import load_rig, load_truth
+    from workstation.raster.ortho import read_reconstruction
+    from workstation.registration.register import RegisterParams, register
+    from workstation.registration.transforms import make_transform
+
+    wall0, cpu0 = time.perf_counter(), time.process_time()
+    work = Path(work)
+    dense, tls, sim, resid, data_s = sfm_tls_data(work)  # calibrated SfM, as bench_register's default
+    recipe, spec = load_rig(REPO / "datasets_synth" / "rig_heritage.toml")
+    scene = build_scene(recipe, spec.seed)
+    truth = load_truth(work / "rig")  # scene-local frame, like ``tls``
+    tri = truth["faces"][truth["target"]]
+    used, inv = np.unique(tri, return_inverse=True)
+    church = Mesh(truth["vertices"][used], inv.reshape(-1, 3))
+    height = float(np.ptp(church.vertices[:, 2]))
+    oid = next(int(k) for k, v in scene.meta["objects"].items() if v == spec.target)
+    samples = truth_samples(church, occluders=Mesh(truth["vertices"], truth["faces"]))
+
+    # TLS: church returns, each with its station (point source i + 1 = station i)
+    traj = survey_trajectory(scene, sfm_tls_survey(recipe, spec))
+    spos = np.array([traj.position[np.searchsorted(traj.time, sg.t0)] for sg in traj.segments])
+    ch = tls[np.asarray(tls.attrs["object_id"]) == oid]
+    vp_tls = spos[np.asarray(ch.attrs["point_source_id"]).astype(int) - 1]
+
+    # dense: 7-DoF registration to the whole TLS cloud, from the identity (the SfM frame)
+    src = Cloud(dense.xyz)
+    r, wall_r, cpu_r = timed(register, src, tls, RegisterParams(method="similarity"))
+    S = make_transform(sim.R, sim.t, sim.scale)
+    est = read_reconstruction(work / "rig_sfm_cal" / "sparse" / "0")
+    reg_check = {**similarity_errors(src.xyz, r.transform, S), "fitness": round(r.fitness, 4),
+                 "inlier_rmse_m": round(r.inlier_rmse, 4), "wall_s": round(wall_r, 1), "cpu_s": round(cpu_r, 1)}
+    emit(bench="heritage_fused_registration", dense_points=dense.n, tls_points=tls.n,
+         cameras_registered=int(resid.size), camera_truth_rms_m=round(float(np.sqrt(np.mean(resid ** 2))), 4),
+         registration_vs_camera_truth=reg_check, data_s={k: round(v, 1) for k, v in data_s.items()})
+
+    def run(label, T=None):
+        if T is None:
+            xyz, vp, n_dense, d_dense = ch.xyz, vp_tls, 0, None
+        else:
+            A = T[:3, :3]
+            sc = float(np.cbrt(np.linalg.det(A)))
+            dxyz = dense.xyz @ A.T + T[:3, 3]
+            f, dist = nearest_face(truth["vertices"], truth["faces"], dxyz)
+            on = truth["target"][f]
+            d_dense = {"p50": round(float(np.median(dist[on])), 4), "p95": round(float(np.percentile(dist[on], 95)), 4),
+                       "rms": round(float(np.sqrt(np.mean(dist[on] ** 2))), 4)}
+            rec = transform_reconstruction(est, Similarity(sc, A / sc, T[:3, 3]))
+            d = Cloud(dxyz[on])
+            xyz = np.vstack([ch.xyz, d.xyz])
+            vp = np.vstack([vp_tls, viewpoints_from_reconstruction(d, rec)])
+            n_dense = d.n
+        keep = np.sort(np.random.default_rng(0).choice(len(xyz), min(HERITAGE_MAX_POINTS, len(xyz)), replace=False))
+        t, c = time.perf_counter(), time.process_time()
+        out = mesh_cloud(Cloud(xyz[keep]), heritage_chain(poisson_backend), vp[keep])
+        wall, cpu = time.perf_counter() - t, time.process_time() - c
+        m2t, t2m = mesh_vs_truth(out.mesh, church)
+        emit(bench=f"heritage_fused_{label}", poisson_backend=next(st.params["backend"] for st in out.steps if st.name == "poisson"),
+             church_height_m=round(height, 3), tls_church_points=int(ch.n),
+             dense_church_points=int(n_dense), dense_church_points_to_truth_m=d_dense, meshed_points=int(keep.size),
+             faces=out.mesh.n_faces,
+             mesh_to_truth_m={k: round(v, 4) for k, v in m2t.items()},
+             truth_to_mesh_m={k: round(v, 4) for k, v in t2m.items()},
+             truth_covered=coverage(samples, out.mesh),
+             rms_over_height_percent=round(100 * m2t["rms"] / height, 3), mesh_wall_s=round(wall, 1),
+             mesh_cpu_s=round(cpu, 1), load1=os.getloadavg()[0])
+
+    run("tls_only")
+    run("tls_dense_registered", r.transform)
+    if with_truth_pose:
+        run("tls_dense_camera_truth", S)
+    emit(bench="heritage_fused_total", wall_s=round(time.perf_counter() - wall0, 1),
+         cpu_s=round(time.process_time() - cpu0, 1))
 
 
 def texture_heritage(workdir):
@@ -346,6 +533,12 @@ if __name__ == "__main__":
     ap.add_argument("--only", default="render,poisson,poisson_backend_open3d,poisson_open3d,bunny,heritage")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--work", default="/tmp/bench_mesh_rig", help="texture: folder of the rendered rig (kept)")
+    ap.add_argument("--sfm-work", default="/tmp/reg_sfm",
+                    help="heritage_fused: data folder of bench_register.py --sfm-tls (made there if missing)")
+    ap.add_argument("--poisson-backend", choices=("open3d", "pymeshlab"), default=None,
+                    help="heritage, heritage_fused: Poisson backend (default: the package's)")
+    ap.add_argument("--with-truth-pose", action="store_true",
+                    help="heritage_fused: also mesh with the dense cloud placed by the camera-truth similarity")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
     ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
     ap.add_argument("--samples-per-node", type=float, default=1.5, help="poisson, poisson_backend_open3d")
@@ -367,6 +560,8 @@ if __name__ == "__main__":
     if "bunny" in todo:
         bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls)
     if "heritage" in todo:
-        heritage()
+        heritage(a.poisson_backend)
     if "texture" in todo:
         texture_heritage(Path(a.work))
+    if "heritage_fused" in todo:
+        heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)

@@ -364,6 +364,31 @@ def _colorize_report(mode, out, cloud, rec, rs, o, local, scene, cam, n_images, 
           "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
 
 
+def sfm_tls_survey(recipe, spec, step_deg: float = 0.3):
+    """The TLS survey of the SfM <-> TLS scenario (a ``SurveyConfig``): 4 stations 10 m beyond the
+    half-diagonal of the rig's target (32 m from the church centre) on its diagonals, 1.6 m
+    above the ground, ``step_deg`` horizontal and vertical steps; station i is point source i + 1."""
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.survey import default_survey
+    from workstation.photogrammetry.rigs import _target_scene
+
+    _, _, _, _, _, centre, size = _target_scene(recipe, spec)
+    r = 0.5 * float(np.hypot(size[0], size[1])) + 10.0
+    st = tuple(Station(float(centre[0] + r * np.cos(a)), float(centre[1] + r * np.sin(a)), 1.6, 0.0)
+               for a in np.radians([45.0, 135.0, 225.0, 315.0]))
+    cfg = default_survey("tls")
+    return replace(cfg, scanner=replace(cfg.scanner, h_step_deg=step_deg, v_step_deg=step_deg), stations=st)
+
+
+def similarity_errors(xyz: np.ndarray, T: np.ndarray, S: np.ndarray) -> dict:
+    """How far the 4x4 similarity ``T`` puts the points ``xyz`` (n, 3) from where the true
+    similarity ``S`` puts them: scale error (%) and position error mean / median / max (m)."""
+    e = np.linalg.norm(xyz @ T[:3, :3].T + T[:3, 3] - (xyz @ S[:3, :3].T + S[:3, 3]), axis=1)
+    sc, s_true = (float(np.cbrt(np.linalg.det(M[:3, :3]))) for M in (T, S))
+    return {"scale_error_pct": round(100 * (sc / s_true - 1), 4), "position_error_mean_m": round(float(e.mean()), 4),
+            "position_error_median_m": round(float(np.median(e)), 4), "position_error_max_m": round(float(e.max()), 4)}
+
+
 def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, reuse: bool = True,
                  calibrated: bool = True):
     """The SfM <-> TLS scenario's data (cached in ``work``): the heritage photo rig
@@ -379,12 +404,11 @@ def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, r
     scale by about the focal-length error (measured: 0.14 %, 5 cm at the cameras), and the
     camera centres then no longer give the structure's true similarity."""
     from workstation.io import read_cloud, write_cloud
-    from workstation.lidar.platforms import Station
     from workstation.lidar.scene import build_scene
-    from workstation.lidar.survey import default_survey, run_survey
+    from workstation.lidar.survey import run_survey
     from workstation.photogrammetry.dense import DenseParams, run_dense
     from workstation.photogrammetry.georef import fit_similarity
-    from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig
+    from workstation.photogrammetry.rigs import load_rig, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
     from workstation.raster.ortho import read_reconstruction
 
@@ -424,13 +448,7 @@ def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, r
     if reuse and tls_path.exists():
         tls = read_cloud(tls_path)
     else:
-        _, _, _, _, _, centre, size = _target_scene(recipe, spec)
-        r = 0.5 * float(np.hypot(size[0], size[1])) + 10.0
-        st = tuple(Station(float(centre[0] + r * np.cos(a)), float(centre[1] + r * np.sin(a)), 1.6, 0.0)
-                   for a in np.radians([45.0, 135.0, 225.0, 315.0]))
-        cfg = default_survey("tls")
-        cfg = replace(cfg, scanner=replace(cfg.scanner, h_step_deg=step_deg, v_step_deg=step_deg), stations=st)
-        tls = run_survey(scene, cfg, seed=spec.seed).cloud
+        tls = run_survey(scene, sfm_tls_survey(recipe, spec, step_deg), seed=spec.seed).cloud
         write_cloud(tls, tls_path, overwrite=True)
     times["tls_s"] = time.perf_counter() - t0
     tls = tls.with_xyz(tls.xyz - np.asarray(scene.origin, float))
@@ -462,10 +480,7 @@ def bench_sfm_tls(work: Path, seed: int = 0, calibrated: bool = True):
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
 
     def errors(T):
-        e = np.linalg.norm(src.xyz @ T[:3, :3].T + T[:3, 3] - (src.xyz @ S[:3, :3].T + S[:3, 3]), axis=1)
-        sc = float(np.cbrt(np.linalg.det(T[:3, :3])))
-        return {"scale_error_pct": round(100 * (sc / s_true - 1), 4), "position_error_mean_m": round(float(e.mean()), 4),
-                "position_error_median_m": round(float(np.median(e)), 4), "position_error_max_m": round(float(e.max()), 4)}
+        return similarity_errors(src.xyz, T, S)
 
     import open3d as o3d
 
