@@ -343,8 +343,6 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     (n, 2) float32
         log(1 + raised area), log(1 + planar-raised area).
     """
-    from scipy import ndimage
-
     out = np.zeros((len(hag), 2), np.float32)
     up = hag > height
     if not up.any():
