@@ -509,6 +509,7 @@ class PointClassifier:
         cfg = json.loads(payload["config"])
         fp = cfg.pop("feature_params")
         fp["min_radii"] = tuple(fp["min_radii"])
+        fp.setdefault("ground_trend_slope", 0.0)  # models saved before the slope-adaptive surface
         cfg["device"] = device
         self = cls(**cfg, feature_params=FeatureParams(**fp))
         from .model import build_mlp

@@ -79,6 +79,12 @@ class FeatureParams:
         crop, a data gap filled by its nearest cells) is still opened away.
     ground_slope : float
         Terrain slope tolerance of the provisional filter (rise/run).
+    ground_trend_slope : float
+        Slope-adaptive provisional filter (dimensionless factor; 0 = off): a second pass with a
+        per-cell tolerance ``max(ground_slope, ground_trend_slope · mean terrain slope over
+        trend_window)``, as SMRF's ``trend_slope`` (:mod:`workstation.ground.smrf`).
+    trend_window : float
+        Side (m) of the box over which the terrain slope is averaged.
     k_fine : int
         Neighbours of the fine eigenvalue scale (on the points, or on ``fine_voxel`` voxels).
     fine_voxel : float
@@ -98,6 +104,8 @@ class FeatureParams:
     min_radii: tuple = (2.5, 5.0, 10.0, 20.0, 40.0)
     ground_window: float = 70.0
     ground_slope: float = 0.15
+    ground_trend_slope: float = 0.5
+    trend_window: float = 30.0
     k_fine: int = 10
     fine_voxel: float = 0.75
     k_coarse: int = 16
@@ -159,7 +167,8 @@ def _fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
 
 
 def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float,
-                       zmin: np.ndarray | None = None, rc=None) -> np.ndarray:
+                       zmin: np.ndarray | None = None, rc=None, trend_slope: float = 0.0,
+                       trend_window: float = 30.0) -> np.ndarray:
     """A provisional bare-earth grid by a progressive morphological filter.
 
     Square openings of the minimum-elevation grid with radii 1, 2, ... cells up to ``window``,
@@ -177,6 +186,10 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
         Largest window (m).
     slope : float
         Slope tolerance (rise/run).
+    trend_slope, trend_window : float
+        When ``trend_slope > 0``, a second pass with the per-cell tolerance
+        ``max(slope, trend_slope · s)``, ``s`` the first pass's terrain slope averaged over a
+        ``trend_window``-metre box (see :class:`FeatureParams`).
 
     Returns
     -------
@@ -195,16 +208,24 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     z0 = _fill_nearest(zmin, empty)
     # SMRF's progressive opening: each radius opens the previous opening; a cell is an object
     # when one step lowers it by more than the slope allows for one cell of radius
-    flagged = np.zeros(shape, bool)
-    last = z0
-    for w in range(1, max(1, int(np.ceil(window / cell))) + 1):
-        size = 2 * w + 1
-        op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
-        flagged |= (last - op) > slope * cell * w
-        last = op
-    bad = flagged | empty
+    def objects(tol):
+        flagged = np.zeros(shape, bool)
+        last = z0
+        for w in range(1, max(1, int(np.ceil(window / cell))) + 1):
+            size = 2 * w + 1
+            op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
+            flagged |= (last - op) > tol * cell * w
+            last = op
+        return flagged
+
+    bad = objects(slope) | empty
     if bad.all():
         return z0
+    if trend_slope > 0:
+        gy, gx = np.gradient(_fill_nearest(z0, bad), cell)
+        width = max(3, int(round(trend_window / cell)) | 1)
+        tol = np.maximum(slope, trend_slope * ndimage.uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
+        bad = objects(tol) | empty
     g = _fill_nearest(z0, bad)
     # smooth the filled cells a little (3 cells), keeping ground cells as measured
     sm = ndimage.uniform_filter(g, size=3, mode="nearest")
@@ -511,7 +532,8 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 5] = np.minimum(mx - m0, 60.0)
     F[:, 6] = np.minimum(mx - z, 60.0)
     # provisional ground at two tolerances
-    g = provisional_ground(xyz, cell, p.ground_window, p.ground_slope, zmin=zmin, rc=(r, c, shape))
+    g = provisional_ground(xyz, cell, p.ground_window, p.ground_slope, zmin=zmin, rc=(r, c, shape),
+                           trend_slope=p.ground_trend_slope, trend_window=p.trend_window)
     F[:, 7] = np.clip(z - _bilinear(g, xyz[:, :2], cell), -20, 60)
     g2 = provisional_ground(xyz, cell, p.ground_window * 0.4, p.ground_slope * 2, zmin=zmin, rc=(r, c, shape))
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
