@@ -72,8 +72,16 @@ def _tileset():
 
     from workstation.ml.dataset import build_tileset, load_dataset_recipe
 
-    cache = Path(os.environ.get("WS_ML_TILESET_CACHE", "/tmp/ws_ml_tileset.pkl"))
-    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    import hashlib
+
+    from workstation.ml.features import FeatureParams
+
+    path = REPO / "datasets_synth" / "ml_train.toml"
+    # the cache is keyed on the recipe and the feature settings: a stale one would score a
+    # model on features it was not trained on
+    key = hashlib.sha1((path.read_text() + json.dumps(FeatureParams().to_dict())).encode()).hexdigest()[:12]
+    cache = Path(os.environ.get("WS_ML_TILESET_CACHE", f"/tmp/ws_ml_tileset_{key}.pkl"))
+    recipe = load_dataset_recipe(path)
     if cache.exists():
         ts = pickle.loads(cache.read_bytes())
         if ts.info and len(ts.info) == len(recipe.recipes) * recipe.scenes_per_recipe * recipe.tiles_per_scene:

@@ -27,8 +27,9 @@ def test_isprs_mean_total_error(shipped, shared_data):
 
     s = isprs_scores(lambda c: shipped.predict(c) == C.GROUND, shared_data / "isprs")
     assert len(s) == 7
-    # measured 3.62 % (goal 3.5 %); the provisional-ground gate alone gives 3.95 %
-    assert s["mean_total"] <= 3.8, s["mean_total"]
+    # measured 3.49 % (goal 3.5 %; 3.68 % before the slope-adaptive provisional surface); the
+    # 0.05 margin is for floating-point differences between CPUs, not for the model
+    assert s["mean_total"] <= 3.55, s["mean_total"]
     assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 3.2
 
 
@@ -37,7 +38,7 @@ def test_dtm_under_predicted_ground(shipped, shared_data, name, rmse_max):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / name)
-    # measured 0.093 m and 0.315 m (autzen_trim, a feet file: 0.192 m, in the benchmark)
+    # measured 0.089 m and 0.328 m (autzen_trim, a feet file: 0.189 m, in the benchmark)
     assert r["dtm_rmse_m"] <= rmse_max, r
 
 
@@ -53,10 +54,10 @@ def test_lidarhd_vegetation_and_house(shipped, shared_data):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / "lidarhd_extra_bytes.laz")
-    # measured vegetation 0.90 (goal 0.85), building 0.685 (goal 0.85, not reached: a house
+    # measured vegetation 0.895 (goal 0.85), building 0.711 (goal 0.85, not reached: a house
     # under trees), ground 0.997
     assert r["vegetation_f1"] >= 0.85, r
-    assert r["building_f1"] >= 0.62, r
+    assert r["building_f1"] >= 0.68, r
     assert r["ground_f1"] >= 0.99, r
 
 
