@@ -68,7 +68,7 @@ def mls_plane_projection(vertices: np.ndarray, xyz: np.ndarray, k: int = 16) -> 
     return vertices - np.einsum("mi,mi->m", vertices - c, n)[:, None] * n
 
 
-def bunny(threads, trims=(0.05,), mls=False):
+def bunny(threads, trims=(0.05,), mls=False, poisson_backend=None):
     from scipy.spatial.transform import Rotation
 
     from workstation.mesh import (CleanParams, DecimateParams, NormalParams, PoissonParams, QualityParams, clean,
@@ -92,7 +92,8 @@ def bunny(threads, trims=(0.05,), mls=False):
     merged = concatenate(scans)
     mm = lambda d: {k: round(v * 1000, 4) for k, v in d.items() if k != "n"}  # noqa: E731
     # one Poisson surface, then each density trim through the rest of the chain
-    (raw, prec), wall_p, cpu_p = timed(poisson, merged, PoissonParams(depth=9, trim_quantile=0.0, threads=threads))
+    backend = {} if poisson_backend is None else {"backend": poisson_backend}
+    (raw, prec), wall_p, cpu_p = timed(poisson, merged, PoissonParams(depth=9, trim_quantile=0.0, threads=threads, **backend))
     dens = np.asarray(raw.vertex_attrs["quality"], dtype=np.float64)
     for trim in trims:
         t0, c0 = time.perf_counter(), time.process_time()
@@ -102,7 +103,7 @@ def bunny(threads, trims=(0.05,), mls=False):
         m, _ = clean(m, CleanParams(report_self_intersections=False))
         wall, cpu = time.perf_counter() - t0 + wall_p, time.process_time() - c0 + cpu_p
         q = mesh_quality(Mesh(m.vertices, m.faces), Cloud(merged.xyz), QualityParams(mesh_samples=200_000))
-        emit(bench="bunny_poisson_pymeshlab", points=merged.n, trim_quantile=trim, faces=q["faces"],
+        emit(bench="bunny_poisson", poisson_backend=prec.params["backend"], point_weight=prec.params["point_weight"], points=merged.n, trim_quantile=trim, faces=q["faces"],
              wall_s=round(wall, 1), cpu_s=round(cpu, 1), poisson_wall_s=round(wall_p, 1),
              non_manifold_edges=q["non_manifold_edges"], mesh_to_scans_mm=mm(q["mesh_to_cloud"]),
              mesh_to_scans_floor_mm=mm(q["mesh_to_cloud_floor"]),
@@ -558,7 +559,7 @@ if __name__ == "__main__":
     if "poisson_open3d" in todo:
         poisson_1m_open3d()
     if "bunny" in todo:
-        bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls)
+        bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls, a.poisson_backend)
     if "heritage" in todo:
         heritage(a.poisson_backend)
     if "texture" in todo:

@@ -17,8 +17,8 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--samples-per-node", type=float, default=1.5, show_default=True,
               help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; ~6 when the finest "
                    "cell is smaller than the point spacing: same surface, 2-3x faster).")
-@click.option("--point-weight", type=float, default=4.0, show_default=True,
-              help="Poisson screening weight (0 = unscreened).")
+@click.option("--point-weight", type=float, default=None,
+              help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab].")
 @click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
 @click.option("--poisson-backend", type=click.Choice(["open3d", "pymeshlab"]), default="open3d", show_default=True,
