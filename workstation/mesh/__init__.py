@@ -1,8 +1,9 @@
 """Meshing with MeshLab filters (pymeshlab): normals, screened Poisson, ball pivoting, 2.5D
 Delaunay, cleaning, decimation, smoothing, colour transfer, a quality summary, and texture
-from oriented photos.
+from oriented photos. Screened Poisson runs Open3D's build of the same PoissonRecon by
+default (MeshLab's is 2x slower here, PyMeshLab #408; see :class:`PoissonParams`).
 
-pymeshlab is imported inside the functions; importing this package is cheap.
+pymeshlab and open3d are imported inside the functions; importing this package is cheap.
 """
 
 from .chain import METHODS, MeshChainParams, MeshResult, mesh_cloud
