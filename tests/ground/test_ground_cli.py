@@ -67,7 +67,11 @@ def test_ground_preset_options_and_refusals(files, capsys):
     # refuses to overwrite, and rejects an option of another method (usage error)
     assert main(["ground", str(d / "in.las"), "-o", str(out), "--method", "pmf"]) == 1
     assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "pmf", "--rigidness", "2"]) == 2
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "pmf", "--trend-slope", "1"]) == 2
     capsys.readouterr()
+    rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_smrf.laz"), "--method", "smrf", "--trend-slope", "1",
+               "--json"])
+    assert rc == 0 and json.loads(capsys.readouterr().out)["params"]["trend_slope"] == 1.0
 
 
 def test_evaluate_text_output(files, capsys):
