@@ -23,8 +23,9 @@ Optional (off by default, PDAL has no such step): ``trend_slope`` makes step 3 f
 terrain. Pingel's ``slope`` is the steepest terrain the filter expects; on a mountainside every
 convex break steeper than it is cut as an object. With ``trend_slope = k > 0`` the object test
 is run a second time with a per-cell slope ``max(slope, k · trend)``, ``trend`` being the
-gradient of the first pass's provisional DEM smoothed over the ``window`` (a box mean), so
-objects are still judged against a flat-terrain slope where the terrain is flat.
+slope magnitude |∇z| of the first pass's provisional DEM averaged over the ``window`` (a box
+mean of the magnitude, so the two flanks of a ridge do not cancel), and objects are still
+judged against a flat-terrain slope where the terrain is flat.
 """
 
 from __future__ import annotations
@@ -153,8 +154,9 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
 
 
 def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams) -> np.ndarray:
-    """Per-cell slope of the object test: ``max(slope, trend_slope · |grad|)`` of the first
-    provisional DEM (``zmin`` without ``bad`` cells, inpainted) box-smoothed over the window."""
+    """Per-cell slope of the object test: ``max(slope, trend_slope · s)``, ``s`` the box mean
+    over the window of |∇z| of the first provisional DEM (``zmin`` without ``bad`` cells,
+    inpainted)."""
     from scipy.ndimage import uniform_filter
 
     if bad.all():
