@@ -22,7 +22,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
 @click.option("--poisson-backend", type=click.Choice(["open3d", "pymeshlab"]), default="open3d", show_default=True,
-              help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2.4x slower here: PyMeshLab #408).")
+              help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2x slower here: PyMeshLab #408).")
 @click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
 @click.option("--radius", type=float, default=None,
               help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")

@@ -49,8 +49,8 @@ class PoissonParams:
         Screening weight of the interpolation term (dimensionless; 0 = plain Poisson). None:
         Kazhdan's default for the backend's B-spline degree, twice the degree: 2 for Open3D's
         build (degree 1), 4 for MeshLab's (degree 2). Depth 10 on a million points through
-        Open3D: 2 gives 51.6 s and a surface error of 0.30 / 1.20 mm (median / 95th
-        percentile, 23 m torus), 4 gives 64 s and 0.25 / 0.99 mm.
+        Open3D on 2 cores: 2 took 51.6-65.5 s over five runs (median 56.2 s), surface error
+        0.30 / 1.20 mm (median / 95th percentile, 23 m torus); 4 took 64 s, 0.25 / 0.99 mm.
     scale : float
         Ratio of the reconstruction cube to the bounding cube of the points (dimensionless).
     iterations : int
@@ -62,9 +62,9 @@ class PoissonParams:
     backend : {"open3d", "pymeshlab"}
         Open3D's build of Kazhdan's screened PoissonRecon (default) or MeshLab's filter (the
         same algorithm and parameters). MeshLab's build is the slow Linux Poisson of PyMeshLab
-        issue #408, measured here: depth 10 on a million points took 140 s on 2 idle cores
-        against 57-60 s through Open3D, with the same surface error (``scripts/bench_mesh.py
-        --only poisson,poisson_backend_open3d``); part of #408 is OpenMP's spinning wait (see
+        issue #408, measured here: depth 10 on a million points took 128 s on 2 idle cores
+        against 64 s through Open3D at the same settings and surface error
+        (``scripts/bench_mesh.py --only poisson,poisson_backend_open3d``); part of #408 is OpenMP's spinning wait (see
         :func:`workstation.mesh.steps.passive_openmp`), the rest is the build itself. So the
         Poisson step of the chain runs through Open3D unless ``pymeshlab`` is asked for.
     threads : int
