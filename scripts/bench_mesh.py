@@ -542,7 +542,7 @@ if __name__ == "__main__":
                     help="heritage_fused: also mesh with the dense cloud placed by the camera-truth similarity")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
     ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
-    ap.add_argument("--samples-per-node", type=float, default=1.5, help="poisson, poisson_backend_open3d")
+    ap.add_argument("--samples-per-node", type=float, default=2.0, help="poisson, poisson_backend_open3d (2: the package default)")
     ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
                     help="poisson_profile: samples_per_node:point_weight:full_depth, comma separated")
     a = ap.parse_args()

@@ -14,9 +14,9 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Screened Poisson (objects, buildings), ball pivoting, or 2.5D Delaunay (terrain).")
 @click.option("--depth", type=click.IntRange(1, 16), default=9, show_default=True,
               help="Poisson octree depth (finest cell = bounding cube / 2^depth).")
-@click.option("--samples-per-node", type=float, default=1.5, show_default=True,
-              help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; ~6 when the finest "
-                   "cell is smaller than the point spacing: same surface, 2-3x faster).")
+@click.option("--samples-per-node", type=float, default=2.0, show_default=True,
+              help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; larger is faster "
+                   "but smooths over sparsely sampled parts).")
 @click.option("--point-weight", type=float, default=None,
               help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab].")
 @click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,

@@ -44,12 +44,16 @@ class PoissonParams:
         the octree stop where the data stop: depth 10 on a million points of a 23 m object
         (0.4 points per finest cell) took 46 s CPU with 6 against 122 s with 1.5, with the same
         surface error (median 0.31 against 0.25 mm, 95th percentile 1.03 against 0.99 mm;
-        ``scripts/bench_mesh.py --only poisson_profile``).
+        ``scripts/bench_mesh.py --only poisson_profile``). Default 2: through Open3D (point
+        weight 2) that torus took 52-54 s in three runs against 55-65 s with 1.5, with a smaller
+        error (0.26 / 1.11 against 0.30 / 1.20 mm), and the bunny's mesh is unchanged (mesh ->
+        scans RMS 0.313 against 0.315 mm); 3 is faster again but invents surface where scans are
+        sparse (bunny RMS 0.53 mm).
     point_weight : float or None
         Screening weight of the interpolation term (dimensionless; 0 = plain Poisson). None:
         Kazhdan's default for the backend's B-spline degree, twice the degree: 2 for Open3D's
         build (degree 1), 4 for MeshLab's (degree 2). Depth 10 on a million points through
-        Open3D on 2 cores: 2 took 51.6-65.5 s over five runs (median 56.2 s), surface error
+        Open3D on 2 cores, samples per node 1.5: 2 took 51.6-65.5 s over six runs, surface error
         0.30 / 1.20 mm (median / 95th percentile, 23 m torus); 4 took 64 s, 0.25 / 0.99 mm.
     scale : float
         Ratio of the reconstruction cube to the bounding cube of the points (dimensionless).
@@ -74,7 +78,7 @@ class PoissonParams:
 
     depth: int = 9
     full_depth: int = 5
-    samples_per_node: float = 1.5
+    samples_per_node: float = 2.0
     point_weight: float | None = None
     scale: float = 1.1
     iterations: int = 8
