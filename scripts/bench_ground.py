@@ -63,19 +63,22 @@ def bench_isprs(data: Path, methods):
         emit({"bench": "isprs", "method": m, "sample": "mean", "total_error": float(np.mean(tot))})
 
 
-def dtm_rmse(xyz, ours, theirs, cell):
-    """RMSE (CRS z unit) between TIN DTMs of two ground sets on a ``cell`` grid inside both hulls."""
+def _tin_at(xyz, sel, q, origin):
+    """TIN of the points ``sel`` sampled at local ``q`` (xy minus ``origin``; NaN outside the hull)."""
     from workstation.ground.common import _one_blas_thread, delaunay, tin_eval
 
-    o = xyz[:, :2].min(axis=0)
+    tri = delaunay(xyz[sel, :2] - origin)
+    with _one_blas_thread():
+        return tin_eval(tri, xyz[sel, 2], q)
+
+
+def dtm_rmse(xyz, ours, theirs, cell):
+    """RMSE, cell count and mean difference (CRS z unit) between TIN DTMs of two ground sets on a
+    ``cell`` grid inside both hulls."""
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
     gx, gy = np.meshgrid(np.arange(lo[0] + cell / 2, hi[0], cell), np.arange(lo[1] + cell / 2, hi[1], cell))
-    q = np.column_stack([gx.ravel(), gy.ravel()]) - o
-    zs = []
-    for g in (ours, theirs):
-        tri = delaunay(xyz[g, :2] - o)
-        with _one_blas_thread():
-            zs.append(tin_eval(tri, xyz[g, 2], q))
+    q = np.column_stack([gx.ravel(), gy.ravel()]) - lo
+    zs = [_tin_at(xyz, g, q, lo) for g in (ours, theirs)]
     ok = np.isfinite(zs[0]) & np.isfinite(zs[1])
     d = zs[0][ok] - zs[1][ok]
     return float(np.sqrt(np.mean(d * d))), int(ok.sum()), float(np.mean(d))
@@ -83,12 +86,8 @@ def dtm_rmse(xyz, ours, theirs, cell):
 
 def height_above_tin(xyz, ground):
     """Height (CRS z unit) of every point above the TIN of ``ground`` (NaN outside its hull)."""
-    from workstation.ground.common import _one_blas_thread, delaunay, tin_eval
-
-    o = xyz[:, :2].min(axis=0)
-    tri = delaunay(xyz[ground, :2] - o)
-    with _one_blas_thread():
-        return xyz[:, 2] - tin_eval(tri, xyz[ground, 2], xyz[:, :2] - o)
+    lo = xyz[:, :2].min(axis=0)
+    return xyz[:, 2] - _tin_at(xyz, ground, xyz[:, :2] - lo, lo)
 
 
 def bench_tiles(data: Path, methods):

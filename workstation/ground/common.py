@@ -287,6 +287,18 @@ def bilinear(grid: np.ndarray, xy: np.ndarray, cell: float, origin) -> np.ndarra
             + (grid[r1, c0] * (1 - tx) + grid[r1, c1] * tx) * ty)
 
 
+def trend_tolerance(z: np.ndarray, cell: float, slope: float, factor: float, window: float) -> np.ndarray:
+    """Per-cell slope tolerance of a slope-adaptive morphological object test:
+    ``max(slope, factor · s)``, ``s`` the box mean over ``window`` (m) of the slope magnitude
+    |∇z| of a filled (no NaN) ground surface ``z`` (rows, cols) on ``cell``-metre cells. The
+    magnitude is averaged, not the surface, so the two flanks of a ridge do not cancel."""
+    from scipy.ndimage import uniform_filter
+
+    gy, gx = np.gradient(z, cell)
+    width = max(3, int(round(window / cell)) | 1)
+    return np.maximum(slope, factor * uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
+
+
 def tin_interpolate(xy_known: np.ndarray, z_known: np.ndarray, xy_query: np.ndarray) -> np.ndarray:
     """Linear interpolation on a Delaunay TIN of (k, 2) points; nearest known value outside the hull."""
     from scipy.spatial import cKDTree

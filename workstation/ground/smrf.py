@@ -154,18 +154,13 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
 
 
 def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams) -> np.ndarray:
-    """Per-cell slope of the object test: ``max(slope, trend_slope · s)``, ``s`` the box mean
-    over the window of |∇z| of the first provisional DEM (``zmin`` without ``bad`` cells,
-    inpainted)."""
-    from scipy.ndimage import uniform_filter
-
+    """Per-cell slope of the object test (:func:`workstation.ground.common.trend_tolerance`) of
+    the first provisional DEM: ``zmin`` without ``bad`` cells, inpainted."""
     if bad.all():
         return np.full(zmin.shape, p.slope)
     z = zmin.copy()
     z[bad] = np.nan
-    width = max(3, int(round(p.window / p.cell)) | 1)
-    gy, gx = np.gradient(common.inpaint(z), p.cell)
-    return np.maximum(p.slope, p.trend_slope * uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
+    return common.trend_tolerance(common.inpaint(z), p.cell, p.slope, p.trend_slope, p.window)
 
 
 def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:

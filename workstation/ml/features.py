@@ -222,10 +222,9 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     if bad.all():
         return z0
     if trend_slope > 0:
-        gy, gx = np.gradient(_fill_nearest(z0, bad), cell)
-        width = max(3, int(round(trend_window / cell)) | 1)
-        tol = np.maximum(slope, trend_slope * ndimage.uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
-        bad = objects(tol) | empty
+        from workstation.ground.common import trend_tolerance
+
+        bad = objects(trend_tolerance(_fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
     g = _fill_nearest(z0, bad)
     # smooth the filled cells a little (3 cells), keeping ground cells as measured
     sm = ndimage.uniform_filter(g, size=3, mode="nearest")
