@@ -72,6 +72,12 @@ def test_ground_preset_options_and_refusals(files, capsys):
     rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_smrf.laz"), "--method", "smrf", "--trend-slope", "1",
                "--json"])
     assert rc == 0 and json.loads(capsys.readouterr().out)["params"]["trend_slope"] == 1.0
+    # the understorey step is auto's, on by default
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "smrf", "--no-understorey"]) == 2
+    rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_auto_nu.laz"), "--method", "auto", "--no-understorey",
+               "--json"])
+    info = json.loads(capsys.readouterr().out)
+    assert rc == 0 and info["params"]["understorey"] is False and info["params"]["understorey_params"]["threshold"] == 0.2
 
 
 def test_evaluate_text_output(files, capsys):

@@ -159,3 +159,28 @@ def test_random_forest_baseline_same_harness():
     assert (rf.predict(test) == np.asarray(test.attrs["classification"])).mean() > 0.95
     with pytest.raises(InvalidInputError):
         PointClassifier(model="svm")
+
+
+def test_understorey_step_under_canopy_only(tiny_model, tmp_path):
+    """With return numbers that show a canopy, ground points well above the ground's lower
+    envelope leave the ground class; without them (or switched off) nothing changes."""
+    c = two_class_scene(12)
+    rng = np.random.default_rng(3)
+    z = c.xyz[:, 2].copy()
+    ground = np.asarray(c.attrs["classification"]) == C.GROUND
+    lift = ground & (rng.uniform(size=c.n) < 0.2)
+    z[lift] += 0.35  # understorey in the gate's 0.5 m band
+    lifted = Cloud(np.column_stack([c.xyz[:, :2], z]), dict(c.attrs), crs=c.crs)
+    plain = tiny_model.predict(lifted)
+    n = c.n
+    echoes = lifted.with_attrs(return_number=np.full(n, 2, np.uint8), number_of_returns=np.full(n, 2, np.uint8))
+    with_step = tiny_model.predict(echoes)
+    assert (plain[lift] == C.GROUND).mean() > 0.8  # the band lets them in
+    assert (with_step[lift] == C.GROUND).mean() < 0.2
+    assert (with_step[ground & ~lift] == C.GROUND).mean() > 0.9 * (plain[ground & ~lift] == C.GROUND).mean()
+    single = echoes.with_attrs(number_of_returns=np.ones(n, np.uint8), return_number=np.ones(n, np.uint8))
+    np.testing.assert_array_equal(tiny_model.predict(single), plain)
+    off = PointClassifier.load(tiny_model.save(tmp_path / "u.pt"), device="cpu")
+    assert off.understorey is True and off.config()["understorey"] is True
+    off.understorey = False
+    np.testing.assert_array_equal(off.predict(echoes), plain)

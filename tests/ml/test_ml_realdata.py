@@ -33,13 +33,14 @@ def test_isprs_mean_total_error(shipped, shared_data):
     assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 3.2
 
 
-@pytest.mark.parametrize("name, rmse_max", [("MixedConifer.laz", 0.12), ("Topography.laz", 0.34)])
-def test_dtm_under_predicted_ground(shipped, shared_data, name, rmse_max):
+@pytest.mark.parametrize("name", ["MixedConifer.laz", "Topography.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las"])
+def test_dtm_under_predicted_ground(shipped, shared_data, name):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / name)
-    # measured 0.089 m and 0.328 m (autzen_trim, a feet file: 0.189 m, in the benchmark)
-    assert r["dtm_rmse_m"] <= rmse_max, r
+    # the goal (issue 5); measured 0.089, 0.242, 0.213, 0.234 and 0.168 m with the
+    # understorey step (0.089, 0.328, 0.289, 0.370, 0.189 m without it)
+    assert r["dtm_rmse_m"] <= 0.25, r
 
 
 def test_building_roof_of_sample_c(shipped, shared_data):

@@ -5,6 +5,8 @@ trend slope (``trend_slope=1``: mountainsides are not cut as objects), SMRF with
 (threshold 0.3 m, scalar 1.0; fewer low objects accepted), PMF (square windows, a different
 failure mode on slopes), CSF (a cloth: bridges objects, follows terraces) and PTD (a TIN grown
 from seeds: follows slopes and breaklines). A point is ground when at least three say so.
+Then, where the echoes show a canopy, the understorey the vote let in is taken out
+(:mod:`workstation.ground.understorey`; a no-op without return numbers).
 Measured on the six ISPRS samples (docs/benchmarks.md): the vote beats each member's mean
 total error, but does not reach the 2.7 % of per-sample tuned SMRF. Tried and not better there
 (one parameter set): unanimous members refined by a slope-scaled TIN test, unanimous members
@@ -25,6 +27,7 @@ from .csf import CSFParams, csf_ground
 from .pmf import PMFParams, pmf_ground
 from .ptd import PTDParams, ptd_ground
 from .smrf import SMRFParams, smrf_ground
+from .understorey import UnderstoreyParams, canopy_share, refine_understorey
 
 STAGE = "ground.auto"
 
@@ -47,6 +50,9 @@ class AutoParams:
         Fifth member (PTD defaults).
     min_votes : int
         Votes needed for ground (3 of 5).
+    understorey : bool
+        Take the understorey out of the ground under canopy (True; needs return numbers).
+    understorey_params : UnderstoreyParams
     reclassify, last_returns_only : bool
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
@@ -57,6 +63,8 @@ class AutoParams:
     csf: CSFParams = field(default_factory=CSFParams)
     ptd: PTDParams = field(default_factory=PTDParams)
     min_votes: int = 3
+    understorey: bool = True
+    understorey_params: UnderstoreyParams = field(default_factory=UnderstoreyParams)
     reclassify: bool = False
     last_returns_only: bool = True
 
@@ -64,12 +72,16 @@ class AutoParams:
 PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "urban", "forest", "steep")}
 
 
-def auto_ground(xyz: np.ndarray, p: AutoParams) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points by the majority vote."""
+def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points by the majority vote, refined under
+    canopy where ``share`` (:func:`workstation.ground.understorey.canopy_share`) is given."""
     votes = (smrf_ground(xyz, p.smrf_wide).astype(np.int8) + smrf_ground(xyz, p.smrf_tight).astype(np.int8)
              + pmf_ground(xyz, p.pmf).astype(np.int8) + csf_ground(xyz, p.csf).astype(np.int8)
              + ptd_ground(xyz, p.ptd).astype(np.int8))
-    return votes >= p.min_votes
+    ground = votes >= p.min_votes
+    if p.understorey and share is not None:
+        ground = refine_understorey(xyz, ground, share, p.understorey_params)
+    return ground
 
 
 def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
@@ -83,4 +95,8 @@ def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
     p = replace(params or AutoParams(), **overrides)
     t0 = time.perf_counter()
     prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only)
-    return common.write_classes(cloud, prep, auto_ground(prep.xyz, p), STAGE, p, t0, p.reclassify)
+    share = None
+    if p.understorey and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs:
+        share = canopy_share(prep.xyz[:, :2], np.asarray(cloud.attrs["return_number"])[prep.index],
+                             np.asarray(cloud.attrs["number_of_returns"])[prep.index], p.understorey_params.canopy_cell)
+    return common.write_classes(cloud, prep, auto_ground(prep.xyz, p, share), STAGE, p, t0, p.reclassify)

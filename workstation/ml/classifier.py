@@ -151,6 +151,11 @@ class PointClassifier:
         ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
         provisional surface: the network repairs the surface where the morphological filter
         cut into the terrain (ridges, embankments, steep edges).
+    understorey : bool
+        Under canopy (read from the echoes), ground points above the lower envelope of the
+        ground take the network's best non-ground class
+        (:func:`workstation.ground.understorey.refine_understorey`, the step ``auto`` ends
+        with; needs return numbers, a no-op without them). A rule, not learned.
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
@@ -160,7 +165,7 @@ class PointClassifier:
                  veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
-                 gate_promote_height: float = 1.5, segment_weight: float = 0.8):
+                 gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -191,6 +196,7 @@ class PointClassifier:
         self.gate_promote_probability = float(gate_promote_probability)
         self.gate_promote_height = float(gate_promote_height)
         self.segment_weight = float(segment_weight)
+        self.understorey = bool(understorey)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -412,7 +418,20 @@ class PointClassifier:
         (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
         return self._proba_and_hag(cloud)[0]
 
-    def _codes(self, P: np.ndarray, hs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _understorey(self, ground: np.ndarray, cloud: Cloud | None) -> np.ndarray:
+        """``ground`` without the understorey under canopy (see ``understorey``)."""
+        if not self.understorey or cloud is None or not {"return_number", "number_of_returns"} <= set(cloud.attrs):
+            return ground
+        from workstation.ground.understorey import UnderstoreyParams, canopy_share, refine_understorey
+
+        p = UnderstoreyParams()
+        xyz, _, _ = metric_xyz(cloud)
+        share = canopy_share(xyz[:, :2], cloud.attrs["return_number"], cloud.attrs["number_of_returns"], p.canopy_cell)
+        return refine_understorey(xyz, ground, share, p)
+
+    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """ASPRS codes and confidences from the probabilities and the provisional-ground
+        height and slope; ``cloud`` (the same points) enables the understorey step."""
         hag, slope = hs[:, 0], hs[:, 1]
         k = P.argmax(axis=1)
         conf = P[np.arange(len(P)), k].astype(np.float32)
@@ -420,6 +439,7 @@ class PointClassifier:
             band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
             ground = band & (P[:, 0] >= self.gate_min_probability)
             ground |= (P[:, 0] >= self.gate_promote_probability) & (np.abs(hag) <= self.gate_promote_height)
+            ground = self._understorey(ground, cloud)
             rest = P[:, 1:]
             k2 = rest.argmax(axis=1) + 1
             c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
@@ -437,14 +457,14 @@ class PointClassifier:
     def predict(self, cloud: Cloud) -> np.ndarray:
         """ASPRS class codes (n,) uint8 for every point."""
         P, hag = self._proba_and_hag(cloud)
-        return self._codes(P, hag)[0]
+        return self._codes(P, hag, cloud)[0]
 
     def classify(self, cloud: Cloud) -> Cloud:
         """A new cloud with ``classification`` (u8 ASPRS) and ``confidence`` (f4, the winning
         class probability); every other attribute is kept unchanged."""
         t0 = time.perf_counter()
         P, hag = self._proba_and_hag(cloud)
-        codes, conf = self._codes(P, hag)
+        codes, conf = self._codes(P, hag, cloud)
         if not np.isfinite(conf).all():
             raise StageError("classify", "non-finite probabilities", "check the input coordinates for NaN")
         out = cloud.with_attrs(classification=codes, confidence=conf)
@@ -463,7 +483,7 @@ class PointClassifier:
                 "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
                 "gate_min_probability": self.gate_min_probability,
                 "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
-                "segment_weight": self.segment_weight}
+                "segment_weight": self.segment_weight, "understorey": self.understorey}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

@@ -49,7 +49,7 @@ def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
     t0 = time.perf_counter()
     clf = PointClassifier.load(params.model, device=params.device)
     P, hs = clf._proba_and_hag(cloud)
-    codes, _ = clf._codes(P, hs)
+    codes, _ = clf._codes(P, hs, cloud)
     ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
     if not ground.any():
         raise StageError("ground_ml", "no point was classified as ground", "check the units and the input; try another method")
