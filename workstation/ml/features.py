@@ -265,16 +265,24 @@ def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _eigvec(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
-    """Unit eigenvectors (m, 3) of symmetric 3x3 matrices for eigenvalues ``lam`` (m,):
-    the largest cross product of two rows of (A - lam I)."""
-    a = cov - lam[:, None, None] * np.eye(3)
-    c0 = np.cross(a[:, 0], a[:, 1])
-    c1 = np.cross(a[:, 0], a[:, 2])
-    c2 = np.cross(a[:, 1], a[:, 2])
-    n0, n1, n2 = (c0 * c0).sum(1), (c1 * c1).sum(1), (c2 * c2).sum(1)
-    v = np.where((n0 >= n1)[:, None], c0, c1)
+    """Unit eigenvectors (m, 3) of 3x3 matrices for eigenvalues ``lam`` (m,): the largest
+    cross product of two rows of (A - lam I), written out per component (the same operations
+    as ``np.cross``, without its (m, 3) temporaries)."""
+    a00, a11, a22 = cov[:, 0, 0] - lam, cov[:, 1, 1] - lam, cov[:, 2, 2] - lam
+    a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
+    a10, a20, a21 = cov[:, 1, 0], cov[:, 2, 0], cov[:, 2, 1]
+    c0 = (a01 * a12 - a02 * a11, a02 * a10 - a00 * a12, a00 * a11 - a01 * a10)  # row 0 x row 1
+    c1 = (a01 * a22 - a02 * a21, a02 * a20 - a00 * a22, a00 * a21 - a01 * a20)  # row 0 x row 2
+    c2 = (a11 * a22 - a12 * a21, a12 * a20 - a10 * a22, a10 * a21 - a11 * a20)  # row 1 x row 2
+    n0 = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]
+    n1 = c1[0] * c1[0] + c1[1] * c1[1] + c1[2] * c1[2]
+    n2 = c2[0] * c2[0] + c2[1] * c2[1] + c2[2] * c2[2]
+    first = n0 >= n1
     nv = np.maximum(n0, n1)
-    v = np.where((n2 > nv)[:, None], c2, v)
+    third = n2 > nv
+    v = np.empty((len(cov), 3))
+    for j in range(3):
+        v[:, j] = np.where(third, c2[j], np.where(first, c0[j], c1[j]))
     nv = np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
     return v / nv[:, None]
 
