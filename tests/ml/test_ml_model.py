@@ -184,3 +184,31 @@ def test_understorey_step_under_canopy_only(tiny_model, tmp_path):
     assert off.understorey is True and off.config()["understorey"] is True
     off.understorey = False
     np.testing.assert_array_equal(off.predict(echoes), plain)
+
+
+def test_roof_test_sends_rough_building_points_to_their_next_class(tiny_model, tmp_path):
+    """Points the network calls building whose neighbourhood is not planar (a crown) take the
+    best other object class; a gabled roof keeps its class; the setting is saved."""
+    from tests.ml.test_ml_roofs import gabled_house_and_crown
+
+    xyz, label, hag = gabled_house_and_crown(seed=5)
+    cloud = Cloud(xyz + [500000, 5000000, 100], {}, crs="EPSG:32632")
+    n = len(xyz)
+    P = np.zeros((n, len(MODEL_CLASSES)), np.float32)
+    raised = label != 2
+    P[~raised, 0] = 1.0
+    P[raised, 2], P[raised, 1], P[raised, 4] = 0.7, 0.2, 0.1  # building, then vegetation, other
+    hs = np.column_stack([hag, np.zeros(n)]).astype(np.float32)
+    codes, conf = tiny_model._codes(P, hs, cloud)
+    assert (codes[label == 6] == C.BUILDING).mean() > 0.97
+    crown = label == 5
+    assert (codes[crown] == C.HIGH_VEGETATION).mean() > 0.8
+    moved = crown & (codes == C.HIGH_VEGETATION)
+    np.testing.assert_allclose(conf[moved], 0.2 / 0.3, rtol=1e-5)
+    tiny_model.roof_test = False
+    try:
+        assert (tiny_model._codes(P, hs, cloud)[0][crown] == C.BUILDING).all()
+    finally:
+        tiny_model.roof_test = True
+    loaded = PointClassifier.load(tiny_model.save(tmp_path / "r.pt"), device="cpu")
+    assert loaded.roof_test is True and loaded.config()["roof_test"] is True

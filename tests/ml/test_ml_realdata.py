@@ -47,7 +47,8 @@ def test_building_roof_of_sample_c(shipped, shared_data):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / "sample_c.las")
-    # measured 0.982: a roof 26 m up that fills the crop (the goal is 0.85)
+    # measured 0.985 (0.982 before the roof planarity test): a roof 26 m up that fills the
+    # crop (the goal is 0.85)
     assert r["building_f1"] >= 0.9, r
 
 
@@ -55,10 +56,10 @@ def test_lidarhd_vegetation_and_house(shipped, shared_data):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / "lidarhd_extra_bytes.laz")
-    # measured vegetation 0.895 (goal 0.85), building 0.711 (goal 0.85, not reached: a house
-    # under trees), ground 0.997
+    # measured vegetation 0.909 (goal 0.85), building 0.854 (goal 0.85; 0.703 without the
+    # roof planarity test: a crown of single returns over a shed), ground 0.997
     assert r["vegetation_f1"] >= 0.85, r
-    assert r["building_f1"] >= 0.68, r
+    assert r["building_f1"] >= 0.85, r
     assert r["ground_f1"] >= 0.99, r
 
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 import io
 import json
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -66,6 +67,24 @@ def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarra
     out = P.copy()
     out[sel, 1:] = blend * (1.0 - P[sel, :1])
     return out
+
+
+@dataclass
+class _RoofJob:
+    """A roof planarity test under way: the tester (a future of
+    :class:`workstation.ml.roofs.RoofTest`), the candidates given to it and the future of
+    :func:`_run_roof_job`."""
+
+    tester: object
+    tested: np.ndarray
+    fail: object
+
+
+def _run_roof_job(tester, candidate):
+    """The roof test of :class:`_RoofJob`: (tested points, their failures, the vote)."""
+    t = tester.result()
+    tested, bad = t.test(candidate)
+    return tested, bad, t.vote(candidate, tested, bad)
 
 
 @dataclass
@@ -165,7 +184,8 @@ class PointClassifier:
                  veg_low_max: float = 0.5, veg_medium_max: float = 2.0, ignore_features=(),
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
-                 gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True):
+                 gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True,
+                 roof_test: bool = True, roof_tolerance: float = 0.08):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -197,6 +217,8 @@ class PointClassifier:
         self.gate_promote_height = float(gate_promote_height)
         self.segment_weight = float(segment_weight)
         self.understorey = bool(understorey)
+        self.roof_test = bool(roof_test)
+        self.roof_tolerance = float(roof_tolerance)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -395,56 +417,127 @@ class PointClassifier:
 
     def _proba_and_hag(self, cloud: Cloud) -> tuple[np.ndarray, np.ndarray]:
         """Network probabilities (n, c) and the provisional-ground height and slope (n, 2)."""
+        return self._infer(cloud)[:2]
+
+    def _roof_tester(self, cloud: Cloud, hag: np.ndarray):
+        from .roofs import RoofParams, RoofTest
+
+        return RoofTest(metric_xyz(cloud)[0], hag, RoofParams(tolerance=self.roof_tolerance),
+                        workers=self.feature_params.workers)
+
+    def _infer(self, cloud: Cloud, roof: bool = False):
+        """Probabilities, provisional-ground height and slope, and (``roof``, a single tile)
+        the roof test already under way in the background (:class:`_RoofJob`), else None.
+
+        For a single tile the roof test's KD-tree is built beside the network, and its
+        queries start on the building points (after the segment step and the gate) while
+        :meth:`_codes` runs the understorey step, which may add a few more (tested there)."""
         self._check_fitted()
         if cloud.n < 3:
             raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
         P = np.zeros((cloud.n, len(MODEL_CLASSES)), np.float32)
         hag = np.zeros((cloud.n, 2), np.float32)
         for core, sel in self._tiles(cloud):
+            whole = len(sel) == cloud.n and bool(core.all())
             sub = cloud if len(sel) == cloud.n else cloud[sel]
             F = self.features(sub)
-            p = self.predict_proba_features(F)
-            if self.segment_weight > 0:
-                p = _segment_mean(p, planar_segments(sub, F, self.feature_params), self.segment_weight)
-            if len(sel) == cloud.n and core.all():  # one tile: no copies
-                return p, F[:, [_HAG_COL, _SLOPE_COL]]
+            # numpy and the KD-tree beside the network (torch)
+            pool = ThreadPoolExecutor(max_workers=2)
+            try:
+                seg = pool.submit(planar_segments, sub, F, self.feature_params) if self.segment_weight > 0 else None
+                tester = pool.submit(self._roof_tester, sub, F[:, _HAG_COL]) if whole and roof and self.roof_test else None
+                p = self.predict_proba_features(F)
+                if seg is not None:
+                    p = _segment_mean(p, seg.result(), self.segment_weight)
+                job = None
+                if tester is not None:  # the candidates _codes will have, but the understorey's
+                    cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])
+                    job = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
+            finally:
+                pool.shutdown(wait=False)  # the roof job runs on
+            if whole:  # one tile: no copies
+                return p, F[:, [_HAG_COL, _SLOPE_COL]], job
             keep = core[sel]
             P[sel[keep]] = p[keep]
             hag[sel[keep]] = F[:, [_HAG_COL, _SLOPE_COL]][keep]
-        return P, hag
+        return P, hag, None
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
         """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes
         (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
         return self._proba_and_hag(cloud)[0]
 
-    def _understorey(self, ground: np.ndarray, cloud: Cloud | None) -> np.ndarray:
+    def _understorey(self, ground: np.ndarray, cloud: Cloud | None, xyz: np.ndarray | None = None) -> np.ndarray:
         """``ground`` without the understorey under canopy (see ``understorey``)."""
         if not self.understorey or cloud is None or not {"return_number", "number_of_returns"} <= set(cloud.attrs):
             return ground
         from workstation.ground.understorey import UnderstoreyParams, canopy_share, refine_understorey
 
         p = UnderstoreyParams()
-        xyz, _, _ = metric_xyz(cloud)
+        xyz = metric_xyz(cloud)[0] if xyz is None else xyz
         share = canopy_share(xyz[:, :2], cloud.attrs["return_number"], cloud.attrs["number_of_returns"], p.canopy_cell)
         return refine_understorey(xyz, ground, share, p)
 
-    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """ASPRS codes and confidences from the probabilities and the provisional-ground
-        height and slope; ``cloud`` (the same points) enables the understorey step."""
+    def _nonplanar(self, candidate: np.ndarray, hag: np.ndarray, cloud: Cloud | None, job) -> np.ndarray | None:
+        """Building candidates that fail the roof planarity test (see ``roof_test``); ``job``:
+        the test started by :meth:`_infer`, completed here for the candidates it did not have."""
+        if not self.roof_test or cloud is None:
+            return None
+        if job is None:
+            if int(np.count_nonzero(candidate)) < 3:
+                return None
+            return self._roof_tester(cloud, hag).nonplanar(candidate)
+        tested, bad, fail = job.fail.result()
+        extra = candidate & ~job.tested
+        if extra.any():  # the newcomers: their voxels' tests, then their votes among every test
+            t = job.tester.result()
+            t2, b2 = t.test(extra)
+            fail = fail | t.vote(extra, np.concatenate([tested, t2]), np.concatenate([bad, b2]))
+        return fail
+
+    def _gate(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
+        """Ground of the gate (before the understorey step)."""
         hag, slope = hs[:, 0], hs[:, 1]
+        band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
+        ground = band & (P[:, 0] >= self.gate_min_probability)
+        ground |= (P[:, 0] >= self.gate_promote_probability) & (np.abs(hag) <= self.gate_promote_height)
+        return ground
+
+    def _building_candidates(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
+        """Points that are building before the roof test (and the understorey step)."""
+        if not self.ground_gate:
+            return P.argmax(axis=1) == 2
+        return (P[:, 1:].argmax(axis=1) == 1) & ~self._gate(P, hs)
+
+    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None = None, roof=None) -> tuple[np.ndarray, np.ndarray]:
+        """ASPRS codes and confidences from the probabilities and the provisional-ground
+        height and slope; ``cloud`` (the same points) enables the understorey step and the
+        roof planarity test (``roof``: the test :meth:`_infer` started, if any)."""
+        hag = hs[:, 0]
         k = P.argmax(axis=1)
         conf = P[np.arange(len(P)), k].astype(np.float32)
+        xyz = metric_xyz(cloud)[0] if cloud is not None and self.understorey else None
         if self.ground_gate:
-            band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
-            ground = band & (P[:, 0] >= self.gate_min_probability)
-            ground |= (P[:, 0] >= self.gate_promote_probability) & (np.abs(hag) <= self.gate_promote_height)
-            ground = self._understorey(ground, cloud)
+            ground = self._gate(P, hs)
             rest = P[:, 1:]
             k2 = rest.argmax(axis=1) + 1
+            # (the roof test started by _infer runs on meanwhile)
+            ground = self._understorey(ground, cloud, xyz)
+            fail = self._nonplanar((k2 == 2) & ~ground, hag, cloud, roof)
             c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
             k = np.where(ground, 0, k2)
             conf = np.where(ground, np.maximum(P[:, 0], 0.5), np.minimum(c2, 1.0)).astype(np.float32)
+        else:
+            fail = self._nonplanar(k == 2, hag, cloud, roof)
+        if fail is not None:
+            fail &= k == 2
+            if fail.any():  # the best class other than ground and building
+                others = np.array([1, 3, 4, 5])  # vegetation, water, other, noise
+                best = others[P[fail][:, others].argmax(axis=1)]
+                k = k.copy()
+                k[fail] = best
+                conf = conf.copy()
+                conf[fail] = P[fail, best] / np.maximum(P[fail][:, others].sum(axis=1), 1e-6)
         veg = np.where(hag < self.veg_low_max, C.LOW_VEGETATION,
                        np.where(hag < self.veg_medium_max, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION))
         noise = np.where(hag < 0, C.LOW_POINT, C.HIGH_NOISE)
@@ -456,15 +549,15 @@ class PointClassifier:
 
     def predict(self, cloud: Cloud) -> np.ndarray:
         """ASPRS class codes (n,) uint8 for every point."""
-        P, hag = self._proba_and_hag(cloud)
-        return self._codes(P, hag, cloud)[0]
+        P, hag, roof = self._infer(cloud, roof=True)
+        return self._codes(P, hag, cloud, roof)[0]
 
     def classify(self, cloud: Cloud) -> Cloud:
         """A new cloud with ``classification`` (u8 ASPRS) and ``confidence`` (f4, the winning
         class probability); every other attribute is kept unchanged."""
         t0 = time.perf_counter()
-        P, hag = self._proba_and_hag(cloud)
-        codes, conf = self._codes(P, hag, cloud)
+        P, hag, roof = self._infer(cloud, roof=True)
+        codes, conf = self._codes(P, hag, cloud, roof)
         if not np.isfinite(conf).all():
             raise StageError("classify", "non-finite probabilities", "check the input coordinates for NaN")
         out = cloud.with_attrs(classification=codes, confidence=conf)
@@ -483,7 +576,8 @@ class PointClassifier:
                 "ground_gate": self.ground_gate, "gate_threshold": self.gate_threshold, "gate_scalar": self.gate_scalar,
                 "gate_min_probability": self.gate_min_probability,
                 "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
-                "segment_weight": self.segment_weight, "understorey": self.understorey}
+                "segment_weight": self.segment_weight, "understorey": self.understorey,
+                "roof_test": self.roof_test, "roof_tolerance": self.roof_tolerance}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

@@ -131,16 +131,33 @@ def metric_xyz(cloud: Cloud) -> tuple[np.ndarray, float, float]:
     """
     from workstation.ground.common import crs_unit_factors
 
+    import weakref
+
+    src = cloud.xyz
+    hit = _METRIC_CACHE[0]
+    if hit is not None and hit[0]() is src and hit[1] == cloud.crs:  # the features, the segments,
+        return hit[2], hit[3], hit[4]  # the roof test and the understorey step of one cloud
     try:
         hf, vf = crs_unit_factors(cloud.crs)
     except Exception:  # unparsable CRS: assume metres
         hf, vf = 1.0, 1.0
-    xyz = np.asarray(cloud.xyz, np.float64)
+    xyz = np.asarray(src, np.float64)
     lo = xyz.min(axis=0)
     out = np.empty_like(xyz)
     out[:, :2] = (xyz[:, :2] - lo[:2]) * hf
     out[:, 2] = (xyz[:, 2] - lo[2]) * vf
+    out.flags.writeable = False  # shared by the callers of one cloud
+    try:  # kept while the cloud's coordinates live, dropped with them
+        key = weakref.ref(src)
+        weakref.finalize(src, _METRIC_CACHE.__setitem__, 0, None)
+        _METRIC_CACHE[0] = (key, cloud.crs, out, hf, vf)
+    except TypeError:  # not weak-referenceable: no cache
+        pass
     return out, hf, vf
+
+
+#: The last cloud's metric coordinates: (weak reference to its xyz array, CRS, result, factors).
+_METRIC_CACHE: list = [None]
 
 
 # -- grids --------------------------------------------------------------------------------
@@ -547,6 +564,8 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
     # both eigen scales: one query per voxel among the voxel representatives, broadcast
+    F[:, 24:29] = _echo_features(cloud)  # while the kNN threads finish
+    F[:, 29:31] = _intensity_features(cloud)
     (ef, zr, dh, finv), (ec, _, _, inv) = [f.result() for f in futures]
     pool.shutdown()
     F[:, 10:16] = ef[finv, :6]
@@ -555,8 +574,6 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
     dh = dh[finv]
     F[:, 18:24] = ec[inv, :6]
-    F[:, 24:29] = _echo_features(cloud)
-    F[:, 29:31] = _intensity_features(cloud)
     med = float(np.median(dh)) if n else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
     F[:, 32:34] = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)

@@ -1,0 +1,245 @@
+"""Roof planarity test: a building point must lie on a locally planar surface.
+
+The rule-based building classifiers users know accept a roof only where the points follow a
+plane: LAStools ``lasclassify`` takes neighbouring points more than 2 m above the ground over a
+search area of about 2 m as a roof when their standard deviation from the plane they share is
+below ``-planar 0.1`` m, and as trees when it is above ``-rugged 0.4`` m; TerraScan's
+*Buildings* routine fits roof planes with a Z tolerance "related to the noise level of the
+points on roof planes". The point classifier ends with the same test on the points its network
+calls building: a crown whose laser returns are single echoes (dense foliage, leaf-on) can look
+like a roof to the per-point features at their 0.75 m / 1.5 m voxel scales, but not to a plane
+fitted through the raw points around it.
+
+For each candidate the test fits least-squares planes to its ``k`` nearest raised points
+(more than ``min_height`` above the provisional ground, the candidate included): to the whole
+neighbourhood and to each of its four half-discs (the neighbours on one side of the candidate
+along x or y), so a point on a ridge, an eave or a roof step, whose disc straddles two planes,
+still has a planar half-disc. The residual is the square root of the smallest eigenvalue of
+the covariance (the RMS distance to the plane); the candidate fails when the smallest of the
+five residuals exceeds ``tolerance``. 0.08 m is a little stricter than lasclassify's 0.1 m
+(its search area is 2 m wide, ours about 2.5 m at 5 points per m²); a noisy scan needs a
+larger value, as lasclassify's documentation advises for its own ("try -planar 0.2"). A
+candidate whose ``k``-th neighbour lies farther than ``max_radius`` (a sparse scan:
+lasclassify needs about 2 pulses per m²) is not tested. The candidates of one small voxel
+share one test (the voxel's first point), which keeps the cost at one 24-neighbour query per
+occupied 0.5 m voxel.
+
+References
+----------
+M. Isenburg, LAStools: lasclassify README (rapidlasso GmbH).
+Terrasolid, TerraScan User Guide: Classify / Buildings.
+"""
+
+from __future__ import annotations
+
+import os
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class RoofParams:
+    """Settings of the roof planarity test (lengths in metres).
+
+    Attributes
+    ----------
+    k : int
+        Neighbours of the plane fit (16: about a 2 m wide patch at 5 points/m²).
+    tolerance : float
+        Least RMS distance (m) to the local plane that fails the test (lasclassify's
+        ``-planar 0.1``).
+    min_height : float
+        Points more than this far above the provisional ground (m) form the neighbourhoods.
+    max_radius : float
+        Candidates whose ``k``-th neighbour is farther (m) are not tested.
+    voxel : float
+        One candidate per voxel of this side (m), its first, is tested (0: every candidate).
+    vote : int
+        Each candidate takes the majority decision of the ``vote`` tested candidates nearest
+        to it (itself among them when it was tested): one test per voxel, and decisions that
+        do not flip from point to point at the edge of a crown.
+    """
+
+    k: int = 24
+    tolerance: float = 0.08
+    min_height: float = 0.5
+    max_radius: float = 3.0
+    voxel: float = 1.0
+    vote: int = 5
+
+    def to_dict(self) -> dict:
+        return asdict(self)
+
+
+def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -1, tree=None) -> tuple[np.ndarray, np.ndarray]:
+    """RMS distance (m) of each query point's ``k`` nearest ``ref`` points to the
+    least-squares plane of the best of their disc and four half-discs, and the distance to
+    the ``k``-th neighbour.
+
+    Parameters
+    ----------
+    query : (m, 3) float
+    ref : (r, 3) float
+    k : int
+    workers : int
+        Threads of the KD-tree query (-1 = all cores).
+    tree : scipy.spatial.cKDTree, optional
+        A tree of ``ref`` built beforehand.
+
+    Returns
+    -------
+    resid, dk : (m,) float64
+    """
+    from scipy.spatial import cKDTree
+
+    k = int(min(k, len(ref)))
+    if k < 3 or len(query) == 0:
+        return np.zeros(len(query)), np.full(len(query), np.inf)
+    tree = tree if tree is not None else cKDTree(ref, balanced_tree=False, compact_nodes=False)
+    best = np.empty(len(query))
+    dk = np.empty(len(query))
+
+    def block(s):  # one block of candidates: its query and its moments stay in the cache
+        d, i = tree.query(query[s:s + step], k=k, workers=1)
+        dk[s:s + step] = d[:, -1]
+        best[s:s + step] = _min_plane_variance(ref[i] - query[s:s + step, None, :], k)
+
+    step = 8192
+    starts = range(0, len(query), step)
+    threads = (os.cpu_count() or 1) if workers in (-1, None) else max(int(workers), 1)
+    if threads > 1 and len(query) > step:  # KD-tree queries and numpy release the GIL
+        with ThreadPoolExecutor(max_workers=threads) as pool:
+            list(pool.map(block, starts))
+    else:
+        for s in starts:
+            block(s)
+    return np.sqrt(np.maximum(best, 0.0)), dk
+
+
+def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
+    """Smallest plane variance over the whole disc and its four half-discs of each
+    neighbourhood ``off`` (m, k, 3), offsets from the query point."""
+    from .features import sym3_eigen
+
+    off = off.astype(np.float32, copy=False)  # offsets of a few metres: float32 moments lose nothing at 1 cm
+    x, y, z = off[:, :, 0], off[:, :, 1], off[:, :, 2]
+    Q = np.empty(off.shape[:2] + (10,), np.float32)
+    Q[..., 0] = 1.0
+    Q[..., 1:4] = off
+    Q[..., 4], Q[..., 5], Q[..., 6] = x * x, x * y, x * z
+    Q[..., 7], Q[..., 8], Q[..., 9] = y * y, y * z, z * z
+    # the whole disc and four half-discs (the candidate on their straight edge): a point on a
+    # ridge, an eave or a step has a planar half-disc on one side, a crown on none
+    masks = np.empty((len(off), 5, off.shape[1]), np.float32)
+    masks[:, 0] = 1.0
+    masks[:, 1], masks[:, 2], masks[:, 3], masks[:, 4] = x >= 0, x <= 0, y >= 0, y <= 0
+    S = np.matmul(masks, Q).astype(np.float64)  # (m, 5, 10) moment sums
+    cnt = S[..., 0]
+    safe = np.maximum(cnt, 1.0)
+    mx, my, mz = S[..., 1] / safe, S[..., 2] / safe, S[..., 3] / safe
+    cov = np.empty(cnt.shape + (3, 3))
+    cov[..., 0, 0] = S[..., 4] / safe - mx * mx
+    cov[..., 0, 1] = cov[..., 1, 0] = S[..., 5] / safe - mx * my
+    cov[..., 0, 2] = cov[..., 2, 0] = S[..., 6] / safe - mx * mz
+    cov[..., 1, 1] = S[..., 7] / safe - my * my
+    cov[..., 1, 2] = cov[..., 2, 1] = S[..., 8] / safe - my * mz
+    cov[..., 2, 2] = S[..., 9] / safe - mz * mz
+    l3 = sym3_eigen(cov.reshape(-1, 3, 3))[2].reshape(cnt.shape)
+    l3 = np.where(cnt >= max(6, k // 3), l3, np.inf)
+    return l3.min(axis=1)
+
+
+class RoofTest:
+    """The raised points of a cloud in a KD-tree, ready to test building candidates.
+
+    Building the tree does not need the candidates, so a caller can build it while the
+    network runs (:class:`workstation.ml.classifier.PointClassifier` does).
+
+    Parameters
+    ----------
+    xyz : (n, 3) float64
+        Metric coordinates.
+    hag : (n,) float
+        Height above the provisional ground (m).
+    params : RoofParams
+    workers : int
+        Threads of the KD-tree queries (-1 = all cores).
+    """
+
+    def __init__(self, xyz: np.ndarray, hag: np.ndarray, params: RoofParams = RoofParams(), workers: int = -1):
+        from scipy.spatial import cKDTree
+
+        self.xyz = xyz
+        self.params = params
+        self.workers = workers
+        self.origin = xyz.min(axis=0) if len(xyz) else np.zeros(3)
+        # centred float32 coordinates: half the memory traffic, 0.1 mm resolution over 1 km
+        self.ref = (xyz[np.asarray(hag) > params.min_height] - self.origin).astype(np.float32)
+        self.tree = cKDTree(self.ref, balanced_tree=False, compact_nodes=False) if len(self.ref) >= 3 else None
+
+    def nonplanar(self, candidate: np.ndarray) -> np.ndarray:
+        """(n,) bool: the candidates whose neighbourhood is not planar within the tolerance."""
+        return self.vote(candidate, *self.test(candidate))
+
+    def test(self, candidate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Plane test of one candidate per voxel (its first point).
+
+        Returns
+        -------
+        tested : (t, 3) float32
+            The tested candidates, in the tester's local coordinates.
+        bad : (t,) bool
+            Their neighbourhood is not planar (and is not too sparse to tell).
+        """
+        p = self.params
+        q = np.flatnonzero(candidate)
+        if len(q) == 0 or self.tree is None:
+            return np.zeros((0, 3), np.float32), np.zeros(0, bool)
+        from .features import _voxel_ids
+
+        first = _voxel_ids(self.xyz[q], p.voxel)[0] if p.voxel > 0 else np.arange(len(q))
+        tested = (self.xyz[q[first]] - self.origin).astype(np.float32)
+        resid, dk = plane_residuals(tested, self.ref, p.k, self.workers, tree=self.tree)
+        return tested, (resid > p.tolerance) & (dk <= p.max_radius)
+
+    def vote(self, candidate: np.ndarray, tested: np.ndarray, bad: np.ndarray) -> np.ndarray:
+        """(n,) bool: each candidate fails when most of the ``params.vote`` tested points
+        nearest to it failed (:meth:`test`; decisions that do not flip from point to point at
+        the edge of a crown)."""
+        from scipy.spatial import cKDTree
+
+        out = np.zeros(len(self.xyz), bool)
+        q = np.flatnonzero(candidate)
+        if len(q) == 0 or len(tested) == 0:
+            return out
+        vote = int(min(max(self.params.vote, 1), len(tested)))
+        _, j = cKDTree(tested).query((self.xyz[q] - self.origin).astype(np.float32), k=vote, workers=self.workers)
+        out[q] = bad[j.reshape(len(q), vote)].sum(axis=1) * 2 > vote
+        return out
+
+
+def nonplanar_roofs(xyz: np.ndarray, candidate: np.ndarray, hag: np.ndarray,
+                    params: RoofParams = RoofParams(), workers: int = -1) -> np.ndarray:
+    """Candidates (building points) that fail the planarity test (:class:`RoofTest`).
+
+    Parameters
+    ----------
+    xyz : (n, 3) float64
+        Metric coordinates.
+    candidate : (n,) bool
+        Points the network calls building.
+    hag : (n,) float
+        Height above the provisional ground (m); the neighbourhoods are made of the points
+        more than ``params.min_height`` above it.
+    params : RoofParams
+
+    Returns
+    -------
+    (n,) bool
+        True where a candidate's neighbourhood is not planar within the tolerance.
+    """
+    if int(np.count_nonzero(candidate)) < 3:
+        return np.zeros(len(xyz), bool)
+    return RoofTest(xyz, hag, params, workers).nonplanar(candidate)
