@@ -76,3 +76,21 @@ def test_ground_method_ml_with_the_shipped_model(tmp_path, capsys):
     assert set(np.unique(cls)) <= {1, 2}
     assert res["ground_count"] == int((cls == 2).sum())
     assert ((cls == 2) == (ref == 2)).mean() > 0.95
+
+
+def test_classify_roof_test_options(tmp_path, capsys):
+    """The shipped model with and without the roof planarity test, and a looser tolerance:
+    switching the test off or loosening it never gives fewer building points."""
+    from tests.ml.test_ml_roofs import gabled_house_and_crown
+    from workstation.core.cloud import Cloud
+
+    xyz, _, _ = gabled_house_and_crown(seed=7)
+    src = tmp_path / "house.laz"
+    write_cloud(Cloud(xyz + [500000, 5000000, 100], crs="EPSG:32632"), src)
+    counts = {}
+    for name, extra in (("default", []), ("off", ["--no-roof-test"]), ("loose", ["--roof-tolerance", "0.3"])):
+        out = tmp_path / f"{name}.laz"
+        assert main(["classify", str(src), "-o", str(out), *extra]) == 0
+        counts[name] = int((np.asarray(read_cloud(out).attrs["classification"]) == 6).sum())
+    assert counts["default"] <= counts["loose"] <= counts["off"]
+    assert counts["default"] < counts["off"]  # the network calls part of the crown building

@@ -16,9 +16,14 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Where the network runs (auto: CUDA when present).")
 @click.option("--tile-points", type=click.IntRange(10_000), default=None,
               help="Largest number of points classified per tile (tiles overlap by the feature radius).")
+@click.option("--roof-tolerance", type=click.FloatRange(min=0.0, min_open=True), default=None,
+              help="Roof planarity test: RMS distance (m) to the local plane above which a building point "
+                   "is not a roof (default 0.08, the model's setting); raise it for a noisy scan, as with "
+                   "lasclassify's -planar.")
+@click.option("--no-roof-test", is_flag=True, help="Keep the network's building points as they are.")
 @overwrite_option
 @json_option
-def classify(src, output, model_path, device, tile_points, overwrite, as_json):
+def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, overwrite, as_json):
     """Classify IN into ground, vegetation (3/4/5), building, water, other (1) and noise (7/18);
     writes `classification` and a `confidence` (0-1) to OUT, keeping every other attribute."""
     import time
@@ -33,6 +38,10 @@ def classify(src, output, model_path, device, tile_points, overwrite, as_json):
     clf = PointClassifier.load(model_path, device=device)
     if tile_points:
         clf.tile_points = tile_points
+    if roof_tolerance is not None:
+        clf.roof_tolerance = roof_tolerance
+    if no_roof_test:
+        clf.roof_test = False
     cloud = read_cloud(src)
     t1 = time.perf_counter()
     out = clf.classify(cloud)
