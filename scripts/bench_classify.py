@@ -6,6 +6,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
+    PYTHONPATH=. python scripts/bench_classify.py simtiles           # whole sim validation tiles, roof test on/off
 
 Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
 """
@@ -120,6 +121,50 @@ def sim():
     emit(bench="sim_validation", model="mlp", **split_scores(clf, ts.X[vm], ts.y[vm]))
 
 
+def simtiles():
+    """The shipped model's whole pipeline (gate, understorey step, roof test) on the whole
+    simulated validation tiles, with and without the roof planarity test: building and
+    vegetation F1 per tile (tiles with at least 50 building points) and their means."""
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.lidar.scene import build_scene
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.dataset import load_dataset_recipe, simulate_tile, simulate_tile_physical, tile_plan
+    from workstation.ml.realdata import VEG, f1
+
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    clf = PointClassifier.load(None, device="cpu")
+    rows, cache = [], {}
+    for name, seed, t, val in tile_plan(recipe):
+        if not val:
+            continue
+        if (name, seed) not in cache:  # the tile draws of build_tileset
+            cache.clear()
+            sc = build_scene(name, seed=seed)
+            cache[(name, seed)] = (sc, RaycastScene(sc.vertices, sc.faces))
+        sc, rc = cache[(name, seed)]
+        rng = np.random.default_rng([recipe.seed, t])
+        if rng.uniform() < recipe.randomisation.p_physical:
+            cloud = simulate_tile_physical(sc, rng, recipe.randomisation)
+        else:
+            cloud = simulate_tile(sc, rng, recipe.randomisation, rc)
+        ref = np.asarray(cloud.attrs["classification"])
+        if (ref == C.BUILDING).sum() < 50:
+            continue
+        row = {"tile": t, "recipe": name, "points": cloud.n, "density": cloud.meta["sim"]["density"],
+               "range_sigma": cloud.meta["sim"]["range_sigma"]}
+        for on in (False, True):
+            clf.roof_test = on
+            pred = clf.predict(cloud)
+            key = "roof" if on else "no_roof"
+            row[f"building_f1_{key}"] = f1(ref == C.BUILDING, pred == C.BUILDING)
+            row[f"vegetation_f1_{key}"] = f1(np.isin(ref, VEG), np.isin(pred, VEG))
+        emit(bench="sim_tile", **row)
+        rows.append(row)
+    emit(bench="sim_tiles_mean", tiles=len(rows),
+         **{k: float(np.nanmean([r[k] for r in rows])) for k in rows[0] if k.endswith(("_roof", "_no_roof"))})
+
+
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
@@ -133,5 +178,7 @@ if __name__ == "__main__":
         baseline()
     elif what == "sim":
         sim()
+    elif what == "simtiles":
+        simtiles()
     else:
         raise SystemExit(f"unknown benchmark {what!r}")

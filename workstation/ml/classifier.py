@@ -34,7 +34,7 @@ from workstation.core.errors import InvalidInputError, NotFittedError, StageErro
 from workstation.core.log import get_logger
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
-from .features import FEATURE_NAMES, FeatureParams, compute_features, metric_xyz, planar_segments
+from .features import FEATURE_NAMES, FeatureParams, compute_features, features_and_segments, metric_xyz
 
 log = get_logger(__name__)
 
@@ -440,15 +440,20 @@ class PointClassifier:
         for core, sel in self._tiles(cloud):
             whole = len(sel) == cloud.n and bool(core.all())
             sub = cloud if len(sel) == cloud.n else cloud[sel]
-            F = self.features(sub)
-            # numpy and the KD-tree beside the network (torch)
-            pool = ThreadPoolExecutor(max_workers=2)
+            pool = ThreadPoolExecutor(max_workers=1)
             try:
-                seg = pool.submit(planar_segments, sub, F, self.feature_params) if self.segment_weight > 0 else None
-                tester = pool.submit(self._roof_tester, sub, F[:, _HAG_COL]) if whole and roof and self.roof_test else None
+                tester = []  # the roof test's KD-tree, built while the feature pass waits for its kNN threads
+
+                def build(hag, sub=sub, tester=tester):
+                    tester.append(pool.submit(self._roof_tester, sub, hag.copy()))
+
+                want = whole and roof and self.roof_test
+                F, segments = features_and_segments(sub, self.feature_params, with_hag=build if want else None)
+                F = self._mask(F)
+                tester = tester[0] if tester else None
                 p = self.predict_proba_features(F)
-                if seg is not None:
-                    p = _segment_mean(p, seg.result(), self.segment_weight)
+                if self.segment_weight > 0:
+                    p = _segment_mean(p, segments, self.segment_weight)
                 job = None
                 if tester is not None:  # the candidates _codes will have, but the understorey's
                     cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])

@@ -281,10 +281,10 @@ def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv.ravel()
 
 
-def _eigvec(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
-    """Unit eigenvectors (m, 3) of 3x3 matrices for eigenvalues ``lam`` (m,): the largest
-    cross product of two rows of (A - lam I), written out per component (the same operations
-    as ``np.cross``, without its (m, 3) temporaries)."""
+def _eigvec_z(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
+    """z component (m,) of the unit eigenvectors of 3x3 matrices for eigenvalues ``lam`` (m,):
+    the largest cross product of two rows of (A - lam I), written out per component (the
+    same operations as ``np.cross``; the sign is arbitrary, callers take its magnitude)."""
     a00, a11, a22 = cov[:, 0, 0] - lam, cov[:, 1, 1] - lam, cov[:, 2, 2] - lam
     a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
     a10, a20, a21 = cov[:, 1, 0], cov[:, 2, 0], cov[:, 2, 1]
@@ -294,14 +294,9 @@ def _eigvec(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
     n0 = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]
     n1 = c1[0] * c1[0] + c1[1] * c1[1] + c1[2] * c1[2]
     n2 = c2[0] * c2[0] + c2[1] * c2[1] + c2[2] * c2[2]
-    first = n0 >= n1
     nv = np.maximum(n0, n1)
-    third = n2 > nv
-    v = np.empty((len(cov), 3))
-    for j in range(3):
-        v[:, j] = np.where(third, c2[j], np.where(first, c0[j], c1[j]))
-    nv = np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
-    return v / nv[:, None]
+    vz = np.where(n2 > nv, c2[2], np.where(n0 >= n1, c0[2], c1[2]))
+    return vz / np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
 
 
 def sym3_eigen(cov: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -354,15 +349,15 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     l1 = np.maximum(l1, 1e-12)
     l2 = np.clip(l2, 0, l1)
     l3 = np.clip(l3, 0, l2)
-    nrm = _eigvec(cov, l3)
-    main = _eigvec(cov, l1)
+    nrm_z = _eigvec_z(cov, l3)  # the normal's and the main direction's z components
+    main_z = _eigvec_z(cov, l1)
     zq = xyz_q[:, 2] - mu[:, 2]  # heights relative to the neighbourhood mean
     out = np.empty((len(xyz_q), 8), np.float32)
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1
     out[:, 2] = l3 / l1
-    out[:, 3] = 1.0 - np.abs(main[:, 2])  # verticality of the main direction
-    out[:, 4] = np.abs(nrm[:, 2])
+    out[:, 3] = 1.0 - np.abs(main_z)  # verticality of the main direction
+    out[:, 4] = np.abs(nrm_z)
     out[:, 5] = np.sqrt(np.maximum(cov[:, 2, 2], 0))
     out[:, 6] = np.minimum(zq - zc.min(axis=1), 30.0)
     out[:, 7] = np.minimum(zc.max(axis=1) - zq, 30.0)
@@ -370,7 +365,7 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
 
 
 def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarray, c: np.ndarray,
-                  shape: tuple, cell: float, height: float) -> np.ndarray:
+                  shape: tuple, cell: float, height: float) -> tuple[np.ndarray, np.ndarray]:
     """Footprint areas (m², as log(1 + area)) of the raised object each point belongs to.
 
     A grid cell is *raised* when one of its points is more than ``height`` metres above the
@@ -385,21 +380,27 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
 
     Returns
     -------
-    (n, 2) float32
+    areas : (n, 2) float32
         log(1 + raised area), log(1 + planar-raised area).
+    segments : (n,) int64
+        Each point's planar-raised component (0: none; :func:`planar_segments`).
     """
     out = np.zeros((len(hag), 2), np.float32)
+    segments = np.zeros(len(hag), np.int64)
     up = hag > height
     if not up.any():
-        return out
+        return out, segments
     flat = r * shape[1] + c
     for j, (lab, k) in enumerate(_raised_components(hag, nz, scat, flat, shape, height)):
+        point_lab = lab.ravel()[flat]
+        if j == 1:
+            segments = np.where(up, point_lab, 0)
         if k == 0:
             continue
         area = np.bincount(lab.ravel(), minlength=k + 1).astype(np.float32) * (cell * cell)
         area[0] = 0.0
-        out[:, j] = np.where(up, np.log1p(area[lab.ravel()[flat]]), 0.0)
-    return out
+        out[:, j] = np.where(up, np.log1p(area[point_lab]), 0.0)
+    return out, segments
 
 
 def _raised_components(hag, nz, scat, flat, shape, height, raised: bool = True):
@@ -508,7 +509,14 @@ def _intensity_features(cloud: Cloud) -> np.ndarray:
 
 
 def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> np.ndarray:
-    """Per-point feature matrix.
+    """Per-point feature matrix (:func:`features_and_segments` without the segments)."""
+    return features_and_segments(cloud, params)[0]
+
+
+def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
+                          with_hag=None) -> tuple[np.ndarray, np.ndarray]:
+    """Per-point feature matrix, and the planar raised object of each point (the components
+    behind the ``planar_area`` feature, :func:`planar_segments`, found on the way).
 
     Parameters
     ----------
@@ -516,11 +524,17 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
         Any cloud with at least 3 points; ``return_number``/``number_of_returns`` and
         ``intensity`` are used when present.
     params : FeatureParams
+    with_hag : callable, optional
+        Called with the height above the provisional ground (the ``hag_prov`` column) as
+        soon as it is known, while the kNN threads are still running: work that needs only
+        that height can use the idle core (the classifier builds its roof test's KD-tree).
 
     Returns
     -------
-    (n, len(FEATURE_NAMES)) float32
+    F : (n, len(FEATURE_NAMES)) float32
         Columns as :data:`FEATURE_NAMES`; heights in metres.
+    segments : (n,) int64
+        Planar raised component of each point, 0 for none.
     """
     from scipy import ndimage
 
@@ -563,9 +577,12 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
-    # both eigen scales: one query per voxel among the voxel representatives, broadcast
-    F[:, 24:29] = _echo_features(cloud)  # while the kNN threads finish
+    # while the kNN threads finish
+    F[:, 24:29] = _echo_features(cloud)
     F[:, 29:31] = _intensity_features(cloud)
+    if with_hag is not None:
+        with_hag(F[:, 7])
+    # both eigen scales: one query per voxel among the voxel representatives, broadcast
     (ef, zr, dh, finv), (ec, _, _, inv) = [f.result() for f in futures]
     pool.shutdown()
     F[:, 10:16] = ef[finv, :6]
@@ -576,7 +593,7 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
     F[:, 18:24] = ec[inv, :6]
     med = float(np.median(dh)) if n else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
-    F[:, 32:34] = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
+    F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
     if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
         np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
-    return F
+    return F, segments
