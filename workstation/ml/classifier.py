@@ -73,11 +73,11 @@ def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarra
 class _RoofJob:
     """A roof planarity test under way: the tester (a future of
     :class:`workstation.ml.roofs.RoofTest`), the candidates given to it and the future of
-    :func:`_run_roof_job`."""
+    :func:`_run_roof_job`'s result."""
 
     tester: object
     tested: np.ndarray
-    fail: object
+    result: object
 
 
 def _run_roof_job(tester, candidate):
@@ -492,7 +492,7 @@ class PointClassifier:
             if int(np.count_nonzero(candidate)) < 3:
                 return None
             return self._roof_tester(cloud, hag).nonplanar(candidate)
-        tested, bad, fail = job.fail.result()
+        tested, bad, fail = job.result.result()
         extra = candidate & ~job.tested
         if extra.any():  # the newcomers: their voxels' tests, then their votes among every test
             t = job.tester.result()

@@ -10,8 +10,8 @@ calls building: a crown whose laser returns are single echoes (dense foliage, le
 like a roof to the per-point features at their 0.75 m / 1.5 m voxel scales, but not to a plane
 fitted through the raw points around it.
 
-For each candidate the test fits least-squares planes to its ``k`` nearest raised points
-(more than ``min_height`` above the provisional ground, the candidate included): to the whole
+For one candidate per ``voxel`` (its first point) the test fits least-squares planes to its
+``k`` nearest raised points (more than ``min_height`` above the provisional ground): to the whole
 neighbourhood and to each of its four half-discs (the neighbours on one side of the candidate
 along x or y), so a point on a ridge, an eave or a roof step, whose disc straddles two planes,
 still has a planar half-disc. The residual is the square root of the smallest eigenvalue of
@@ -20,9 +20,10 @@ five residuals exceeds ``tolerance``. 0.08 m is a little stricter than lasclassi
 (its search area is 2 m wide, ours about 2.5 m at 5 points per m²); a noisy scan needs a
 larger value, as lasclassify's documentation advises for its own ("try -planar 0.2"). A
 candidate whose ``k``-th neighbour lies farther than ``max_radius`` (a sparse scan:
-lasclassify needs about 2 pulses per m²) is not tested. The candidates of one small voxel
-share one test (the voxel's first point), which keeps the cost at one 24-neighbour query per
-occupied 0.5 m voxel.
+lasclassify needs about 2 pulses per m²) is not tested. Every candidate then takes the
+majority decision of the ``vote`` tested candidates nearest to it: one 24-neighbour query per
+occupied 1 m voxel, and decisions that do not flip from point to point at a crown's edge.
+The settings were chosen on a real tile (docs/benchmarks.md gives their sensitivity).
 
 References
 ----------
@@ -34,7 +35,7 @@ from __future__ import annotations
 
 import os
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -46,10 +47,10 @@ class RoofParams:
     Attributes
     ----------
     k : int
-        Neighbours of the plane fit (16: about a 2 m wide patch at 5 points/m²).
+        Neighbours of the plane fit (24: a patch about 2.5 m wide at 5 points/m²).
     tolerance : float
-        Least RMS distance (m) to the local plane that fails the test (lasclassify's
-        ``-planar 0.1``).
+        RMS distance (m) to the best local plane above which a candidate fails (lasclassify's
+        ``-planar`` is 0.1).
     min_height : float
         Points more than this far above the provisional ground (m) form the neighbourhoods.
     max_radius : float
@@ -68,9 +69,6 @@ class RoofParams:
     max_radius: float = 3.0
     voxel: float = 1.0
     vote: int = 5
-
-    def to_dict(self) -> dict:
-        return asdict(self)
 
 
 def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -1, tree=None) -> tuple[np.ndarray, np.ndarray]:
