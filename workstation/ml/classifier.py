@@ -175,6 +175,17 @@ class PointClassifier:
         ground take the network's best non-ground class
         (:func:`workstation.ground.understorey.refine_understorey`, the step ``auto`` ends
         with; needs return numbers, a no-op without them). A rule, not learned.
+    roof_test : bool
+        Building points whose raw neighbourhood is not planar (neither the disc of the 24
+        nearest raised points nor any of its four half-discs fits a plane within
+        ``roof_tolerance``; one test per 1 m voxel, each point taking the majority of the 5
+        tests nearest to it) take the network's best class other than ground and building
+        (:class:`workstation.ml.roofs.RoofTest`, lasclassify's ``-planar`` test). A rule,
+        not learned; its settings were chosen on the LiDAR HD tile.
+    roof_tolerance : float
+        RMS distance (m) to the local plane above which a building point fails the roof
+        test (0.08); raise it for a noisy scan, as lasclassify's documentation advises for
+        its ``-planar``.
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
