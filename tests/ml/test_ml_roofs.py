@@ -59,10 +59,16 @@ def test_noisy_scan_needs_a_larger_tolerance():
     assert loose[label == 5].mean() > 0.4
 
 
-def test_sparse_scan_is_not_tested():
-    xyz, label, hag = gabled_house_and_crown(seed=3, density=0.4)
+def test_sparse_scan_fallback_and_too_sparse_to_test():
+    """About 0.8 points per m²: 24 neighbours span more than 3 m, the 12-neighbour test with
+    0.12 m still rejects most of the crown and none of the roof; 0.25 points per m²: even
+    12 neighbours span more than 3 m, nothing is judged."""
+    xyz, label, hag = gabled_house_and_crown(seed=3, density=0.8)
     fail = nonplanar_roofs(xyz, label != 2, hag)
-    assert not fail.any()  # 24 neighbours span more than 3 m: nothing is judged
+    assert fail[label == 6].mean() < 0.02 and fail[label == 5].mean() > 0.5
+    assert not nonplanar_roofs(xyz, label != 2, hag, RoofParams(sparse_k=0)).any()
+    xyz, label, hag = gabled_house_and_crown(seed=3, density=0.25)
+    assert not nonplanar_roofs(xyz, label != 2, hag).any()
 
 
 def test_few_candidates_and_empty_input():

@@ -61,6 +61,10 @@ class RoofParams:
         Each candidate takes the majority decision of the ``vote`` tested candidates nearest
         to it (itself among them when it was tested): one test per voxel, and decisions that
         do not flip from point to point at the edge of a crown.
+    sparse_k, sparse_tolerance : int, float
+        Where the ``k`` neighbours span more than ``max_radius`` (scans of about 1 point per
+        m²), the test is made again with ``sparse_k`` neighbours and ``sparse_tolerance``
+        (m); ``sparse_k`` < 3 leaves such candidates untested.
     """
 
     k: int = 24
@@ -69,6 +73,8 @@ class RoofParams:
     max_radius: float = 3.0
     voxel: float = 1.0
     vote: int = 5
+    sparse_k: int = 12
+    sparse_tolerance: float = 0.12
 
 
 def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -1, tree=None) -> tuple[np.ndarray, np.ndarray]:
@@ -200,7 +206,12 @@ class RoofTest:
         first = _voxel_ids(self.xyz[q], p.voxel)[0] if p.voxel > 0 else np.arange(len(q))
         tested = (self.xyz[q[first]] - self.origin).astype(np.float32)
         resid, dk = plane_residuals(tested, self.ref, p.k, self.workers, tree=self.tree)
-        return tested, (resid > p.tolerance) & (dk <= p.max_radius)
+        bad = (resid > p.tolerance) & (dk <= p.max_radius)
+        sparse = np.flatnonzero(dk > p.max_radius)
+        if p.sparse_k >= 3 and len(sparse):  # a sparse scan: fewer neighbours, a looser plane
+            r2, d2 = plane_residuals(tested[sparse], self.ref, p.sparse_k, self.workers, tree=self.tree)
+            bad[sparse] = (r2 > p.sparse_tolerance) & (d2 <= p.max_radius)
+        return tested, bad
 
     def vote(self, candidate: np.ndarray, tested: np.ndarray, bad: np.ndarray) -> np.ndarray:
         """(n,) bool: each candidate fails when most of the ``params.vote`` tested points
