@@ -126,28 +126,14 @@ def simtiles():
     simulated validation tiles, with and without the roof planarity test: building and
     vegetation F1 per tile (tiles with at least 50 building points) and their means."""
     from workstation.core.classes import ASPRSClass as C
-    from workstation.interop.open3d_raycast import RaycastScene
-    from workstation.lidar.scene import build_scene
     from workstation.ml.classifier import PointClassifier
-    from workstation.ml.dataset import load_dataset_recipe, simulate_tile, simulate_tile_physical, tile_plan
+    from workstation.ml.dataset import load_dataset_recipe, simulated_tiles
     from workstation.ml.realdata import VEG, f1
 
     recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
     clf = PointClassifier.load(None, device="cpu")
-    rows, cache = [], {}
-    for name, seed, t, val in tile_plan(recipe):
-        if not val:
-            continue
-        if (name, seed) not in cache:  # the tile draws of build_tileset
-            cache.clear()
-            sc = build_scene(name, seed=seed)
-            cache[(name, seed)] = (sc, RaycastScene(sc.vertices, sc.faces))
-        sc, rc = cache[(name, seed)]
-        rng = np.random.default_rng([recipe.seed, t])
-        if rng.uniform() < recipe.randomisation.p_physical:
-            cloud = simulate_tile_physical(sc, rng, recipe.randomisation)
-        else:
-            cloud = simulate_tile(sc, rng, recipe.randomisation, rc)
+    rows = []
+    for name, _seed, t, _val, cloud, _rng in simulated_tiles(recipe, validation_only=True):  # build_tileset's draws
         ref = np.asarray(cloud.attrs["classification"])
         if (ref == C.BUILDING).sum() < 50:
             continue

@@ -160,7 +160,7 @@ class PointClassifier:
     gate_threshold, gate_scalar, gate_min_probability : float
     segment_weight : float
         Context step (0-1): the non-ground class probabilities of a point in a planar raised
-        object (a roof candidate, :func:`workstation.ml.features.planar_segments`) become
+        object (a roof candidate, :func:`workstation.ml.features.features_and_segments`) become
         ``(1 - w) * own + w * mean over the object``, so a roof decides as one object and
         the few points the network calls canopy or car follow the rest (segment-based
         classification, Vosselman et al. 2017); the ground probability is left to the gate.

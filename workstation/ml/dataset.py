@@ -443,22 +443,25 @@ def sample_balanced(y: np.ndarray, n: int, rng: np.random.Generator) -> np.ndarr
     return np.sort(rng.choice(len(y), n, replace=False, p=w))
 
 
-def build_tileset(recipe: DatasetRecipe, feature_params=None, progress: bool = True) -> TileSet:
-    """Simulate every tile of the recipe, compute features and draw training samples."""
+def simulated_tiles(recipe: DatasetRecipe, validation_only: bool = False, progress: bool = False):
+    """Simulate the recipe's tiles in plan order, deterministically.
+
+    Yields
+    ------
+    name, scene_seed, tile, is_validation, cloud, rng
+        ``rng`` is the tile's generator after the simulation (:func:`build_tileset` goes on
+        drawing the training samples from it).
+    """
     from workstation.core.progress import track
     from workstation.interop.open3d_raycast import RaycastScene
     from workstation.lidar.scene import build_scene
 
-    from .features import FeatureParams, compute_features
-
-    fp = feature_params or FeatureParams()
-    t0 = time.perf_counter()
     plan = tile_plan(recipe)
-    Xs, ys, ts, info = [], [], [], []
-    val = np.array([p[3] for p in plan], bool)
-    cache: dict = {}
     items = track(plan, "simulating tiles") if progress else plan
-    for name, seed, t, _v in items:
+    cache: dict = {}
+    for name, seed, t, val in items:
+        if validation_only and not val:
+            continue
         key = (name, seed)
         if key not in cache:
             cache.clear()
@@ -470,6 +473,18 @@ def build_tileset(recipe: DatasetRecipe, feature_params=None, progress: bool = T
             cloud = simulate_tile_physical(sc, rng, recipe.randomisation)
         else:
             cloud = simulate_tile(sc, rng, recipe.randomisation, rc)
+        yield name, seed, t, val, cloud, rng
+
+
+def build_tileset(recipe: DatasetRecipe, feature_params=None, progress: bool = True) -> TileSet:
+    """Simulate every tile of the recipe, compute features and draw training samples."""
+    from .features import FeatureParams, compute_features
+
+    fp = feature_params or FeatureParams()
+    t0 = time.perf_counter()
+    val = np.array([p[3] for p in tile_plan(recipe)], bool)
+    Xs, ys, ts, info = [], [], [], []
+    for name, seed, t, _v, cloud, rng in simulated_tiles(recipe, progress=progress):
         F = compute_features(cloud, fp)
         y = asprs_to_model(cloud.attrs["classification"])
         idx = sample_balanced(y, recipe.samples_per_tile, rng)

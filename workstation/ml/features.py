@@ -43,6 +43,7 @@ with strongly varying density. ISPRS Annals III-3:177-184.
 
 from __future__ import annotations
 
+import weakref
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
 
@@ -130,8 +131,6 @@ def metric_xyz(cloud: Cloud) -> tuple[np.ndarray, float, float]:
         Metres per CRS unit, horizontally and vertically (1.0 when the CRS is unknown).
     """
     from workstation.ground.common import crs_unit_factors
-
-    import weakref
 
     src = cloud.xyz
     hit = _METRIC_CACHE[0]
@@ -383,7 +382,7 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     areas : (n, 2) float32
         log(1 + raised area), log(1 + planar-raised area).
     segments : (n,) int64
-        Each point's planar-raised component (0: none; :func:`planar_segments`).
+        Each point's planar-raised component (0: none): the classifier's context step.
     """
     out = np.zeros((len(hag), 2), np.float32)
     segments = np.zeros(len(hag), np.int64)
@@ -403,9 +402,9 @@ def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarr
     return out, segments
 
 
-def _raised_components(hag, nz, scat, flat, shape, height, raised: bool = True):
-    """Connected components (grid labels, count) of the raised (unless ``raised`` is False)
-    and the planar-raised cells (definitions in :func:`_object_areas`)."""
+def _raised_components(hag, nz, scat, flat, shape, height):
+    """Connected components (grid labels, count) of the raised and the planar-raised cells
+    (definitions in :func:`_object_areas`)."""
     from scipy import ndimage
 
     up = hag > height
@@ -415,35 +414,11 @@ def _raised_components(hag, nz, scat, flat, shape, height, raised: bool = True):
     st = np.ones((3, 3), bool)
     out = []
     masks = ((n_up > 0), (n_pl * 5 >= n_up * 2) & (n_up > 0))
-    for mask in masks if raised else masks[1:]:
+    for mask in masks:
         m = mask.reshape(shape)
         m = ndimage.binary_closing(m, structure=st) | m
         out.append(ndimage.label(m, structure=st))
     return out
-
-
-def planar_segments(cloud: Cloud, F: np.ndarray, params: FeatureParams = FeatureParams()) -> np.ndarray:
-    """Planar raised object of each point (the components behind the ``planar_area`` feature).
-
-    Parameters
-    ----------
-    cloud : Cloud
-    F : (n, len(FEATURE_NAMES)) float32
-        The cloud's features (:func:`compute_features` with the same ``params``).
-    params : FeatureParams
-
-    Returns
-    -------
-    (n,) int64
-        Component label, 0 for points not in a planar raised region.
-    """
-    xyz, _, _ = metric_xyz(cloud)
-    r, c, shape = _grid(xyz[:, :2], params.cell)
-    flat = r * shape[1] + c
-    hag = F[:, FEATURE_NAMES.index("hag_prov")]
-    ((lab, _k),) = _raised_components(hag, F[:, FEATURE_NAMES.index("nz_f")], F[:, FEATURE_NAMES.index("scat_f")],
-                                      flat, shape, params.object_height, raised=False)
-    return np.where(hag > params.object_height, lab.ravel()[flat], 0)
 
 
 def _voxel_eigen(xyz: np.ndarray, voxel: float, k: int, workers: int):
@@ -516,7 +491,7 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
 def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
                           with_hag=None) -> tuple[np.ndarray, np.ndarray]:
     """Per-point feature matrix, and the planar raised object of each point (the components
-    behind the ``planar_area`` feature, :func:`planar_segments`, found on the way).
+    behind the ``planar_area`` feature, found on the way; the classifier's context step).
 
     Parameters
     ----------
