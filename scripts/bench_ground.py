@@ -179,10 +179,11 @@ def bench_sim(sim_dir: Path, methods):
         c = read_cloud(f)
         truth = np.asarray(c.attrs["classification"])
         for m in methods:
-            out, wall, cpu = timed(lambda: ground_filter(c, m, reclassify=True))
+            out, wall, cpu = timed(lambda: ground_filter(c, m, **{"reclassify": True, **OVERRIDES}))
             pred = np.asarray(out.attrs["classification"])
             ev = evaluate_labels(truth, np.where(pred == 2, 2, 1), ground_classes=(2, 9, 11))
-            emit({"bench": "sim", "scene": name, "method": m, "points": c.n, "type1": ev.type1, "type2": ev.type2,
+            emit({"bench": "sim", "scene": name, "method": m, "overrides": OVERRIDES, "points": c.n,
+                  "type1": ev.type1, "type2": ev.type2,
                   "total_error": ev.total_error, "kappa": ev.kappa, "seconds": wall, "cpu_seconds": cpu})
 
 
@@ -194,7 +195,7 @@ def main(argv=None):
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                    help="override a parameter of every method (isprs, tiles), e.g. threshold=0.3")
+                    help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
     a = ap.parse_args(argv)
     for kv in a.set:
         k, v = kv.split("=", 1)

@@ -26,6 +26,7 @@ from . import common
 from .csf import CSFParams, csf_ground
 from .pmf import PMFParams, pmf_ground
 from .ptd import PTDParams, ptd_ground
+from .patches import PatchParams, raised_patches
 from .smrf import SMRFParams, smrf_ground
 from .understorey import UnderstoreyParams, canopy_share, refine_understorey
 
@@ -50,6 +51,10 @@ class AutoParams:
         Fifth member (PTD defaults).
     min_votes : int
         Votes needed for ground (3 of 5).
+    raised_patches : bool
+        Take out the patches of voted ground that stand above all the ground around them
+        (roofs, decks, wagons; :mod:`workstation.ground.patches`; True).
+    patch_params : PatchParams
     understorey : bool
         Take the understorey out of the ground under canopy (True; needs return numbers).
     understorey_params : UnderstoreyParams
@@ -63,6 +68,8 @@ class AutoParams:
     csf: CSFParams = field(default_factory=CSFParams)
     ptd: PTDParams = field(default_factory=PTDParams)
     min_votes: int = 3
+    raised_patches: bool = True
+    patch_params: PatchParams = field(default_factory=PatchParams)
     understorey: bool = True
     understorey_params: UnderstoreyParams = field(default_factory=UnderstoreyParams)
     reclassify: bool = False
@@ -79,6 +86,8 @@ def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None)
              + pmf_ground(xyz, p.pmf).astype(np.int8) + csf_ground(xyz, p.csf).astype(np.int8)
              + ptd_ground(xyz, p.ptd).astype(np.int8))
     ground = votes >= p.min_votes
+    if p.raised_patches:
+        ground = raised_patches(xyz, ground, p.patch_params)
     if p.understorey and share is not None:
         ground = refine_understorey(xyz, ground, share, p.understorey_params)
     return ground
