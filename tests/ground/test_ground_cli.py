@@ -78,6 +78,12 @@ def test_ground_preset_options_and_refusals(files, capsys):
                "--json"])
     info = json.loads(capsys.readouterr().out)
     assert rc == 0 and info["params"]["understorey"] is False and info["params"]["understorey_params"]["threshold"] == 0.2
+    assert info["params"]["raised_patches"] is True and info["params"]["patch_params"]["step"] == 1.0
+    # so is the raised-patch test
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "csf", "--no-raised-patches"]) == 2
+    rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_auto_np.laz"), "--method", "auto", "--no-raised-patches",
+               "--json"])
+    assert rc == 0 and json.loads(capsys.readouterr().out)["params"]["raised_patches"] is False
 
 
 def test_evaluate_text_output(files, capsys):

@@ -22,8 +22,10 @@ is cut off from the terrain by its walls, and every rim edge leaves it *downward
    ``max_passes`` times.
 
 The TIN is made of the lowest ground point per ``cell`` (1 m), and each ground point takes its
-cell's verdict: scipy's Delaunay costs about 10 µs a point, and a dense scan's every point is
-not needed to see a roof's rim.
+cell's verdict (scipy's Delaunay costs about 10 µs a point, and a dense scan's every point is
+not needed to see a roof's rim), except beside a raised cell, where a cell may hold a roof's
+edge over the ground below the wall: there a point takes the verdict of the representative
+nearest to it in 3-D.
 
 Everything is vectorised over edges (``bincount`` per patch); the cost is one Delaunay
 triangulation of the ground points per pass. Measured on the six ISPRS samples after the
@@ -87,8 +89,10 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
     ground : (m,) bool
         A ground filter's result.
     """
+    from scipy import ndimage
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
 
     from .common import grid_index, grid_min
 
@@ -130,7 +134,17 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
         raised[np.bincount(patch, minlength=count).argmax()] = False
         if not raised.any():
             break
+        verdict = raised[patch]
         cell_raised = np.zeros(len(cell_rep), bool)
-        cell_raised[cell_rep >= 0] = raised[patch]
-        g[idx[cell_raised[r * shape[1] + c]]] = False
+        cell_raised[cell_rep >= 0] = verdict
+        flat = r * shape[1] + c
+        out = cell_raised[flat]
+        # a cell beside a raised one may hold both (a roof's edge over the ground below the
+        # wall): its points take the verdict of the representative nearest to them in 3-D
+        edge = ndimage.binary_dilation(cell_raised.reshape(shape), np.ones((3, 3), bool)).ravel() & ~cell_raised
+        near = np.flatnonzero(edge[flat])
+        if len(near):
+            _, j = cKDTree(pts).query(xyz[idx[near]])
+            out[near] = verdict[j]
+        g[idx[out]] = False
     return g
