@@ -94,3 +94,33 @@ def test_classify_roof_test_options(tmp_path, capsys):
         counts[name] = int((np.asarray(read_cloud(out).attrs["classification"]) == 6).sum())
     assert counts["default"] <= counts["loose"] <= counts["off"]
     assert counts["default"] < counts["off"]  # the network calls part of the crown building
+
+
+def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
+    """--raised-patches runs the raised-patch test on the gate's ground (off by default), and
+    it only ever takes ground away."""
+    import workstation.ground.patches as patches
+    from tests.ground.ground_synth import terrain_with_boxes
+    from workstation.core.cloud import Cloud
+
+    calls = []
+    real = patches.raised_patches
+
+    def counted(*a, **k):  # the real test, counted
+        calls.append(1)
+        return real(*a, **k)
+
+    monkeypatch.setattr(patches, "raised_patches", counted)
+    xyz, truth = terrain_with_boxes(density=4.0)
+    src = tmp_path / "boxes.laz"
+    write_cloud(Cloud(xyz, crs="EPSG:32632"), src)
+    ground, ran = {}, {}
+    for name, extra in (("default", []), ("patches", ["--raised-patches"])):
+        out = tmp_path / f"{name}.laz"
+        calls.clear()
+        assert main(["classify", str(src), "-o", str(out), *extra]) == 0
+        ran[name] = len(calls)
+        ground[name] = np.asarray(read_cloud(out).attrs["classification"]) == 2
+    assert ran == {"default": 0, "patches": 1}
+    assert (ground["patches"] <= ground["default"]).all()
+    assert ground["patches"][truth].mean() > 0.95

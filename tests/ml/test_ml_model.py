@@ -212,3 +212,27 @@ def test_roof_test_sends_rough_building_points_to_their_next_class(tiny_model, t
         tiny_model.roof_test = True
     loaded = PointClassifier.load(tiny_model.save(tmp_path / "r.pt"), device="cpu")
     assert loaded.roof_test is True and loaded.config()["roof_test"] is True
+
+
+def test_raised_patches_send_a_roof_called_ground_to_its_next_class(tiny_model, tmp_path):
+    """A flat roof that the network and the gate both call ground (here: probabilities and
+    heights made up so) is a raised patch: it takes the network's best non-ground class;
+    the terrain stays ground; the setting is saved."""
+    cloud = two_class_scene(7)
+    cls = np.asarray(cloud.attrs["classification"])
+    roof = cls == C.BUILDING
+    n = cloud.n
+    P = np.zeros((n, len(MODEL_CLASSES)), np.float32)
+    P[:, 0], P[:, 2], P[:, 1] = 0.6, 0.3, 0.1  # ground first, then building, vegetation
+    hs = np.zeros((n, 2), np.float32)  # every point inside the gate's band
+    assert tiny_model.raised_patches is False  # off by default (speed), on in ws ground --method ml
+    assert (tiny_model._codes(P, hs, cloud)[0] == C.GROUND).all()
+    tiny_model.roof_test, tiny_model.raised_patches = False, True  # this test is about the ground
+    try:
+        codes, _ = tiny_model._codes(P, hs, cloud)
+        assert (codes[roof] == C.BUILDING).mean() > 0.99
+        assert (codes[~roof] == C.GROUND).all()
+        loaded = PointClassifier.load(tiny_model.save(tmp_path / "p.pt"), device="cpu")
+        assert loaded.raised_patches is True and loaded.config()["raised_patches"] is True
+    finally:
+        tiny_model.roof_test, tiny_model.raised_patches = True, False

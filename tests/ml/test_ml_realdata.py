@@ -74,3 +74,14 @@ def test_ml_ground_function_marks_ground_only(shipped, shared_data):
     ref = np.asarray(c.attrs["classification"]) == C.GROUND
     # vendor ground is a strict subset; most of it must be found
     assert (cls[ref] == C.GROUND).mean() > 0.85
+
+
+def test_ml_ground_on_isprs_runs_the_raised_patch_test(shared_data):
+    from workstation.ml.ground import ml_ground
+    from workstation.ml.realdata import isprs_scores
+
+    s = isprs_scores(lambda c: np.asarray(ml_ground(c).attrs["classification"]) == C.GROUND, shared_data / "isprs")
+    # measured 3.24 % (3.49 % without the raised-patch test, which ws classify leaves off by
+    # default): samp42's platforms leave the ground (2.90 -> 1.54 %)
+    assert s["mean_total"] <= 3.3, s["mean_total"]
+    assert s["samp42"]["total"] <= 1.8, s

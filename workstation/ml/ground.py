@@ -49,6 +49,7 @@ def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
     t0 = time.perf_counter()
     clf = PointClassifier.load(params.model, device=params.device)
     clf.roof_test = False  # it only moves building points among the object classes
+    clf.raised_patches = True  # roofs and decks the gate let into the ground (ISPRS 3.49 -> 3.24 %)
     P, hs = clf._proba_and_hag(cloud)
     codes, _ = clf._codes(P, hs, cloud)
     ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
