@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from ground_synth import terrain_with_boxes
 
 from workstation.core.cloud import Cloud
@@ -54,6 +55,21 @@ def test_terrain_patches_are_kept_on_a_steep_hillside():
     top = xyz[:, 0] >= 76
     without = raised_patches(xyz, ground, PatchParams(max_resultant=1.0))
     assert not without[top & ground].any() and without.sum() < 0.95 * ground.sum()
+
+
+@pytest.mark.parametrize("shape", ["cone", "ridge"])
+def test_steep_peaks_and_ridges_are_kept(shape):
+    """A 56° cone or knife-edge ridge (slope 1.5) at 10 points/m²: the crest drops on all
+    sides, by more than 1 m from one 1 m cell to the next only where the slope exceeds 1."""
+    rng = np.random.default_rng(0)
+    n = 36000
+    xy = rng.uniform(0, 60, (n, 2))
+    r = np.hypot(xy[:, 0] - 30, xy[:, 1] - 30) if shape == "cone" else np.abs(xy[:, 0] - 30)
+    xyz = np.column_stack([xy, 100 - 1.5 * r - 0.05 * xy[:, 1] + rng.normal(0, 0.05, n)])
+    g = np.ones(n, bool)
+    assert raised_patches(xyz, g).all()
+    # 2 m cells see the crest as a raised patch
+    assert not raised_patches(xyz, g, PatchParams(cell=2.0)).all()
 
 
 def test_a_roof_on_a_roof_goes_in_the_second_pass():

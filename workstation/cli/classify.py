@@ -23,7 +23,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--no-roof-test", is_flag=True, help="Keep the network's building points as they are.")
 @click.option("--raised-patches", is_flag=True,
               help="Also take out of the ground the patches that drop by 1 m or more on all sides (roofs, decks "
-                   "the ground gate let in; as ws ground --method ml does); costs about 5 % of the time.")
+                   "the ground gate let in; as ws ground --method ml does); costs about 15 % of the time.")
 @overwrite_option
 @json_option
 def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, overwrite,

@@ -21,7 +21,7 @@ is cut off from the terrain by its walls, and every rim edge leaves it *downward
 4. repeat until no patch goes (a roof on a deck is found once the deck is gone), at most
    ``max_passes`` times.
 
-The TIN is made of the lowest ground point per ``cell`` (2 m), and each ground point takes its
+The TIN is made of the lowest ground point per ``cell`` (1 m), and each ground point takes its
 cell's verdict (scipy's Delaunay costs about 10 µs a point, and a dense scan's every point is
 not needed to see a roof's rim), except beside a raised cell, where a cell may hold a roof's
 edge over the ground below the wall: there a point takes the verdict of the representative
@@ -56,8 +56,11 @@ class PatchParams:
         sides about 0, on two sides of a corner 0.7).
     cell : float
         The test runs on the lowest ground point of each ``cell`` × ``cell`` m cell, and every
-        ground point takes its cell's verdict (2.0: a TIN of 250,000 points a km², not of
-        every point; roofs and decks are metres across).
+        ground point takes its cell's verdict (1.0: a TIN of a million points a km², not of
+        every point; roofs and decks are metres across). Larger cells cut peaks and ridges
+        out of steep terrain: a crest whose neighbours lie lower by more than ``step`` on all
+        sides looks like a roof; with 1 m cells that takes a slope of about 2 (63°), with
+        2 m cells a slope of 1.
     max_passes : int
         Passes at most (3; 0 = off).
     """
@@ -65,7 +68,7 @@ class PatchParams:
     step: float = 1.0
     rim_share: float = 0.9
     max_resultant: float = 0.7
-    cell: float = 2.0
+    cell: float = 1.0
     max_passes: int = 3
 
 

@@ -191,7 +191,7 @@ class PointClassifier:
         by breaks of more than 1 m that drop on all sides (roofs, decks, platforms) take the
         network's best non-ground class (:func:`workstation.ground.patches.raised_patches`,
         the step ``auto`` uses after its vote). A rule, not learned. Off by default here
-        (it costs 4-5 % of the inference rate, whose goal has less margin than that) and on
+        (it costs about 15 % of the inference rate, whose goal has less margin than that) and on
         in ``ws ground --method ml`` (:mod:`workstation.ml.ground`): ISPRS 3.49 → 3.24 %.
     """
 
