@@ -76,6 +76,12 @@ def test_ground_method_ml_with_the_shipped_model(tmp_path, capsys):
     assert set(np.unique(cls)) <= {1, 2}
     assert res["ground_count"] == int((cls == 2).sum())
     assert ((cls == 2) == (ref == 2)).mean() > 0.95
+    assert res["params"]["raised_patches"] is True  # on by default for ground
+    off = tmp_path / "g_off.laz"
+    assert main(["ground", str(src), "-o", str(off), "--method", "ml", "--reclassify", "--no-raised-patches",
+                 "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["params"]["raised_patches"] is False
+    assert ((np.asarray(read_cloud(off).attrs["classification"]) == 2) >= (cls == 2)).all()
 
 
 def test_classify_roof_test_options(tmp_path, capsys):

@@ -29,7 +29,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--understorey/--no-understorey", default=None,
               help="[auto] under canopy (multi-echo pulses), keep only the ground's lower envelope (default on).")
 @click.option("--raised-patches/--no-raised-patches", default=None,
-              help="[auto] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
+              help="[auto, ml] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
 @click.option("--max-window", type=float, default=None, help="[pmf] largest window size, metres.")
 @click.option("--cloth-resolution", type=float, default=None, help="[csf] particle spacing, metres.")
 @click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
@@ -78,7 +78,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
     if method == "ml":  # the shipped point classifier (workstation.ml.ground)
         from workstation.ml.ground import MLGroundParams, ml_ground
 
-        params = MLGroundParams(reclassify=reclassify)
+        params = MLGroundParams(reclassify=reclassify,
+                                **({} if raised_patches is None else {"raised_patches": raised_patches}))
     else:
         try:
             params = make_params(method, preset, **given)
