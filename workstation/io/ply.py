@@ -264,7 +264,10 @@ def _read_ascii(path: Path, header: _Header, vi: int, vel: _Element) -> np.ndarr
     n_lines = stripped.count(b"\n") + 1 if stripped else 0
     declared = sum(el.count for el in header.elements)
     try:
-        arr = np.loadtxt(io.BytesIO(body), dtype=dt, skiprows=skip, max_rows=vel.count, ndmin=1, comments=None)
+        if vel.count == 0:  # an empty cloud (loadtxt would warn that there is no data)
+            arr = np.zeros(0, dtype=dt)
+        else:
+            arr = np.loadtxt(io.BytesIO(body), dtype=dt, skiprows=skip, max_rows=vel.count, ndmin=1, comments=None)
     except ValueError as e:
         msg = str(e)
         line = loadtxt_error_line(msg, header.n_lines + skip + 1)
