@@ -75,9 +75,9 @@ class PatchParams:
 
 def _tin_edges(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Directed edges (each undirected TIN edge both ways) of the plan Delaunay TIN of ``xy``."""
-    from scipy.spatial import Delaunay
+    from .common import delaunay
 
-    tri = Delaunay(xy - xy.min(axis=0))
+    tri = delaunay(xy - xy.min(axis=0))
     indptr, indices = tri.vertex_neighbor_vertices
     src = np.repeat(np.arange(len(xy)), np.diff(indptr))
     return src, indices
