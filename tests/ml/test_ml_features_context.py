@@ -27,6 +27,16 @@ def test_knn_eigen_features_match_numpy_covariance():
         assert abs(out[q, 4] - abs(v[2, 0])) < 1e-3  # |n_z| of the smallest eigenvector
 
 
+def test_knn_eigen_features_split_over_two_threads_are_the_same_values():
+    # above 50,000 query rows the moments are done in two halves on two threads
+    rng = np.random.default_rng(5)
+    pts = rng.uniform(0, 300, (60_001, 3)) * [1, 1, 0.0002]
+    one, d1 = _eigen(pts, pts, 10, 1)
+    two, d2 = _eigen(pts, pts, 10, 2)
+    assert np.array_equal(one, two) and np.array_equal(d1, d2)
+    assert np.isfinite(two).all() and (two[:, 4] > 0.9).mean() > 0.9  # a near-flat cloud
+
+
 def _roof_and_car_scene(seed=0):
     """Flat ground, a 12 x 12 m flat roof 4 m up and a 2 x 4.5 m car 1.5 m up, 8 pts/m²."""
     rng = np.random.default_rng(seed)

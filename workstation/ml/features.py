@@ -322,6 +322,11 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
 
     Returns (m, 8) float32: linearity, planarity, scattering, verticality, |n_z|, z std,
     z - kNN min z, kNN max z - z; and the mean neighbour distance (m,).
+
+    With ``workers`` other than 1 the rows after the KD-tree query are done in two halves on
+    two threads (numpy releases the GIL): the fine scale is the feature pass's longest task,
+    and without the split its second half ran on one core while the other one sat idle. The
+    rows are independent, so the values are the same either way.
     """
     from scipy.spatial import cKDTree
 
@@ -331,9 +336,26 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     if k == 1:
         j = j[:, None]
         d = d[:, None]
+    ref32 = xyz_ref.astype(np.float32)
+    m = len(xyz_q)
+    out = np.empty((m, 8), np.float32)
+    if workers == 1 or m < 50_000:
+        _eigen_rows(xyz_q, ref32, j, k, out)
+    else:
+        half = m // 2
+        with ThreadPoolExecutor(max_workers=1) as pool:
+            other = pool.submit(_eigen_rows, xyz_q[half:], ref32, j[half:], k, out[half:])
+            _eigen_rows(xyz_q[:half], ref32, j[:half], k, out[:half])
+            other.result()
+    return out, d.mean(axis=1)
+
+
+def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
+    """:func:`_eigen`'s features of the query rows ``xyz_q`` whose neighbours are ``j`` (rows
+    of ``ref32``), written into ``out`` (len(xyz_q), 8)."""
     # float32 second moments of the neighbours about their mean (local metric coordinates, so
     # float32 keeps 0.1 mm at a kilometre)
-    nb = xyz_ref.astype(np.float32)[j]  # (m, k, 3)
+    nb = ref32[j]  # (m, k, 3)
     mu = nb.mean(axis=1)
     nb -= mu[:, None, :]
     x, y, zc = nb[..., 0], nb[..., 1], nb[..., 2]
@@ -351,7 +373,6 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     nrm_z = _eigvec_z(cov, l3)  # the normal's and the main direction's z components
     main_z = _eigvec_z(cov, l1)
     zq = xyz_q[:, 2] - mu[:, 2]  # heights relative to the neighbourhood mean
-    out = np.empty((len(xyz_q), 8), np.float32)
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1
     out[:, 2] = l3 / l1
@@ -360,7 +381,6 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     out[:, 5] = np.sqrt(np.maximum(cov[:, 2, 2], 0))
     out[:, 6] = np.minimum(zq - zc.min(axis=1), 30.0)
     out[:, 7] = np.minimum(zc.max(axis=1) - zq, 30.0)
-    return out, d.mean(axis=1)
 
 
 def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarray, c: np.ndarray,
