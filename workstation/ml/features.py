@@ -284,9 +284,14 @@ def _eigvec_z(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
     """z component (m,) of the unit eigenvectors of 3x3 matrices for eigenvalues ``lam`` (m,):
     the largest cross product of two rows of (A - lam I), written out per component (the
     same operations as ``np.cross``; the sign is arbitrary, callers take its magnitude)."""
-    a00, a11, a22 = cov[:, 0, 0] - lam, cov[:, 1, 1] - lam, cov[:, 2, 2] - lam
-    a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
-    a10, a20, a21 = cov[:, 1, 0], cov[:, 2, 0], cov[:, 2, 1]
+    return _eigvec_z_parts(cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2], cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2], lam)
+
+
+def _eigvec_z_parts(a00, a11, a22, a01, a02, a12, lam):
+    """:func:`_eigvec_z` of symmetric matrices given by their six distinct entries (m,)
+    (contiguous arrays make it about twice as fast as strided views of an (m, 3, 3) array)."""
+    a00, a11, a22 = a00 - lam, a11 - lam, a22 - lam
+    a10, a20, a21 = a01, a02, a12
     c0 = (a01 * a12 - a02 * a11, a02 * a10 - a00 * a12, a00 * a11 - a01 * a10)  # row 0 x row 1
     c1 = (a01 * a22 - a02 * a21, a02 * a20 - a00 * a22, a00 * a21 - a01 * a20)  # row 0 x row 2
     c2 = (a11 * a22 - a12 * a21, a12 * a20 - a10 * a22, a10 * a21 - a11 * a20)  # row 1 x row 2
@@ -301,8 +306,11 @@ def _eigvec_z(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
 def sym3_eigen(cov: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Eigenvalues l1 >= l2 >= l3 of symmetric 3x3 matrices (m, 3, 3), closed form
     (O. K. Smith 1961, Eigenvalues of a symmetric 3x3 matrix, Comm. ACM 4(4):168)."""
-    a00, a11, a22 = cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2]
-    a01, a02, a12 = cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2]
+    return _sym3_eigen_parts(cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2], cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2])
+
+
+def _sym3_eigen_parts(a00, a11, a22, a01, a02, a12):
+    """:func:`sym3_eigen` of symmetric matrices given by their six distinct entries (m,)."""
     q = (a00 + a11 + a22) / 3
     p1 = a01 * a01 + a02 * a02 + a12 * a12
     b00, b11, b22 = a00 - q, a11 - q, a22 - q
@@ -359,26 +367,24 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
     mu = nb.mean(axis=1)
     nb -= mu[:, None, :]
     x, y, zc = nb[..., 0], nb[..., 1], nb[..., 2]
-    cov = np.empty((len(xyz_q), 3, 3), np.float64)
-    for a, b, u, v in ((0, 0, x, x), (1, 1, y, y), (2, 2, zc, zc), (0, 1, x, y), (0, 2, x, zc), (1, 2, y, zc)):
-        cov[:, a, b] = np.einsum("mk,mk->m", u, v) / k
-        cov[:, b, a] = cov[:, a, b]
-    cov[:, 0, 0] += 1e-8
-    cov[:, 1, 1] += 1e-8
-    cov[:, 2, 2] += 1e-8
-    l1, l2, l3 = sym3_eigen(cov)
+    # the six distinct covariance entries, each a contiguous float64 row: xx, yy, zz, xy, xz, yz
+    cov = np.empty((6, len(xyz_q)), np.float64)
+    for a, (u, v) in enumerate(((x, x), (y, y), (zc, zc), (x, y), (x, zc), (y, zc))):
+        cov[a] = np.einsum("mk,mk->m", u, v) / k
+    cov[:3] += 1e-8
+    l1, l2, l3 = _sym3_eigen_parts(*cov)
     l1 = np.maximum(l1, 1e-12)
     l2 = np.clip(l2, 0, l1)
     l3 = np.clip(l3, 0, l2)
-    nrm_z = _eigvec_z(cov, l3)  # the normal's and the main direction's z components
-    main_z = _eigvec_z(cov, l1)
+    nrm_z = _eigvec_z_parts(*cov, l3)  # the normal's and the main direction's z components
+    main_z = _eigvec_z_parts(*cov, l1)
     zq = xyz_q[:, 2] - mu[:, 2]  # heights relative to the neighbourhood mean
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1
     out[:, 2] = l3 / l1
     out[:, 3] = 1.0 - np.abs(main_z)  # verticality of the main direction
     out[:, 4] = np.abs(nrm_z)
-    out[:, 5] = np.sqrt(np.maximum(cov[:, 2, 2], 0))
+    out[:, 5] = np.sqrt(np.maximum(cov[2], 0))
     out[:, 6] = np.minimum(zq - zc.min(axis=1), 30.0)
     out[:, 7] = np.minimum(zc.max(axis=1) - zq, 30.0)
 

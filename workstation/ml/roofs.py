@@ -125,7 +125,7 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
 def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
     """Smallest plane variance over the whole disc and its four half-discs of each
     neighbourhood ``off`` (m, k, 3), offsets from the query point."""
-    from .features import sym3_eigen
+    from .features import _sym3_eigen_parts
 
     off = off.astype(np.float32, copy=False)  # offsets of a few metres: float32 moments lose nothing at 1 cm
     x, y, z = off[:, :, 0], off[:, :, 1], off[:, :, 2]
@@ -143,14 +143,10 @@ def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
     cnt = S[..., 0]
     safe = np.maximum(cnt, 1.0)
     mx, my, mz = S[..., 1] / safe, S[..., 2] / safe, S[..., 3] / safe
-    cov = np.empty(cnt.shape + (3, 3))
-    cov[..., 0, 0] = S[..., 4] / safe - mx * mx
-    cov[..., 0, 1] = cov[..., 1, 0] = S[..., 5] / safe - mx * my
-    cov[..., 0, 2] = cov[..., 2, 0] = S[..., 6] / safe - mx * mz
-    cov[..., 1, 1] = S[..., 7] / safe - my * my
-    cov[..., 1, 2] = cov[..., 2, 1] = S[..., 8] / safe - my * mz
-    cov[..., 2, 2] = S[..., 9] / safe - mz * mz
-    l3 = sym3_eigen(cov.reshape(-1, 3, 3))[2].reshape(cnt.shape)
+    # the six distinct covariance entries (m, 5) each: xx, yy, zz, xy, xz, yz
+    cov = (S[..., 4] / safe - mx * mx, S[..., 7] / safe - my * my, S[..., 9] / safe - mz * mz,
+           S[..., 5] / safe - mx * my, S[..., 6] / safe - mx * mz, S[..., 8] / safe - my * mz)
+    l3 = _sym3_eigen_parts(*cov)[2]
     l3 = np.where(cnt >= max(6, k // 3), l3, np.inf)
     return l3.min(axis=1)
 
