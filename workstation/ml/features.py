@@ -549,7 +549,7 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     pool = ThreadPoolExecutor(max_workers=1 if p.workers == 1 else 2)
     futures = [pool.submit(_voxel_eigen, xyz, v, k, p.workers)
                for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
-    F = np.empty((n, len(FEATURE_NAMES)), np.float32)
+    F = np.empty((n, len(FEATURE_NAMES)), np.float32, order="F")
     cell = p.cell
     r, c, shape = _grid(xyz[:, :2], cell)
     zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
