@@ -21,7 +21,7 @@ def workdir(tmp_path_factory):
     """A small work folder: a classified LAS cloud, a PLY mesh, a run.json, a confusion
     matrix record and a DEM GeoTIFF."""
     import rasterio
-    from rasterio.transform import from_origin
+    from rasterio.transform import Affine  # from_origin multiplies with `*`, which affine 3.1 deprecates
 
     from workstation.io import write_cloud
     from workstation.io.mesh import write_mesh
@@ -47,7 +47,7 @@ def workdir(tmp_path_factory):
     yy, xx = np.mgrid[0:40, 0:50]
     dem = (100 + 0.5 * xx + 5 * np.sin(yy / 6)).astype(np.float32)
     with rasterio.open(d / "dtm.tif", "w", driver="GTiff", width=50, height=40, count=1, dtype="float32",
-                       transform=from_origin(500_000, 4_000_030, 1, 1), crs="EPSG:32632", nodata=-9999) as ds:
+                       transform=Affine(1.0, 0.0, 500_000, 0.0, -1.0, 4_000_030), crs="EPSG:32632", nodata=-9999) as ds:
         ds.write(dem, 1)
     return d
 
