@@ -84,6 +84,12 @@ def test_ground_preset_options_and_refusals(files, capsys):
     rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_auto_np.laz"), "--method", "auto", "--no-raised-patches",
                "--json"])
     assert rc == 0 and json.loads(capsys.readouterr().out)["params"]["raised_patches"] is False
+    # and the riser fill
+    assert main(["ground", str(d / "in.las"), "-o", str(d / "x.las"), "--method", "ptd", "--no-risers"]) == 2
+    rc = main(["ground", str(d / "in.las"), "-o", str(d / "out_auto_nr.laz"), "--method", "auto", "--no-risers",
+               "--json"])
+    info = json.loads(capsys.readouterr().out)
+    assert rc == 0 and info["params"]["risers"] is False and info["params"]["riser_params"]["min_gradient"] == 1.0
 
 
 def test_evaluate_text_output(files, capsys):

@@ -30,6 +30,8 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="[auto] under canopy (multi-echo pulses), keep only the ground's lower envelope (default on).")
 @click.option("--raised-patches/--no-raised-patches", default=None,
               help="[auto, ml] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
+@click.option("--risers/--no-risers", default=None,
+              help="[auto] put back rejected points on terrain steps the ground TIN spans (default on).")
 @click.option("--max-window", type=float, default=None, help="[pmf] largest window size, metres.")
 @click.option("--cloth-resolution", type=float, default=None, help="[csf] particle spacing, metres.")
 @click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
@@ -43,7 +45,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @overwrite_option
 @json_option
 def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cell, slope, window, threshold, scalar,
-           trend_slope, understorey, raised_patches, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
+           trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
            max_distance, seed_cell, columns, overwrite, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
@@ -66,7 +68,7 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
     format_of(output)
     check_output(output, overwrite, inputs=[src])
     given = {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
-             "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches,
+             "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches, "risers": risers,
              "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
              "class_threshold": class_threshold, "iterations": iterations, "slope_smooth": slope_smooth,
              "max_angle": max_angle, "max_distance": max_distance, "seed_cell": seed_cell}
