@@ -176,6 +176,14 @@ def grid_min(z: np.ndarray, r: np.ndarray, c: np.ndarray, shape) -> tuple[np.nda
     return zmin.reshape(shape), imin.reshape(shape)
 
 
+def lowest_per_cell(xyz: np.ndarray, cell: float, origin=None) -> np.ndarray:
+    """Indices (k,) of the lowest point of each occupied ``cell`` (grid from ``origin``, by
+    default the points' minimum corner), in raster order: PTD's seeds, the riser test's TIN."""
+    r, c, shape, _ = grid_index(xyz[:, :2], cell, origin)
+    _, imin = grid_min(xyz[:, 2], r, c, shape)
+    return imin[imin >= 0]
+
+
 def fill_nearest(grid: np.ndarray) -> np.ndarray:
     """Fill NaN cells with the value of the nearest filled cell (Euclidean distance transform)."""
     from scipy import ndimage

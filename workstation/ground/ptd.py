@@ -110,9 +110,7 @@ def _seeds(xyz: np.ndarray, cell: float) -> np.ndarray:
     """Indices of the lowest point per ``cell`` plus the lowest near each corner."""
     from scipy.spatial import cKDTree
 
-    r, c, shape, _ = common.grid_index(xyz[:, :2], cell, origin=xyz[:, :2].min(axis=0))
-    _, imin = common.grid_min(xyz[:, 2], r, c, shape)
-    seeds = imin[imin >= 0]
+    seeds = common.lowest_per_cell(xyz, cell)
     lo = xyz[:, :2].min(axis=0)
     hi = xyz[:, :2].max(axis=0)
     corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [lo[0], hi[1]], [hi[0], hi[1]]])

@@ -60,7 +60,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
     """
     from scipy.spatial import QhullError
 
-    from .common import delaunay, grid_index, grid_min
+    from .common import delaunay, grid_index, lowest_per_cell
 
     g = np.asarray(ground, dtype=bool).copy()
     idx = np.flatnonzero(g)
@@ -71,9 +71,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
         return g
     origin = xyz[:, :2].min(axis=0)
     if p.cell > 0:
-        r, c, shape, _ = grid_index(xyz[idx, :2], p.cell, origin)
-        _, low = grid_min(xyz[idx, 2], r, c, shape)
-        idx = idx[low[low >= 0]]
+        idx = idx[lowest_per_cell(xyz[idx], p.cell, origin)]
         if len(idx) < 3:
             return g
     try:
