@@ -71,6 +71,31 @@ def test_smrf_trend_slope_keeps_a_ridge_and_still_finds_the_roof():
     assert not fixed[box].any() and not trend[box].any()
 
 
+def test_progressive_steps_give_each_tolerance_the_flags_of_its_own_opening_sequence():
+    # one opening sequence serves the fixed and the per-cell slope tests: the flags are those
+    # of the textbook loop run for each tolerance
+    from workstation.ground import common
+    from workstation.ground.smrf import progressive_filter
+
+    rng = np.random.default_rng(8)
+    surface = np.cumsum(rng.normal(0, 0.3, (60, 70)), axis=1) + rng.exponential(0.5, (60, 70))
+    surface[20:30, 10:25] += 6.0  # a building
+
+    def textbook(slope):
+        last, obj = surface, np.zeros(surface.shape, bool)
+        for r in range(1, 9):
+            opened = common.open_disk(last, r)
+            obj |= (last - opened) > slope * 0.5 * r
+            last = opened
+        return obj
+
+    per_cell = rng.uniform(0.1, 1.5, surface.shape)
+    for slope in (0.15, 0.7, per_cell):
+        want = textbook(slope)
+        assert want.any() and not want.all()
+        assert np.array_equal(progressive_filter(surface, 0.5, slope, 4.0), want)
+
+
 def test_existing_classes_kept_unless_reclassify(scene):
     cloud, truth = scene
     cls = np.ones(cloud.n, np.uint8)

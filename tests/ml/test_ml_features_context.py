@@ -10,6 +10,7 @@ from workstation.ml.features import (
     FeatureParams,
     _eigen,
     compute_features,
+    opening_steps,
 )
 
 
@@ -35,6 +36,25 @@ def test_knn_eigen_features_split_over_two_threads_are_the_same_values():
     two, d2 = _eigen(pts, pts, 10, 2)
     assert np.array_equal(one, two) and np.array_equal(d1, d2)
     assert np.isfinite(two).all() and (two[:, 4] > 0.9).mean() > 0.9  # a near-flat cloud
+
+
+def test_one_opening_sequence_serves_both_provisional_grounds():
+    # the steepest-step grids of the shared sequence flag, for any tolerance and any window up
+    # to the largest, the cells the per-test progressive opening flags
+    from scipy import ndimage
+
+    rng = np.random.default_rng(9)
+    z0 = np.cumsum(rng.normal(0, 0.4, (50, 80)), axis=0) + rng.exponential(0.4, (50, 80))
+    z0[10:22, 30:45] += 5.0
+    steps = opening_steps(z0, 1.0, (12.0, 12.0 * 0.4))
+    for window, grid in zip((12, 5), steps):
+        for tol in (0.15, 0.3, rng.uniform(0.1, 1.0, z0.shape)):
+            last, flagged = z0, np.zeros(z0.shape, bool)
+            for w in range(1, window + 1):
+                op = ndimage.grey_opening(last, size=(2 * w + 1, 2 * w + 1), mode="nearest")
+                flagged |= (last - op) > tol * w
+                last = op
+            assert flagged.any() and np.array_equal(grid > tol, flagged)
 
 
 def _roof_and_car_scene(seed=0):

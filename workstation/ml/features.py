@@ -182,9 +182,38 @@ def _fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
     return grid[tuple(idx)]
 
 
+def opening_steps(z0: np.ndarray, cell: float, windows) -> list[np.ndarray]:
+    """The steepest step of SMRF's progressive opening, per cell, for each of ``windows``.
+
+    Square openings of ``z0`` with radii 1, 2, ... cells, each opening the previous one; for
+    each window (m) the grid of ``max over radii w ≤ ceil(window / cell)`` of
+    ``(opening_{w-1} - opening_w) / (cell · w)``: one step lowers a cell by more than
+    ``slope · cell · w`` exactly where this exceeds ``slope``. The openings do not depend on
+    the slope tolerance, so one sequence serves every tolerance (scalar or per cell) and every
+    window up to the largest, instead of one sequence per test.
+    """
+    from scipy import ndimage
+
+    radii = [max(1, int(np.ceil(w / cell))) for w in windows]
+    steepest = np.zeros(z0.shape)
+    step = np.empty(z0.shape)
+    out: dict[int, np.ndarray] = {}
+    last = z0
+    for w in range(1, max(radii) + 1):
+        size = 2 * w + 1
+        op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
+        np.subtract(last, op, out=step)
+        step /= cell * w
+        np.maximum(steepest, step, out=steepest)
+        last = op
+        if w in radii:
+            out[w] = steepest.copy()
+    return [out[r] for r in radii]
+
+
 def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float,
                        zmin: np.ndarray | None = None, rc=None, trend_slope: float = 0.0,
-                       trend_window: float = 30.0) -> np.ndarray:
+                       trend_window: float = 30.0, steps: np.ndarray | None = None) -> np.ndarray:
     """A provisional bare-earth grid by a progressive morphological filter.
 
     Square openings of the minimum-elevation grid with radii 1, 2, ... cells up to ``window``,
@@ -206,6 +235,9 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
         When ``trend_slope > 0``, a second pass with the per-cell tolerance
         ``max(slope, trend_slope · s)``, ``s`` the first pass's terrain slope averaged over a
         ``trend_window``-metre box (see :class:`FeatureParams`).
+    steps : (rows, cols) float64, optional
+        :func:`opening_steps` of this grid for ``window``, when computed beforehand (the
+        feature pass shares one opening sequence between its two provisional grounds).
 
     Returns
     -------
@@ -222,25 +254,15 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
         zmin = _grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
     empty = ~np.isfinite(zmin)
     z0 = _fill_nearest(zmin, empty)
-    # SMRF's progressive opening: each radius opens the previous opening; a cell is an object
-    # when one step lowers it by more than the slope allows for one cell of radius
-    def objects(tol):
-        flagged = np.zeros(shape, bool)
-        last = z0
-        for w in range(1, max(1, int(np.ceil(window / cell))) + 1):
-            size = 2 * w + 1
-            op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
-            flagged |= (last - op) > tol * cell * w
-            last = op
-        return flagged
-
-    bad = objects(slope) | empty
+    if steps is None:
+        (steps,) = opening_steps(z0, cell, (window,))
+    bad = (steps > slope) | empty
     if bad.all():
         return z0
     if trend_slope > 0:
         from workstation.ground.common import trend_tolerance
 
-        bad = objects(trend_tolerance(_fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
+        bad = (steps > trend_tolerance(_fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
     g = _fill_nearest(z0, bad)
     # smooth the filled cells a little (3 cells), keeping ground cells as measured
     sm = ndimage.uniform_filter(g, size=3, mode="nearest")
@@ -571,10 +593,14 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     F[:, 5] = np.minimum(mx - m0, 60.0)
     F[:, 6] = np.minimum(mx - z, 60.0)
     # provisional ground at two tolerances
-    g = provisional_ground(xyz, cell, p.ground_window, p.ground_slope, zmin=zmin, rc=(r, c, shape),
-                           trend_slope=p.ground_trend_slope, trend_window=p.trend_window)
+    # (one opening sequence serves both: the openings do not depend on the tolerance)
+    windows = (p.ground_window, p.ground_window * 0.4)
+    steps = opening_steps(zmin_f, cell, windows)
+    g = provisional_ground(xyz, cell, windows[0], p.ground_slope, zmin=zmin, rc=(r, c, shape),
+                           trend_slope=p.ground_trend_slope, trend_window=p.trend_window, steps=steps[0])
     F[:, 7] = np.clip(z - _bilinear(g, xyz[:, :2], cell), -20, 60)
-    g2 = provisional_ground(xyz, cell, p.ground_window * 0.4, p.ground_slope * 2, zmin=zmin, rc=(r, c, shape))
+    g2 = provisional_ground(xyz, cell, windows[1], p.ground_slope * 2, zmin=zmin, rc=(r, c, shape),
+                            steps=steps[1])
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = np.gradient(g, cell)
     F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
