@@ -6,6 +6,9 @@
   python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
   python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
                                         datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
+  python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
+                                        flags (and the point classifier's, --with-ml) could reach on the six ISPRS
+                                        samples when the rule is picked with the reference labels
 
 --set NAME=VALUE (repeatable) overrides a parameter of every method, e.g. ``--set threshold=0.3``.
 DIR defaults to ../shared/data (or $WS_SHARED_DATA). Timings: wall and process (CPU) seconds.
@@ -187,13 +190,68 @@ def bench_sim(sim_dir: Path, methods):
                   "total_error": ev.total_error, "kappa": ev.kappa, "seconds": wall, "cpu_seconds": cpu})
 
 
+def bench_bounds(data: Path, with_ml: bool):
+    """Upper bounds of ``auto``'s vote: each point's pattern of member flags (32 patterns; 64
+    with the point classifier's ground) is mapped to ground or object by a rule picked with the
+    reference labels, once for all six samples (each weighted by 1/n, so the rule minimises the
+    mean) and once per sample; then ``auto``'s steps after the vote. No rule over these flags
+    with one setting for all terrain can score below the first bound."""
+    from workstation.ground import auto as A
+    from workstation.ground import common
+
+    p = A.AutoParams()
+    rows = {}
+    for s in SAMPLES:
+        ref = read_isprs_text(data / "isprs" / f"{s}.txt")
+        cloud = Cloud(ref.xyz)
+        prep = common.prepare(cloud, A.STAGE, p.reclassify, p.last_returns_only)
+        truth = (np.asarray(ref.attrs["label"]) == 0)[prep.index]
+        flags = list(A.member_votes(prep.xyz, p))
+        votes = np.sum(flags, axis=0, dtype=np.int8)
+        if with_ml:
+            from workstation.ml.ground import MLGroundParams, ml_ground
+
+            ml = np.asarray(ml_ground(cloud, MLGroundParams(raised_patches=False)).attrs["classification"]) == 2
+            flags.append(ml[prep.index])
+        code = np.sum([f.astype(np.int64) << i for i, f in enumerate(flags)], axis=0)
+        rows[s] = (prep.xyz, votes, code, truth)
+    size = 1 << (5 + with_ml)
+
+    def picked(samples):
+        g = np.zeros(size)
+        o = np.zeros(size)
+        for s in samples:
+            _, _, code, truth = rows[s]
+            g += np.bincount(code[truth], minlength=size) / len(truth)
+            o += np.bincount(code[~truth], minlength=size) / len(truth)
+        return g > o
+
+    pooled = picked(SAMPLES)
+    rules = {"vote_3_of_5": lambda s, v, code: v >= p.min_votes,
+             "best_rule_for_all": lambda s, v, code: pooled[code],
+             "best_rule_per_sample": lambda s, v, code: picked([s])[code]}
+    for name, rule in rules.items():
+        raw, refined = [], []
+        for s in SAMPLES:
+            xyz, votes, code, truth = rows[s]
+            g = rule(s, votes, code)
+            r = A.refine_vote(xyz, g, votes, p)
+            raw.append(ground_errors(truth, g).total_error)
+            refined.append(ground_errors(truth, r).total_error)
+            emit({"bench": "bounds", "rule": name, "with_ml": with_ml, "sample": s,
+                  "total_error_vote": raw[-1], "total_error": refined[-1]})
+        emit({"bench": "bounds", "rule": name, "with_ml": with_ml, "sample": "mean",
+              "total_error_vote": float(np.mean(raw)), "total_error": float(np.mean(refined))})
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim"])
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds"])
     ap.add_argument("--sim-dir", default="sim")
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
+    ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
     a = ap.parse_args(argv)
@@ -208,6 +266,8 @@ def main(argv=None):
         bench_tiles(data, methods)
     elif a.what == "sim":
         bench_sim(Path(a.sim_dir), methods)
+    elif a.what == "bounds":
+        bench_bounds(data, a.with_ml)
     else:
         bench_speed(data, methods, a.points)
 

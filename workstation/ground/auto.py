@@ -89,13 +89,19 @@ class AutoParams:
 PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "urban", "forest", "steep")}
 
 
-def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points by the majority vote, refined under
-    canopy where ``share`` (:func:`workstation.ground.understorey.canopy_share`) is given."""
-    votes = (smrf_ground(xyz, p.smrf_wide).astype(np.int8) + smrf_ground(xyz, p.smrf_tight).astype(np.int8)
-             + pmf_ground(xyz, p.pmf).astype(np.int8) + csf_ground(xyz, p.csf).astype(np.int8)
-             + ptd_ground(xyz, p.ptd).astype(np.int8))
-    ground = votes >= p.min_votes
+MEMBERS = ("smrf_wide", "smrf_tight", "pmf", "csf", "ptd")
+
+
+def member_votes(xyz: np.ndarray, p: AutoParams) -> np.ndarray:
+    """(5, m) bool: the ground of each member (:data:`MEMBERS` order) on local metric points."""
+    return np.stack([smrf_ground(xyz, p.smrf_wide), smrf_ground(xyz, p.smrf_tight), pmf_ground(xyz, p.pmf),
+                     csf_ground(xyz, p.csf), ptd_ground(xyz, p.ptd)])
+
+
+def refine_vote(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray, p: AutoParams,
+                share: np.ndarray | None = None) -> np.ndarray:
+    """The steps after the vote: raised patches out, risers in, and (with ``share``) the
+    understorey out; ``votes`` (m,) is the number of members that accepted each point."""
     if p.raised_patches:
         ground = raised_patches(xyz, ground, p.patch_params)
     if p.risers:
@@ -103,6 +109,13 @@ def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None)
     if p.understorey and share is not None:
         ground = refine_understorey(xyz, ground, share, p.understorey_params)
     return ground
+
+
+def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points by the majority vote, refined under
+    canopy where ``share`` (:func:`workstation.ground.understorey.canopy_share`) is given."""
+    votes = member_votes(xyz, p).sum(axis=0, dtype=np.int8)
+    return refine_vote(xyz, votes >= p.min_votes, votes, p, share)
 
 
 def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
