@@ -6,6 +6,8 @@
   python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
   python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
                                         datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
+  python scripts/bench_ground.py memory [--sizes 1000000,2000000,4000000] [--methods ...]
+                                        peak memory of each filter in a child process, above the tile's own
   python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
                                         flags (and the point classifier's, --with-ml) could reach on the six ISPRS
                                         samples when the rule is picked with the reference labels
@@ -169,6 +171,40 @@ def bench_speed(data: Path, methods, n: int):
                   "points_per_s": tile.n / wall2, "points_per_cpu_s": tile.n / cpu2})
 
 
+def _vm(field: str) -> float:
+    """A ``/proc/self/status`` memory field (VmRSS, VmHWM) in MB."""
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith(field + ":"):
+            return int(line.split()[1]) / 1024.0
+    raise RuntimeError(f"no {field} in /proc/self/status")
+
+
+def _memory_child(data: Path, method: str, n: int):
+    import gc
+
+    tile = synthetic_tile(n, data)
+    gc.collect()
+    Path("/proc/self/clear_refs").write_text("5")  # the peak (VmHWM) restarts from the current RSS
+    base = _vm("VmRSS")
+    _, wall, cpu = timed(lambda: ground_filter(tile, method))
+    peak = _vm("VmHWM")
+    emit({"bench": "memory", "method": method, "points": n, "rss_before_mb": base, "peak_mb": peak,
+          "filter_mb": peak - base, "filter_bytes_per_point": (peak - base) * 2**20 / n,
+          "seconds": wall, "cpu_seconds": cpu})
+
+
+def bench_memory(data: Path, methods, sizes):
+    """Peak resident memory of each filter above the tile it is given, in a fresh process per
+    run (Linux: /proc/self/status, the peak reset after the tile is built)."""
+    import subprocess
+
+    for m in methods:
+        for n in sizes:
+            out = subprocess.run([sys.executable, __file__, "_memchild", "--data", str(data), "--methods", m,
+                                  "--points", str(n)], capture_output=True, text=True, check=True)
+            print(out.stdout.strip().splitlines()[-1], flush=True)
+
+
 def bench_sim(sim_dir: Path, methods):
     """Ground/non-ground errors on simulated ALS against the simulator's classes (bare earth:
     ground 2, water 9, road 11)."""
@@ -246,11 +282,12 @@ def bench_bounds(data: Path, with_ml: bool):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds"])
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds", "memory", "_memchild"])
     ap.add_argument("--sim-dir", default="sim")
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
+    ap.add_argument("--sizes", default="1000000,2000000,4000000", help="memory: tile sizes (points)")
     ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
@@ -268,6 +305,10 @@ def main(argv=None):
         bench_sim(Path(a.sim_dir), methods)
     elif a.what == "bounds":
         bench_bounds(data, a.with_ml)
+    elif a.what == "memory":
+        bench_memory(data, methods, [int(x) for x in a.sizes.split(",")])
+    elif a.what == "_memchild":
+        _memory_child(data, methods[0], a.points)
     else:
         bench_speed(data, methods, a.points)
 
