@@ -6,7 +6,7 @@
   python scripts/bench_ground.py speed  [--points 5000000] [--methods ...]     points/s on a synthetic tile
   python scripts/bench_ground.py sim    --sim-dir DIR [--methods ...]          simulated ALS (ws simulate als --scene
                                         datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
-  python scripts/bench_ground.py memory [--sizes 1000000,2000000,4000000] [--methods ...]
+  python scripts/bench_ground.py memory [--sizes 1000000,2000000,4000000] [--methods ...] [--tile-points N]
                                         peak memory of each filter in a child process, above the tile's own
   python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
                                         flags (and the point classifier's, --with-ml) could reach on the six ISPRS
@@ -179,21 +179,24 @@ def _vm(field: str) -> float:
     raise RuntimeError(f"no {field} in /proc/self/status")
 
 
-def _memory_child(data: Path, method: str, n: int):
+def _memory_child(data: Path, method: str, n: int, tile_points: int):
     import gc
 
+    from workstation.ground.tiles import TileParams
+
+    tiles = TileParams(tile_points) if tile_points else None
     tile = synthetic_tile(n, data)
     gc.collect()
     Path("/proc/self/clear_refs").write_text("5")  # the peak (VmHWM) restarts from the current RSS
     base = _vm("VmRSS")
-    _, wall, cpu = timed(lambda: ground_filter(tile, method))
+    _, wall, cpu = timed(lambda: ground_filter(tile, method, tiles=tiles))
     peak = _vm("VmHWM")
-    emit({"bench": "memory", "method": method, "points": n, "rss_before_mb": base, "peak_mb": peak,
+    emit({"bench": "memory", "method": method, "points": n, "tile_points": tile_points, "rss_before_mb": base, "peak_mb": peak,
           "filter_mb": peak - base, "filter_bytes_per_point": (peak - base) * 2**20 / n,
           "seconds": wall, "cpu_seconds": cpu})
 
 
-def bench_memory(data: Path, methods, sizes):
+def bench_memory(data: Path, methods, sizes, tile_points: int):
     """Peak resident memory of each filter above the tile it is given, in a fresh process per
     run (Linux: /proc/self/status, the peak reset after the tile is built)."""
     import subprocess
@@ -201,7 +204,8 @@ def bench_memory(data: Path, methods, sizes):
     for m in methods:
         for n in sizes:
             out = subprocess.run([sys.executable, __file__, "_memchild", "--data", str(data), "--methods", m,
-                                  "--points", str(n)], capture_output=True, text=True, check=True)
+                                  "--points", str(n), "--tile-points", str(tile_points)],
+                                 capture_output=True, text=True, check=True)
             print(out.stdout.strip().splitlines()[-1], flush=True)
 
 
@@ -288,6 +292,7 @@ def main(argv=None):
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
     ap.add_argument("--sizes", default="1000000,2000000,4000000", help="memory: tile sizes (points)")
+    ap.add_argument("--tile-points", type=int, default=0, help="memory: filter tile by tile (ws ground --tile-points); 0 = whole")
     ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
@@ -306,9 +311,9 @@ def main(argv=None):
     elif a.what == "bounds":
         bench_bounds(data, a.with_ml)
     elif a.what == "memory":
-        bench_memory(data, methods, [int(x) for x in a.sizes.split(",")])
+        bench_memory(data, methods, [int(x) for x in a.sizes.split(",")], a.tile_points)
     elif a.what == "_memchild":
-        _memory_child(data, methods[0], a.points)
+        _memory_child(data, methods[0], a.points, a.tile_points)
     else:
         bench_speed(data, methods, a.points)
 

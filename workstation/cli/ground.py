@@ -41,16 +41,22 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--max-angle", type=float, default=None, help="[ptd] iteration angle, degrees.")
 @click.option("--max-distance", type=float, default=None, help="[ptd] iteration distance, metres.")
 @click.option("--seed-cell", type=float, default=None, help="[ptd] seed cell, metres.")
+@click.option("--tile-points", type=click.IntRange(min=0), default=10_000_000, show_default=True,
+              help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never.")
+@click.option("--tile-buffer", type=click.FloatRange(min=0), default=60.0, show_default=True,
+              help="Metres of neighbouring points filtered with each tile.")
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
 @overwrite_option
 @json_option
 def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
-           max_distance, seed_cell, columns, overwrite, as_json):
+           max_distance, seed_cell, tile_points, tile_buffer, columns, overwrite, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
-    classes other than 0, 1 and 2 keep them unless --reclassify.
+    classes other than 0, 1 and 2 keep them unless --reclassify. A cloud of more than
+    --tile-points points is filtered tile by tile, each tile with --tile-buffer metres of its
+    neighbours (the point classifier, --method ml, tiles on its own).
     """
     import time
 
@@ -92,7 +98,14 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
         from workstation.ground.noise import classify_noise
 
         cloud = classify_noise(cloud)
-    out = ml_ground(cloud, params) if method == "ml" else methods()[method].func(cloud, params)
+    if method == "ml":
+        out = ml_ground(cloud, params)
+    elif tile_points and cloud.n > tile_points:
+        from workstation.ground.tiles import TileParams, ground_tiled
+
+        out = ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer))
+    else:
+        out = methods()[method].func(cloud, params)
     if hag:
         from workstation.ground.hag import height_above_ground
 

@@ -78,7 +78,7 @@ def make_params(method: str, preset: str = "default", **overrides):
     return dataclasses.replace(base, **ov)
 
 
-def ground_filter(cloud: Cloud, method: str = "smrf", preset: str = "default", **overrides) -> Cloud:
+def ground_filter(cloud: Cloud, method: str = "smrf", preset: str = "default", tiles=None, **overrides) -> Cloud:
     """Run a ground filter by name.
 
     Parameters
@@ -88,8 +88,15 @@ def ground_filter(cloud: Cloud, method: str = "smrf", preset: str = "default", *
         One of :data:`METHOD_NAMES`.
     preset : str
         "default", "flat", "urban", "forest" or "steep".
+    tiles : workstation.ground.tiles.TileParams, optional
+        Filter a cloud of more than ``tiles.tile_points`` points tile by tile with a buffer
+        (:mod:`workstation.ground.tiles`); None: the whole cloud at once.
     **overrides
         Parameter fields to replace (None values are ignored).
     """
     p = make_params(method, preset, **overrides)
+    if tiles is not None:
+        from .tiles import ground_tiled
+
+        return ground_tiled(cloud, method, p, tiles)
     return methods()[method].func(cloud, p)
