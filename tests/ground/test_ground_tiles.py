@@ -67,6 +67,8 @@ def test_small_cloud_is_filtered_whole_and_bad_tiles_are_refused(big_scene):
         TileParams(tile_points=10)
     with pytest.raises(InvalidInputError, match="buffer"):
         TileParams(buffer=-1.0)
+    with pytest.raises(InvalidInputError, match="workers"):
+        TileParams(workers=0)
 
 
 def test_a_tile_without_usable_points_keeps_its_classes_and_the_rest_is_filtered():
@@ -86,11 +88,16 @@ def test_a_tile_without_usable_points_keeps_its_classes_and_the_rest_is_filtered
                       tiles=TileParams(tile_points=4000))
 
 
-def test_cli_tiles_a_large_input(tmp_path, capsys):
+def test_cli_tiles_a_large_input_in_two_processes_as_in_one(tmp_path, capsys):
     xyz, truth = terrain_with_boxes(seed=13, size=100.0)
-    write_cloud(Cloud(xyz, crs="EPSG:32632"), tmp_path / "in.las")
-    rc = main(["ground", str(tmp_path / "in.las"), "-o", str(tmp_path / "out.las"), "--method", "smrf",
-               "--tile-points", "5000", "--tile-buffer", "30"])
-    assert rc == 0
-    out = read_cloud(tmp_path / "out.las")
-    assert ground_errors(truth, np.asarray(out.attrs["classification"]) == 2).total_error < 0.03
+    write_cloud(Cloud(xyz, {"intensity": np.arange(len(xyz)) % 700}, crs="EPSG:32632"), tmp_path / "in.las")
+    got = {}
+    for w in (1, 2):
+        rc = main(["ground", str(tmp_path / "in.las"), "-o", str(tmp_path / f"out{w}.las"), "--method", "smrf",
+                   "--tile-points", "5000", "--tile-buffer", "30", "--tile-workers", str(w)])
+        assert rc == 0
+        out = read_cloud(tmp_path / f"out{w}.las")
+        got[w] = np.asarray(out.attrs["classification"])
+        assert np.array_equal(np.asarray(out.attrs["intensity"]), np.arange(out.n) % 700)
+    assert np.array_equal(got[1], got[2])  # the same tiles, whichever process filters them
+    assert ground_errors(truth, got[2] == 2).total_error < 0.03

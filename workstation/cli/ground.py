@@ -45,12 +45,14 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never.")
 @click.option("--tile-buffer", type=click.FloatRange(min=0), default=60.0, show_default=True,
               help="Metres of neighbouring points filtered with each tile.")
+@click.option("--tile-workers", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Tiles filtered at once, one process each (memory grows with it).")
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
 @overwrite_option
 @json_option
 def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
-           max_distance, seed_cell, tile_points, tile_buffer, columns, overwrite, as_json):
+           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, overwrite, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
@@ -103,7 +105,7 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
     elif tile_points and cloud.n > tile_points:
         from workstation.ground.tiles import TileParams, ground_tiled
 
-        out = ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer))
+        out = ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer, tile_workers))
     else:
         out = methods()[method].func(cloud, params)
     if hag:

@@ -7,7 +7,9 @@ with a buffer, and PDAL pipelines run ``filters.splitter`` before a filter, the 
 into square tiles of about ``tile_points`` points; each tile is filtered together with the
 points of its neighbours within ``buffer`` metres (the filters' windows reach that far, so a
 tile's edge sees the terrain beyond it), and only the tile's own points keep the classes
-found. Peak memory then follows the tile, not the file.
+found. Peak memory then follows the tile, not the file; with ``workers`` > 1 the tiles are
+filtered in as many processes at once (the same classes as one after the other), since most
+of a filter's work runs on one core.
 
 The buffer (60 m) is twice the widest window of the default filters (``auto``'s 30 m SMRF
 window; PTD's 20 m seed cells): a roof at a tile's edge is opened away with the same window
@@ -27,7 +29,7 @@ from workstation.core.classes import ASPRSClass
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
-from workstation.core.progress import track
+from workstation.core.progress import progress_bar, track
 
 from .common import OVERWRITABLE, crs_unit_factors
 
@@ -46,12 +48,20 @@ class TileParams:
         filtered whole (10,000,000: about 3.5 GB for ``auto``).
     buffer : float
         Metres of neighbouring points filtered with each tile (60).
+    workers : int
+        Tiles filtered at once, each in its own process (1: one after the other, in this
+        process). Memory grows with it: each process holds one buffered tile and its filter.
+        The processes are spawned, so a script that asks for more than one needs Python's
+        ``if __name__ == "__main__":`` guard around its work (``ws ground`` has it).
     """
 
     tile_points: int = 10_000_000
     buffer: float = 60.0
+    workers: int = 1
 
     def __post_init__(self):
+        if self.workers < 1:
+            raise InvalidInputError(f"workers {self.workers} is below 1", "use 1 or more processes", field="workers")
         if self.tile_points < 1000:
             raise InvalidInputError(f"tile_points {self.tile_points} is too small", "use at least 1000 points per tile",
                                     field="tile_points")
@@ -110,6 +120,19 @@ def tile_layout(xy: np.ndarray, tile_points: int, buffer: float) -> TileLayout:
     return TileLayout(xy, tile_points, buffer)
 
 
+def _filter_tile(method: str, params, xyz: np.ndarray, attrs: dict, crs, inner: np.ndarray):
+    """Classes of a buffered tile's own points (``inner``), and the filter's history record;
+    ``None`` classes when the filter finds no ground or no usable point there. Module level,
+    on plain arrays: a worker process receives it pickled."""
+    from .methods import methods
+
+    try:
+        out = methods()[method].func(Cloud(xyz, attrs, crs=crs), params)
+    except StageError as e:
+        return None, e.message
+    return np.asarray(out.attrs["classification"])[inner], out.history[-1]
+
+
 def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TileParams()) -> Cloud:
     """Run the ground filter ``method`` (a name of :mod:`workstation.ground.methods`) with
     ``params`` tile by tile (see the module doc); the whole cloud at once when it has no more
@@ -123,9 +146,8 @@ def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TilePara
     """
     from .methods import methods
 
-    func = methods()[method].func
     if cloud.n <= tiles.tile_points:
-        return func(cloud, params)
+        return methods()[method].func(cloud, params)
     t0 = time.perf_counter()
     hf, _ = crs_unit_factors(cloud.crs)
     layout = tile_layout(cloud.xyz[:, :2] * hf, tiles.tile_points, tiles.buffer)
@@ -135,22 +157,48 @@ def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TilePara
     if old is not None and not reclassify:
         cls = np.where(np.isin(old, OVERWRITABLE), cls, np.asarray(old, dtype=np.uint8))
     record, empty = None, []
-    for core, sel in track(layout, f"ground ({method}) tile by tile", total=len(layout)):
-        inner = np.searchsorted(sel, core)  # core ⊂ sel, both sorted
-        try:
-            out = func(cloud[sel], params)
-        except StageError as e:  # no ground, or no usable point, in this tile
+
+    def task(core, sel):  # the arguments of one tile's filter run
+        return (method, params, cloud.xyz[sel], {k: np.asarray(v)[sel] for k, v in cloud.attrs.items()}, cloud.crs,
+                np.searchsorted(sel, core))  # core ⊂ sel, both sorted
+
+    def collect(core, result):
+        nonlocal record
+        got, rec = result
+        if got is None:
             empty.append(len(core))
-            log.warning("%s: a tile of %d points has no ground (%s); its points stay non-ground", STAGE, len(core),
-                        e.message)
-            continue
-        cls[core] = np.asarray(out.attrs["classification"])[inner]
-        record = record or out.history[-1]
+            log.warning("%s: a tile of %d points has no ground (%s); its points stay non-ground", STAGE, len(core), rec)
+            return
+        cls[core] = got
+        record = record or rec
+
+    desc = f"ground ({method}) tile by tile" + (f", {tiles.workers} processes" if tiles.workers > 1 else "")
+    if tiles.workers == 1:
+        for core, sel in track(layout, desc, total=len(layout)):
+            collect(core, _filter_tile(*task(core, sel)))
+    else:
+        import multiprocessing
+        from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+        # at most one tile per process in flight: the tiles' copies are made as they are sent
+        with progress_bar(desc, len(layout)) as advance, ProcessPoolExecutor(
+                tiles.workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+            running: dict = {}
+            for core, sel in layout:
+                if len(running) >= tiles.workers:
+                    done, _ = wait(running, return_when=FIRST_COMPLETED)
+                    for f in done:
+                        collect(running.pop(f), f.result())
+                        advance(1)
+                running[pool.submit(_filter_tile, *task(core, sel))] = core
+            for f in list(running):
+                collect(running.pop(f), f.result())
+                advance(1)
     if record is None or not (cls == ASPRSClass.GROUND).any():
         raise StageError(STAGE, f"no ground point found in any of {len(layout)} tiles",
                          "check the units and the parameters, or the noise classes")
     info = {**record.params, "tiles": len(layout), "tile_points": tiles.tile_points, "buffer_m": tiles.buffer,
-            "tiles_without_ground": len(empty)}
+            "workers": tiles.workers, "tiles_without_ground": len(empty)}
     log.info("%s: %s on %d points in %d tiles (%d without ground) in %.1f s", STAGE, method, cloud.n, len(layout),
              len(empty), time.perf_counter() - t0)
     return cloud.with_attrs(classification=cls).with_history(record.stage, info, time.perf_counter() - t0)
