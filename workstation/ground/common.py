@@ -401,6 +401,55 @@ def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
     return out
 
 
+def open_square(a: np.ndarray, radius: int) -> np.ndarray:
+    """Grey opening by a square of side ``2 * radius + 1`` cells (edges extend outward)."""
+    from scipy import ndimage
+
+    size = 2 * radius + 1
+    return ndimage.grey_opening(a, size=(size, size), mode="nearest")
+
+
+def opening_steps(surface: np.ndarray, cell: float, windows, opening=None) -> list[np.ndarray]:
+    """The steepest step of a progressive opening (Zhang et al. 2003; SMRF), per cell.
+
+    Openings of ``surface`` with radii 1, 2, ... cells, each opening the previous one; for
+    each window (m) the grid of ``max over radii r ≤ ceil(window / cell)`` of
+    ``(opening_{r-1} - opening_r) / (cell · r)``. One step lowers a cell by more than
+    ``slope · cell · r`` exactly where this exceeds ``slope``: the openings do not depend on the
+    slope, so one sequence serves every tolerance (scalar or per cell) and every window up to
+    the largest.
+
+    Parameters
+    ----------
+    surface : (rows, cols) float64, no NaN
+    cell : float
+        Cell size, metres.
+    windows : sequence of float
+        Largest radius of each result, metres.
+    opening : callable, optional
+        ``opening(grid, radius)``: :func:`open_disk` (default, SMRF) or :func:`open_square`.
+
+    Returns
+    -------
+    list of (rows, cols) float64, one per window
+    """
+    opening = opening or open_disk
+    radii = [max(1, int(np.ceil(w / cell))) for w in windows]
+    steepest = np.zeros(surface.shape)
+    step = np.empty(surface.shape)
+    out: dict[int, np.ndarray] = {}
+    last = surface
+    for r in range(1, max(radii) + 1):
+        opened = opening(last, r)
+        np.subtract(last, opened, out=step)
+        step /= cell * r
+        np.maximum(steepest, step, out=steepest)
+        last = opened
+        if r in radii:
+            out[r] = steepest.copy()
+    return [out[r] for r in radii]
+
+
 def open_disk(a: np.ndarray, radius: int) -> np.ndarray:
     """Grey opening (erosion then dilation) by a disk of ``radius`` cells."""
     return _disk_filter(_disk_filter(a, radius, True), radius, False)

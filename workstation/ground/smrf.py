@@ -91,39 +91,6 @@ PRESETS: dict[str, SMRFParams] = {
 }
 
 
-def progressive_steps(surface: np.ndarray, cell: float, window: float) -> np.ndarray:
-    """The steepest step of SMRF's progressive opening, per cell.
-
-    Openings by disks of radius 1, 2, ... cells up to ``window`` (m), each opening the previous
-    one; returns ``max over radii r of (opening_{r-1} - opening_r) / (cell · r)``, the smallest
-    slope tolerance under which the cell is not an object. The openings do not depend on the
-    tolerance, so the slope-adaptive second test reuses them (:func:`progressive_filter`).
-
-    Parameters
-    ----------
-    surface : (rows, cols) float64, no NaN
-    cell : float
-        Cell size, metres.
-    window : float
-        Largest radius, metres.
-
-    Returns
-    -------
-    (rows, cols) float64
-    """
-    max_radius = max(1, int(np.ceil(window / cell)))
-    last = surface
-    steepest = np.zeros(surface.shape)
-    step = np.empty(surface.shape)
-    for radius in range(1, max_radius + 1):
-        opened = common.open_disk(last, radius)
-        np.subtract(last, opened, out=step)
-        step /= cell * radius
-        np.maximum(steepest, step, out=steepest)
-        last = opened
-    return steepest
-
-
 def progressive_filter(surface: np.ndarray, cell: float, slope, window: float) -> np.ndarray:
     """SMRF's progressive morphological object detection on a filled grid: a cell is an
     object when one opening step of radius ``r`` lowers it by more than ``slope · cell · r``.
@@ -143,7 +110,7 @@ def progressive_filter(surface: np.ndarray, cell: float, slope, window: float) -
     (rows, cols) bool
         True on object cells.
     """
-    return progressive_steps(surface, cell, window) > slope
+    return common.opening_steps(surface, cell, (window,))[0] > slope
 
 
 def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -168,9 +135,10 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
             z2 = zmin.copy()
             z2[low] = np.nan
             zfill = common.inpaint(z2)
-    steps = progressive_steps(zfill, p.cell, p.window)
+    # the disk openings do not depend on the slope: both tests read one sequence
+    (steps,) = common.opening_steps(zfill, p.cell, (p.window,))
     obj = steps > p.slope
-    if p.trend_slope > 0:  # the same openings, tested against the per-cell slope
+    if p.trend_slope > 0:  # the per-cell slope
         obj = steps > _trend_slope(zmin, empty | low | obj, p)
     bad = empty | low | obj
     zp = zmin.copy()

@@ -183,32 +183,13 @@ def _fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
 
 
 def opening_steps(z0: np.ndarray, cell: float, windows) -> list[np.ndarray]:
-    """The steepest step of SMRF's progressive opening, per cell, for each of ``windows``.
+    """SMRF's steepest step per cell for each of ``windows`` (m), with square openings
+    (:func:`workstation.ground.common.opening_steps`): one opening sequence serves both
+    provisional grounds and every tolerance."""
+    from workstation.ground.common import open_square
+    from workstation.ground.common import opening_steps as steps
 
-    Square openings of ``z0`` with radii 1, 2, ... cells, each opening the previous one; for
-    each window (m) the grid of ``max over radii w ≤ ceil(window / cell)`` of
-    ``(opening_{w-1} - opening_w) / (cell · w)``: one step lowers a cell by more than
-    ``slope · cell · w`` exactly where this exceeds ``slope``. The openings do not depend on
-    the slope tolerance, so one sequence serves every tolerance (scalar or per cell) and every
-    window up to the largest, instead of one sequence per test.
-    """
-    from scipy import ndimage
-
-    radii = [max(1, int(np.ceil(w / cell))) for w in windows]
-    steepest = np.zeros(z0.shape)
-    step = np.empty(z0.shape)
-    out: dict[int, np.ndarray] = {}
-    last = z0
-    for w in range(1, max(radii) + 1):
-        size = 2 * w + 1
-        op = ndimage.grey_opening(last, size=(size, size), mode="nearest")
-        np.subtract(last, op, out=step)
-        step /= cell * w
-        np.maximum(steepest, step, out=steepest)
-        last = op
-        if w in radii:
-            out[w] = steepest.copy()
-    return [out[r] for r in radii]
+    return steps(z0, cell, windows, open_square)
 
 
 def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float,
