@@ -3,6 +3,8 @@ the whole-cloud run where the grids line up, with the buildings still objects.""
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 from ground_synth import terrain_with_boxes
@@ -94,8 +96,8 @@ def test_cli_tiles_a_large_input_in_two_processes_as_in_one(tmp_path, capsys):
     got = {}
     for w in (1, 2):
         rc = main(["ground", str(tmp_path / "in.las"), "-o", str(tmp_path / f"out{w}.las"), "--method", "smrf",
-                   "--tile-points", "5000", "--tile-buffer", "30", "--tile-workers", str(w)])
-        assert rc == 0
+                   "--tile-points", "5000", "--tile-buffer", "30", "--tile-workers", str(w), "--json"])
+        assert rc == 0 and json.loads(capsys.readouterr().out)["tiles"] >= 2
         out = read_cloud(tmp_path / f"out{w}.las")
         got[w] = np.asarray(out.attrs["classification"])
         assert np.array_equal(np.asarray(out.attrs["intensity"]), np.arange(out.n) % 700)

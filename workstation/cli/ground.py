@@ -108,6 +108,7 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
         out = ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer, tile_workers))
     else:
         out = methods()[method].func(cloud, params)
+    n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
     if hag:
         from workstation.ground.hag import height_above_ground
 
@@ -122,4 +123,4 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
 
         emit_json({"input": src, "output": output, "method": method, "preset": preset,
                    "params": dataclasses.asdict(params), "point_count": out.n, "ground_count": n_ground,
-                   "ground_fraction": n_ground / out.n, "seconds": dt})
+                   "ground_fraction": n_ground / out.n, "seconds": dt, "tiles": n_tiles})
