@@ -84,8 +84,16 @@ class TileLayout:
         lo = xy.min(axis=0)
         self.xy = (xy - lo).astype(np.float32)
         self.buffer = float(buffer)
-        occ = np.unique(np.floor(self.xy / 10.0).astype(np.int64) @ np.array([1, 1 << 31]))
-        area = max(len(occ) * 100.0, 1.0)
+        cells = np.floor(self.xy / 10.0).astype(np.int64)
+        dims = cells.max(axis=0) + 1
+        if int(dims[0]) * int(dims[1]) <= 50_000_000:  # a bitmap of the 10 m cells: O(n)
+            occupied = np.zeros(int(dims[0]) * int(dims[1]), bool)
+            occupied[cells[:, 0] * dims[1] + cells[:, 1]] = True
+            n_cells = int(np.count_nonzero(occupied))
+        else:
+            n_cells = len(np.unique(cells[:, 0] * dims[1] + cells[:, 1]))
+        del cells
+        area = max(n_cells * 100.0, 1.0)
         side = max(float(np.sqrt(tile_points * area / len(xy))), self.buffer, 1.0)
         ext = self.xy.max(axis=0)
         self.nx, self.ny = int(ext[0] // side) + 1, int(ext[1] // side) + 1
@@ -110,9 +118,12 @@ class TileLayout:
                 if self.starts[t] == self.starts[t + 1]:
                     continue
                 core = np.sort(self.order[self.starts[t]:self.starts[t + 1]]).astype(np.int64)
-                near = col[(ycol >= b * side - buf) & (ycol <= (b + 1) * side + buf)]
-                # (the union: a core point on a tile's edge is in its buffered set whatever the rounding)
-                yield core, np.union1d(near, core)
+                # the union (a core point on a tile's edge is in its buffered set whatever the
+                # rounding) as a mask: O(n), where np.union1d's hashing took seconds per tile
+                mask = np.zeros(len(xy), bool)
+                mask[col[(ycol >= b * side - buf) & (ycol <= (b + 1) * side + buf)]] = True
+                mask[core] = True
+                yield core, np.flatnonzero(mask)
 
 
 def tile_layout(xy: np.ndarray, tile_points: int, buffer: float) -> TileLayout:
