@@ -72,9 +72,11 @@ class TileParams:
 class TileLayout:
     """Square tiles over planar points ``xy`` (m, 2) in metres.
 
-    The side gives about ``tile_points`` points per tile at the mean density of the occupied
-    area (10 m cells that hold a point, so a gap or an L-shaped survey does not make the tiles
-    fuller than asked), and is at least the buffer. Iterating gives (core indices, buffered
+    The tiles are rectangles of equal size, as many along each axis as a square of about
+    ``tile_points`` points (at the mean density of the occupied area: 10 m cells that hold a
+    point, so a gap or an L-shaped survey does not make the tiles fuller than asked) needs to
+    cover the extent: no tile holds more than about ``tile_points`` points at that density,
+    and none is left nearly empty beside a full one. Iterating gives (core indices, buffered
     indices) per non-empty tile, both sorted, the core a subset of the buffered set; every
     point is in exactly one core. Memory: 12 bytes per point (float32 planar coordinates and
     int32 tile order) plus one tile's indices at a time.
@@ -94,12 +96,12 @@ class TileLayout:
             n_cells = len(np.unique(cells[:, 0] * dims[1] + cells[:, 1]))
         del cells
         area = max(n_cells * 100.0, 1.0)
-        side = max(float(np.sqrt(tile_points * area / len(xy))), self.buffer, 1.0)
-        ext = self.xy.max(axis=0)
-        self.nx, self.ny = int(ext[0] // side) + 1, int(ext[1] // side) + 1
-        self.side = side
-        ix = np.minimum((self.xy[:, 0] // side).astype(np.int64), self.nx - 1)
-        iy = np.minimum((self.xy[:, 1] // side).astype(np.int64), self.ny - 1)
+        side = max(float(np.sqrt(tile_points * area / len(xy))), 1.0)
+        ext = self.xy.max(axis=0).astype(np.float64)
+        self.nx, self.ny = max(1, int(np.ceil(ext[0] / side))), max(1, int(np.ceil(ext[1] / side)))
+        self.sx, self.sy = max(ext[0] / self.nx, 1e-6), max(ext[1] / self.ny, 1e-6)
+        ix = np.minimum((self.xy[:, 0] / self.sx).astype(np.int64), self.nx - 1)
+        iy = np.minimum((self.xy[:, 1] / self.sy).astype(np.int64), self.ny - 1)
         tile = ix * self.ny + iy
         self.order = np.argsort(tile, kind="stable").astype(np.int32 if len(xy) < 2**31 else np.int64)
         self.starts = np.searchsorted(tile[self.order], np.arange(self.nx * self.ny + 1))
@@ -108,10 +110,10 @@ class TileLayout:
         return int(np.count_nonzero(np.diff(self.starts)))
 
     def __iter__(self):
-        side, buf, xy = self.side, self.buffer, self.xy
+        sx, sy, buf, xy = self.sx, self.sy, self.buffer, self.xy
         for a in range(self.nx):
             # the buffered selection per column of tiles first, then per row
-            col = np.flatnonzero((xy[:, 0] >= a * side - buf) & (xy[:, 0] <= (a + 1) * side + buf))
+            col = np.flatnonzero((xy[:, 0] >= a * sx - buf) & (xy[:, 0] <= (a + 1) * sx + buf))
             ycol = xy[col, 1]
             for b in range(self.ny):
                 t = a * self.ny + b
@@ -121,7 +123,7 @@ class TileLayout:
                 # the union (a core point on a tile's edge is in its buffered set whatever the
                 # rounding) as a mask: O(n), where np.union1d's hashing took seconds per tile
                 mask = np.zeros(len(xy), bool)
-                mask[col[(ycol >= b * side - buf) & (ycol <= (b + 1) * side + buf)]] = True
+                mask[col[(ycol >= b * sy - buf) & (ycol <= (b + 1) * sy + buf)]] = True
                 mask[core] = True
                 yield core, np.flatnonzero(mask)
 
