@@ -4,7 +4,7 @@ A filter holds several arrays per point and per grid cell on top of the cloud it
 (72–350 bytes per point, ``auto`` the most: docs/benchmarks.md, "Memory"), so a 100 M-point
 file through ``auto`` would need some 35 GB at once. As lidR processes a LAScatalog in chunks
 with a buffer, and PDAL pipelines run ``filters.splitter`` before a filter, the cloud is cut
-into square tiles of about ``tile_points`` points; each tile is filtered together with the
+into equal rectangles of about ``tile_points`` points; each tile is filtered together with the
 points of its neighbours within ``buffer`` metres (the filters' windows reach that far, so a
 tile's edge sees the terrain beyond it), and only the tile's own points keep the classes
 found. Peak memory then follows the tile, not the file; with ``workers`` > 1 the tiles are
