@@ -209,13 +209,20 @@ def _one_blas_thread():
     return threadpool_limits(1, user_api="blas")
 
 
+def locate(tri, q: np.ndarray) -> np.ndarray:
+    """Triangle index (k,) of each point ``q`` (k, 2) in a scipy ``Delaunay``, -1 outside,
+    with BLAS on one thread (see :func:`_one_blas_thread`); queries in raster order keep the
+    walk from the previous query's triangle short."""
+    with _one_blas_thread():
+        return tri.find_simplex(q)
+
+
 def tin_eval(tri, values: np.ndarray, q: np.ndarray) -> np.ndarray:
     """Linear interpolation of vertex ``values`` over a scipy ``Delaunay`` at points ``q`` (k, 2).
 
     NaN outside the triangulation.
     """
-    with _one_blas_thread():
-        s = tri.find_simplex(q)
+    s = locate(tri, q)
     out = np.full(q.shape[0], np.nan)
     ok = s >= 0
     if ok.any():

@@ -156,11 +156,6 @@ def facet_test(q: np.ndarray, a: np.ndarray, b: np.ndarray, c: np.ndarray, tan_a
     return dist_ok & (s / np.sqrt(1.0 - s * s) < tan_angle), d, dist_ok
 
 
-def _locate(tri, q: np.ndarray) -> np.ndarray:
-    with common._one_blas_thread():
-        return tri.find_simplex(q)
-
-
 def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> np.ndarray:
     """Ground flags (k,) bool of candidate points (k, 3), metres, in raster order (the point
     location walks from one query to the next, so spatially coherent order is ~100x faster).
@@ -185,7 +180,7 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
             tri = common.delaunay(cand[gi, :2])
         except QhullError:  # collinear seeds
             break
-        s = _locate(tri, cand[oi, :2])
+        s = common.locate(tri, cand[oi, :2])
         inside = s >= 0
         oi, s = oi[inside], s[inside]
         if oi.size == 0:
@@ -206,7 +201,7 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
                 near = hd[np.arange(f.size), jn] < p.mirror_radius * e[f]
                 f, vn = f[near], verts[near, jn[near]]
                 mq = 2.0 * vn - q[f]
-                sm = _locate(tri, mq[:, :2])
+                sm = common.locate(tri, mq[:, :2])
                 inn = sm >= 0
                 f, mq, sm = f[inn], mq[inn], sm[inn]
                 vm = gi[tri.simplices[sm]]
@@ -246,7 +241,7 @@ def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: fl
     try:
         tri = common.delaunay(xyz[gidx, :2])
         s = np.empty(m, dtype=np.int64)
-        s[order] = _locate(tri, xyz[order, :2])
+        s[order] = common.locate(tri, xyz[order, :2])
     except QhullError:  # collinear ground
         s = np.full(m, -1, dtype=np.int64)
     ins = s >= 0

@@ -60,7 +60,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
     """
     from scipy.spatial import QhullError
 
-    from .common import delaunay, grid_index, lowest_per_cell
+    from .common import delaunay, grid_index, locate, lowest_per_cell
 
     g = np.asarray(ground, dtype=bool).copy()
     idx = np.flatnonzero(g)
@@ -81,7 +81,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
     # point location walks from the previous query's triangle: raster order keeps it short
     r, c, shape, _ = grid_index(xyz[cand, :2], 1.0, origin)
     cand = cand[np.argsort(r * shape[1] + c, kind="stable")]
-    simplex = tri.find_simplex(xyz[cand, :2] - origin)
+    simplex = locate(tri, xyz[cand, :2] - origin)
     inside = simplex >= 0
     cand, simplex = cand[inside], simplex[inside]
     if len(cand) == 0:

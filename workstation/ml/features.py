@@ -283,16 +283,12 @@ def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv.ravel()
 
 
-def _eigvec_z(cov: np.ndarray, lam: np.ndarray) -> np.ndarray:
-    """z component (m,) of the unit eigenvectors of 3x3 matrices for eigenvalues ``lam`` (m,):
-    the largest cross product of two rows of (A - lam I), written out per component (the
-    same operations as ``np.cross``; the sign is arbitrary, callers take its magnitude)."""
-    return _eigvec_z_parts(cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2], cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2], lam)
-
-
 def _eigvec_z_parts(a00, a11, a22, a01, a02, a12, lam):
-    """:func:`_eigvec_z` of symmetric matrices given by their six distinct entries (m,)
-    (contiguous arrays make it about twice as fast as strided views of an (m, 3, 3) array)."""
+    """z component (m,) of the unit eigenvectors for eigenvalues ``lam`` (m,) of symmetric 3x3
+    matrices given by their six distinct entries (m,) (contiguous arrays: about twice as fast
+    as strided views of an (m, 3, 3) array): the largest cross product of two rows of
+    (A - lam I), written out per component (the same operations as ``np.cross``; the sign is
+    arbitrary, callers take its magnitude)."""
     a00, a11, a22 = a00 - lam, a11 - lam, a22 - lam
     a10, a20, a21 = a01, a02, a12
     c0 = (a01 * a12 - a02 * a11, a02 * a10 - a00 * a12, a00 * a11 - a01 * a10)  # row 0 x row 1
