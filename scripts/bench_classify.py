@@ -7,6 +7,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
     PYTHONPATH=. python scripts/bench_classify.py simtiles           # whole sim validation tiles, roof test on/off
+    PYTHONPATH=. python scripts/bench_classify.py simwater           # water on the sim validation tiles, step on/off
 
 Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
 """
@@ -55,6 +56,7 @@ def goals(clf, label):
     from workstation.ml.realdata import (
         BUILDING_FILES,
         DTM_FILES,
+        VEGETATION_FILES,
         isprs_scores,
         tile_scores,
     )
@@ -62,7 +64,7 @@ def goals(clf, label):
     s = isprs_scores(lambda c: clf.predict(c) == C.GROUND, DATA / "isprs")
     emit(bench="isprs", model=label, **{k: (v if not isinstance(v, dict) else {a: round(b, 2) for a, b in v.items()})
                                          for k, v in s.items()})
-    for f in DTM_FILES + BUILDING_FILES:
+    for f in DTM_FILES + BUILDING_FILES + VEGETATION_FILES:
         t0 = time.perf_counter()
         r = tile_scores(clf.predict, DATA / "lidar" / f)
         emit(bench="real_tile", model=label, file=f, seconds=time.perf_counter() - t0, **r)
@@ -151,6 +153,35 @@ def simtiles():
          **{k: float(np.nanmean([r[k] for r in rows])) for k in rows[0] if k.endswith(("_roof", "_no_roof"))})
 
 
+def simwater():
+    """Water on the whole simulated validation tiles that hold some (the shipped pipeline with
+    and without the water step): F1 per tile and over all their points."""
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.dataset import load_dataset_recipe, simulated_tiles
+    from workstation.ml.realdata import f1
+
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    clf = PointClassifier.load(None, device="cpu")
+    tot = {k: np.zeros(3) for k in ("water", "no_water")}  # tp, ref, pred
+    for name, _seed, t, _val, cloud, _rng in simulated_tiles(recipe, validation_only=True):
+        ref = np.asarray(cloud.attrs["classification"]) == C.WATER
+        if ref.sum() < 30:
+            continue
+        row = {"tile": t, "recipe": name, "points": cloud.n, "water_points": int(ref.sum()),
+               "density": cloud.meta["sim"]["density"]}
+        for on in (False, True):
+            clf.water = on
+            pred = clf.predict(cloud) == C.WATER
+            key = "water" if on else "no_water"
+            row[f"water_f1_{key}"] = f1(ref, pred)
+            tot[key] += [(ref & pred).sum(), ref.sum(), pred.sum()]
+        emit(bench="sim_water_tile", **row)
+    emit(bench="sim_water", **{f"{k}_{m}": float(v) for k, (tp, r, p) in tot.items()
+                                for m, v in (("f1", 2 * tp / max(r + p, 1)), ("recall", tp / max(r, 1)),
+                                             ("precision", tp / max(p, 1)))})
+
+
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
@@ -166,5 +197,7 @@ if __name__ == "__main__":
         sim()
     elif what == "simtiles":
         simtiles()
+    elif what == "simwater":
+        simwater()
     else:
         raise SystemExit(f"unknown benchmark {what!r}")

@@ -130,3 +130,24 @@ def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
     assert ran == {"default": 0, "patches": 1}
     assert (ground["patches"] <= ground["default"]).all()
     assert ground["patches"][truth].mean() > 0.95
+
+
+def test_classify_water_option(tmp_path, capsys):
+    """A level pond in its basin comes out as water (9) with the shipped model; --no-water
+    leaves it to the ground."""
+    from tests.ground.test_ground_water import pond_scene
+    from workstation.core.cloud import Cloud
+
+    xyz, pond = pond_scene(seed=9, density=3.0)
+    ones = np.ones(len(xyz), np.uint8)
+    src = tmp_path / "pond.laz"
+    write_cloud(Cloud(xyz + [500000, 5000000, 0], {"return_number": ones, "number_of_returns": ones},
+                      crs="EPSG:32632"), src)
+    cls = {}
+    for name, extra in (("default", []), ("off", ["--no-water"])):
+        out = tmp_path / f"{name}.laz"
+        assert main(["classify", str(src), "-o", str(out), *extra]) == 0
+        cls[name] = np.asarray(read_cloud(out).attrs["classification"])
+    assert (cls["default"][pond] == 9).mean() > 0.9
+    assert (cls["off"][pond] == 9).mean() < 0.05  # the network alone finds next to no water
+    assert (cls["off"][pond] == 2).mean() > 0.9

@@ -236,3 +236,31 @@ def test_raised_patches_send_a_roof_called_ground_to_its_next_class(tiny_model, 
         assert loaded.raised_patches is True and loaded.config()["raised_patches"] is True
     finally:
         tiny_model.roof_test, tiny_model.raised_patches = True, False
+
+
+def test_water_step_makes_still_water_class_9(tiny_model, tmp_path):
+    """Ground on a level pond whose banks rise from it becomes water (9) with a confidence
+    that falls off with the height above the level; the banks stay ground; without the step
+    (or saved and loaded with it off) everything is ground."""
+    from tests.ground.test_ground_water import pond_scene
+
+    xyz, pond = pond_scene(seed=8)
+    cloud = Cloud(xyz + [500000, 5000000, 0], {"number_of_returns": np.ones(len(xyz), np.uint8),
+                                               "return_number": np.ones(len(xyz), np.uint8)}, crs="EPSG:32632")
+    n = cloud.n
+    P = np.zeros((n, len(MODEL_CLASSES)), np.float32)
+    P[:, 0], P[:, 1] = 0.9, 0.1  # the network and the gate call everything ground
+    hs = np.zeros((n, 2), np.float32)
+    assert tiny_model.water is True
+    codes, conf = tiny_model._codes(P, hs, cloud)
+    assert (codes[pond] == C.WATER).mean() > 0.95
+    assert (codes[~pond] == C.GROUND).mean() > 0.99
+    w = codes == C.WATER
+    assert (conf[w] >= 0.5).all() and (conf[w] <= 1.0).all() and conf[w].mean() > 0.85
+    tiny_model.water = False
+    try:
+        assert (tiny_model._codes(P, hs, cloud)[0] == C.GROUND).all()
+        loaded = PointClassifier.load(tiny_model.save(tmp_path / "w.pt"), device="cpu")
+        assert loaded.water is False and loaded.config()["water"] is False
+    finally:
+        tiny_model.water = True

@@ -63,6 +63,27 @@ def test_lidarhd_vegetation_and_house(shipped, shared_data):
     assert r["ground_f1"] >= 0.99, r
 
 
+def test_water_of_topography(shipped, shared_data):
+    from workstation.ml.realdata import tile_scores
+
+    r = tile_scores(shipped.predict, shared_data / "lidar" / "Topography.laz")
+    # measured: water F1 0.909 (0.0 without the water step: the network alone calls the lake
+    # ground, and its own 132 water points are elsewhere), and with the lake out of the ground
+    # the DTM 0.229 m (0.242 with it)
+    assert r["water_f1"] >= 0.88, r
+    assert r["dtm_rmse_m"] <= 0.235, r
+
+
+def test_vegetation_of_warsaw_small(shipped, shared_data):
+    from workstation.ml.realdata import tile_scores
+
+    r = tile_scores(shipped.predict, shared_data / "lidar" / "warsaw_small.las")
+    # measured 0.813 (the goal, 0.85, is missed: 240 of its 257 low-vegetation points lie
+    # 0.0-0.2 m above the ground, where the model calls them ground)
+    assert r["vegetation_f1"] >= 0.80, r
+    assert r["ground_f1"] >= 0.9, r
+
+
 def test_ml_ground_function_marks_ground_only(shipped, shared_data):
     from workstation.io import read_cloud
     from workstation.ml.ground import ml_ground

@@ -24,10 +24,13 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--raised-patches", is_flag=True,
               help="Also take out of the ground the patches that drop by 1 m or more on all sides (roofs, decks "
                    "the ground gate let in; as ws ground --method ml does); costs about 15 % of the time.")
+@click.option("--no-water", is_flag=True,
+              help="Leave still water as ground (by default, level single-echo surfaces of 150 m2 or more whose "
+                   "banks rise from them become water, class 9).")
 @overwrite_option
 @json_option
-def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, overwrite,
-             as_json):
+def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, no_water,
+             overwrite, as_json):
     """Classify IN into ground, vegetation (3/4/5), building, water, other (1) and noise (7/18);
     writes `classification` and a `confidence` (0-1) to OUT, keeping every other attribute."""
     import time
@@ -48,6 +51,8 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
         clf.roof_test = False
     if raised_patches:
         clf.raised_patches = True
+    if no_water:
+        clf.water = False
     cloud = read_cloud(src)
     t1 = time.perf_counter()
     out = clf.classify(cloud)

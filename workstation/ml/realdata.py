@@ -4,7 +4,7 @@
   of ground vs object (:func:`workstation.ground.evaluate.ground_errors`).
 * Vendor-classified tiles: the terrain under the predicted ground against the terrain under
   the file's own ground class, both as 1 m TIN DTMs, RMSE in metres over the cells inside both
-  TINs' hulls (vendor ground classes are not point-wise references); building and
+  TINs' hulls (vendor ground classes are not point-wise references); building, water and
   vegetation (3-5 together) F1 against the file's classes.
 
 References
@@ -24,6 +24,8 @@ from workstation.core.classes import ASPRSClass as C
 ISPRS_SAMPLES = ("samp11", "samp21", "samp31", "samp42", "samp51", "samp61")
 DTM_FILES = ("Topography.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las", "MixedConifer.laz")
 BUILDING_FILES = ("sample_c.las", "lidarhd_extra_bytes.laz")
+#: other files with vegetation classes (scored for vegetation F1 as well)
+VEGETATION_FILES = ("warsaw_small.las",)
 VEG = (int(C.LOW_VEGETATION), int(C.MEDIUM_VEGETATION), int(C.HIGH_VEGETATION))
 
 
@@ -116,6 +118,8 @@ def tile_scores(classify, path) -> dict:
         out["dtm_rmse_m"] = dtm_rmse(np.asarray(cloud.xyz), ref == C.GROUND, pred == C.GROUND, vf, hf)
     if (ref == C.BUILDING).any():
         out["building_f1"] = f1(ref == C.BUILDING, pred == C.BUILDING)
+    if (ref == C.WATER).any():
+        out["water_f1"] = f1(ref == C.WATER, pred == C.WATER)
     if np.isin(ref, VEG).any():
         out["vegetation_f1"] = f1(np.isin(ref, VEG), np.isin(pred, VEG))
     out["ground_f1"] = f1(ref == C.GROUND, pred == C.GROUND)
