@@ -24,9 +24,11 @@ water that had lower ground beside it would have run off). So, on a grid of ``ce
 
 A flat field or car park fails 4 (its surroundings are as high or lower), a gentle slope fails
 2, a railway track bed between platforms fails the area (seeds of 4-60 m² on the ISPRS samples),
-a river that slopes more than about 1 % is not found (a slow lowland river or a canal is level
-within the tolerance over 10 m), nor are lakes that gave no echo at all (nothing to classify).
-Water under overhanging trees answers as the last of several echoes and stays ground.
+and running water is found only where the whole connected surface stays within
+``max_spread`` (a canal or a pond-like reach; a river that falls 0.5 m along the tile is not
+found at all, a limit of the one level per surface), nor are lakes that gave no echo at all
+(nothing to classify). Water under overhanging trees answers as the last of several echoes and
+stays ground.
 
 Everything is grid arithmetic (``scipy.ndimage`` filters, labels and a distance transform),
 about 0.05 s per million points.
