@@ -99,3 +99,22 @@ def test_evaluate_text_output(files, capsys):
     assert main(["evaluate", str(d / "out_auto.las"), "--reference", str(d / "ref.las")]) == 0
     text = capsys.readouterr().out
     assert "Type I" in text and "kappa" in text and "Ground" in text
+
+
+def test_ground_water_option(tmp_path, capsys):
+    """ws ground --water: the filter's ground on a level pond in its basin becomes class 9; the
+    banks stay ground; without the flag the pond is ground."""
+    from test_ground_water import pond_scene
+
+    xyz, pond = pond_scene(seed=10)
+    src = tmp_path / "pond.laz"
+    write_cloud(Cloud(xyz + [500000, 5000000, 0], crs="EPSG:32632"), src)
+    out = tmp_path / "w.laz"
+    assert main(["ground", str(src), "-o", str(out), "--water", "--json"]) == 0
+    res = json.loads(capsys.readouterr().out)
+    cls = np.asarray(read_cloud(out).attrs["classification"])
+    assert (cls[pond] == 9).mean() > 0.9 and res["water_count"] == int((cls == 9).sum())
+    assert (cls[~pond] == 2).mean() > 0.98
+    plain = tmp_path / "g.laz"
+    assert main(["ground", str(src), "-o", str(plain)]) == 0
+    assert not (np.asarray(read_cloud(plain).attrs["classification"]) == 9).any()

@@ -79,3 +79,24 @@ def test_a_noisier_scan_and_nothing_to_test():
     assert not none.any() and np.isnan(off).all()
     empty, _ = water_surfaces(np.zeros((0, 3)), np.zeros(0, bool))
     assert empty.shape == (0,)
+
+
+def test_classify_water_stage_keeps_other_classes_and_converts_feet():
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.core.cloud import Cloud
+    from workstation.core.errors import StageError
+    from workstation.ground.water import classify_water
+
+    xyz, pond = pond_scene(seed=11)
+    cls = np.full(len(xyz), C.GROUND, np.uint8)
+    cls[::7] = C.HIGH_VEGETATION  # not ground: never water
+    ft = 1200 / 3937  # the same scene in US survey feet (Oregon Lambert)
+    for crs, scale in (("EPSG:32632", 1.0), ("EPSG:2992", 1 / ft)):
+        c = Cloud(xyz * scale, {"classification": cls}, crs=crs)
+        out = classify_water(c)
+        got = np.asarray(out.attrs["classification"])
+        assert (got[pond & (cls == C.GROUND)] == C.WATER).mean() > 0.95
+        np.testing.assert_array_equal(got[cls != C.GROUND], cls[cls != C.GROUND])
+        assert out.history[-1].params["water_points"] == int((got == C.WATER).sum())
+    with pytest.raises(StageError):
+        classify_water(Cloud(xyz))

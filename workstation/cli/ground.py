@@ -18,6 +18,9 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--all-returns", is_flag=True, help="Let first/intermediate returns be ground too (default: last and only).")
 @click.option("--noise/--no-noise", default=False, show_default=True,
               help="Classify noise first (isolated low points -> 7, outliers -> 7/18).")
+@click.option("--water", is_flag=True,
+              help="Then make the ground on still water class 9 (level single-echo surfaces of 150 m2 or more "
+                   "whose banks rise from them), as ws classify does.")
 @click.option("--hag", is_flag=True, help="Add the height above ground (hag, CRS vertical unit) from a ground TIN.")
 @click.option("--cell", type=float, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
 @click.option("--slope", type=float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
@@ -50,7 +53,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
 @overwrite_option
 @json_option
-def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cell, slope, window, threshold, scalar,
+def ground(src, output, method, preset, reclassify, all_returns, noise, water, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
            max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, overwrite, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
@@ -109,6 +112,12 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
     else:
         out = methods()[method].func(cloud, params)
     n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
+    n_water = 0
+    if water:
+        from workstation.ground.water import classify_water
+
+        out = classify_water(out)
+        n_water = int(out.history[-1].params["water_points"])
     if hag:
         from workstation.ground.hag import height_above_ground
 
@@ -123,4 +132,5 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, hag, cel
 
         emit_json({"input": src, "output": output, "method": method, "preset": preset,
                    "params": dataclasses.asdict(params), "point_count": out.n, "ground_count": n_ground,
-                   "ground_fraction": n_ground / out.n, "seconds": dt, "tiles": n_tiles})
+                   "ground_fraction": n_ground / out.n, "seconds": dt, "tiles": n_tiles,
+                   "water_count": n_water})

@@ -45,11 +45,18 @@ Landforms 34(12):1635-1649.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import time
+from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from workstation.core.classes import ASPRSClass
+from workstation.core.cloud import Cloud
+from workstation.core.errors import StageError
+
 from . import common
+
+STAGE = "ground.water"
 
 
 @dataclass(frozen=True)
@@ -195,3 +202,27 @@ def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
     water = cand & ok[reg] & (np.abs(dz) <= p.point_tolerance)
     offset[water] = dz[water]
     return water, offset
+
+
+def classify_water(cloud: Cloud, params: WaterParams = WaterParams()) -> Cloud:
+    """A new cloud whose ground points (class 2) on still water are water (class 9): the
+    step after a ground filter (``ws ground --water``); every other point keeps its class.
+
+    The classes must come from a ground filter (or a file's own ground class); coordinates
+    in a feet CRS are converted to metres first.
+    """
+    t0 = time.perf_counter()
+    if "classification" not in cloud.attrs:
+        raise StageError(STAGE, "the cloud has no classification", "run a ground filter first (ws ground)")
+    cls = np.asarray(cloud.attrs["classification"])
+    ground = cls == ASPRSClass.GROUND
+    out = cls.astype(np.uint8, copy=True)
+    if ground.any():
+        hf, vf = common.crs_unit_factors(cloud.crs)
+        xyz = np.asarray(cloud.xyz, dtype=np.float64)
+        local = (xyz - xyz.min(axis=0)) * np.array([hf, hf, vf])
+        water, _ = water_surfaces(local, ground, cloud.attrs.get("number_of_returns"), params)
+        out[water] = ASPRSClass.WATER
+    n = int(np.count_nonzero(out != cls))
+    return cloud.with_attrs(classification=out).with_history(STAGE, {**asdict(params), "water_points": n},
+                                                             time.perf_counter() - t0)
