@@ -32,6 +32,11 @@ def step(ctx) -> dict:
         ref = np.asarray(cloud.attrs["classification"])
         summary["ground_f1"] = f1(ref == C.GROUND, pred == C.GROUND)
         summary["building_f1"] = f1(ref == C.BUILDING, pred == C.BUILDING)
+        veg = (C.LOW_VEGETATION, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION)
+        if np.isin(ref, veg).any():
+            summary["vegetation_f1"] = f1(np.isin(ref, veg), np.isin(pred, veg))
+        if (ref == C.WATER).any():
+            summary["water_f1"] = f1(ref == C.WATER, pred == C.WATER)
     js = ctx.outdir / "classified_summary.json"
     with atomic_path(js, overwrite=True) as tmp:
         tmp.write_text(json.dumps(summary, indent=2))
