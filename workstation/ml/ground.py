@@ -4,6 +4,9 @@ The classifier's ground class becomes :attr:`ASPRSClass.GROUND`; other points be
 :attr:`ASPRSClass.UNCLASSIFIED`, except points already in another class (anything but 0, 1
 and 2), which keep it unless ``reclassify`` — the convention of the other ground filters
 (:mod:`workstation.ground.common`).
+
+Still water stays in the ground here, as with the other filters (the classifier's water step
+is off); ``ws ground --water`` (:func:`workstation.ground.water.classify_water`) separates it.
 """
 
 from __future__ import annotations
@@ -54,6 +57,7 @@ def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
     clf = PointClassifier.load(params.model, device=params.device)
     clf.roof_test = False  # it only moves building points among the object classes
     clf.raised_patches = params.raised_patches  # roofs and decks the gate let in (ISPRS 3.49 -> 3.24 %)
+    clf.water = False  # water is bare earth here, as for the other filters (ws ground --water separates it)
     P, hs = clf._proba_and_hag(cloud)
     codes, _ = clf._codes(P, hs, cloud)
     ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
