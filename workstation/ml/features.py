@@ -362,7 +362,7 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
     of ``ref32``), written into ``out`` (len(xyz_q), 8)."""
     # float32 second moments of the neighbours about their mean (local metric coordinates, so
     # float32 keeps 0.1 mm at a kilometre)
-    nb = ref32[j]  # (m, k, 3)
+    nb = np.take(ref32, j, axis=0)  # (m, k, 3); ``take`` gathers rows several times faster than ref32[j]
     mu = nb.mean(axis=1)
     nb -= mu[:, None, :]
     x, y, zc = nb[..., 0], nb[..., 1], nb[..., 2]
@@ -589,12 +589,15 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     # both eigen scales: one query per voxel among the voxel representatives, broadcast
     (ef, zr, dh, finv), (ec, _, _, inv) = [f.result() for f in futures]
     pool.shutdown()
-    F[:, 10:16] = ef[finv, :6]
+    # broadcast: one ``take`` per column straight into F's (Fortran-order) columns, no (n, 8) temporaries
+    for a in range(6):
+        np.take(ef[:, a], finv, out=F[:, 10 + a])
+        np.take(ec[:, a], inv, out=F[:, 18 + a])
     # extremes relative to each point's own height
-    F[:, 16] = np.clip(z - (zr[finv] - ef[finv, 6]), 0, 30)
-    F[:, 17] = np.clip((zr[finv] + ef[finv, 7]) - z, 0, 30)
-    dh = dh[finv]
-    F[:, 18:24] = ec[inv, :6]
+    zf = zr.take(finv)
+    F[:, 16] = np.clip(z - (zf - ef[:, 6].take(finv)), 0, 30)
+    F[:, 17] = np.clip((zf + ef[:, 7].take(finv)) - z, 0, 30)
+    dh = dh.take(finv)
     med = float(np.median(dh)) if n else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
     F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)

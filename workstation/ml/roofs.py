@@ -108,7 +108,7 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
     def block(s):  # one block of candidates: its query and its moments stay in the cache
         d, i = tree.query(query[s:s + step], k=k, workers=1)
         dk[s:s + step] = d[:, -1]
-        best[s:s + step] = _min_plane_variance(ref[i] - query[s:s + step, None, :], k)
+        best[s:s + step] = _min_plane_variance(np.take(ref, i, axis=0) - query[s:s + step, None, :], k)
 
     step = 8192
     starts = range(0, len(query), step)
