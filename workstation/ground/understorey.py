@@ -97,7 +97,7 @@ def plane_residual(xyz: np.ndarray, cell: float, query=None) -> tuple[np.ndarray
     qi = np.arange(len(xyz)) if query is None else np.asarray(query)
     if len(qi) == 0:
         return np.zeros(0), np.zeros(0)
-    lo = xyz.min(axis=0)
+    lo = common.column_min(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], cell, lo[:2])
     flat = r * shape[1] + c
     size = shape[0] * shape[1]
@@ -129,13 +129,18 @@ def plane_residual(xyz: np.ndarray, cell: float, query=None) -> tuple[np.ndarray
 def envelope_height(xyz: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
     """Height of each point above the inpainted per-``cell`` minimum surface, and that
     surface's slope magnitude at the point; both (m,) float64."""
-    lo = xyz[:, :2].min(axis=0)
+    lo = common.column_min(xyz[:, :2])
     r, c, shape, _ = common.grid_index(xyz[:, :2], cell, lo)
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     surf = common.inpaint(zmin.reshape(shape))
     gy, gx = np.gradient(surf, cell) if min(shape) > 1 else (np.zeros(shape), np.zeros(shape))
     return (xyz[:, 2] - common.bilinear(surf, xyz[:, :2], cell, lo),
             common.bilinear(np.hypot(gx, gy), xyz[:, :2], cell, lo))
+
+
+def _extent(xy: np.ndarray) -> np.ndarray:
+    """``np.ptp(xy, axis=0)``, one column at a time (:func:`common.column_min`)."""
+    return common.column_max(xy) - common.column_min(xy)
 
 
 def refine_understorey(xyz: np.ndarray, ground: np.ndarray, share: np.ndarray,
@@ -157,7 +162,7 @@ def refine_understorey(xyz: np.ndarray, ground: np.ndarray, share: np.ndarray,
         return g
     idx = np.flatnonzero(g)
     if p.spike_passes > 0 and len(idx) > 3:
-        area = max(float(np.prod(np.ptp(xyz[idx, :2], axis=0))), 1.0)
+        area = max(float(np.prod(_extent(xyz[idx, :2]))), 1.0)
         cell = p.spike_cell * np.sqrt(area / len(idx))
         for _ in range(p.spike_passes):
             test = np.flatnonzero(under[idx])
@@ -168,7 +173,7 @@ def refine_understorey(xyz: np.ndarray, ground: np.ndarray, share: np.ndarray,
             g[idx[test[bad]]] = False
             idx = np.flatnonzero(g)
     if p.envelope_spacing > 0 and len(idx) >= 4:
-        area = max(float(np.prod(np.ptp(xyz[idx, :2], axis=0))), 1.0)
+        area = max(float(np.prod(_extent(xyz[idx, :2]))), 1.0)
         cell = max(1.0, p.envelope_spacing * np.sqrt(area / len(idx)))
         h, slope = envelope_height(xyz[idx], cell)
         g[idx[under[idx] & (h > p.threshold + p.envelope_scalar * slope * cell)]] = False

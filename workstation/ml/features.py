@@ -140,8 +140,10 @@ def metric_xyz(cloud: Cloud) -> tuple[np.ndarray, float, float]:
         hf, vf = crs_unit_factors(cloud.crs)
     except Exception:  # unparsable CRS: assume metres
         hf, vf = 1.0, 1.0
+    from workstation.ground.common import column_min
+
     xyz = np.asarray(src, np.float64)
-    lo = xyz.min(axis=0)
+    lo = column_min(xyz)
     out = np.empty_like(xyz)
     out[:, :2] = (xyz[:, :2] - lo[:2]) * hf
     out[:, 2] = (xyz[:, 2] - lo[2]) * vf
@@ -275,9 +277,11 @@ def _bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
 
 def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     """Voxel representative (first point) indices and each point's voxel index."""
+    from workstation.ground.common import column_max, column_min
+
     v = np.floor(xyz / voxel).astype(np.int64)
-    v -= v.min(axis=0)
-    dims = v.max(axis=0) + 1
+    v -= column_min(v)
+    dims = column_max(v) + 1
     key = (v[:, 0] * dims[1] + v[:, 1]) * dims[2] + v[:, 2]
     _, first, inv = np.unique(key, return_index=True, return_inverse=True)
     return first, inv.ravel()

@@ -171,10 +171,12 @@ class RoofTest:
     def __init__(self, xyz: np.ndarray, hag: np.ndarray, params: RoofParams = RoofParams(), workers: int = -1):
         from scipy.spatial import cKDTree
 
+        from workstation.ground.common import column_min
+
         self.xyz = xyz
         self.params = params
         self.workers = workers
-        self.origin = xyz.min(axis=0) if len(xyz) else np.zeros(3)
+        self.origin = column_min(xyz) if len(xyz) else np.zeros(3)
         # centred float32 coordinates: half the memory traffic, 0.1 mm resolution over 1 km
         self.ref = (xyz[np.asarray(hag) > params.min_height] - self.origin).astype(np.float32)
         self.tree = cKDTree(self.ref, balanced_tree=False, compact_nodes=False) if len(self.ref) >= 3 else None
