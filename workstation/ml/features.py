@@ -347,7 +347,7 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     if k == 1:
         j = j[:, None]
         d = d[:, None]
-    ref32 = xyz_ref.astype(np.float32)
+    ref32 = np.ascontiguousarray(xyz_ref.T, dtype=np.float32)  # (3, r): x, y, z rows
     m = len(xyz_q)
     out = np.empty((m, 8), np.float32)
     if workers == 1 or m < 50_000:
@@ -362,18 +362,38 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
 
 
 def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
-    """:func:`_eigen`'s features of the query rows ``xyz_q`` whose neighbours are ``j`` (rows
-    of ``ref32``), written into ``out`` (len(xyz_q), 8)."""
+    """:func:`_eigen`'s features of the query rows ``xyz_q`` whose neighbours are ``j`` (column
+    indices of ``ref32``, the reference points' float32 x, y, z rows (3, r)), written into
+    ``out`` (len(xyz_q), 8).
+
+    The neighbourhoods are gathered neighbour-major, (k, m) per coordinate, so that every
+    reduction over the neighbours is a sequence of whole-row operations: the sums add the
+    neighbours one after the other, as ``nb.mean(axis=1)`` and ``einsum("mk,mk->m")`` of an
+    (m, k, 3) array do, so the values are the same bit for bit, at about half the CPU time."""
+    m = len(xyz_q)
+    jt = np.ascontiguousarray(j.T)  # (k, m)
     # float32 second moments of the neighbours about their mean (local metric coordinates, so
     # float32 keeps 0.1 mm at a kilometre)
-    nb = np.take(ref32, j, axis=0)  # (m, k, 3); ``take`` gathers rows several times faster than ref32[j]
-    mu = nb.mean(axis=1)
-    nb -= mu[:, None, :]
-    x, y, zc = nb[..., 0], nb[..., 1], nb[..., 2]
+    mu = np.empty((3, m), np.float32)
+    cols = []
+    for a in range(3):
+        c = np.take(ref32[a], jt)  # (k, m)
+        # mean as numpy's: the neighbours added in order, then a true division by an intp count
+        np.true_divide(np.add.reduce(c, axis=0), np.intp(k), out=mu[a], casting="unsafe")
+        c -= mu[a]
+        cols.append(c)
+    x, y, zc = cols
     # the six distinct covariance entries, each a contiguous float64 row: xx, yy, zz, xy, xz, yz
-    cov = np.empty((6, len(xyz_q)), np.float64)
+    # (float32 products accumulated from zero in neighbour order, as einsum does, then / k)
+    cov = np.empty((6, m), np.float64)
+    acc = np.empty(m, np.float32)
+    tmp = np.empty(m, np.float32)
     for a, (u, v) in enumerate(((x, x), (y, y), (zc, zc), (x, y), (x, zc), (y, zc))):
-        cov[a] = np.einsum("mk,mk->m", u, v) / k
+        acc.fill(0)
+        for i in range(k):
+            np.multiply(u[i], v[i], out=tmp)
+            acc += tmp
+        cov[a] = acc / k
     cov[:3] += 1e-8
     l1, l2, l3 = _sym3_eigen_parts(*cov)
     l1 = np.maximum(l1, 1e-12)
@@ -381,15 +401,15 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
     l3 = np.clip(l3, 0, l2)
     nrm_z = _eigvec_z_parts(*cov, l3)  # the normal's and the main direction's z components
     main_z = _eigvec_z_parts(*cov, l1)
-    zq = xyz_q[:, 2] - mu[:, 2]  # heights relative to the neighbourhood mean
+    zq = xyz_q[:, 2] - mu[2]  # heights relative to the neighbourhood mean
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1
     out[:, 2] = l3 / l1
     out[:, 3] = 1.0 - np.abs(main_z)  # verticality of the main direction
     out[:, 4] = np.abs(nrm_z)
     out[:, 5] = np.sqrt(np.maximum(cov[2], 0))
-    out[:, 6] = np.minimum(zq - zc.min(axis=1), 30.0)
-    out[:, 7] = np.minimum(zc.max(axis=1) - zq, 30.0)
+    out[:, 6] = np.minimum(zq - np.minimum.reduce(zc, axis=0), 30.0)
+    out[:, 7] = np.minimum(np.maximum.reduce(zc, axis=0) - zq, 30.0)
 
 
 def _object_areas(hag: np.ndarray, nz: np.ndarray, scat: np.ndarray, r: np.ndarray, c: np.ndarray,
