@@ -103,20 +103,6 @@ class WaterParams:
     point_tolerance: float = 0.15
 
 
-def _median_per_label(labels: np.ndarray, values: np.ndarray, count: int) -> np.ndarray:
-    """Median (lower middle) of ``values`` per label 0..count; NaN for labels without values."""
-    out = np.full(count + 1, np.nan)
-    if len(labels) == 0:
-        return out
-    o = np.lexsort((values, labels))
-    lab, val = labels[o], values[o]
-    ids = np.arange(count + 1)
-    start, end = np.searchsorted(lab, ids), np.searchsorted(lab, ids, side="right")
-    has = end > start
-    out[has] = val[(start[has] + end[has] - 1) // 2]
-    return out
-
-
 def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
                    p: WaterParams = WaterParams()) -> tuple[np.ndarray, np.ndarray]:
     """The ground points that lie on still water.
@@ -189,7 +175,9 @@ def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
     ring = (region == 0) & (dist <= p.rim_cells) & np.isfinite(gmean) & (of > 0)
     rl = of[ring]
     rise = gmean[ring] - level[rl]
-    rise_median = _median_per_label(rl, rise, k)
+    rise_median = np.full(k + 1, np.nan)
+    if len(rl):
+        rise_median[1:] = ndimage.median(rise, rl, ids)  # NaN for a surface without banks
     below = np.bincount(rl[rise < -p.grow_tolerance], minlength=k + 1) / np.maximum(np.bincount(rl, minlength=k + 1), 1)
 
     ok = ((seed_area >= p.min_area) & (spread <= p.max_spread) & (rise_median >= p.rim_rise)
@@ -218,10 +206,8 @@ def classify_water(cloud: Cloud, params: WaterParams = WaterParams()) -> Cloud:
     ground = cls == ASPRSClass.GROUND
     out = cls.astype(np.uint8, copy=True)
     if ground.any():
-        hf, vf = common.crs_unit_factors(cloud.crs)
-        xyz = np.asarray(cloud.xyz, dtype=np.float64)
-        local = (xyz - xyz.min(axis=0)) * np.array([hf, hf, vf])
-        water, _ = water_surfaces(local, ground, cloud.attrs.get("number_of_returns"), params)
+        prep = common.prepare(cloud, STAGE, reclassify=True, min_points=0)  # every point, in local metres
+        water, _ = water_surfaces(prep.xyz, ground, cloud.attrs.get("number_of_returns"), params)
         out[water] = ASPRSClass.WATER
     n = int(np.count_nonzero(out != cls))
     return cloud.with_attrs(classification=out).with_history(STAGE, {**asdict(params), "water_points": n},
