@@ -36,6 +36,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "ortho": ("workstation.cli.ortho:ortho", "True orthophoto from oriented images over a DSM."),
     "calibrate": ("workstation.cli.calibrate:calibrate", "Calibrate a camera (Zhang planar target or DLT) to CAMERA.json."),
     "sfm": ("workstation.cli.sfm:sfm", "Orient photos and build a sparse cloud (pycolmap); georeference with GCPs."),
+    "run": ("workstation.cli.run:run", "Process a project (project.toml): every stage over every chunk, on a Dask cluster."),
     "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU plane sweep or CUDA PatchMatch) and fusion."),
 }
 

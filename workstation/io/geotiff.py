@@ -160,26 +160,42 @@ def write_raster(
         profile["photometric"] = photometric
         if photometric.upper() == "RGB" and bands == 4:
             profile["alpha"] = "YES"  # 4th band is an alpha mask (0 = no data)
-    factors = []
-    f = 2
-    while overviews and min(rows, cols) / f >= blocksize / 2:
+    factors = _overview_factors(rows, cols, blocksize) if overviews else []
+    resampling = Resampling.average if np.issubdtype(arr.dtype, np.floating) or bands >= 3 else Resampling.nearest
+    def fill(dst):
+        dst.write(arr)
+        dst.update_tags(**{META_TAG: _json_meta(raster.meta)})
+
+    return _write_tiled(path, profile, fill, factors, resampling, overwrite, inputs)
+
+
+def _overview_factors(rows: int, cols: int, blocksize: int) -> list[int]:
+    factors, f = [], 2
+    while min(rows, cols) / f >= blocksize / 2:
         factors.append(f)
         f *= 2
-    resampling = Resampling.average if np.issubdtype(arr.dtype, np.floating) or bands >= 3 else Resampling.nearest
+    return factors
+
+
+def _write_tiled(path, profile: dict, fill, factors, resampling, overwrite: bool, inputs) -> Path:
+    """Open a tiled GTiff with ``profile``, let ``fill(dst)`` write its cells, add overviews and
+    lay it out as a COG (when GDAL has the driver), all in a temporary file renamed at the end."""
+    rasterio = _rasterio()
     has_cog = _cog_available(rasterio)
+    compress, predictor = profile["compress"], profile.get("predictor")
     with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
         stage = tmp.with_name(tmp.stem + ".stage.tif") if has_cog else tmp
         try:
             with rasterio.open(stage, "w", **profile) as dst:
-                dst.write(arr)
-                dst.update_tags(**{META_TAG: _json_meta(raster.meta)})
+                fill(dst)
                 if factors:
                     dst.build_overviews(factors, resampling)
                     dst.update_tags(ns="rio_overview", resampling=resampling.name)
             if has_cog:
                 from rasterio.shutil import copy as rio_copy
 
-                opts = dict(COMPRESS=compress, BLOCKSIZE=blocksize, OVERVIEWS="FORCE_USE_EXISTING" if factors else "NONE", BIGTIFF="IF_SAFER")
+                opts = dict(COMPRESS=compress, BLOCKSIZE=profile["blockxsize"],
+                            OVERVIEWS="FORCE_USE_EXISTING" if factors else "NONE", BIGTIFF="IF_SAFER")
                 if compress.upper() != "NONE":
                     opts["PREDICTOR"] = "FLOATING_POINT" if predictor == 3 else "YES"
                 rio_copy(stage, tmp, driver="COG", **opts)
@@ -187,6 +203,44 @@ def write_raster(
             if has_cog and stage.exists():
                 stage.unlink()
     return Path(path)
+
+
+def write_mosaic(tiles, transform, shape: tuple, path, *, crs=None, nodata=-9999.0, dtype="float32", meta=None,
+                 overwrite: bool = False, blocksize: int = 256) -> Path:
+    """Write a Cloud-Optimized GeoTIFF mosaic of GeoTIFF tiles on one grid, a tile at a time.
+
+    Parameters
+    ----------
+    tiles : sequence of (path, row_offset, col_offset)
+        Tiles on the mosaic's grid (same cell size and alignment), placed at their offsets;
+        cells no tile covers are ``nodata``.
+    transform : tuple
+        The mosaic's affine transform (a, b, c, d, e, f); ``shape`` is (rows, cols).
+
+    Memory is one tile at a time; overviews are averaged (nearest for integer rasters).
+    """
+    rasterio = _rasterio()
+    from rasterio.enums import Resampling
+    from rasterio.transform import Affine
+    from rasterio.windows import Window
+
+    rows, cols = int(shape[0]), int(shape[1])
+    floating = np.issubdtype(np.dtype(dtype), np.floating)
+    profile = dict(driver="GTiff", width=cols, height=rows, count=1, dtype=np.dtype(dtype).name,
+                   transform=Affine(*transform), nodata=nodata, tiled=True, blockxsize=blocksize,
+                   blockysize=blocksize, compress="DEFLATE", predictor=3 if floating else 2, BIGTIFF="IF_SAFER")
+    if crs:
+        profile["crs"] = rasterio.crs.CRS.from_user_input(crs)
+
+    def fill(dst):
+        for tile, r0, c0 in tiles:
+            with rasterio.open(tile) as src:
+                a = src.read(1, masked=True).filled(nodata).astype(dtype)
+            dst.write(a, 1, window=Window(c0, r0, a.shape[1], a.shape[0]))
+        dst.update_tags(**{META_TAG: _json_meta(meta or {})})
+
+    resampling = Resampling.average if floating else Resampling.nearest
+    return _write_tiled(path, profile, fill, _overview_factors(rows, cols, blocksize), resampling, overwrite, ())
 
 
 def _cog_available(rasterio) -> bool:
