@@ -80,6 +80,9 @@ class Prepared:
     origin: np.ndarray
 
 
+LATTICE_M = 100.0  # metres; local planar origins are multiples of it (see prepare)
+
+
 def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_only: bool = False,
             min_points: int = 3) -> Prepared:
     """Select the points a filter uses and convert them to local metres.
@@ -107,6 +110,10 @@ def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_onl
     hf, vf = crs_unit_factors(cloud.crs)
     p = cloud.xyz[idx]
     origin = p.min(axis=0)
+    # planar origin on a global 100 m lattice: the filters' grids (cells that divide 100 m)
+    # then fall on the same lines whatever the extent, so a tile or a chunk of a survey is
+    # filtered on the cells of the whole survey
+    origin[:2] = np.floor(origin[:2] * hf / LATTICE_M) * LATTICE_M / hf
     local = (p - origin) * np.array([hf, hf, vf])
     return Prepared(local, idx, hf, vf, origin)
 
@@ -251,13 +258,24 @@ def tin_eval(tri, values: np.ndarray, q: np.ndarray) -> np.ndarray:
     return out
 
 
+_JITTER_PERIOD = 10  # cells; divides the cell offset between any two lattice-aligned grids
+_JITTER = np.random.default_rng(0).uniform(-1.0, 1.0, (_JITTER_PERIOD, _JITTER_PERIOD, 2))
+
+
 def delaunay(pts: np.ndarray, jitter: float = 0.0):
     """scipy Delaunay of (k, 2) points; ``jitter`` (same unit) breaks grid degeneracy, which
-    otherwise makes Qhull crawl on cell centres."""
+    otherwise makes Qhull crawl on cell centres.
+
+    The jitter of a point is a function of its integer cell position modulo 10, not of its
+    place in the array: grids whose origins lie on the 100 m lattice of :func:`prepare` (cells
+    that divide 10 m) give a cell the same jitter, so a chunk of a survey is triangulated as
+    the whole survey is around it.
+    """
     from scipy.spatial import Delaunay
 
     if jitter:
-        pts = pts + np.random.default_rng(0).uniform(-jitter, jitter, pts.shape)
+        cell = np.mod(np.floor(pts).astype(np.int64), _JITTER_PERIOD)
+        pts = pts + jitter * _JITTER[cell[:, 0], cell[:, 1]]
     return Delaunay(pts)
 
 

@@ -63,13 +63,20 @@ def _elapsed(t0: float) -> float:
     return round(time.perf_counter() - t0, 3)
 
 
+def _peak_rss_mb() -> float:
+    """The peak resident memory of this worker process so far, MB (Linux ru_maxrss is in kB)."""
+    import resource
+
+    return round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, 1)
+
+
 # ----------------------------------------------------------------------------- index
 def index_task(ctx: RunContext, tile_path: str, size: float) -> dict:
     """Bin one plain LAS/LAZ file into per-chunk record files (see :mod:`.chunkio`)."""
     t0 = time.perf_counter()
     dest = Path(ctx.index_dirs[tile_path])
     counts = chunkio.index_file(Path(tile_path), size, dest, ctx.crs)
-    return {"points": int(sum(counts.values())), "seconds": _elapsed(t0), "outputs": [str(dest)]}
+    return {"points": int(sum(counts.values())), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [str(dest)]}
 
 
 def read_input_chunk(ctx: RunContext, chunk: Chunk):
@@ -153,14 +160,14 @@ def points_task(ctx: RunContext, plan, chunk: Chunk, folder: str, *upstream) -> 
     cloud = read_input_chunk(ctx, chunk)
     core = None if cloud is None else chunk.core_mask(cloud.xyz[:, :2])
     if cloud is None or not core.any():
-        return {"points": 0, "buffered": 0 if cloud is None else cloud.n, "seconds": _elapsed(t0), "outputs": []}
+        return {"points": 0, "buffered": 0 if cloud is None else cloud.n, "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": []}
     warnings: list[str] = []
     out = run_point_stages(cloud, plan, ctx, warnings)[core]
     laz = ctx.out / folder / f"{chunk.name}.laz"
     laz.parent.mkdir(parents=True, exist_ok=True)
     write_cloud(out, laz, overwrite=True)
     side = write_raster_fields(out, ctx.cache / "points" / f"{chunk.ix}_{chunk.iy}.bin")
-    return {"points": int(out.n), "buffered": int(cloud.n), "seconds": _elapsed(t0), "warnings": warnings,
+    return {"points": int(out.n), "buffered": int(cloud.n), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "warnings": warnings,
             "outputs": [str(laz), str(side)]}
 
 
@@ -228,7 +235,7 @@ def raster_task(ctx: RunContext, plan, chunk: Chunk, *upstream) -> dict:
         outputs += _dem_tiles(ctx, plan.dem, chunk, cloud)
     if cloud is not None and plan.density is not None:
         outputs += _density_tile(ctx, chunk, cloud)
-    return {"points": int(n), "seconds": _elapsed(t0), "outputs": outputs}
+    return {"points": int(n), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": outputs}
 
 
 def _dem_tiles(ctx: RunContext, stage, chunk: Chunk, cloud) -> list[str]:
@@ -304,7 +311,7 @@ def mosaic_task(ctx: RunContext, grid, tiles: list, out: str, meta: dict) -> dic
         placed.append((p, int(round((grid.y1 - t.f) / grid.res)), int(round((t.c - grid.x0) / grid.res))))
     Path(out).parent.mkdir(parents=True, exist_ok=True)
     write_mosaic(placed, grid.transform, grid.shape, out, crs=ctx.crs, meta=meta, overwrite=True)
-    return {"tiles": len(placed), "seconds": _elapsed(t0), "outputs": [out]}
+    return {"tiles": len(placed), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
 
 
 def hillshade_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dict:
@@ -313,7 +320,7 @@ def hillshade_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> di
 
     t0 = time.perf_counter()
     write_raster(hillshade(read_raster(dtm), params), out, overwrite=True)
-    return {"seconds": _elapsed(t0), "outputs": [out]}
+    return {"seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
 
 
 def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dict:
@@ -323,4 +330,4 @@ def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dic
     t0 = time.perf_counter()
     cs = contour_lines(read_raster(dtm), params)
     write_geojson(cs, out, overwrite=True)
-    return {"lines": len(cs.lines), "interval": cs.interval, "seconds": _elapsed(t0), "outputs": [out]}
+    return {"lines": len(cs.lines), "interval": cs.interval, "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
