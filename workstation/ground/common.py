@@ -110,9 +110,9 @@ def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_onl
     hf, vf = crs_unit_factors(cloud.crs)
     p = cloud.xyz[idx]
     origin = p.min(axis=0)
-    # planar origin on a global 100 m lattice: the filters' grids (cells that divide 100 m)
-    # then fall on the same lines whatever the extent, so a tile or a chunk of a survey is
-    # filtered on the cells of the whole survey
+    # planar origin on a global 100 m lattice: grids whose cells divide 100 m and start at a
+    # multiple of the cell (smrf_surface) then fall on the same lines whatever the extent, so a
+    # tile or a chunk of a survey is filtered on the cells of the whole survey
     origin[:2] = np.floor(origin[:2] * hf / LATTICE_M) * LATTICE_M / hf
     local = (p - origin) * np.array([hf, hf, vf])
     return Prepared(local, idx, hf, vf, origin)
@@ -258,31 +258,36 @@ def tin_eval(tri, values: np.ndarray, q: np.ndarray) -> np.ndarray:
     return out
 
 
-_JITTER_PERIOD = 10  # cells; divides the cell offset between any two lattice-aligned grids
+_JITTER_PERIOD = 10  # cells; divides the offset between grids on the 100 m lattice (cells dividing 10 m)
 _JITTER = np.random.default_rng(0).uniform(-1.0, 1.0, (_JITTER_PERIOD, _JITTER_PERIOD, 2))
 
 
-def delaunay(pts: np.ndarray, jitter: float = 0.0):
+def delaunay(pts: np.ndarray, jitter: float = 0.0, cells: np.ndarray | None = None):
     """scipy Delaunay of (k, 2) points; ``jitter`` (same unit) breaks grid degeneracy, which
     otherwise makes Qhull crawl on cell centres.
 
-    The jitter of a point is a function of its integer cell position modulo 10, not of its
-    place in the array: grids whose origins lie on the 100 m lattice of :func:`prepare` (cells
-    that divide 10 m) give a cell the same jitter, so a chunk of a survey is triangulated as
-    the whole survey is around it.
+    With ``cells`` (k, 2) int (the points' cell indices on the 100 m lattice of
+    :func:`prepare`) a point's jitter is a function of its cell modulo 10, not of its place in
+    the array: a cell keeps its jitter whatever the grid's extent, so a chunk of a survey is
+    triangulated as the whole survey is around it.
     """
     from scipy.spatial import Delaunay
 
     if jitter:
-        cell = np.mod(np.floor(pts).astype(np.int64), _JITTER_PERIOD)
-        pts = pts + jitter * _JITTER[cell[:, 0], cell[:, 1]]
+        if cells is None:
+            u = np.random.default_rng(0).uniform(-1.0, 1.0, pts.shape)
+        else:
+            m = np.mod(cells, _JITTER_PERIOD)
+            u = _JITTER[m[:, 0], m[:, 1]]
+        pts = pts + jitter * u
     return Delaunay(pts)
 
 
-def inpaint(grid: np.ndarray) -> np.ndarray:
+def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
     """Fill NaN cells smoothly: linear interpolation over a Delaunay TIN of the filled cells
     that border an empty one, nearest value outside their hull (the role of SMRF's image
-    inpainting)."""
+    inpainting). ``offset``: the (row, col) of cell (0, 0) on the lattice grid of
+    :func:`prepare`, which fixes each cell's tie-breaking jitter (see :func:`delaunay`)."""
     mask = np.isnan(grid)
     if not mask.any():
         return grid
@@ -305,7 +310,7 @@ def inpaint(grid: np.ndarray) -> np.ndarray:
     out = grid.copy()
     er, ec = np.nonzero(mask)
     try:
-        tri = delaunay(np.column_stack([sr, sc]).astype(np.float64), 1e-4)
+        tri = delaunay(np.column_stack([sr, sc]).astype(np.float64), 1e-4, np.column_stack([sr, sc]) + np.asarray(offset))
     except Exception:  # degenerate support: nearest
         return near
     out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))

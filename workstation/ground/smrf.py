@@ -124,39 +124,42 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
     empty_or_object : (rows, cols) bool
         Cells that were interpolated.
     """
-    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
+    # the grid starts at a multiple of the cell on prepare's 100 m lattice, with no empty margin
+    first = np.floor(common.column_min(xyz[:, :2]) / p.cell)
+    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, origin=first * p.cell)
+    off = (int(first[1]), int(first[0]))  # (row, col) of cell (0, 0): rows run along y
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     empty = np.isnan(zmin)
-    zfill = common.inpaint(zmin)
+    zfill = common.inpaint(zmin, off)
     low = np.zeros(shape, dtype=bool)
     if p.low_outliers:
         low = progressive_filter(-zfill, p.cell, 5.0, 1.0)
         if low.any():
             z2 = zmin.copy()
             z2[low] = np.nan
-            zfill = common.inpaint(z2)
+            zfill = common.inpaint(z2, off)
     # the disk openings do not depend on the slope: both tests read one sequence
     (steps,) = common.opening_steps(zfill, p.cell, (p.window,))
     obj = steps > p.slope
     if p.trend_slope > 0:  # the per-cell slope
-        obj = steps > _trend_slope(zmin, empty | low | obj, p)
+        obj = steps > _trend_slope(zmin, empty | low | obj, p, off)
     bad = empty | low | obj
     zp = zmin.copy()
     zp[bad] = np.nan
     if bad.all():
         zp = zfill
-    zpro = common.inpaint(zp)
+    zpro = common.inpaint(zp, off)
     return zpro, origin, bad
 
 
-def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams) -> np.ndarray:
+def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams, off=(0, 0)) -> np.ndarray:
     """Per-cell slope of the object test (:func:`workstation.ground.common.trend_tolerance`) of
     the first provisional DEM: ``zmin`` without ``bad`` cells, inpainted."""
     if bad.all():
         return np.full(zmin.shape, p.slope)
     z = zmin.copy()
     z[bad] = np.nan
-    return common.trend_tolerance(common.inpaint(z), p.cell, p.slope, p.trend_slope, p.window)
+    return common.trend_tolerance(common.inpaint(z, off), p.cell, p.slope, p.trend_slope, p.window)
 
 
 def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:

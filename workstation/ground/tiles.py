@@ -8,8 +8,9 @@ into equal rectangles of about ``tile_points`` points; each tile is filtered tog
 points of its neighbours within ``buffer`` metres (the filters' windows reach that far, so a
 tile's edge sees the terrain beyond it), and only the tile's own points keep the classes
 found. Peak memory then follows the tile, not the file; with ``workers`` > 1 the tiles are
-filtered in as many processes at once (the same classes as one after the other), since most
-of a filter's work runs on one core.
+filtered on a local Dask cluster of as many worker processes (the same classes as one after
+the other), since most of a filter's work runs on one core. ``ws run`` cuts whole surveys
+the same way, file by file (:mod:`workstation.pipeline`).
 
 The buffer (60 m) is twice the widest window of the default filters (``auto``'s 30 m SMRF
 window; PTD's 20 m seed cells): a roof at a tile's edge is opened away with the same window
@@ -49,10 +50,10 @@ class TileParams:
     buffer : float
         Metres of neighbouring points filtered with each tile (60).
     workers : int
-        Tiles filtered at once, each in its own process (1: one after the other, in this
-        process). Memory grows with it: each process holds one buffered tile and its filter.
-        The processes are spawned, so a script that asks for more than one needs Python's
-        ``if __name__ == "__main__":`` guard around its work (``ws ground`` has it).
+        Tiles filtered at once, each by a worker of a local Dask cluster (1: one after the
+        other, in this process). Memory grows with it: each worker holds one buffered tile and
+        its filter. The workers are spawned processes, so a script that asks for more than one
+        needs Python's ``if __name__ == "__main__":`` guard around its work (``ws ground`` has it).
     """
 
     tile_points: int = 10_000_000
@@ -146,6 +147,29 @@ def _filter_tile(method: str, params, xyz: np.ndarray, attrs: dict, crs, inner: 
     return np.asarray(out.attrs["classification"])[inner], out.history[-1]
 
 
+def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
+    """Filter the tiles on a local Dask cluster of ``workers`` single-threaded processes (the
+    scheduler ``ws run`` uses), at most one tile per worker in flight: a tile's copy is made
+    only when a worker is free for it."""
+    import logging
+
+    from distributed import Client, LocalCluster, wait
+
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                      silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
+        running: dict = {}
+        for core, sel in layout:
+            if len(running) >= workers:
+                done, _ = wait(list(running), return_when="FIRST_COMPLETED")
+                for f in done:
+                    collect(running.pop(f), f.result())
+                    advance(1)
+            running[client.submit(_filter_tile, *task(core, sel), pure=False)] = core
+        for f in list(running):
+            collect(running.pop(f), f.result())
+            advance(1)
+
+
 def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TileParams()) -> Cloud:
     """Run the ground filter ``method`` (a name of :mod:`workstation.ground.methods`) with
     ``params`` tile by tile (see the module doc); the whole cloud at once when it has no more
@@ -190,23 +214,8 @@ def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TilePara
         for core, sel in track(layout, desc, total=len(layout)):
             collect(core, _filter_tile(*task(core, sel)))
     else:
-        import multiprocessing
-        from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
-
-        # at most one tile per process in flight: the tiles' copies are made as they are sent
-        with progress_bar(desc, len(layout)) as advance, ProcessPoolExecutor(
-                tiles.workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-            running: dict = {}
-            for core, sel in layout:
-                if len(running) >= tiles.workers:
-                    done, _ = wait(running, return_when=FIRST_COMPLETED)
-                    for f in done:
-                        collect(running.pop(f), f.result())
-                        advance(1)
-                running[pool.submit(_filter_tile, *task(core, sel))] = core
-            for f in list(running):
-                collect(running.pop(f), f.result())
-                advance(1)
+        with progress_bar(desc, len(layout)) as advance:
+            _filter_on_dask(layout, task, collect, advance, tiles.workers)
     if record is None or not (cls == ASPRSClass.GROUND).any():
         raise StageError(STAGE, f"no ground point found in any of {len(layout)} tiles",
                          "check the units and the parameters, or the noise classes")

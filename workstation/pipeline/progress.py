@@ -25,7 +25,9 @@ class RunProgress:
         self._progress, self._bars = None, {}
 
     def __enter__(self):
-        if self.dashboard:
+        import logging
+
+        if self.dashboard and logging.getLogger("workstation").getEffectiveLevel() <= logging.WARNING:
             stderr_console().print(f"Dask dashboard: {self.dashboard}")
         if _enabled():
             from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
