@@ -52,7 +52,9 @@ def test_isprs_auto_beats_smrf(isprs):
     mean_auto, errs = _mean_total(isprs, "auto")
     mean_smrf, _ = _mean_total(isprs, "smrf")
     assert mean_auto < mean_smrf
-    assert mean_auto <= 0.030, errs  # 2.94 % with the riser fill (3.04 % without; 3.36 % without the raised-patch test)
+    # 3.03 % on grids aligned to the cell lattice (2.94 % on grids from each sample's minimum
+    # corner; 2.93-3.06 % over half-cell shifts of the grid, docs/benchmarks.md)
+    assert mean_auto <= 0.031, errs
 
 
 @pytest.mark.realdata

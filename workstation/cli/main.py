@@ -77,19 +77,47 @@ def cli(ctx, verbose, quiet):
     configure(verbose, quiet)
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM or SIGHUP, raised where the program is so it unwinds as on Ctrl-C: temporary
+    files are removed by the writers' ``finally`` blocks, and the exit code is 128 + signal."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _on_signal(signum, frame):
+    raise Terminated(signum)
+
+
+def _install_signal_handlers() -> None:
+    import signal
+    import threading
+
+    if threading.current_thread() is threading.main_thread():
+        for sig in (signal.SIGTERM, signal.SIGHUP):
+            signal.signal(sig, _on_signal)
+
+
 def main(argv=None) -> int:
-    """Entry point with the error boundary: exit 0 ok, 1 user error, 2 usage error."""
+    """Entry point with the error boundary: exit 0 ok, 1 user error, 2 usage error, 128 + n on
+    signal n (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP)."""
     from workstation.core.errors import WorkstationError
 
+    if argv is None:  # the console script (a test calling main(argv) keeps its own handlers)
+        _install_signal_handlers()
     argv = list(sys.argv[1:] if argv is None else argv)
     verbose = any(a in ("-v", "--verbose") or (a.startswith("-v") and set(a[1:]) == {"v"}) for a in argv)
     try:
-        cli.main(args=argv, prog_name="ws", standalone_mode=False)
+        rc = cli.main(args=argv, prog_name="ws", standalone_mode=False)
     except click.exceptions.Exit as e:
         return e.exit_code
-    except click.exceptions.Abort:
-        click.echo("Aborted.", err=True)
-        return 1
+    except click.exceptions.Abort as e:  # click turns KeyboardInterrupt into Abort
+        if isinstance(e.__context__, Terminated):
+            click.echo(f"Terminated by signal {e.__context__.signum}.", err=True)
+            return 128 + e.__context__.signum
+        click.echo("Interrupted." if isinstance(e.__context__, KeyboardInterrupt) else "Aborted.", err=True)
+        return 130 if isinstance(e.__context__, KeyboardInterrupt) else 1
     except click.ClickException as e:
         e.show()
         return e.exit_code
@@ -109,10 +137,13 @@ def main(argv=None) -> int:
             traceback.print_exc()
         click.echo(f"Error: {e.filename or ''}: {e.strerror or e}", err=True)
         return 1
+    except Terminated as e:
+        click.echo(f"Terminated by signal {e.signum}.", err=True)
+        return 128 + e.signum
     except KeyboardInterrupt:
         click.echo("Interrupted.", err=True)
         return 130
-    return 0
+    return rc if isinstance(rc, int) else 0  # a command's click.exceptions.Exit(n) comes back as n
 
 
 def run() -> None:  # pragma: no cover - console script shim

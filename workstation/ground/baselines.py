@@ -74,7 +74,7 @@ class LocalMinParams:
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
     """Ground flags (m,) bool: within ``threshold`` of the lowest point of the cell."""
     low = grid_low_points(xyz)
-    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
+    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     return ~low & (xyz[:, 2] - zmin[r, c] <= p.threshold)
 
@@ -82,7 +82,7 @@ def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
 def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     """Ground flags (m,) bool by the slope-based local minimum test on the min-grid."""
     low = grid_low_points(xyz)
-    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
+    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     filled = np.where(np.isnan(zmin), np.inf, zmin)
     # lowest allowed surface: min over rings k of (erosion by disk k) + slope·k·cell

@@ -159,6 +159,13 @@ def column_max(a: np.ndarray) -> np.ndarray:
     return np.array([a[:, i].max() for i in range(a.shape[1])], a.dtype)
 
 
+def aligned_origin(xy: np.ndarray, cell: float) -> np.ndarray:
+    """The lower-left corner of the cell that holds the lowest x and y, on multiples of ``cell``:
+    grids from it start with an occupied row and column, and on :func:`prepare`'s lattice
+    coordinates every chunk of a survey puts its cells on the same lines."""
+    return np.floor(column_min(xy) / cell) * cell
+
+
 def grid_index(xy: np.ndarray, cell: float, origin=None) -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray]:
     """Cell row/column of each point on a grid of ``cell`` metres.
 

@@ -100,7 +100,7 @@ def grid_low_points(xyz: np.ndarray, cell: float = 1.0, depth: float = 5.0) -> n
 
     if xyz.shape[0] == 0:
         return np.zeros(0, dtype=bool)
-    r, c, shape, _ = common.grid_index(xyz[:, :2], cell, origin=xyz[:, :2].min(axis=0))
+    r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     ref = ndimage.median_filter(common.fill_nearest(zmin), size=5, mode="nearest")
     return xyz[:, 2] < ref[r, c] - depth

@@ -88,7 +88,7 @@ def pmf_ground(xyz: np.ndarray, p: PMFParams) -> np.ndarray:
     from .noise import grid_low_points
 
     low = grid_low_points(xyz)
-    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, origin=(0.0, 0.0))
+    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
     zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
     zmin[np.isinf(zmin)] = np.nan
     surf = common.fill_nearest(zmin)

@@ -125,9 +125,8 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
         Cells that were interpolated.
     """
     # the grid starts at a multiple of the cell on prepare's 100 m lattice, with no empty margin
-    first = np.floor(common.column_min(xyz[:, :2]) / p.cell)
-    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, origin=first * p.cell)
-    off = (int(first[1]), int(first[0]))  # (row, col) of cell (0, 0): rows run along y
+    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
+    off = tuple(int(v) for v in np.round(origin[::-1] / p.cell))  # (row, col) of cell (0, 0)
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     empty = np.isnan(zmin)
     zfill = common.inpaint(zmin, off)

@@ -156,7 +156,7 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
     from distributed import Client, LocalCluster, wait
 
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                      silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
+                      silence_logs=logging.CRITICAL) as cluster, Client(cluster) as client:
         running: dict = {}
         for core, sel in layout:
             if len(running) >= workers:

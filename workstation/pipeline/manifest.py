@@ -82,15 +82,27 @@ class Manifest:
     def is_done(self, task_id: str, key: str) -> bool:
         rec = self.tasks.get(task_id)
         return bool(rec and rec.get("key") == key and rec.get("status") == "done"
-                    and all(Path(p).exists() for p in rec.get("outputs", [])))
+                    and all(Path(p).exists() for p in self._absolute(rec.get("outputs", []))))
+
+    def _absolute(self, paths) -> list[str]:
+        return [str(self.path.parent / p) for p in paths]  # an absolute p stays as it is
 
     def record(self, task_id: str, rec: dict) -> None:
-        self.tasks[task_id] = rec
+        """Keep a task's record; its outputs are stored relative to the output folder, so the
+        folder can be moved or shared between machines."""
+        out = []
+        for p in rec.get("outputs", []):
+            try:
+                out.append(str(Path(p).relative_to(self.path.parent)))
+            except ValueError:
+                out.append(str(p))
+        self.tasks[task_id] = {**rec, "outputs": out}
         if time.monotonic() - self._saved > 2.0:  # bounded cost on thousands of tasks
             self.save()
 
     def outputs_of(self, task_ids) -> list[str]:
-        return [p for t in task_ids for p in self.tasks.get(t, {}).get("outputs", [])]
+        """The absolute paths of the outputs recorded for ``task_ids``."""
+        return [p for t in task_ids for p in self._absolute(self.tasks.get(t, {}).get("outputs", []))]
 
     def save(self, **info) -> None:
         """Write ``run.json`` atomically (a temporary file renamed over it)."""

@@ -15,9 +15,10 @@ tasks that do not depend on it finish, and the run is marked incomplete.
 
 from __future__ import annotations
 
-import math
-import os
+import contextlib
+import hashlib
 import time
+import uuid
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -92,7 +93,7 @@ def _context(project, plan, catalog, grid, out: Path) -> RunContext:
             raise InvalidInputError(f"a grid of {g.rows:,} x {g.cols:,} cells over the survey is too large",
                                     "use a coarser cell", path=project.path, field=what)
     cache = out / CACHE
-    index = {str(t.path): cache / "index" / f"{t.path.stem}-{abs(hash(str(t.path))) % 10**8:08d}"
+    index = {str(t.path): cache / "index" / f"{t.path.stem}-{hashlib.sha1(str(t.path).encode()).hexdigest()[:10]}"
              for t in catalog.tiles if not t.copc}
     return RunContext(out, cache, catalog.crs, catalog.tiles, index, dem, dens, project.folder)
 
@@ -107,7 +108,7 @@ def prepare(project_path, options: RunOptions):
                                 "use one of " + ", ".join(("index",) + plan.stages), field="rerun_from")
     catalog = build_catalog(project.clouds, project.crs)
     grid = chunk_grid(catalog, project.chunks.size, project.chunks.buffer)
-    out = Path(options.out) if options.out else project.folder
+    out = Path(options.out).resolve() if options.out else project.folder  # workers may run elsewhere
     out.mkdir(parents=True, exist_ok=True)
     manifest = Manifest(out / "run.json")
     ctx = _context(project, plan, catalog, grid, out)
@@ -138,16 +139,18 @@ def run_project(project_path, options: RunOptions = RunOptions(), on_progress=No
     counts = {ph: {"total": sum(t.phase == ph for t in tasks), "run": sum(t.phase == ph for t in todo)}
               for ph in P.PHASES if any(t.phase == ph for t in tasks)}
     if options.dry_run:
-        return RunResult(ctx.out, "planned", {**info, "phases": counts, "seconds": time.perf_counter() - t0})
+        return RunResult(ctx.out, "planned", {**info, "status": "planned", "phases": counts, "failures": [],
+                                              "seconds": round(time.perf_counter() - t0, 3)})
     failures: list = []
     dashboard = None
+    run_id = uuid.uuid4().hex
     if todo:
-        dashboard = _execute(todo, manifest, ctx, options, project, failures, on_progress)
+        dashboard = _execute(todo, manifest, ctx, options, project, failures, on_progress, run_id)
     status = "complete" if not failures else "incomplete"
     for ph in counts:
         done = [manifest.tasks.get(t.id, {}) for t in tasks if t.phase == ph]
         counts[ph].update(points=sum(r.get("points", 0) for r in done),
-                          seconds=round(sum(r.get("seconds", 0) for r in done if r.get("run_id") == id(todo)), 3),
+                          seconds=round(sum(r.get("seconds", 0) for r in done if r.get("run_id") == run_id), 3),
                           failed=sum(r.get("status") in ("failed", "skipped") for r in done))
     summary = {**info, "status": status, "phases": counts, "seconds": round(time.perf_counter() - t0, 3),
                "dashboard": dashboard, "failures": failures}
@@ -185,25 +188,48 @@ def _client(options: RunOptions, project):
     n = options.workers or project.dask.get("workers") or available_cores()
     if not (isinstance(n, int) and 1 <= n <= 512):
         raise InvalidInputError(f"workers {n!r} is not a number of processes", "use 1 or more", field="workers")
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
-                           silence_logs=logging.ERROR, memory_limit=project.dask.get("memory_limit", "auto"))
-    return Client(cluster), cluster
+    with _signals_deferred():  # a half-started cluster cannot be closed cleanly
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
+                               silence_logs=logging.CRITICAL, memory_limit=project.dask.get("memory_limit", "auto"))
+        try:
+            client = Client(cluster)
+        except BaseException:
+            cluster.close()
+            raise
+    return client, cluster
 
 
-def _execute(todo, manifest, ctx, options, project, failures, on_progress) -> str | None:
+@contextlib.contextmanager
+def _signals_deferred():
+    """Hold Ctrl-C, SIGTERM and SIGHUP until the block ends (then they are delivered)."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    sigs = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, sigs)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_id: str) -> str | None:
     """Submit ``todo`` to Dask and record each task as it ends; returns the dashboard address."""
     from distributed import as_completed
 
     from .progress import RunProgress
 
     client, cluster = _client(options, project)
-    dashboard = getattr(client, "dashboard_link", None)
+    services = client.scheduler_info().get("services", {})
+    dashboard = client.dashboard_link if "dashboard" in services else None
     by_id = {t.id: t for t in todo}
     futures: dict = {}
     waiting = [t for t in todo if t.barrier]
     finished: set[str] = set()
     broken: set[str] = set()
-    run_id = id(todo)
     try:
         with RunProgress(todo, dashboard, on_progress) as progress:
             ac = as_completed()
@@ -262,8 +288,7 @@ def _record(t, fut, futures, manifest, broken: set, run_id) -> dict:
     else:
         exc = fut.exception()
         msg = exc.message if isinstance(exc, WorkstationError) else f"{type(exc).__name__}: {exc}"
-        path = getattr(exc, "path", None)
-        rec = {**base, "status": "failed", "error": f"{path}: {msg}" if path else msg}
+        rec = {**base, "status": "failed", "error": msg}
         broken.add(t.id)
         log.error("%s failed: %s", t.id, rec["error"])
     manifest.record(t.id, rec)
