@@ -24,6 +24,7 @@ STEPS: list[tuple[str, str]] = [
     ("ground filtering (SMRF) and its evaluation against the truth", "workstation.pipeline.demo_steps.ground:step"),
     ("point classifier (shipped model)", "workstation.pipeline.demo_steps.classify:step"),
     ("DSM, DTM, CHM, hillshade, contours", "workstation.pipeline.demo_steps.raster:step"),
+    ("ws run: the ALS flight as a four-tile project on a local Dask cluster", "workstation.pipeline.demo_steps.project:step"),
     ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
     ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),
     ("dense stereo: CPU plane sweep and fusion on a tiny rig", "workstation.pipeline.demo_steps.dense:step"),
