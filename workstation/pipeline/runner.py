@@ -189,8 +189,11 @@ def _client(options: RunOptions, project):
     if not (isinstance(n, int) and 1 <= n <= 512):
         raise InvalidInputError(f"workers {n!r} is not a number of processes", "use 1 or more", field="workers")
     with _signals_deferred():  # a half-started cluster cannot be closed cleanly
+        # the cores a worker may use for LAZ (de)compression threads: its share of the machine
+        share = str(max(1, available_cores() // n))
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
-                               silence_logs=logging.CRITICAL, memory_limit=project.dask.get("memory_limit", "auto"))
+                               silence_logs=logging.CRITICAL, memory_limit=project.dask.get("memory_limit", "auto"),
+                               env={"RAYON_NUM_THREADS": share})
         try:
             client = Client(cluster)
         except BaseException:

@@ -118,7 +118,7 @@ def _ground_stage(table: dict, path: Path) -> GroundStage:
     try:
         params = make_params(method, preset, **{k: tuple(v) if isinstance(v, list) else v for k, v in table.items()})
     except (InvalidInputError, TypeError, ValueError) as e:
-        raise InvalidInputError(f"[stages.ground]: {getattr(e, 'message', e)}", getattr(e, "hint", None), path=path,
+        raise InvalidInputError(str(getattr(e, "message", e)), getattr(e, "hint", None), path=path,
                                 field="stages.ground") from None
     return GroundStage(method, params)
 
