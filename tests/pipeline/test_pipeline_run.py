@@ -532,3 +532,31 @@ def test_killed_worker_gives_the_same_outputs(survey, baseline, cluster, tmp_pat
     assert_same_outputs(baseline.path, out)
     client.wait_for_workers(2, timeout=60)
     assert pids[killed[0]] not in client.run(os.getpid).values()
+
+
+@pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupted_run_leaves_nothing_half_written_and_resumes(survey, baseline, cluster, tmp_path, sig, code):
+    """Ctrl-C (or SIGTERM) once the first chunk is written: exit 128 + n, no temporary file left,
+    run.json keeps the finished tasks, and the next run does only the rest, with the same outputs."""
+    out = tmp_path / "out"
+    env = dict(os.environ, WS_PROGRESS="0")
+    p = subprocess.Popen([str(WS), "run", str(survey / "project.toml"), "--out", str(out), "--scheduler",
+                          cluster.address], stderr=subprocess.PIPE, text=True, env=env)
+    t0 = time.monotonic()
+    while not laz_files(out) and p.poll() is None and time.monotonic() - t0 < 120:
+        time.sleep(0.05)
+    p.send_signal(sig)
+    _, err = p.communicate(timeout=60)
+    if p.returncode == 0:
+        pytest.skip("the run finished before the signal arrived")
+    assert p.returncode == code, err[-2000:]
+    assert "Traceback" not in err
+    hidden = [q for q in out.rglob(".*") if q.is_file() and ".ws-cache" not in q.parts]
+    hidden += [q for q in (out / ".ws-cache").rglob(".*")] if (out / ".ws-cache").exists() else []
+    assert not hidden, hidden
+    done = [t for t, rec in run_json(out)["tasks"].items() if rec["status"] == "done"]
+    assert done  # the chunks finished before the signal are recorded
+    r = ws("run", survey / "project.toml", "--out", out, "--scheduler", cluster.address, "--json")
+    assert r.rc == 0 and r.json["status"] == "complete", r.err[-2000:]
+    assert sum(ran(r.json).values()) <= sum(totals(r.json).values()) - len(done)
+    assert_same_outputs(out, baseline.path)
