@@ -7,7 +7,7 @@
                                           noise -> ground -> DTM/DSM -> mosaic over DIR/tiles/*.laz: wall time,
                                           points/s, peak memory per worker (from run.json)
   python scripts/bench_project.py rerun    DIR                     a second run of the same project
-  python scripts/bench_project.py scaling  DIR                     1 worker against 2, and whether outputs agree
+  python scripts/bench_project.py scaling  DIR [--one-core]        1 worker against 2, and whether outputs agree
   python scripts/bench_project.py external DIR                     `dask scheduler` + two `dask worker`
                                           processes on loopback against a local run: identical outputs?
   python scripts/bench_project.py seams    [--data DIR]            four adjacent tiles cut from bcts_1/bcts_2,
@@ -86,10 +86,10 @@ def bench_catalog(args):
     emit({"bench": "catalog", "copies": args.copies, "files": 2 * args.copies, "points": 1_355_607 * args.copies})
 
 
-def ws_run(project: Path, out: Path, *extra) -> tuple[dict, float]:
+def ws_run(project: Path, out: Path, *extra, prefix=()) -> tuple[dict, float]:
     t = time.perf_counter()
-    res = subprocess.run([WS, "-q", "run", str(project), "--out", str(out), "--json", *extra], capture_output=True,
-                         text=True)
+    res = subprocess.run([*prefix, WS, "-q", "run", str(project), "--out", str(out), "--json", *extra],
+                         capture_output=True, text=True)
     wall = time.perf_counter() - t
     if res.returncode not in (0, 3):
         sys.exit(f"ws run failed: {res.stderr[-2000:]}")
@@ -143,14 +143,18 @@ def outputs_equal(a: Path, b: Path) -> bool:
 
 
 def bench_scaling(args):
+    """2 workers against 1; with --one-core the single worker runs pinned to one core
+    (``taskset -c 0``), so it cannot spread its LAZ threads over the second core."""
     folder = Path(args.dir)
     walls = {}
     for w in (1, 2):
         out = folder / f"scale_w{w}"
         shutil.rmtree(out, ignore_errors=True)
-        _, walls[w] = ws_run(folder / "project.toml", out, "--workers", str(w))
-    emit({"bench": "scaling", "wall_1_worker_s": round(walls[1], 1), "wall_2_workers_s": round(walls[2], 1),
-          "speedup": round(walls[1] / walls[2], 3), "identical": outputs_equal(folder / "scale_w1", folder / "scale_w2")})
+        pin = ("taskset", "-c", "0") if (w == 1 and args.one_core) else ()
+        _, walls[w] = ws_run(folder / "project.toml", out, "--workers", str(w), prefix=pin)
+    emit({"bench": "scaling", "one_worker_pinned_to_one_core": args.one_core, "wall_1_worker_s": round(walls[1], 1),
+          "wall_2_workers_s": round(walls[2], 1), "speedup": round(walls[1] / walls[2], 3),
+          "identical": outputs_equal(folder / "scale_w1", folder / "scale_w2")})
 
 
 def bench_external(args):
@@ -272,6 +276,7 @@ def main(argv=None):
     ap.add_argument("--size", type=float, default=250.0)
     ap.add_argument("--buffer", type=float, default=30.0)
     ap.add_argument("--points", type=int, default=10_000_000)
+    ap.add_argument("--one-core", action="store_true", help="scaling: pin the single worker to one core")
     args = ap.parse_args(argv)
     globals()[f"bench_{args.what}"](args)
 

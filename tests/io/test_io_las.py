@@ -94,6 +94,22 @@ def test_iter_chunks_streams_whole_file(tmp_path, small_cloud):
     np.testing.assert_allclose(whole.xyz, small_cloud.xyz, rtol=0, atol=5e-4)
 
 
+@pytest.mark.parametrize("suffix", [".las", ".laz"])
+def test_iter_chunks_reads_a_point_range(tmp_path, small_cloud, suffix):
+    """``start``/``stop`` stream just that range (LAZ seeks into its compressed chunks); a
+    range past the end is cut at the header's count."""
+    from workstation.io.las import iter_chunks as las_chunks
+
+    out = tmp_path / f"r{suffix}"
+    write_cloud(small_cloud, out)
+    whole = read_cloud(out)
+    got = list(las_chunks(out, 120, start=250, stop=777))
+    assert [c.n for c in got] == [120, 120, 120, 120, 47]
+    np.testing.assert_array_equal(np.vstack([c.xyz for c in got]), whole.xyz[250:777])
+    np.testing.assert_array_equal(np.concatenate([c.attrs["intensity"] for c in got]), whole.attrs["intensity"][250:777])
+    assert sum(c.n for c in las_chunks(out, 500, start=900, stop=5000)) == whole.n - 900
+
+
 def test_vlrs_and_crs_kept(tmp_path, small_cloud):
     out = tmp_path / "v.las"
     header = laspy.LasHeader(point_format=6, version="1.4")

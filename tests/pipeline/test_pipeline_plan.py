@@ -273,3 +273,29 @@ def test_plan_reruns_a_lost_chunk_and_only_the_rasters_that_read_it(tmp_path):
     assert forced == {t.id for t in tasks if t.phase in ("rasters", "mosaic")}
     assert {t.id for t in _todo(tasks, manifest, forced_phases(plan, "ground"))} == {
         t.id for t in tasks if t.phase != "index"}
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_a_large_file_is_indexed_in_parts_with_the_same_result(tmp_path, monkeypatch):
+    """A file of more than INDEX_PART_POINTS points is binned by several index tasks (each
+    seeks to its own point range); the chunks read back the same points as with one task."""
+    from pipeline_synth import write_project, write_tiles
+
+    from workstation.io import read_cloud
+    from workstation.pipeline import tasks as T
+    from workstation.pipeline.runner import RunOptions, run_project
+
+    write_tiles(tmp_path / "tiles", cells=((0, 0), (1, 0)))
+    write_project(tmp_path)
+    one = run_project(tmp_path / "project.toml", RunOptions(out=tmp_path / "one", workers=1))
+    monkeypatch.setattr(T, "INDEX_PART_POINTS", 15_000)  # 40,500-point tiles: 3 parts each
+    three = run_project(tmp_path / "project.toml", RunOptions(out=tmp_path / "three", workers=2))
+    assert one.complete and three.complete
+    assert one.summary["phases"]["index"]["total"] == 2 and three.summary["phases"]["index"]["total"] == 6
+    names = sorted(p.name for p in (tmp_path / "one" / "ground").glob("*.laz"))
+    assert names == sorted(p.name for p in (tmp_path / "three" / "ground").glob("*.laz"))
+    for n in names:
+        a, b = read_cloud(tmp_path / "one" / "ground" / n), read_cloud(tmp_path / "three" / "ground" / n)
+        np.testing.assert_array_equal(a.xyz, b.xyz)
+        np.testing.assert_array_equal(a.attrs["classification"], b.attrs["classification"])

@@ -329,6 +329,25 @@ def _records(reader, path, n: int, chunk_size: int):
         )
 
 
+def _range_records(reader, path, start: int, stop: int, chunk_size: int):
+    """The point records ``start:stop``, chunk by chunk (see :func:`_records`)."""
+    try:
+        reader.seek(start)
+        got = start
+        while got < stop:
+            rec = reader.read_points(min(chunk_size, stop - got))
+            if len(rec) == 0:
+                break
+            got += len(rec)
+            yield rec
+    except (ValueError, OSError, EOFError, RuntimeError) as exc:
+        raise InvalidInputError(f"point data unreadable near point {got:,}: {exc}",
+                                "the file is truncated or corrupt; get a complete copy", path=path) from None
+    if got != stop:
+        raise InvalidInputError(f"header says {stop:,} points or more but only {got:,} could be read (truncated)",
+                                "get a complete copy of the file", path=path, field="point_count")
+
+
 def read(path, *, chunk_size: int | None = None) -> Cloud:
     """Read a LAS or LAZ file.
 
@@ -397,15 +416,23 @@ def read_header(path) -> dict:
         }
 
 
-def iter_chunks(path, chunk_size: int = 1_000_000) -> Iterator[Cloud]:
-    """Stream a LAS/LAZ file as clouds of at most ``chunk_size`` points (memory: one chunk)."""
+def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | None = None) -> Iterator[Cloud]:
+    """Stream a LAS/LAZ file as clouds of at most ``chunk_size`` points (memory: one chunk);
+    with ``start``/``stop``, only the points of that index range (a LAZ file is sought to the
+    compressed chunk that holds ``start``)."""
     path = Path(path)
     with _open(path) as reader:
         header = reader.header
         _check_point_bytes(path, header)
         meta, crs = _meta_and_crs(header, path)
         meta["las"]["crs"] = crs
-        for rec in _records(reader, path, int(header.point_count), chunk_size):
+        n = int(header.point_count)
+        stop = n if stop is None else min(int(stop), n)
+        if start or stop < n:
+            records = _range_records(reader, path, int(start), stop, chunk_size)
+        else:
+            records = _records(reader, path, n, chunk_size)
+        for rec in records:
             f = _Filler(header, len(rec))
             f.fill(rec, 0)
             yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)

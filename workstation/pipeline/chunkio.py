@@ -90,10 +90,11 @@ def restore_meta(meta: dict) -> dict:
     return conv(meta)
 
 
-def index_file(path: Path, size: float, dest: Path, crs: str | None, chunk_points: int = 2_000_000) -> dict:
-    """Stream ``path`` once and write its points into ``dest/<ix>_<iy>.bin`` by owning chunk
-    (chunks of ``size`` CRS units). The folder is built beside ``dest`` and renamed into place,
-    so an interrupted index leaves nothing. Returns {"ix_iy": points}."""
+def index_file(path: Path, size: float, dest: Path, crs: str | None, chunk_points: int = 2_000_000,
+               start: int = 0, stop: int | None = None) -> dict:
+    """Stream ``path`` (its points ``start:stop``) once and write them into ``dest/<ix>_<iy>.bin``
+    by owning chunk (chunks of ``size`` CRS units). The folder is built beside ``dest`` and
+    renamed into place, so an interrupted index leaves nothing. Returns {"ix_iy": points}."""
     from workstation.io import iter_chunks
 
     dest.parent.mkdir(parents=True, exist_ok=True)
@@ -101,7 +102,7 @@ def index_file(path: Path, size: float, dest: Path, crs: str | None, chunk_point
     counts: dict[str, int] = {}
     dtype = None
     try:
-        for piece in iter_chunks(path, chunk_points):
+        for piece in iter_chunks(path, chunk_points, start=start, stop=stop):
             if dtype is None:
                 dtype = record_dtype(piece)
                 write_schema(tmp, dtype, piece.crs or crs, _jsonable_meta(piece.meta))

@@ -61,20 +61,21 @@ def build_tasks(ctx: T.RunContext, plan, grid, manifest: Manifest) -> list[Task]
     tasks: list[Task] = []
     file_hash = {str(t.path): manifest.file_hash(t.path) for t in ctx.tiles}
     reads_inputs = bool(plan.point_stages) or plan.dem is not None or plan.density is not None
-    index_of: dict[str, Task] = {}
+    index_of: dict[str, list[Task]] = {}
     if reads_inputs:
         for t in ctx.tiles:
             if t.copc:
                 continue
-            p = str(t.path)
-            task = Task(f"index/{t.path.name}", "index", T.index_task, (ctx, p, grid.size),
-                        key=task_key("index", {"size": grid.size}, [file_hash[p]]), params={"size": grid.size})
-            index_of[p] = task
-            tasks.append(task)
+            p, k = str(t.path), ctx.index_parts[str(t.path)]
+            index_of[p] = [Task(f"index/{t.path.name}" + (f"#{i}" if k > 1 else ""), "index", T.index_task,
+                                (ctx, p, grid.size, i),
+                                key=task_key("index", {"size": grid.size, "part": [i, k]}, [file_hash[p]]),
+                                params={"size": grid.size, "part": i, "parts": k}) for i in range(k)]
+            tasks += index_of[p]
 
     def input_deps(chunk):
         hit = [t for t in ctx.tiles if t.intersects(chunk.buffered)]
-        return ([index_of[str(t.path)] for t in hit if str(t.path) in index_of],
+        return ([d for t in hit for d in index_of.get(str(t.path), [])],
                 [file_hash[str(t.path)] for t in hit if t.copc])
 
     points_of: dict[tuple, Task] = {}

@@ -31,6 +31,7 @@ from .chunks import chunk_grid
 from .manifest import Manifest
 from .project import load_project
 from .stages import parse_stages
+from . import tasks as T
 from .tasks import RunContext
 
 log = get_logger(__name__)
@@ -95,7 +96,8 @@ def _context(project, plan, catalog, grid, out: Path) -> RunContext:
     cache = out / CACHE
     index = {str(t.path): cache / "index" / f"{t.path.stem}-{hashlib.sha1(str(t.path).encode()).hexdigest()[:10]}"
              for t in catalog.tiles if not t.copc}
-    return RunContext(out, cache, catalog.crs, catalog.tiles, index, dem, dens, project.folder)
+    parts = {str(t.path): T.index_parts(t.point_count) for t in catalog.tiles if not t.copc}
+    return RunContext(out, cache, catalog.crs, catalog.tiles, index, parts, dem, dens, project.folder)
 
 
 def prepare(project_path, options: RunOptions):

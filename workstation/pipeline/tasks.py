@@ -43,6 +43,9 @@ class RunContext:
     tiles : tuple of TileInfo
     index_dirs : dict
         Input path (str) -> its bins folder (plain LAS/LAZ files only).
+    index_parts : dict
+        Input path (str) -> how many index tasks share the file (a part per
+        :data:`INDEX_PART_POINTS` points, each in ``<bins folder>/p<k>``).
     dem_grid : GridSpec or None
         The one grid of every DEM tile and mosaic.
     density_grid : GridSpec or None
@@ -54,6 +57,7 @@ class RunContext:
     crs: str | None
     tiles: tuple
     index_dirs: dict
+    index_parts: dict
     dem_grid: object = None
     density_grid: object = None
     project_folder: Path = Path(".")
@@ -71,11 +75,21 @@ def _peak_rss_mb() -> float:
 
 
 # ----------------------------------------------------------------------------- index
-def index_task(ctx: RunContext, tile_path: str, size: float) -> dict:
-    """Bin one plain LAS/LAZ file into per-chunk record files (see :mod:`.chunkio`)."""
+INDEX_PART_POINTS = 4_000_000  # a larger file is binned by several tasks at once
+
+
+def index_parts(point_count: int) -> int:
+    return max(1, math.ceil(point_count / INDEX_PART_POINTS))
+
+
+def index_task(ctx: RunContext, tile_path: str, size: float, part: int = 0) -> dict:
+    """Bin part ``part`` of one plain LAS/LAZ file into per-chunk record files (see
+    :mod:`.chunkio`)."""
     t0 = time.perf_counter()
-    dest = Path(ctx.index_dirs[tile_path])
-    counts = chunkio.index_file(Path(tile_path), size, dest, ctx.crs)
+    dest = Path(ctx.index_dirs[tile_path]) / f"p{part}"
+    n = next(t.point_count for t in ctx.tiles if str(t.path) == tile_path)
+    step = math.ceil(n / ctx.index_parts[tile_path])
+    counts = chunkio.index_file(Path(tile_path), size, dest, ctx.crs, start=part * step, stop=min(n, (part + 1) * step))
     return {"points": int(sum(counts.values())), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [str(dest)]}
 
 
@@ -90,7 +104,8 @@ def read_input_chunk(ctx: RunContext, chunk: Chunk):
         if t.copc:
             parts.append(chunkio.read_copc(t.path, box))
         else:
-            parts.append(chunkio.read_bins(Path(ctx.index_dirs[str(t.path)]), names, box))
+            folder = Path(ctx.index_dirs[str(t.path)])
+            parts += [chunkio.read_bins(folder / f"p{k}", names, box) for k in range(ctx.index_parts[str(t.path)])]
     return chunkio.join(parts, ctx.crs)
 
 
