@@ -36,6 +36,8 @@ class Task:
     key : str
     params : dict
         The parameters recorded in run.json.
+    inputs : dict
+        Input file -> SHA-256, for the tasks that read input tiles (recorded in run.json).
     barrier : bool
         Submitted only when every dependency has finished (mosaics: they take the tiles that
         exist, so a failed chunk leaves a hole rather than stopping the mosaic).
@@ -50,6 +52,7 @@ class Task:
     params: dict = field(default_factory=dict)
     barrier: bool = False
     chunk: str | None = None
+    inputs: dict = field(default_factory=dict)
 
 
 def _point_folder(plan) -> str:
@@ -70,13 +73,17 @@ def build_tasks(ctx: T.RunContext, plan, grid, manifest: Manifest) -> list[Task]
             index_of[p] = [Task(f"index/{t.path.name}" + (f"#{i}" if k > 1 else ""), "index", T.index_task,
                                 (ctx, p, grid.size, i),
                                 key=task_key("index", {"size": grid.size, "part": [i, k]}, [file_hash[p]]),
-                                params={"size": grid.size, "part": i, "parts": k}) for i in range(k)]
+                                params={"size": grid.size, "part": i, "parts": k}, inputs={p: file_hash[p]})
+                        for i in range(k)]
             tasks += index_of[p]
 
     def input_deps(chunk):
         hit = [t for t in ctx.tiles if t.intersects(chunk.buffered)]
         return ([d for t in hit for d in index_of.get(str(t.path), [])],
                 [file_hash[str(t.path)] for t in hit if t.copc])
+
+    def inputs_of(chunk) -> dict:
+        return {str(t.path): file_hash[str(t.path)] for t in ctx.tiles if t.intersects(chunk.buffered)}
 
     points_of: dict[tuple, Task] = {}
     if plan.point_stages:
@@ -85,16 +92,16 @@ def build_tasks(ctx: T.RunContext, plan, grid, manifest: Manifest) -> list[Task]
             deps, copc = input_deps(c)
             task = Task(f"points/{c.name}", "points", T.points_task, (ctx, plan, c, _point_folder(plan)),
                         [d.id for d in deps], task_key("points", [params, c.buffer], copc, [d.key for d in deps]),
-                        params, chunk=c.name)
+                        params, chunk=c.name, inputs=inputs_of(c))
             points_of[(c.ix, c.iy)] = task
             tasks.append(task)
-    raster_tasks = _raster_tasks(ctx, plan, grid, points_of, input_deps)
+    raster_tasks = _raster_tasks(ctx, plan, grid, points_of, input_deps, inputs_of)
     tasks += raster_tasks
     tasks += _mosaic_tasks(ctx, plan, raster_tasks)
     return tasks
 
 
-def _raster_tasks(ctx, plan, grid, points_of, input_deps) -> list[Task]:
+def _raster_tasks(ctx, plan, grid, points_of, input_deps, inputs_of) -> list[Task]:
     if plan.dem is None and plan.density is None:
         return []
     params = {"dem": plan.params_of("dem"), "density": plan.params_of("density"),
@@ -107,7 +114,8 @@ def _raster_tasks(ctx, plan, grid, points_of, input_deps) -> list[Task]:
         else:
             deps, copc = input_deps(c)
         out.append(Task(f"rasters/{c.name}", "rasters", T.raster_task, (ctx, plan, c), [d.id for d in deps],
-                        task_key("rasters", params, copc, [d.key for d in deps]), params, chunk=c.name))
+                        task_key("rasters", params, copc, [d.key for d in deps]), params, chunk=c.name,
+                        inputs={} if points_of else inputs_of(c)))
     return out
 
 

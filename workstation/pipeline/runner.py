@@ -281,7 +281,8 @@ def _submit(client, t, futures, manifest, options):
 
 def _record(t, fut, futures, manifest, broken: set, run_id) -> dict:
     """The run.json record of a finished future; a task after a failed one is 'skipped'."""
-    base = {"phase": t.phase, "chunk": t.chunk, "key": t.key, "params": t.params, "deps": t.deps, "run_id": run_id,
+    base = {"phase": t.phase, "chunk": t.chunk, "key": t.key, "params": t.params, "inputs": t.inputs, "deps": t.deps,
+            "run_id": run_id,
             "finished": time.strftime("%Y-%m-%dT%H:%M:%S")}
     if fut.status == "finished":
         rec = {**base, "status": "done", **fut.result()}
