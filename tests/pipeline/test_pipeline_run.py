@@ -536,15 +536,22 @@ def test_killed_worker_gives_the_same_outputs(survey, baseline, cluster, tmp_pat
 
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_run_leaves_nothing_half_written_and_resumes(survey, baseline, cluster, tmp_path, sig, code):
-    """Ctrl-C (or SIGTERM) once the first chunk is written: exit 128 + n, no temporary file left,
+    """Ctrl-C (or SIGTERM) once the first task is done: exit 128 + n, no temporary file left,
     run.json keeps the finished tasks, and the next run does only the rest, with the same outputs."""
     out = tmp_path / "out"
     env = dict(os.environ, WS_PROGRESS="0")
     p = subprocess.Popen([str(WS), "run", str(survey / "project.toml"), "--out", str(out), "--scheduler",
                           cluster.address], stderr=subprocess.PIPE, text=True, env=env)
     t0 = time.monotonic()
-    while not laz_files(out) and p.poll() is None and time.monotonic() - t0 < 120:
-        time.sleep(0.05)
+    # as soon as the runner has recorded a first finished task (it saves run.json at once then)
+    def recorded():
+        try:
+            return '"status": "done"' in (out / "run.json").read_text()
+        except OSError:
+            return False
+
+    while not recorded() and p.poll() is None and time.monotonic() - t0 < 120:
+        time.sleep(0.02)
     p.send_signal(sig)
     _, err = p.communicate(timeout=60)
     if p.returncode == 0:
