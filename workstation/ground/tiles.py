@@ -155,8 +155,12 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
 
     from distributed import Client, LocalCluster, wait
 
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                      silence_logs=logging.CRITICAL) as cluster, Client(cluster) as client:
+    from workstation.core.signals import workers_starting
+
+    with workers_starting():
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.CRITICAL)
+    with cluster, Client(cluster) as client:
         running: dict = {}
         for core, sel in layout:
             if len(running) >= workers:

@@ -15,7 +15,6 @@ tasks that do not depend on it finish, and the run is marked incomplete.
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
 import time
 import uuid
@@ -24,6 +23,7 @@ from pathlib import Path
 
 from workstation.core.errors import InvalidInputError, WorkstationError
 from workstation.core.log import get_logger
+from workstation.core.signals import workers_starting
 
 from . import plan as P
 from .catalog import build_catalog
@@ -190,7 +190,7 @@ def _client(options: RunOptions, project):
     n = options.workers or project.dask.get("workers") or available_cores()
     if not (isinstance(n, int) and 1 <= n <= 512):
         raise InvalidInputError(f"workers {n!r} is not a number of processes", "use 1 or more", field="workers")
-    with _signals_deferred():  # a half-started cluster cannot be closed cleanly
+    with workers_starting():  # a half-started cluster cannot be closed cleanly
         # the cores a worker may use for LAZ (de)compression threads: its share of the machine
         share = str(max(1, available_cores() // n))
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
@@ -203,22 +203,6 @@ def _client(options: RunOptions, project):
             raise
     return client, cluster
 
-
-@contextlib.contextmanager
-def _signals_deferred():
-    """Hold Ctrl-C, SIGTERM and SIGHUP until the block ends (then they are delivered)."""
-    import signal
-    import threading
-
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    sigs = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
-    old = signal.pthread_sigmask(signal.SIG_BLOCK, sigs)
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
 def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_id: str) -> str | None:
