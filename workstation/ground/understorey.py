@@ -3,7 +3,7 @@
 Under trees, the last returns that a ground filter accepts include understorey, litter and
 low shrubs 0.1-0.5 m above the soil: a 0.5 m elevation test (SMRF's, CSF's) cannot tell them
 from the terrain, and a DTM through them lies 0.2-0.3 m high (measured on the forest tiles in
-``../shared/data/lidar``; docs/benchmarks.md, "Why the tiles miss"). Where the canopy is
+``../shared/data/lidar``). Where the canopy is
 open, the same test is right: the ground returns of rough terrain spread as much.
 
 The canopy is read from the echoes: the share of the pulses in a ``canopy_cell`` (their last

@@ -129,7 +129,8 @@ def index_file(path: Path, size: float, dest: Path, crs: str | None, chunk_point
     return counts
 
 
-def _in_box(x, y, box) -> np.ndarray:
+def in_box(x, y, box) -> np.ndarray:
+    """Which points lie in ``box`` (xmin, ymin, xmax, ymax), half-open like chunk cores."""
     return (x >= box[0]) & (x < box[2]) & (y >= box[1]) & (y < box[3])
 
 
@@ -143,7 +144,7 @@ def read_bins(folder: Path, names, box) -> Cloud | None:
         if not f.exists() or f.stat().st_size == 0:
             continue
         rec = np.memmap(f, dtype=dtype, mode="r")
-        keep = _in_box(rec["x"], rec["y"], box)
+        keep = in_box(rec["x"], rec["y"], box)
         if keep.any():
             parts.append(np.asarray(rec[keep]))
         del rec
@@ -171,7 +172,7 @@ def read_copc(path: Path, box) -> Cloud | None:
     except (laspy.errors.LaspyException, ValueError, OSError, EOFError) as e:
         raise InvalidInputError(f"COPC query failed: {e}", "the file is truncated or not valid COPC", path=path) from None
     cloud = Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
-    keep = _in_box(cloud.xyz[:, 0], cloud.xyz[:, 1], box)
+    keep = in_box(cloud.xyz[:, 0], cloud.xyz[:, 1], box)
     return cloud[keep] if keep.any() else None
 
 

@@ -233,7 +233,7 @@ def raster_source(ctx: RunContext, plan, chunk: Chunk):
         f = folder / f"{name}.bin"
         if f.exists() and f.stat().st_size:
             rec = np.memmap(f, dtype=RASTER_FIELDS, mode="r")
-            keep = chunkio._in_box(rec["x"], rec["y"], chunk.buffered)
+            keep = chunkio.in_box(rec["x"], rec["y"], chunk.buffered)
             parts.append(np.asarray(rec[keep]))
     if not parts:
         return None
