@@ -138,9 +138,15 @@ def read_bins(folder: Path, names, box) -> Cloud | None:
     """The points of the record files ``folder/<name>.bin`` inside ``box`` (xmin, ymin, xmax,
     ymax; half-open), as one cloud; None when there are none."""
     dtype, crs, meta = read_schema(folder)
+    rec = read_records([folder / f"{name}.bin" for name in names], dtype, box)
+    return None if rec is None else from_records(rec, crs, restore_meta(meta))
+
+
+def read_records(files, dtype: np.dtype, box) -> np.ndarray | None:
+    """The records of ``files`` (those that exist) inside ``box``, memory-mapped and filtered
+    one file at a time; None when there are none."""
     parts = []
-    for name in names:
-        f = folder / f"{name}.bin"
+    for f in files:
         if not f.exists() or f.stat().st_size == 0:
             continue
         rec = np.memmap(f, dtype=dtype, mode="r")
@@ -148,9 +154,7 @@ def read_bins(folder: Path, names, box) -> Cloud | None:
         if keep.any():
             parts.append(np.asarray(rec[keep]))
         del rec
-    if not parts:
-        return None
-    return from_records(np.concatenate(parts), crs, restore_meta(meta))
+    return np.concatenate(parts) if parts else None
 
 
 def read_copc(path: Path, box) -> Cloud | None:

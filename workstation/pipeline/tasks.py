@@ -226,18 +226,9 @@ def raster_source(ctx: RunContext, plan, chunk: Chunk):
     plan has point stages, else the inputs; None when there are none."""
     if not plan.point_stages:
         return read_input_chunk(ctx, chunk)
-    folder = ctx.cache / "points"
-    names = [f"{c.ix}_{c.iy}" for c in chunk.neighbours()]
-    parts = []
-    for name in names:
-        f = folder / f"{name}.bin"
-        if f.exists() and f.stat().st_size:
-            rec = np.memmap(f, dtype=RASTER_FIELDS, mode="r")
-            keep = chunkio.in_box(rec["x"], rec["y"], chunk.buffered)
-            parts.append(np.asarray(rec[keep]))
-    if not parts:
-        return None
-    return chunkio.from_records(np.concatenate(parts), ctx.crs)
+    files = [ctx.cache / "points" / f"{c.ix}_{c.iy}.bin" for c in chunk.neighbours()]
+    rec = chunkio.read_records(files, RASTER_FIELDS, chunk.buffered)
+    return None if rec is None else chunkio.from_records(rec, ctx.crs)
 
 
 def raster_task(ctx: RunContext, plan, chunk: Chunk, *upstream) -> dict:
