@@ -100,9 +100,9 @@ def _install_signal_handlers() -> None:
 
 
 def main(argv=None) -> int:
-    """Entry point with the error boundary: exit 0 ok, 1 user error, 2 usage error, 128 + n on
-    signal n (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP)."""
-    from workstation.core.errors import WorkstationError
+    """Entry point with the error boundary: exit 0 ok, 1 error (:mod:`workstation.cli.boundary`
+    words it), 2 usage error, 128 + n on signal n (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP)."""
+    from workstation.cli.boundary import report
 
     if argv is None:  # the console script (a test calling main(argv) keeps its own handlers)
         _install_signal_handlers()
@@ -121,28 +121,14 @@ def main(argv=None) -> int:
     except click.ClickException as e:
         e.show()
         return e.exit_code
-    except WorkstationError as e:
-        if verbose:
-            import traceback
-
-            traceback.print_exc()
-        click.echo(f"Error: {e.message}", err=True)
-        if e.hint:
-            click.echo(f"Hint: {e.hint}", err=True)
-        return 1
-    except (FileNotFoundError, PermissionError, IsADirectoryError) as e:
-        if verbose:
-            import traceback
-
-            traceback.print_exc()
-        click.echo(f"Error: {e.filename or ''}: {e.strerror or e}", err=True)
-        return 1
-    except Terminated as e:
+    except Terminated as e:  # raised outside click's own handler
         click.echo(f"Terminated by signal {e.signum}.", err=True)
         return 128 + e.signum
     except KeyboardInterrupt:
         click.echo("Interrupted.", err=True)
         return 130
+    except Exception as e:  # noqa: BLE001 - the boundary: every failure becomes a message
+        return report(e, verbose)
     return rc if isinstance(rc, int) else 0  # a command's click.exceptions.Exit(n) comes back as n
 
 

@@ -8,6 +8,9 @@ where (file, field, stage) and what to do (``hint``).
 
 from __future__ import annotations
 
+import contextlib
+from typing import Iterator
+
 
 class WorkstationError(Exception):
     """Base class of every deliberate error of the package.
@@ -73,3 +76,28 @@ class StageError(WorkstationError, RuntimeError):
 
 class NotFittedError(WorkstationError, ValueError, AttributeError):
     """A model was used before ``fit`` or ``load``."""
+
+
+@contextlib.contextmanager
+def doing(what: str) -> Iterator[None]:
+    """Label the work of the block (``"reading a.laz"``) on any exception escaping it.
+
+    The CLI's error boundary adds the innermost label to messages that would not name the
+    file otherwise (a library error, a full disk, text that is not UTF-8).
+
+    Examples
+    --------
+    >>> try:
+    ...     with doing("reading a.laz"):
+    ...         raise ValueError("bad")
+    ... except ValueError as e:
+    ...     e.ws_doing
+    'reading a.laz'
+    """
+    try:
+        yield
+    except Exception as exc:
+        if getattr(exc, "ws_doing", None) is None:
+            with contextlib.suppress(AttributeError, TypeError):
+                exc.ws_doing = what
+        raise
