@@ -134,7 +134,7 @@ def test_float_packed_rgb_in_ascii(tmp_path):
     # older writers print the float whose bits hold the colour
     packed = np.array([0x00FF8000], dtype=np.uint32).view(np.float32)[0]
     p = tmp_path / "f.pcd"
-    p.write_text(PCL_ASCII.replace("POINTS 3", "POINTS 1").split("0.5 1 2")[0] + f"0 0 0 {float(packed)!r} 1\n")
+    p.write_text(PCL_ASCII.replace("POINTS 3", "POINTS 1").replace("WIDTH 3", "WIDTH 1").split("0.5 1 2")[0] + f"0 0 0 {float(packed)!r} 1\n")
     np.testing.assert_array_equal(pcd.read(p).attrs["rgb"], [[65535, 128 * 257, 0]])
 
 

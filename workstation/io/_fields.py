@@ -7,6 +7,9 @@ fits the canonical dtype exactly, so no reader silently changes a value.
 
 from __future__ import annotations
 
+import codecs
+import re
+
 import numpy as np
 
 from workstation.core.cloud import Cloud
@@ -196,3 +199,60 @@ def number_format(dtype) -> str:
     if dt.kind == "f" and dt.itemsize <= 4:
         return "%.9g"
     return "%r"
+
+
+_NUMBER_BYTES = np.zeros(256, dtype=bool)
+_NUMBER_BYTES[list(b"0123456789+-.eEinfaINFA \t\r\n")] = True
+
+
+def looks_like_numbers(body) -> bool:
+    """True when the first 64 KB of a body hold only the characters of ascii numbers
+    (a binary body labelled so by mistake almost never does)."""
+    head = np.frombuffer(memoryview(body)[: 1 << 16], dtype=np.uint8)
+    return bool(head.size) and bool(_NUMBER_BYTES[head].all())
+
+
+_TEXT_CHARS = bytes(range(0x20, 0x7F)) + b"\t\n\r"
+
+
+def first_non_ascii(body: bytes) -> tuple[int, int] | None:
+    """(offset, value) of the first byte of ``body`` that is not printable ascii text
+    (tab, CR and LF allowed), else None. ``bytes.translate`` drops the text bytes in C, so
+    only the offending bytes are copied."""
+    rest = body.translate(None, _TEXT_CHARS)
+    if not rest:
+        return None
+    return body.find(rest[:1]), rest[0]
+
+
+def count_data_lines(body: bytes) -> int:
+    """Number of lines of ``body`` that hold more than whitespace (what ``np.loadtxt`` parses)."""
+    stripped = body.strip()
+    if not stripped:
+        return 0
+    blank = len(re.findall(rb"\n[ \t\r]*(?=\n)", stripped))
+    return stripped.count(b"\n") + 1 - blank
+
+
+def check_utf8(data: bytes, path) -> None:
+    """Raise :class:`InvalidInputError` naming the file, line and byte when ``data`` is not UTF-8.
+
+    Pure-ascii data is accepted at once (``bytes.isascii`` runs in C); other data is decoded
+    in 16 MB slices so that no second copy of a large file is held.
+    """
+    if data.isascii():
+        return
+    dec = codecs.getincrementaldecoder("utf-8")()
+    view = memoryview(data)
+    step = 1 << 24
+    for start in range(0, len(data), step):
+        pending = len(dec.getstate()[0])
+        try:
+            dec.decode(view[start : start + step], final=start + step >= len(data))
+        except UnicodeDecodeError as e:
+            at = start - pending + e.start
+            line = data.count(b"\n", 0, at) + 1
+            raise InvalidInputError(
+                f"is not UTF-8 text: byte 0x{data[at]:02x} at line {line} (offset {at:,}) is not valid UTF-8",
+                "save the file as UTF-8 (or plain ascii) text", path=path, field="encoding",
+            ) from None

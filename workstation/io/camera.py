@@ -44,6 +44,7 @@ from workstation.core.errors import InvalidInputError
 from workstation.core.jsonutil import dumps
 from workstation.core.products import Camera
 
+from ._fields import check_utf8
 from .atomic import atomic_path
 
 REQUIRED = ("model", "width", "height", "fx", "fy", "cx", "cy")
@@ -89,11 +90,12 @@ def camera_from_dict(d: dict, path=None) -> Camera:
             dist=tuple(dist),
             model=str(d["model"]),
         )
-    except (TypeError, ValueError):
-        raise InvalidInputError("non-numeric camera parameter", path=path) from None
+    except (TypeError, ValueError, OverflowError):
+        raise InvalidInputError("non-numeric or infinite camera parameter", "see workstation.io.camera for the schema",
+                                path=path) from None
     if cam.width <= 0 or cam.height <= 0 or not (cam.fx > 0 and cam.fy > 0):
         raise InvalidInputError("width, height, fx and fy must be positive", path=path)
-    if not all(np.isfinite([cam.cx, cam.cy, cam.skew, *cam.dist])):
+    if not all(np.isfinite([cam.fx, cam.fy, cam.cx, cam.cy, cam.skew, *cam.dist])):
         raise InvalidInputError("non-finite camera parameter", path=path)
     return cam
 
@@ -103,10 +105,15 @@ def read_camera(path) -> Camera:
     p = Path(path)
     if not p.is_file():
         raise InvalidInputError("camera file not found", path=p)
+    data = p.read_bytes()
+    check_utf8(data, p)
     try:
-        d = json.loads(p.read_text())
+        d = json.loads(data.decode("utf-8-sig"))
     except json.JSONDecodeError as e:
-        raise InvalidInputError(f"not valid JSON: {e.msg} at line {e.lineno}", path=p) from None
+        raise InvalidInputError(f"not valid JSON: {e.msg} at line {e.lineno}", "see workstation.io.camera for the schema",
+                                path=p) from None
+    except RecursionError:
+        raise InvalidInputError("JSON nested too deeply", "see workstation.io.camera for the schema", path=p) from None
     return camera_from_dict(d, path=p)
 
 

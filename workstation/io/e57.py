@@ -118,11 +118,23 @@ def _scale(v: np.ndarray, limits, name: str, path) -> np.ndarray:
     return np.round(np.clip((v - lo) / (hi - lo), 0.0, 1.0) * 65535.0).astype(np.uint16)
 
 
+def _check_count(n: int, index: int, path) -> None:
+    """Refuse a scan record count the file cannot hold (at least one bit per point) before
+    any buffer is allocated for it."""
+    size = Path(path).stat().st_size
+    if n < 0 or n > 8 * size:
+        raise InvalidInputError(
+            f"scan {index} declares {n:,} points, more than a file of {size:,} bytes can hold",
+            "the file is corrupt; get it again", path=path, field="points",
+        )
+
+
 def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
     header = e.get_header(index)
     node = header.node
     n = int(header.point_count)
     fields = list(header.point_fields)
+    _check_count(n, index, path)
     data = {}
     if n:
         buffers = libe57.VectorSourceDestBuffer()

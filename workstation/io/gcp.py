@@ -48,6 +48,8 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 
+from ._fields import check_utf8
+
 ROLES = ("control", "check")
 
 
@@ -85,9 +87,12 @@ def _num(row, key, path, lineno, required=False):
             raise InvalidInputError(f"line {lineno}: '{key}' is empty", path=path, field=key)
         return None
     try:
-        return float(v)
+        x = float(v)
     except ValueError:
         raise InvalidInputError(f"line {lineno}: '{key}' = {v!r} is not a number", path=path, field=key) from None
+    if not np.isfinite(x):
+        raise InvalidInputError(f"line {lineno}: '{key}' = {v!r} is not finite", "give a finite number", path=path, field=key)
+    return x
 
 
 def read_gcp(path) -> list[GCP]:
@@ -101,9 +106,19 @@ def read_gcp(path) -> list[GCP]:
     p = Path(path)
     if not p.is_file():
         raise InvalidInputError("GCP file not found", path=p)
-    lines = [ln for ln in p.read_text().splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    data = p.read_bytes()
+    check_utf8(data, p)
+    lines = [ln for ln in data.decode("utf-8-sig").splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
         raise InvalidInputError("empty GCP file", path=p)
+    try:
+        return _parse(lines, p)
+    except csv.Error as e:
+        raise InvalidInputError(f"not a readable CSV file: {e}", "see workstation.io.gcp for the format", path=p) from None
+
+
+def _parse(lines: list[str], p: Path) -> list[GCP]:
+    """The GCPs of the CSV ``lines`` (comments and blank lines removed) of file ``p``."""
     reader = csv.DictReader(lines)
     reader.fieldnames = [f.strip().lower() for f in (reader.fieldnames or [])]
     for k in ("name", "x", "y", "z"):

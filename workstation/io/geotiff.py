@@ -75,31 +75,57 @@ def read_raster(path, band: int | None = None, nan_nodata: bool = True) -> Raste
     p = Path(path)
     if not p.exists():
         raise InvalidInputError("file not found", "check the path", path=p)
+    if p.is_dir():
+        raise InvalidInputError("is a folder, not a raster file", "give a GeoTIFF", path=p)
+    if p.stat().st_size == 0:
+        raise InvalidInputError("file is empty (0 bytes)", "the file was not written completely; get it again", path=p)
     rasterio = _rasterio()
     try:
         src_ctx = rasterio.open(p)
-    except rasterio.errors.RasterioIOError as e:
-        raise InvalidInputError(f"not a readable raster ({e})", "give a GeoTIFF", path=p) from None
-    with src_ctx as src:
-        arr = src.read(band) if band is not None else src.read()
-        if arr.ndim == 3 and arr.shape[0] == 1:
-            arr = arr[0]
-        t = src.transform
-        crs = None
-        if src.crs is not None:
-            epsg = src.crs.to_epsg()
-            crs = f"EPSG:{epsg}" if epsg else src.crs.to_wkt()
-        if nan_nodata and src.nodata is not None and np.issubdtype(arr.dtype, np.floating):
-            arr = np.where(arr == np.asarray(src.nodata, arr.dtype), np.nan, arr)
-        meta = {}
-        tag = src.tags().get(META_TAG)
-        if tag:
-            try:
-                meta = json.loads(tag)
-            except json.JSONDecodeError:
-                log.warning("%s: unreadable %s tag ignored", p, META_TAG)
-        meta["source"] = str(p)
-        return Raster(arr, (t.a, t.b, t.c, t.d, t.e, t.f), crs, src.nodata, meta)
+    except Exception as e:  # noqa: BLE001 - GDAL reports unreadable files with several error types
+        raise InvalidInputError(f"not a readable raster ({e})",
+                                "give a complete GeoTIFF (the file may be truncated, corrupt or of another type)",
+                                path=p) from None
+    try:
+        with src_ctx as src:
+            return _read_open(src, p, band, nan_nodata)
+    except InvalidInputError as e:
+        if e.path is not None:
+            raise
+        raise InvalidInputError(e.message, e.hint, path=p, field=e.field) from None
+    except MemoryError:
+        raise InvalidInputError("raster too large to read into memory", "read a band or a window of it", path=p) from None
+    except Exception as e:  # noqa: BLE001 - GDAL raises on truncated or corrupt blocks while reading
+        raise InvalidInputError(f"cannot read the raster data ({type(e).__name__}: {e})",
+                                "the file is truncated or corrupt; get it again", path=p) from None
+
+
+def _read_open(src, p: Path, band: int | None, nan_nodata: bool) -> Raster:
+    """The :class:`Raster` of an open rasterio dataset (see :func:`read_raster`)."""
+    if band is not None and not (isinstance(band, (int, np.integer)) and 1 <= band <= src.count):
+        raise InvalidInputError(f"band {band!r} does not exist", f"the file has bands 1-{src.count}", path=p, field="band")
+    arr = src.read(band) if band is not None else src.read()
+    if arr.ndim == 3 and arr.shape[0] == 1:
+        arr = arr[0]
+    t = src.transform
+    crs = None
+    if src.crs is not None:
+        epsg = src.crs.to_epsg()
+        crs = f"EPSG:{epsg}" if epsg else src.crs.to_wkt()
+    if nan_nodata and src.nodata is not None and np.issubdtype(arr.dtype, np.floating):
+        arr = np.where(arr == np.asarray(src.nodata, arr.dtype), np.nan, arr)
+    meta = {}
+    tag = src.tags().get(META_TAG)
+    if tag:
+        try:
+            meta = json.loads(tag)
+        except (json.JSONDecodeError, RecursionError):
+            log.warning("%s: unreadable %s tag ignored", p, META_TAG)
+        if not isinstance(meta, dict):
+            log.warning("%s: %s tag is not a JSON object; ignored", p, META_TAG)
+            meta = {}
+    meta["source"] = str(p)
+    return Raster(arr, (t.a, t.b, t.c, t.d, t.e, t.f), crs, src.nodata, meta)
 
 
 def write_raster(

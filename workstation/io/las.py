@@ -12,6 +12,12 @@ Known upstream limitation: lazrs 0.8 corrupts wave-packet fields of LAZ point fo
 
 Writing chooses the point format and version from the attributes present unless told, or
 keeps the ones the cloud was read with when its attributes still fit.
+
+Reading refuses a bad header before laspy trusts it: an unknown point format, a zero or
+non-finite scale, a non-finite offset, or a point count that disagrees with the data (the
+bytes present for LAS; the LAZ chunk table, exact for point formats 6-10, whose chunks
+store their counts, and for variable-size chunks; for formats 0-5 with fixed-size chunks a
+count within the last chunk cannot be checked without decoding it).
 """
 
 from __future__ import annotations
@@ -102,8 +108,18 @@ def choose_point_format(attrs, legacy: bool = False) -> int:
     return 7 if "rgb" in attrs else 6
 
 
-def _version_for(fmt: int, wanted: str | None) -> str:
-    minimum = "1.4" if fmt >= 6 else ("1.3" if fmt in (4, 5) else ("1.2" if fmt in (2, 3) else "1.0"))
+def _version_for(fmt: int, wanted) -> str:
+    """The LAS version to write: ``wanted`` ("1.1"-"1.4"), raised to what ``fmt`` needs."""
+    minimum = "1.4" if fmt >= 6 else ("1.3" if fmt in (4, 5) else ("1.2" if fmt in (2, 3) else "1.1"))
+    if wanted is not None:
+        text = f"{wanted:.1f}" if isinstance(wanted, float) else str(wanted).strip()
+        if text not in _WRITE_VERSIONS:
+            raise InvalidInputError(
+                f"LAS version {text} cannot be written",
+                f"use one of {', '.join(_WRITE_VERSIONS)} (1.1 has the layout of 1.0 for point formats 0 and 1)",
+                field="version",
+            )
+        wanted = text
     if wanted is None:
         return "1.4" if fmt >= 6 else max(minimum, "1.2")
     if wanted < minimum:
@@ -116,17 +132,64 @@ def _version_for(fmt: int, wanted: str | None) -> str:
 
 
 def _wrap_open_error(path, exc) -> InvalidInputError:
-    text = str(exc)
+    text = str(exc) or type(exc).__name__
     if "signature" in text.lower() or "LASF" in text:
         return InvalidInputError(
             "not a LAS/LAZ file (the first 4 bytes are not 'LASF')", "check that the file is LAS or LAZ and not renamed", path=path
         )
+    if type(exc).__name__ == "FileVersionNotSupported":
+        return InvalidInputError(f"LAS version {text} is not supported", f"readable versions: {', '.join(_READ_VERSIONS)}",
+                                 path=path, field="version")
     return InvalidInputError(f"cannot read the LAS header: {text}", "the file may be truncated or corrupt", path=path)
 
 
+_HEADER_MIN = 227  # bytes of the LAS 1.0-1.2 public header, the fields every version has
+_READ_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4")
+_WRITE_VERSIONS = ("1.1", "1.2", "1.3", "1.4")
+
+
+def _check_raw_header(path: Path) -> None:
+    """Check the header fields laspy trusts blindly, from the raw bytes, before laspy opens the file.
+
+    The point data record format (byte 104, its two high bits are LAZ compression flags)
+    must be 0-10; the x/y/z scale factors (bytes 131-154) finite and non-zero and the
+    offsets (bytes 155-178) finite, else every coordinate would collapse or become NaN.
+    """
+    try:
+        with open(path, "rb") as f:
+            head = f.read(_HEADER_MIN)
+    except OSError as exc:
+        raise InvalidInputError(f"cannot open: {exc.strerror or exc}", "check the path and its permissions", path=path) from None
+    if head[:4] != b"LASF":
+        raise _wrap_open_error(path, ValueError("signature"))
+    if len(head) < _HEADER_MIN:
+        raise InvalidInputError(f"file of {len(head)} bytes is too small to hold a LAS header ({_HEADER_MIN}+ bytes)",
+                                "the file is truncated; get a complete copy", path=path, field="header")
+    if head[104] & 0x3F > 10:
+        raise InvalidInputError(f"point data record format {head[104] & 0x7F} is unknown (valid formats: 0-10)",
+                                "the header is corrupt or the file is not LAS/LAZ", path=path, field="point_format")
+    values = np.frombuffer(head, dtype="<f8", count=6, offset=131)
+    with np.errstate(over="ignore", invalid="ignore"):
+        reach = 2.0**31 * np.abs(values[:3]) + np.abs(values[3:])  # largest |coordinate| the fields allow
+    for kind, vals in (("scale", values[:3]), ("offset", values[3:])):
+        bad = ~np.isfinite(vals)
+        if kind == "scale":
+            bad |= (vals == 0) | (~np.isfinite(reach) & np.isfinite(values[3:]))
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            what = "all collapse to the offset" if vals[i] == 0 else "not be finite"
+            if np.isfinite(vals[i]) and vals[i] != 0:
+                what = "overflow to infinity"
+            raise InvalidInputError(
+                f"the {'xyz'[i]} {kind} is {float(vals[i])}; every {'xyz'[i]} coordinate would {what}",
+                "the header is corrupt; repair the scale/offset fields with a LAS tool", path=path, field=f"{'xyz'[i]}_{kind}",
+            )
+
+
 def _check_point_bytes(path: Path, header) -> None:
-    """For uncompressed LAS, compare the header's point count with the bytes present."""
+    """Compare the header's point count with the points present (bytes for LAS, the chunk table for LAZ)."""
     if header.are_points_compressed:
+        _check_laz_count(path, header)
         return
     size = path.stat().st_size
     rl = header.point_format.size
@@ -134,7 +197,14 @@ def _check_point_bytes(path: Path, header) -> None:
     if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0) and header.start_of_first_evlr:
         end = min(size, header.start_of_first_evlr)
     available = max(0, end - header.offset_to_point_data) // rl
-    n = header.point_count
+    _count_error(path, header.point_count, available, available)
+
+
+def _count_error(path: Path, n: int, lo: int, hi: int) -> None:
+    """Raise when the header count ``n`` is outside the ``lo..hi`` points the file holds."""
+    if lo <= n <= hi:
+        return
+    available = lo if n < lo else hi
     if available < n:
         raise InvalidInputError(
             f"header says {n:,} points but the file holds only {available:,} (truncated)",
@@ -149,6 +219,53 @@ def _check_point_bytes(path: Path, header) -> None:
             path=path,
             field="point_count",
         )
+
+
+def _laz_chunk_counts(path: Path, header):
+    """(chunk point counts, whether the last count is exact) from the LAZ chunk table, or None.
+
+    Variable-size chunk tables store every count. Fixed-size tables store the chunk size
+    only, but a layered chunk (point formats 6-10) starts with its first point stored raw
+    followed by the number of points in the chunk (u32), so its count is read there.
+    None when the file has no chunk table (a streaming writer); decoding then checks the count.
+    """
+    import lazrs
+
+    vlr = next((v for v in header.vlrs if v.user_id == "laszip encoded"), None)
+    if vlr is None:
+        return None
+    try:
+        laz_vlr = lazrs.LazVlr(vlr.record_data_bytes())
+        with open(path, "rb") as f:
+            f.seek(header.offset_to_point_data)
+            table = lazrs.read_chunk_table(f, laz_vlr)
+    except Exception:  # noqa: BLE001 - no (readable) chunk table
+        return None
+    counts = [int(c) for c, _ in table]
+    if laz_vlr.uses_variable_size_chunks() or not counts:
+        return counts, True
+    if header.point_format.id < 6:
+        return counts, False
+    start = header.offset_to_point_data + 8 + sum(int(b) for _, b in table[:-1])
+    with open(path, "rb") as f:
+        f.seek(start + header.point_format.size)
+        raw = f.read(4)
+    if len(raw) < 4:
+        return counts, False
+    counts[-1] = int.from_bytes(raw, "little")
+    return counts, True
+
+
+def _check_laz_count(path: Path, header) -> None:
+    """Compare the header's point count with the LAZ chunk table (exact for formats 6-10 and
+    variable-size chunks; within the last chunk's size for fixed-size chunks of formats 0-5)."""
+    found = _laz_chunk_counts(path, header)
+    if found is None:
+        return
+    counts, exact = found
+    total = sum(counts)
+    lo = total if exact else total - counts[-1] + 1
+    _count_error(path, int(header.point_count), lo, total)
 
 
 def _vlr_records(vlrs) -> list[dict]:
@@ -238,7 +355,8 @@ class _Filler:
             dt = DIMS[canon].dtype if canon in DIMS else np.dtype("f8")
             self.attrs[canon] = np.empty(n, dtype=dt)
             self.std.append((name, canon))
-        if "red" in set(pf.standard_dimension_names):
+        self.has_rgb = "red" in set(pf.standard_dimension_names)
+        if self.has_rgb:
             self.attrs["rgb"] = np.empty((n, 3), dtype=np.uint16)
         self.extra = []
         for d in pf.extra_dimensions:
@@ -247,7 +365,9 @@ class _Filler:
             shape = dt.shape
             base = np.dtype("f8") if scaled else (dt.base if shape else dt)
             key = d.name
-            if key in self.attrs:
+            if key in self.attrs or (key in DIMS and (DIMS[key].dtype, DIMS[key].shape) != (base, shape)):
+                # a standard name already read, or a canonical name whose table dtype/shape
+                # this extra-byte dimension does not have: keep it under a free name
                 key = f"extra_{d.name}"
             self.attrs[key] = np.empty((n, *shape), dtype=base)
             self.extra.append((d.name, key, scaled))
@@ -265,7 +385,7 @@ class _Filler:
                 np.multiply(arr["scan_angle"], SCAN_ANGLE_UNIT, out=out, casting="unsafe")
             else:
                 out[...] = rec[las_name]
-        if "rgb" in self.attrs:
+        if self.has_rgb:
             rgb = self.attrs["rgb"]
             rgb[start:end, 0] = arr["red"]
             rgb[start:end, 1] = arr["green"]
@@ -273,6 +393,16 @@ class _Filler:
         for las_name, key, scaled in self.extra:
             self.attrs[key][start:end] = rec[las_name] if scaled else arr[las_name]
         return end
+
+
+def _allocate(path: Path, header, n: int) -> _Filler:
+    """The output arrays for ``n`` points (a count already checked against the file)."""
+    try:
+        return _Filler(header, n)
+    except MemoryError:
+        raise InvalidInputError(f"not enough memory for the header's {n:,} points",
+                                "read the file in chunks (iter_chunks) or on a larger machine", path=path,
+                                field="point_count") from None
 
 
 @contextmanager
@@ -287,12 +417,12 @@ def _fill_pool():
 
 
 def _open(path):
+    """Open a LAS/LAZ reader; every header problem becomes an InvalidInputError naming the file."""
     laspy = _laspy()
+    _check_raw_header(path)
     try:
         return laspy.open(str(path))
-    except laspy.errors.LaspyException as exc:
-        raise _wrap_open_error(path, exc) from None
-    except (ValueError, OSError, EOFError) as exc:
+    except Exception as exc:  # noqa: BLE001 - laspy raises many types (KeyError, struct.error ...) on corrupt headers
         raise _wrap_open_error(path, exc) from None
 
 
@@ -340,7 +470,7 @@ def _range_records(reader, path, start: int, stop: int, chunk_size: int):
                 break
             got += len(rec)
             yield rec
-    except (ValueError, OSError, EOFError, RuntimeError) as exc:
+    except Exception as exc:  # noqa: BLE001 - laspy/lazrs raise many types on corrupt data
         raise InvalidInputError(f"point data unreadable near point {got:,}: {exc}",
                                 "the file is truncated or corrupt; get a complete copy", path=path) from None
     if got != stop:
@@ -371,7 +501,7 @@ def read(path, *, chunk_size: int | None = None) -> Cloud:
         n = int(header.point_count)
         if chunk_size is None:
             chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
-        filler = _Filler(header, n)
+        filler = _allocate(path, header, n)
         got = 0
         with _fill_pool() as pool:
             for rec in _records(reader, path, n, chunk_size):
@@ -511,6 +641,21 @@ def _extra_params(laspy, cloud: Cloud, native: set, las_meta: dict):
     return params
 
 
+def _drop_unstorable(cloud: Cloud, fmt: int, native: set) -> Cloud:
+    """The cloud without the standard LAS dimensions that point format ``fmt`` has no field for.
+
+    As PDAL's writers.las and laspy's ``convert`` do, a standard dimension (``rgb`` in point
+    format 1, ``nir`` in 7, ``gps_time`` in 0 ...) is left out with a warning rather than
+    stored as an extra-byte dimension that other programs would not recognise as colour.
+    """
+    lost = [a for a in cloud.attrs if a in DIMS and DIMS[a].las and a not in native]
+    if not lost:
+        return cloud
+    log.warning("LAS point format %d has no field for %s; not written (choose a point format that holds them "
+                "to keep them)", fmt, ", ".join(lost))
+    return cloud.without_attrs(*lost)
+
+
 def _resolve_format(cloud: Cloud, las_meta: dict, point_format, version):
     attrs = set(cloud.attrs)
     known_std = {a for a in attrs if a in DIMS and DIMS[a].las}
@@ -521,9 +666,9 @@ def _resolve_format(cloud: Cloud, las_meta: dict, point_format, version):
         else:
             legacy = old is not None and old < 6
             point_format = choose_point_format(known_std, legacy=legacy)
+    if not isinstance(point_format, (int, np.integer)) or not 0 <= point_format <= 10:
+        raise InvalidInputError(f"LAS point format {point_format!r} does not exist", "use 0-10", field="point_format")
     point_format = int(point_format)
-    if not 0 <= point_format <= 10:
-        raise InvalidInputError(f"LAS point format {point_format} does not exist (0-10)", field="point_format")
     if version is None:
         version = las_meta.get("version")
     return point_format, _version_for(point_format, version)
@@ -546,9 +691,12 @@ def write(
     ----------
     point_format : int, optional
         0-10; default: the format the cloud was read with when its attributes fit, else the
-        smallest LAS 1.4 format holding them (:func:`choose_point_format`).
+        smallest LAS 1.4 format holding them (:func:`choose_point_format`). Standard
+        attributes the given format has no field for (``rgb`` in format 1) are left out with
+        a warning, as PDAL and laspy do.
     version : str, optional
-        "1.0"-"1.4"; raised to what the point format needs.
+        "1.1"-"1.4" (laspy cannot write 1.0; 1.1 has its layout); raised to what the point
+        format needs.
     scales, offsets : (3,) floats, optional
         Coordinate quantisation; default: those read, else 0.001 (1e-7 for geographic CRSs)
         and offsets rounded down to 1000 units.
@@ -570,6 +718,7 @@ def write(
     header.scales = scales
     header.offsets = offsets
     native = _format_attrs(fmt)
+    cloud = _drop_unstorable(cloud, fmt, native)
     extras = _extra_params(laspy, cloud, native, las_meta)
     if extras:
         header.add_extra_dims([p for _, _, p in extras])

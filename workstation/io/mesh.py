@@ -179,11 +179,28 @@ def read_mesh(path) -> Mesh:
     check_mesh_extension(p)
     if not p.exists():
         raise InvalidInputError("file not found", "check the path", path=p)
+    if p.is_dir():
+        raise InvalidInputError("is a folder, not a mesh file", path=p)
+    if p.stat().st_size == 0:
+        raise InvalidInputError("file is empty (0 bytes)", "the file was not written completely; get it again", path=p)
     trimesh = _trimesh()
     try:
         loaded = trimesh.load(p, process=False, maintain_order=True)
     except Exception as e:  # trimesh raises many types on malformed files
         raise InvalidInputError(f"cannot read mesh: {e}", "check the file is a complete mesh", path=p) from e
+    try:
+        return _mesh_from_loaded(trimesh, loaded, p)
+    except InvalidInputError as e:
+        if e.path is not None:
+            raise
+        raise InvalidInputError(e.message, e.hint or "check the file is a complete mesh", path=p, field=e.field) from None
+    except Exception as e:  # noqa: BLE001 - trimesh computes colours lazily and fails there on bad indices
+        raise InvalidInputError(f"cannot read mesh: {type(e).__name__}: {e}", "check the file is a complete mesh",
+                                path=p) from None
+
+
+def _mesh_from_loaded(trimesh, loaded, p: Path) -> Mesh:
+    """The :class:`Mesh` of what ``trimesh.load`` returned for file ``p`` (scenes flattened)."""
     if isinstance(loaded, trimesh.Scene):
         geoms = [g for g in loaded.dump() if isinstance(g, trimesh.Trimesh)] if hasattr(loaded, "dump") else []
         if not geoms:

@@ -40,10 +40,13 @@ from workstation.core.log import get_logger
 from ._fields import (
     build_cloud,
     crs_from_comment,
+    count_data_lines,
     crs_line,
+    first_non_ascii,
     fits_exactly,
     format_rows,
     loadtxt_error_line,
+    looks_like_numbers,
     mapped_attr,
     number_format,
     rgb_to_u16,
@@ -57,6 +60,7 @@ _TYPE = {("I", 1): "i1", ("I", 2): "i2", ("I", 4): "i4", ("I", 8): "i8",
          ("F", 4): "f4", ("F", 8): "f8"}  # fmt: skip
 _KEYS = ("VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA")
 _NORMALS = ("normal_x", "normal_y", "normal_z")
+_LZF_MAX_RATIO = 88  # an LZF back reference of 3 bytes yields at most 264 bytes
 
 
 def lzf_decompress(src: bytes, out_len: int) -> bytes:
@@ -167,29 +171,64 @@ def _layout(h: dict, path: Path):
     for name, s, t, c in zip(names, sizes, types, counts):
         try:
             code = _TYPE[(t.upper(), int(s))]
-            count = int(c)
         except (KeyError, ValueError):
             raise InvalidInputError(f"unsupported TYPE {t} SIZE {s}", "PCD types are I/U 1,2,4,8 and F 4,8", path=path, field=name) from None
+        count = _header_int(c, path, "COUNT")
+        if count < 1 or (name in ("x", "y", "z") and count != 1):
+            raise InvalidInputError(f"COUNT {count} for field '{name}'", "COUNT is 1 or more (exactly 1 for x, y, z)",
+                                    path=path, field="COUNT")
         out.append((name, code, count))
+    width = _header_int((h.get("WIDTH") or ["0"])[0], path, "WIDTH")
+    height = _header_int((h.get("HEIGHT") or ["1"])[0], path, "HEIGHT")
+    points = _header_int(h["POINTS"][0], path, "POINTS") if h.get("POINTS") else width * height
+    if h.get("WIDTH") and width * height != points:
+        raise InvalidInputError(
+            f"WIDTH {width:,} x HEIGHT {height:,} is not POINTS {points:,}",
+            "PCL requires WIDTH x HEIGHT = POINTS (HEIGHT 1 for an unorganised cloud); repair the header",
+            path=path, field="WIDTH",
+        )
     try:
-        width = int(h.get("WIDTH", ["0"])[0])
-        height = int(h.get("HEIGHT", ["1"])[0])
-        points = int(h["POINTS"][0]) if "POINTS" in h else width * height
         viewpoint = [float(v) for v in h.get("VIEWPOINT", ["0", "0", "0", "1", "0", "0", "0"])]
-    except (ValueError, IndexError) as e:
-        raise InvalidInputError(f"bad WIDTH/HEIGHT/POINTS/VIEWPOINT ({e})", path=path, field="POINTS") from None
+    except ValueError as e:
+        raise InvalidInputError(f"bad VIEWPOINT ({e})", "VIEWPOINT is tx ty tz qw qx qy qz", path=path, field="VIEWPOINT") from None
     return out, width, height, points, viewpoint
+
+
+def _header_int(text: str, path: Path, key: str) -> int:
+    """A non-negative decimal integer of the header (``key`` names it in the error)."""
+    if not text.isascii() or not text.isdigit():
+        raise InvalidInputError(f"{key} is {text[:20]!r}, not a non-negative integer", "repair the header",
+                                path=path, field=key)
+    return int(text)
 
 
 def _dtype(layout) -> np.dtype:
     return np.dtype([(name if name != "_" else f"_pad{i}", "<" + code, (count,) if count > 1 else ()) for i, (name, code, count) in enumerate(layout)])
 
 
+def _check_ascii_body(path, body: bytes, points: int) -> None:
+    """An ascii body must be text with exactly ``points`` non-empty lines (checked before parsing)."""
+    bad = first_non_ascii(body)
+    if bad is not None:
+        raise InvalidInputError(
+            f"DATA ascii but the body is not ascii text (byte 0x{bad[1]:02x} at body offset {bad[0]:,})",
+            "the file is binary (fix the DATA line) or corrupt", path=path, field="DATA",
+        )
+    lines = count_data_lines(body)
+    if lines != points:
+        raise InvalidInputError(
+            f"POINTS says {points:,} but the body holds {'only ' if lines < points else ''}{lines:,} lines",
+            "the file is truncated or POINTS is wrong" if lines < points else "POINTS is wrong; fix it to match the data",
+            path=path, field="POINTS",
+        )
+
+
 def _read_ascii(path, body: bytes, layout, points: int, first_line: int) -> dict[str, np.ndarray]:
     total = sum(c for _, _, c in layout)
+    _check_ascii_body(path, body, points)
     try:
         arr = np.loadtxt(io.BytesIO(body), dtype=np.float64, ndmin=2, max_rows=points, comments=None)
-    except ValueError as e:
+    except (ValueError, OverflowError) as e:
         line = loadtxt_error_line(str(e), first_line)
         raise InvalidInputError(
             f"cannot parse{f' line {line}' if line else ''}: {e}", f"each point line needs {total} numbers",
@@ -226,10 +265,17 @@ def _read_ascii(path, body: bytes, layout, points: int, first_line: int) -> dict
 def _read_binary(path, data: bytes, layout, points: int) -> dict[str, np.ndarray]:
     dt = _dtype(layout)
     need = points * dt.itemsize
+    if len(data) != need and looks_like_numbers(data):
+        raise InvalidInputError("DATA binary but the body is ascii text", "fix the DATA line (DATA ascii)", path=path, field="DATA")
     if len(data) < need:
         raise InvalidInputError(
             f"POINTS says {points} ({need} bytes) but the body holds only {len(data) // max(dt.itemsize, 1)} points",
             "the file is truncated or POINTS is wrong", path=path, field="POINTS",
+        )
+    if len(data) - need >= dt.itemsize:
+        raise InvalidInputError(
+            f"POINTS says {points:,} but the body holds {len(data) // dt.itemsize:,} points",
+            "POINTS is wrong; fix it to match the data", path=path, field="POINTS",
         )
     rec = np.frombuffer(data, dtype=dt, count=points)
     return {name: rec[name] for name, _, _ in layout if name != "_"}
@@ -247,6 +293,11 @@ def _read_compressed(path, data: bytes, layout, points: int) -> dict[str, np.nda
         )
     if len(data) - 8 < csize:
         raise InvalidInputError("binary_compressed body is truncated", "get the file again", path=path, field="DATA")
+    if usize > _LZF_MAX_RATIO * csize:
+        raise InvalidInputError(
+            f"{csize:,} compressed bytes cannot hold {usize:,} bytes of points (LZF expands at most {_LZF_MAX_RATIO}x)",
+            "POINTS or the compressed size is wrong; the file is corrupt", path=path, field="POINTS",
+        )
     try:
         raw = lzf_decompress(data[8 : 8 + csize], usize)
     except ValueError as e:
@@ -295,7 +346,7 @@ def read(path) -> Cloud:
     with open(path, "rb") as f:
         f.seek(body_off)
         data = f.read()
-    if points == 0:
+    if points == 0 and (mode != "ascii" or not data.strip()) and (mode != "binary" or len(data) < _dtype(layout).itemsize):
         cols = {n: np.empty((0, c) if c > 1 else 0, dtype=code) for n, code, c in layout}
     elif mode == "ascii":
         cols = _read_ascii(path, data, layout, points, nlines + 1)

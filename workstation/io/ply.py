@@ -45,8 +45,10 @@ from ._fields import (
     build_cloud,
     crs_from_comment,
     crs_line,
+    first_non_ascii,
     fits_exactly,
     loadtxt_error_line,
+    looks_like_numbers,
     format_rows,
     mapped_attr,
     number_format,
@@ -149,6 +151,8 @@ def _read_header(path: Path) -> _Header:
                 if tok[1] == "list":
                     prop = _Property(tok[4], tok[3], tok[2])
                     bad = [t for t in (tok[2], tok[3]) if t not in PLY_TYPES]
+                    if not bad and PLY_TYPES[tok[2]][0] == "f":
+                        raise ValueError(f"list length type {tok[2]} is not an integer type")
                 else:
                     prop = _Property(tok[2], tok[1])
                     bad = [tok[1]] if tok[1] not in PLY_TYPES else []
@@ -189,10 +193,33 @@ def _vertex(header: _Header, path: Path) -> tuple[int, _Element]:
     raise InvalidInputError("no 'vertex' element in the PLY header", "the file has no points", path=path, field="vertex")
 
 
+def _truncated(el: _Element, path: Path, have: int | None = None) -> InvalidInputError:
+    what = "vertices" if el.name == "vertex" else f"'{el.name}' elements"
+    holds = "ends before all of them" if have is None else f"holds only {have:,}"
+    return InvalidInputError(
+        f"header declares {el.count:,} {what} but the body {holds}",
+        "the file is truncated or its element count is wrong; get the file again", path=path, field=el.name,
+    )
+
+
+def _min_size(el: _Element) -> int:
+    """Fewest bytes one binary instance of ``el`` takes (its size when it has no lists)."""
+    return sum(np.dtype(PLY_TYPES[p.count_type or p.type]).itemsize for p in el.props)
+
+
 def _skip_binary_element(el: _Element, buf: np.ndarray, pos: int, endian: str, path: Path) -> int:
-    """Byte offset after ``el`` starting at ``pos`` (lists skipped; uniform lists vectorised)."""
+    """Byte offset after ``el`` starting at ``pos`` (lists skipped; uniform lists vectorised).
+
+    The count is checked against the bytes left before any walk, so a corrupt count fails
+    at once instead of looping over billions of instances.
+    """
+    smallest = _min_size(el)
     if not el.has_lists:
-        return pos + el.count * el.dtype(endian).itemsize
+        if pos + el.count * smallest > buf.size:
+            raise _truncated(el, path, max(buf.size - pos, 0) // max(smallest, 1))
+        return pos + el.count * smallest
+    if el.count * smallest > buf.size - pos:
+        raise _truncated(el, path)
     if el.count == 0:
         return pos
     # Fast path: one list property whose every instance has the same count (triangles).
@@ -200,75 +227,119 @@ def _skip_binary_element(el: _Element, buf: np.ndarray, pos: int, endian: str, p
         p = el.props[0]
         cdt = np.dtype(endian + PLY_TYPES[p.count_type])
         idt = np.dtype(endian + PLY_TYPES[p.type])
-        if pos + cdt.itemsize <= buf.size:
-            k = int(buf[pos : pos + cdt.itemsize].view(cdt)[0])
-            stride = cdt.itemsize + k * idt.itemsize
-            end = pos + el.count * stride
-            if end <= buf.size:
-                counts = np.ndarray((el.count,), dtype=cdt, buffer=buf, offset=pos, strides=(stride,))
-                if np.all(counts == k):
-                    return end
+        k = int(buf[pos : pos + cdt.itemsize].view(cdt)[0])
+        stride = cdt.itemsize + max(k, 0) * idt.itemsize
+        end = pos + el.count * stride
+        if k >= 0 and end <= buf.size:
+            counts = np.ndarray((el.count,), dtype=cdt, buffer=buf, offset=pos, strides=(stride,))
+            if np.all(counts == k):
+                return end
     # General case: walk the instances (elements other than points, which are few or rare).
     for _ in range(el.count):
         for p in el.props:
             if p.count_type is None:
                 pos += np.dtype(PLY_TYPES[p.type]).itemsize
-            else:
-                cdt = np.dtype(endian + PLY_TYPES[p.count_type])
-                if pos + cdt.itemsize > buf.size:
-                    raise InvalidInputError(f"element '{el.name}' is truncated", path=path, field=el.name)
-                k = int(buf[pos : pos + cdt.itemsize].view(cdt)[0])
-                pos += cdt.itemsize + k * np.dtype(PLY_TYPES[p.type]).itemsize
+                continue
+            cdt = np.dtype(endian + PLY_TYPES[p.count_type])
+            if pos + cdt.itemsize > buf.size:
+                raise _truncated(el, path)
+            k = int(buf[pos : pos + cdt.itemsize].view(cdt)[0])
+            if k < 0:
+                raise InvalidInputError(f"negative list length {k} in element '{el.name}'", "the file is corrupt",
+                                        path=path, field=p.name)
+            pos += cdt.itemsize + k * np.dtype(PLY_TYPES[p.type]).itemsize
+    if pos > buf.size:
+        raise _truncated(el, path)
     return pos
+
+
+def _body(path: Path, offset: int) -> np.ndarray:
+    """The bytes after the header as a read-only memory map (no copy; empty when there are none)."""
+    if path.stat().st_size <= offset:
+        return np.zeros(0, dtype=np.uint8)
+    return np.memmap(path, dtype=np.uint8, mode="r", offset=offset)
+
+
+def _element_offsets(header: _Header, buf: np.ndarray, endian: str, path: Path) -> list[int]:
+    """Start offset of every element in the body, then the end of the last one."""
+    offsets = [0]
+    for el in header.elements:
+        offsets.append(_skip_binary_element(el, buf, offsets[-1], endian, path))
+    return offsets
 
 
 def _read_binary(path: Path, header: _Header, vi: int, vel: _Element) -> np.ndarray:
+    """The vertex records of a binary body, after checking that the elements fill it exactly."""
     endian = _FORMATS[header.format]
     dt = vel.dtype(endian)
-    size = path.stat().st_size
-    offset = header.body_offset
-    if any(el.has_lists for el in header.elements[:vi]):
-        buf = np.fromfile(path, dtype=np.uint8)[offset:]
-        offset += _skip_binary_element_chain(header.elements[:vi], buf, endian, path)
-    else:
-        offset += sum(el.count * el.dtype(endian).itemsize for el in header.elements[:vi])
-    need = vel.count * dt.itemsize
-    have = max(size - offset, 0)
-    if have < need:
+    buf = _body(path, header.body_offset)
+    text = looks_like_numbers(buf)
+    try:
+        offsets = _element_offsets(header, buf, endian, path)
+    except InvalidInputError:
+        if text:
+            raise _mismatch(path, header.format) from None
+        raise
+    extra = buf.size - offsets[-1]
+    if extra and text:
+        raise _mismatch(path, header.format)
+    last = header.elements[-1]
+    if extra >= max(_min_size(last), 1):
         raise InvalidInputError(
-            f"header declares {vel.count} vertices ({need} bytes) but the body holds only {have // max(dt.itemsize, 1)}",
-            "the file is truncated or its vertex count is wrong; get the file again",
-            path=path, field="vertex",
+            f"the body holds {extra:,} bytes more than the header's elements "
+            f"({', '.join(f'{e.count:,} {e.name}' for e in header.elements)})",
+            "the element counts in the header are wrong; fix them to match the data", path=path, field=last.name,
         )
-    if vi == len(header.elements) - 1 and have > need:
-        log.warning("%s: %d bytes after the last vertex are ignored", path, have - need)
-    arr = np.fromfile(path, dtype=dt, count=vel.count, offset=offset)
-    return arr.astype(dt.newbyteorder("=")) if endian == ">" else arr
+    if extra:
+        log.warning("%s: %d bytes after the last element are ignored", path, extra)
+    start = offsets[vi]
+    arr = np.frombuffer(buf, dtype=dt, count=vel.count, offset=start) if vel.count else np.zeros(0, dtype=dt)
+    return arr.astype(dt.newbyteorder("="))
 
 
-def _skip_binary_element_chain(elements, buf, endian, path) -> int:
-    pos = 0
-    for el in elements:
-        pos = _skip_binary_element(el, buf, pos, endian, path)
-    return pos
+def _mismatch(path: Path, fmt: str) -> InvalidInputError:
+    return InvalidInputError(
+        f"the header says format {fmt} but the body is ascii text",
+        "fix the 'format' line of the header (format ascii 1.0)", path=path, field="format",
+    )
+
+
+def _not_text(path: Path, body: bytes) -> InvalidInputError | None:
+    """An error when an ascii body holds bytes that are not printable ascii, else None."""
+    bad = first_non_ascii(body)
+    if bad is None:
+        return None
+    return InvalidInputError(
+        f"the header says format ascii but the body is not ascii text (byte 0x{bad[1]:02x} at body offset {bad[0]:,})",
+        "the file is binary (fix the 'format' line) or corrupt", path=path, field="format",
+    )
 
 
 def _read_ascii(path: Path, header: _Header, vi: int, vel: _Element) -> np.ndarray:
     with open(path, "rb") as f:
         f.seek(header.body_offset)
         body = f.read()
+    err = _not_text(path, body)
+    if err is not None:
+        raise err
     skip = sum(el.count for el in header.elements[:vi])
     # Coordinates are parsed as double whatever their declared type, keeping the text values.
     dt = np.dtype([(p.name, "f8" if p.name in ("x", "y", "z") else PLY_TYPES[p.type]) for p in vel.props])
     stripped = body.rstrip()
     n_lines = stripped.count(b"\n") + 1 if stripped else 0
     declared = sum(el.count for el in header.elements)
+    if skip + vel.count > n_lines:
+        raise InvalidInputError(
+            f"header declares {vel.count:,} vertices but the body holds only {max(n_lines - skip, 0):,} lines for them",
+            "the file is truncated or its vertex count is wrong; get the file again",
+            path=path, field="vertex",
+        )
     try:
         if vel.count == 0:  # an empty cloud (loadtxt would warn that there is no data)
             arr = np.zeros(0, dtype=dt)
         else:
             arr = np.loadtxt(io.BytesIO(body), dtype=dt, skiprows=skip, max_rows=vel.count, ndmin=1, comments=None)
-    except ValueError as e:
+    except (ValueError, OverflowError) as e:
         msg = str(e)
         line = loadtxt_error_line(msg, header.n_lines + skip + 1)
         where = f" (line {line})" if line else ""

@@ -8,11 +8,12 @@ overwrite checks are done here), and optionally ``iter_chunks(path, chunk_size, 
 from __future__ import annotations
 
 import importlib
+import inspect
 from pathlib import Path
 from typing import Iterator
 
 from workstation.core.cloud import Cloud
-from workstation.core.errors import InvalidInputError, UnsupportedFormatError
+from workstation.core.errors import InvalidInputError, UnsupportedFormatError, WorkstationError
 
 from .atomic import atomic_path
 
@@ -68,8 +69,31 @@ def read_cloud(path, **opts) -> Cloud:
         Format options (``columns="x,y,z,label"`` for text files, ``scans=[0]`` for E57, ...).
     """
     p = _check_readable(path)
-    cloud = _module(p).read(p, **opts)
+    cloud = _guarded(p, _module(p).read, p, **opts)
     return cloud.with_meta(source=str(p), format=format_of(p)[0]) if "format" not in cloud.meta else cloud.with_meta(source=str(p))
+
+
+def _reader_error(path: Path, exc: Exception) -> InvalidInputError:
+    """The last safety net: an unexpected exception of a format reader, naming the file."""
+    name = format_of(path)[0].upper()
+    reason = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+    return InvalidInputError(f"cannot read as {name}: {reason}", "the file may be corrupt, truncated or not "
+                             f"{name}; run with -v for the traceback", path=path)
+
+
+def _guarded(path: Path, func, *args, **opts):
+    """``func(*args, **opts)`` with any exception that is not one of ours wrapped by :func:`_reader_error`.
+
+    Options a reader does not take still raise ``TypeError`` (a caller's mistake, not the file's).
+    """
+    if func is not next:
+        inspect.signature(func).bind(*args, **opts)
+    try:
+        return func(*args, **opts)
+    except WorkstationError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - a reader bug or a library error on a malformed file
+        raise _reader_error(path, exc) from exc
 
 
 def write_cloud(cloud: Cloud, path, *, overwrite: bool = False, inputs=(), **opts) -> Path:
@@ -85,8 +109,12 @@ def iter_chunks(path, chunk_size: int = 1_000_000, **opts) -> Iterator[Cloud]:
     p = _check_readable(path)
     mod = _module(p)
     if hasattr(mod, "iter_chunks"):
-        yield from mod.iter_chunks(p, chunk_size, **opts)
-        return
-    cloud = mod.read(p, **opts)
+        chunks = _guarded(p, mod.iter_chunks, p, chunk_size, **opts)
+        while True:
+            chunk = _guarded(p, next, chunks, None)
+            if chunk is None:
+                return
+            yield chunk
+    cloud = _guarded(p, mod.read, p, **opts)
     for start in range(0, max(cloud.n, 1), chunk_size):
         yield cloud[start : start + chunk_size]

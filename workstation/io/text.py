@@ -47,7 +47,7 @@ from workstation.core.dims import canonical_name
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 
-from ._fields import SCALAR_DIMS, build_cloud, format_rows, loadtxt_error_line, mapped_attr, number_format
+from ._fields import SCALAR_DIMS, build_cloud, check_utf8, format_rows, loadtxt_error_line, mapped_attr, number_format
 
 log = get_logger(__name__)
 
@@ -178,6 +178,7 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
     data = path.read_bytes()
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]
+    check_utf8(data, path)
     head = data[:_SNIFF_BYTES].decode("utf-8", errors="replace")
     first, header, delim, ncols, pts_count = _sniff(head, path, delimiter)
     if columns is not None:

@@ -32,6 +32,8 @@ from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 from workstation.core.products import Mesh
 
+from workstation.io.textfile import read_text
+
 from . import shapes as S
 from .materials import MATERIAL_ID as M
 from .materials import MATERIALS, Material
@@ -192,7 +194,7 @@ def load_recipe(path_or_name: str | Path) -> SceneRecipe:
     if not p.exists():
         raise InvalidInputError("recipe not found", f"give a TOML path or one of {recipe_names()}", path=p)
     try:
-        data = tomllib.loads(p.read_text())
+        data = tomllib.loads(read_text(p))
     except tomllib.TOMLDecodeError as e:
         raise InvalidInputError(f"not valid TOML: {e}", path=p) from None
     if "scene" not in data:

@@ -18,6 +18,8 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 
+from workstation.io.textfile import read_text
+
 from .georef import GeorefChain
 from .platforms import FlightSpec, Oscillation, Station, Trajectory, VehicleSpec, flight_lines, station_trajectory, vehicle_path
 from .scanners import ScanPattern
@@ -113,7 +115,7 @@ def survey_from_toml(path, kind: str | None = None) -> tuple[SurveyConfig, dict]
     if not p.exists():
         raise InvalidInputError("config file not found", path=p)
     try:
-        data = tomllib.loads(p.read_text())
+        data = tomllib.loads(read_text(p))
     except tomllib.TOMLDecodeError as e:
         raise InvalidInputError(f"not valid TOML: {e}", path=p) from None
     top = dict(data.get("survey", {}))

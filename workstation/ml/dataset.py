@@ -38,6 +38,7 @@ from workstation.core.classes import ASPRSClass as C
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
+from workstation.io.textfile import read_text
 
 log = get_logger(__name__)
 
@@ -146,7 +147,7 @@ def load_dataset_recipe(path) -> DatasetRecipe:
     if not p.exists():
         raise InvalidInputError("recipe not found", "give a TOML file such as datasets_synth/ml_train.toml", path=p)
     try:
-        data = tomllib.loads(p.read_text())
+        data = tomllib.loads(read_text(p))
     except tomllib.TOMLDecodeError as e:
         raise InvalidInputError(f"not valid TOML: {e}", path=p) from None
     ds = dict(data.get("dataset", {}))

@@ -33,6 +33,7 @@ import numpy as np
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Image, Pose, Reconstruction
+from workstation.io.textfile import read_text
 
 log = get_logger(__name__)
 
@@ -147,7 +148,7 @@ def load_rig(path) -> tuple:
         p = Path(__file__).resolve().parents[2] / "datasets_synth" / f"{path}.toml"
     if not p.exists():
         raise InvalidInputError("rig recipe not found", "give a TOML path or a datasets_synth/rig_*.toml name", path=path)
-    data = tomllib.loads(p.read_text())
+    data = tomllib.loads(read_text(p))
     names = {f.name for f in fields(RigSpec)}
     kw = {}
     for k, v in data.get("rig", {}).items():

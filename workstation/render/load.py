@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError
 from workstation.core.products import Mesh
 
 MESH_ONLY = (".obj", ".glb", ".gltf", ".off")
@@ -17,6 +18,9 @@ def ply_face_count(path) -> int:
     for line in head.splitlines():
         parts = line.split()
         if len(parts) == 3 and parts[0] == "element" and parts[1] == "face":
+            if not parts[2].isdigit():
+                raise InvalidInputError(f"PLY header: face count {parts[2]!r} is not a whole number",
+                                        "the file is damaged; re-export it", path=path, field="element face")
             return int(parts[2])
     return 0
 
