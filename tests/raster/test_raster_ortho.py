@@ -119,16 +119,23 @@ def test_occlusion_matches_exact_ray_casting(dataset):
 
 
 def test_cameras_json_round_trip(tmp_path, dataset):
+    from workstation.core.errors import InvalidInputError
     from workstation.raster.ortho import write_reconstruction_json
+
+    from workstation.io.paths import ALLOW_OUTSIDE
 
     rec, _ = dataset
     p = write_reconstruction_json(rec, tmp_path / "cams.json")
-    back = read_reconstruction(p)
+    with pytest.raises(InvalidInputError, match="leads outside"):  # its images are in another folder
+        read_reconstruction(p)
+    token = ALLOW_OUTSIDE.set(True)  # as --allow-outside does
+    try:
+        back = read_reconstruction(p)
+    finally:
+        ALLOW_OUTSIDE.reset(token)
     assert back.cameras[1] == rec.cameras[1]
     k = next(iter(rec.images))
     np.testing.assert_allclose(back.images[k].pose.R, rec.images[k].pose.R)
-    from workstation.core.errors import InvalidInputError
-
     (tmp_path / "bad.json").write_text("{}")
     with pytest.raises(InvalidInputError):
         read_reconstruction(tmp_path / "bad.json")

@@ -9,9 +9,11 @@ traceback is printed only with ``-v``. :func:`explain` is the classification; th
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import sys
 from dataclasses import dataclass
+from pathlib import Path
 
 import click
 
@@ -64,8 +66,9 @@ def explain(exc: BaseException) -> Explained:
     """Classify ``exc``: a deliberate error, an expected failure class, or a bug."""
     from workstation.core.errors import WorkstationError
 
-    if isinstance(exc, WorkstationError):
-        return Explained(exc.message, exc.hint)
+    if isinstance(exc, WorkstationError):  # it names its file, or the block it came from does
+        named = getattr(exc, "path", None) is not None
+        return Explained(exc.message + ("" if named else _where(exc)), exc.hint)
     if isinstance(exc, OSError):
         return _os_error(exc)
     if isinstance(exc, UnicodeError):
@@ -87,8 +90,24 @@ def explain(exc: BaseException) -> Explained:
     )
 
 
-def report(exc: BaseException, verbose: bool) -> int:
-    """Print the explanation of ``exc`` on stderr (with the traceback if ``verbose``); exit code 1."""
+def command_inputs(argv) -> str | None:
+    """``"ws ground on a.laz"``: the command and the existing files of its command line that
+    are not output options' values, to label an error that names no file."""
+    words = [a for a in argv if not a.startswith("-")]
+    outputs = {argv[i + 1] for i, a in enumerate(argv[:-1])
+               if a.startswith("-") and (a == "-o" or "out" in a or a in ("--png", "--plot-dir", "--save-scene"))}
+    files = [a for a in words[1:] if a not in outputs and Path(a).exists()]
+    if not words or not files:
+        return None
+    return f"running ws {words[0]} on {', '.join(files[:4])}"
+
+
+def report(exc: BaseException, verbose: bool, argv=()) -> int:
+    """Print the explanation of ``exc`` on stderr (with the traceback if ``verbose``); exit code 1.
+    An error that names no file is labelled with the command's input files (``argv``)."""
+    if getattr(exc, "ws_doing", None) is None and argv:
+        with contextlib.suppress(AttributeError, TypeError):
+            exc.ws_doing = command_inputs(list(argv))
     if verbose:
         import traceback
 

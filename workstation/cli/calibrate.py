@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+from workstation.cli.options import FiniteFloatRange, positive_float
 from workstation.core.errors import InvalidInputError
 
 
@@ -48,14 +49,14 @@ def calibrate():
 @calibrate.command("zhang")
 @click.argument("images", required=False, type=click.Path(file_okay=False))
 @click.option("--board", help="Checkerboard inner corners COLSxROWS, e.g. 13x12.")
-@click.option("--square", type=float, help="Checkerboard square size (its unit is the unit of the extrinsics, e.g. mm).")
+@click.option("--square", type=positive_float, help="Checkerboard square size (its unit is the unit of the extrinsics, e.g. mm).")
 @click.option("--model", "model_file", type=click.Path(dir_okay=False), help="Target model text file (x y pairs) for other targets.")
 @click.option("--corners", "corners_dir", type=click.Path(file_okay=False), help="Folder of per-image corner text files (x y pairs, same order as the model).")
 @click.option("--image-size", help="Image size WIDTHxHEIGHT in pixels (needed with --corners when the folder has no images).")
 @click.option("--free-k3", is_flag=True, help="Also estimate the 6th-order radial term k3 (wide-angle lenses).")
 @click.option("--no-tangential", is_flag=True, help="Hold the tangential terms p1, p2 at 0.")
 @click.option("--skew", "estimate_skew", is_flag=True, help="Also estimate the skew K[0,1] in pixels (joint refinement after OpenCV).")
-@click.option("--outlier-factor", type=float, default=3.0, show_default=True, help="Drop images whose RMS exceeds this multiple of the median per-image RMS.")
+@click.option("--outlier-factor", type=FiniteFloatRange(min=1.0), default=3.0, show_default=True, help="Drop images whose RMS exceeds this multiple of the median per-image RMS.")
 @output_option
 @overwrite_option
 @json_option

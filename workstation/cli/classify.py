@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import positive_float
 
 
 @click.command()
@@ -16,7 +17,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Where the network runs (auto: CUDA when present).")
 @click.option("--tile-points", type=click.IntRange(10_000), default=None,
               help="Largest number of points classified per tile (tiles overlap by the feature radius).")
-@click.option("--roof-tolerance", type=click.FloatRange(min=0.0, min_open=True), default=None,
+@click.option("--roof-tolerance", type=positive_float, default=None,
               help="Roof planarity test: RMS distance (m) to the local plane above which a building point "
                    "is not a roof (default 0.08, the model's setting); raise it for a noisy scan, as with "
                    "lasclassify's -planar.")
@@ -42,6 +43,9 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
 
     t0 = time.perf_counter()
     check_output(output, overwrite, inputs=[src])
+    from workstation.ml.model import resolve_device
+
+    resolve_device(device)  # --device cuda without CUDA fails before the cloud is read
     clf = PointClassifier.load(model_path, device=device)
     if tile_points:
         clf.tile_points = tile_points

@@ -4,29 +4,34 @@ from __future__ import annotations
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from workstation.cli.options import (
     emit_json,
     json_option,
     output_option,
     overwrite_option,
 )
+from workstation.cli.options import positive_float, positive_int
 
 
 @click.command("colorize")
 @click.argument("cloud", type=click.Path(exists=True, dir_okay=False))
-@click.option("--reconstruction", "workdir", required=True, type=click.Path(exists=True, file_okay=False),
-              help="COLMAP work folder (model in sparse/0, images in images/).")
+@click.option("--reconstruction", "workdir", required=True, type=click.Path(exists=True),
+              help="COLMAP work folder (model in sparse/0, images in images/), or a cameras JSON "
+                   "(or a folder holding cameras.json) as `ws ortho` reads.")
 @output_option
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Folder of the images (default WORKDIR/images).")
-@click.option("--max-views", type=int, default=3, show_default=True, help="Best views blended per point.")
+@click.option("--max-views", type=positive_int, default=3, show_default=True, help="Best views blended per point.")
 @click.option("--depth-maps", "use_depth_maps", is_flag=True,
               help="Test visibility against the MVS depth maps of WORKDIR/dense (ws sfm --dense) and colour from "
                    "its undistorted images, instead of a z-buffer of the cloud (also catches occluders the cloud "
                    "does not hold; pixels without a depth are not used).")
-@click.option("--depth-tolerance", type=float, default=None,
+@click.option("--depth-tolerance", type=positive_float, default=None,
               help="Metres a point may lie behind the visible surface and still be painted (default 3 x spacing).")
 @overwrite_option
+@allow_outside_option
 @json_option
 def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth_tolerance, overwrite, as_json):
     """Colour CLOUD from the oriented photos of a reconstruction; occluded points are not painted.
@@ -37,6 +42,7 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
 
     from workstation.interop.pycolmap import read_model
     from workstation.io import check_output, read_cloud, write_cloud
+    from workstation.raster.ortho import read_reconstruction
     from workstation.registration.colorize import ColorizeParams, read_depth_maps
     from workstation.registration.colorize import colorize as run_colorize
 
@@ -47,8 +53,8 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
         dense = Path(workdir) / "dense"
         rec = read_model(dense, image_dir)
         depth_maps = read_depth_maps(dense, rec)
-    else:
-        rec = read_model(workdir, image_dir)
+    else:  # a COLMAP work folder or a cameras JSON
+        rec = read_reconstruction(workdir, image_dir)
     out = run_colorize(c, rec, ColorizeParams(max_views=max_views, depth_tolerance=depth_tolerance),
                        depth_maps=depth_maps)
     write_cloud(out, output, overwrite=overwrite, inputs=[cloud])

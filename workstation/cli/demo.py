@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import click
 
+from .options import nonneg_int
+
 
 @click.command()
 @click.option("-o", "--output", "outdir", default="demo_output", show_default=True,
               type=click.Path(file_okay=False), help="Folder for the products.")
-@click.option("--seed", default=0, show_default=True, help="Seed of the synthetic scene.")
+@click.option("--seed", type=nonneg_int, default=0, show_default=True, help="Seed of the synthetic scene.")
 @click.option("--overwrite", is_flag=True, help="Reuse an existing, non-empty output folder.")
 def demo(outdir, seed, overwrite):
     """Generate a synthetic scene and run every stage on it."""

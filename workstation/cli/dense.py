@@ -6,7 +6,10 @@ from pathlib import Path
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from workstation.cli.options import emit_json, json_option, overwrite_option
+from workstation.cli.options import FiniteFloatRange, SentinelIntRange, nonneg_float, nonneg_int, positive_float, positive_int
 
 
 @click.command()
@@ -14,13 +17,14 @@ from workstation.cli.options import emit_json, json_option, overwrite_option
 @click.option("--images", "image_dir", type=click.Path(file_okay=False, exists=True), help="Folder of the original images (default WORKDIR/images).")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), help="Also write the cloud here (.las, .laz, .ply).")
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU plane sweep.")
-@click.option("--max-image-size", type=int, default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
-@click.option("--sources", "num_sources", type=int, default=5, show_default=True, help="Source views per reference image (CPU path).")
-@click.option("--min-ncc", type=float, default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
-@click.option("--min-consistent", type=int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
-@click.option("--fusion-cache-gb", type=float, default=1.0, show_default=True, help="GB of images and depth/normal maps fusion keeps in memory (0 = load all: faster for a few images, memory grows with the image count).")
-@click.option("--depth-range", nargs=2, type=float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
+@click.option("--max-image-size", type=SentinelIntRange(-1, min=1), default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
+@click.option("--sources", "num_sources", type=positive_int, default=5, show_default=True, help="Source views per reference image (CPU path).")
+@click.option("--min-ncc", type=FiniteFloatRange(-1.0, 1.0), default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (CPU path).")
+@click.option("--min-consistent", type=nonneg_int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
+@click.option("--fusion-cache-gb", type=nonneg_float, default=1.0, show_default=True, help="GB of images and depth/normal maps fusion keeps in memory (0 = load all: faster for a few images, memory grows with the image count).")
+@click.option("--depth-range", nargs=2, type=positive_float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
 @overwrite_option
+@allow_outside_option
 @json_option
 def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_ncc, min_consistent, fusion_cache_gb, depth_range, overwrite, as_json):
     """Dense reconstruction of WORKDIR (from `ws sfm`, or a synthetic rig folder).
@@ -36,15 +40,15 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
         from workstation.core.errors import InvalidInputError
 
         raise InvalidInputError("output must be .las, .laz or .ply", path=output)
-    if output is not None and Path(output).exists() and not overwrite:
-        from workstation.core.errors import OutputExistsError
+    from workstation.io import check_outputs, work_folder
 
-        raise OutputExistsError(output)
+    check_outputs([output], overwrite, inputs=[])
     params = DenseParams(device=device, max_image_size=max_image_size, num_sources=num_sources,
                          top_k=min(2, num_sources), min_ncc=min_ncc, min_consistent=min_consistent,
                          fusion_cache_gb=fusion_cache_gb,
                          depth_range=tuple(depth_range) if depth_range else None)
-    cloud, summary = run_dense(workdir, image_dir, params, overwrite=overwrite)
+    with work_folder(Path(workdir) / "dense"):  # a failed run removes what it wrote
+        cloud, summary = run_dense(workdir, image_dir, params, overwrite=overwrite)
     if output is not None:
         from workstation.io import write_cloud
 

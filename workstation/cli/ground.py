@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import FiniteFloatRange, nonneg_float, positive_float, positive_int
 
 
 @click.command()
@@ -22,12 +23,12 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Then make the ground on still water class 9 (level single-echo surfaces of 150 m2 or more "
                    "whose banks rise from them), as ws classify does.")
 @click.option("--hag", is_flag=True, help="Add the height above ground (hag, CRS vertical unit) from a ground TIN.")
-@click.option("--cell", type=float, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
-@click.option("--slope", type=float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
-@click.option("--window", type=float, default=None, help="[smrf] largest window radius, metres.")
-@click.option("--threshold", type=float, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
-@click.option("--scalar", type=float, default=None, help="[smrf] elevation scaling factor (metres per unit slope).")
-@click.option("--trend-slope", type=float, default=None,
+@click.option("--cell", type=positive_float, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
+@click.option("--slope", type=nonneg_float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
+@click.option("--window", type=positive_float, default=None, help="[smrf] largest window radius, metres.")
+@click.option("--threshold", type=nonneg_float, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
+@click.option("--scalar", type=nonneg_float, default=None, help="[smrf] elevation scaling factor (metres per unit slope).")
+@click.option("--trend-slope", type=nonneg_float, default=None,
               help="[smrf] slope-adaptive object test: per-cell slope max(--slope, factor x mean terrain slope); 0 = off (PDAL).")
 @click.option("--understorey/--no-understorey", default=None,
               help="[auto] under canopy (multi-echo pulses), keep only the ground's lower envelope (default on).")
@@ -35,18 +36,18 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="[auto, ml] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
 @click.option("--risers/--no-risers", default=None,
               help="[auto] put back rejected points on terrain steps the ground TIN spans (default on).")
-@click.option("--max-window", type=float, default=None, help="[pmf] largest window size, metres.")
-@click.option("--cloth-resolution", type=float, default=None, help="[csf] particle spacing, metres.")
+@click.option("--max-window", type=positive_float, default=None, help="[pmf] largest window size, metres.")
+@click.option("--cloth-resolution", type=positive_float, default=None, help="[csf] particle spacing, metres.")
 @click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
-@click.option("--class-threshold", type=float, default=None, help="[csf] largest distance to the cloth, metres.")
-@click.option("--iterations", type=int, default=None, help="[csf] largest number of time steps.")
+@click.option("--class-threshold", type=positive_float, default=None, help="[csf] largest distance to the cloth, metres.")
+@click.option("--iterations", type=positive_int, default=None, help="[csf] largest number of time steps.")
 @click.option("--slope-smooth/--no-slope-smooth", default=None, help="[csf] slope post-processing.")
-@click.option("--max-angle", type=float, default=None, help="[ptd] iteration angle, degrees.")
-@click.option("--max-distance", type=float, default=None, help="[ptd] iteration distance, metres.")
-@click.option("--seed-cell", type=float, default=None, help="[ptd] seed cell, metres.")
+@click.option("--max-angle", type=FiniteFloatRange(0.0, 90.0, min_open=True), default=None, help="[ptd] iteration angle, degrees.")
+@click.option("--max-distance", type=positive_float, default=None, help="[ptd] iteration distance, metres.")
+@click.option("--seed-cell", type=positive_float, default=None, help="[ptd] seed cell, metres.")
 @click.option("--tile-points", type=click.IntRange(min=0), default=10_000_000, show_default=True,
               help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never.")
-@click.option("--tile-buffer", type=click.FloatRange(min=0), default=60.0, show_default=True,
+@click.option("--tile-buffer", type=nonneg_float, default=60.0, show_default=True,
               help="Metres of neighbouring points filtered with each tile.")
 @click.option("--tile-workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Tiles filtered at once, one process each (memory grows with it).")

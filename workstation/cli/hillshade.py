@@ -5,14 +5,16 @@ from __future__ import annotations
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import GEOTIFF, require_suffix
+from .options import FiniteFloatRange, positive_float
 
 
 @click.command()
 @click.argument("dem", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--azimuth", default=315.0, show_default=True, type=float, help="Light direction, degrees clockwise from north.")
-@click.option("--altitude", default=45.0, show_default=True, type=float, help="Light elevation above the horizon, degrees.")
-@click.option("--z-factor", default=1.0, show_default=True, type=float, help="Vertical exaggeration (dimensionless).")
+@click.option("--azimuth", default=315.0, show_default=True, type=FiniteFloatRange(0.0, 360.0), help="Light direction, degrees clockwise from north.")
+@click.option("--altitude", default=45.0, show_default=True, type=FiniteFloatRange(0.0, 90.0), help="Light elevation above the horizon, degrees.")
+@click.option("--z-factor", default=1.0, show_default=True, type=positive_float, help="Vertical exaggeration (dimensionless).")
 @click.option("--product", type=click.Choice(["hillshade", "slope", "aspect"]), default="hillshade", show_default=True,
               help="hillshade (0-255), slope (degrees) or aspect (degrees from north).")
 @click.option("--png", type=click.Path(dir_okay=False), default=None, help="Also write a PNG preview of the result.")
@@ -20,11 +22,13 @@ from .options import emit_json, json_option, output_option, overwrite_option
 @json_option
 def hillshade(dem, output, azimuth, altitude, z_factor, product, png, overwrite, as_json):
     """Hillshade, slope or aspect of DEM by Horn (1981) gradients, as a GeoTIFF."""
-    import numpy as np
-
+    from workstation.io import atomic_paths, check_outputs
     from workstation.io.geotiff import read_raster, write_raster
     from workstation.raster import terrain
 
+    require_suffix(output, GEOTIFF, what="GeoTIFF")
+    require_suffix(png, (".png",), "--png", "PNG")
+    check_outputs([output, png], overwrite, inputs=[dem])
     r = read_raster(dem, band=1)
     if product == "hillshade":
         out = terrain.hillshade(r, terrain.HillshadeParams(azimuth, altitude, z_factor))
@@ -32,17 +36,24 @@ def hillshade(dem, output, azimuth, altitude, z_factor, product, png, overwrite,
         out = terrain.slope(r, z_factor)
     else:
         out = terrain.aspect(r)
-    write_raster(out, output, overwrite=overwrite, inputs=[dem])
-    if png:
-        from workstation.io import atomic_path
-
-        a = np.asarray(out.array, float)
-        if product != "hillshade":
-            lo, hi = np.nanpercentile(a, [1, 99])
-            a = np.nan_to_num((a - lo) / max(hi - lo, 1e-9) * 255, nan=0)
-        import cv2
-
-        with atomic_path(png, overwrite=overwrite) as tmp:
-            cv2.imwrite(str(tmp), np.clip(a, 0, 255).astype(np.uint8))
+    if not png:
+        write_raster(out, output, overwrite=overwrite, inputs=[dem])
+    else:  # both files or neither
+        with atomic_paths([output, png], overwrite, inputs=[dem]) as (tif_tmp, png_tmp):
+            write_raster(out, tif_tmp, overwrite=True)
+            _write_png(out.array, product, png_tmp)
     if as_json:
         emit_json({"output": output, "product": product, "rows": out.shape[0], "cols": out.shape[1], **out.meta})
+
+
+def _write_png(array, product: str, path) -> None:
+    """8-bit preview: the hillshade as is, slope and aspect stretched between percentiles 1-99."""
+    import cv2
+    import numpy as np
+
+    a = np.asarray(array, float)
+    if product != "hillshade":
+        lo, hi = np.nanpercentile(a, [1, 99])
+        a = np.nan_to_num((a - lo) / max(hi - lo, 1e-9) * 255, nan=0)
+    if not cv2.imwrite(str(path), np.clip(a, 0, 255).astype(np.uint8)):
+        raise OSError(f"OpenCV could not write the PNG {path}")

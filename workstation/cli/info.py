@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from .options import emit_json
+from .options import positive_float
 
 
 def _fmt(v) -> str:
@@ -20,7 +21,7 @@ def _fmt(v) -> str:
 @click.command()
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--columns", default=None, help="Column spec for text files, e.g. x,y,z,label.")
-@click.option("--density-cell", default=1.0, show_default=True, type=float,
+@click.option("--density-cell", default=1.0, show_default=True, type=positive_float,
               help="Cell size for the occupied-cell density, in metres.")
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON on stdout.")
 def info(file, columns, density_cell, as_json):
@@ -34,7 +35,10 @@ def info(file, columns, density_cell, as_json):
     if columns and format_of(file)[0] not in ("xyz", "txt", "csv", "pts"):
         raise click.UsageError("--columns applies to text inputs (.xyz, .txt, .csv, .pts) only")
     opts = {"columns": columns} if columns else {}
-    s = summarize(file, density_cell_m=density_cell, **opts)
+    from click.core import ParameterSource
+
+    given = click.get_current_context().get_parameter_source("density_cell") is not ParameterSource.DEFAULT
+    s = summarize(file, density_cell_m=density_cell, density_strict=given, **opts)
     if as_json:
         emit_json(s)
         return

@@ -128,7 +128,7 @@ def main(argv=None) -> int:
         click.echo("Interrupted.", err=True)
         return 130
     except Exception as e:  # noqa: BLE001 - the boundary: every failure becomes a message
-        return report(e, verbose)
+        return report(e, verbose, argv)
     return rc if isinstance(rc, int) else 0  # a command's click.exceptions.Exit(n) comes back as n
 
 

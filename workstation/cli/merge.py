@@ -9,6 +9,8 @@ import click
 import numpy as np
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
+from workstation.cli.options import positive_float
+from workstation.io.textfile import read_text
 
 
 def read_poses(path, n: int) -> list[np.ndarray]:
@@ -17,7 +19,7 @@ def read_poses(path, n: int) -> list[np.ndarray]:
 
     p = Path(path)
     try:
-        obj = json.loads(p.read_text())
+        obj = json.loads(read_text(p))
         poses = [np.asarray(m, dtype=np.float64) for m in (obj["poses"] if isinstance(obj, dict) else obj)]
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise InvalidInputError(f"cannot read poses: {e}", path=p) from None
@@ -35,20 +37,22 @@ def read_poses(path, n: int) -> list[np.ndarray]:
               help="Compute the poses with a pose graph (pairwise + loop closures) into the first input's frame.")
 @click.option("--poses-out", type=click.Path(dir_okay=False), default=None,
               help="Write the poses and the per-edge residual table of --register as JSON.")
-@click.option("--voxel-size", type=float, default=None, help="Keep one point per voxel of this edge (metres).")
-@click.option("--duplicate-distance", type=float, default=None,
+@click.option("--voxel-size", type=positive_float, default=None, help="Keep one point per voxel of this edge (metres).")
+@click.option("--duplicate-distance", type=positive_float, default=None,
               help="Drop points closer than this (metres) to an earlier input's points (overlap thinning).")
 @overwrite_option
 @json_option
 def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplicate_distance, overwrite, as_json):
     """Merge clouds IN... into OUT: union of attributes, point_source_id = input number (1, 2, ...)."""
     from workstation.core.errors import InvalidInputError
-    from workstation.io import atomic_path, check_output, read_cloud, write_cloud
+    from workstation.io import atomic_paths, check_outputs, read_cloud, write_cloud
     from workstation.registration.merge import MergeParams, merge_clouds
 
-    check_output(output, overwrite, inputs=inputs)
     if poses_path and do_register:
         raise InvalidInputError("give either --poses or --register")
+    if poses_out and not do_register:
+        raise InvalidInputError("--poses-out writes the poses of --register; add --register")
+    check_outputs([output, poses_out], overwrite, inputs=[*inputs, *([poses_path] if poses_path else [])])
     clouds = [read_cloud(p) for p in inputs]
     poses = read_poses(poses_path, len(clouds)) if poses_path else None
     summary = {}
@@ -58,11 +62,13 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         mw = register_multiway(clouds, MultiwayParams())
         poses = mw.poses
         summary["registration"] = mw.to_dict()
-        if poses_out:
-            with atomic_path(poses_out, overwrite=overwrite) as tmp:
-                Path(tmp).write_text(json.dumps(mw.to_dict(), indent=2, default=float))
     merged = merge_clouds(clouds, poses, MergeParams(duplicate_distance=duplicate_distance, voxel_size=voxel_size))
-    write_cloud(merged, output, overwrite=overwrite, inputs=inputs)
+    if not poses_out:
+        write_cloud(merged, output, overwrite=overwrite, inputs=inputs)
+    else:  # both files or neither
+        with atomic_paths([output, poses_out], overwrite, inputs=inputs) as (cloud_tmp, poses_tmp):
+            write_cloud(merged, cloud_tmp, overwrite=True)
+            poses_tmp.write_text(json.dumps(summary["registration"], indent=2, default=float))
     if as_json:
         emit_json({"output": str(output), "points": merged.n, "inputs": len(inputs),
                    "attributes": merged.dims, **summary})

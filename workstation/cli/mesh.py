@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float
 
 
 @click.command()
@@ -14,25 +17,25 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Screened Poisson (objects, buildings), ball pivoting, or 2.5D Delaunay (terrain).")
 @click.option("--depth", type=click.IntRange(1, 16), default=9, show_default=True,
               help="Poisson octree depth (finest cell = bounding cube / 2^depth).")
-@click.option("--samples-per-node", type=float, default=2.0, show_default=True,
+@click.option("--samples-per-node", type=positive_float, default=2.0, show_default=True,
               help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; larger is faster "
                    "but smooths over sparsely sampled parts).")
-@click.option("--point-weight", type=float, default=None,
+@click.option("--point-weight", type=nonneg_float, default=None,
               help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab].")
-@click.option("--trim-quantile", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
+@click.option("--trim-quantile", type=FiniteFloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
 @click.option("--poisson-backend", type=click.Choice(["open3d", "pymeshlab"]), default="open3d", show_default=True,
               help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2x slower here: PyMeshLab #408).")
-@click.option("--threads", type=int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
-@click.option("--radius", type=float, default=None,
+@click.option("--threads", type=nonneg_int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
+@click.option("--radius", type=positive_float, default=None,
               help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")
-@click.option("--max-edge", type=float, default=None,
+@click.option("--max-edge", type=positive_float, default=None,
               help="2.5D Delaunay: longest triangle edge kept, CRS units [default: 8 x point spacing].")
 @click.option("--k-normals", type=click.IntRange(3, 200), default=10, show_default=True,
               help="Neighbours per normal (PCA plane fit).")
 @click.option("--orient", type=click.Choice(["auto", "viewpoint", "up", "propagate", "keep"]), default="auto",
               show_default=True, help="Normal orientation (auto: toward --viewpoint if given, else propagate).")
-@click.option("--viewpoint", type=float, nargs=3, default=None, metavar="X Y Z",
+@click.option("--viewpoint", type=finite_float, nargs=3, default=None, metavar="X Y Z",
               help="Scanner position (CRS units) the normals must face.")
 @click.option("--recompute-normals", is_flag=True, help="Estimate normals even when the cloud has them.")
 @click.option("--target-faces", type=click.IntRange(4, None), default=None,
@@ -41,7 +44,7 @@ from .options import emit_json, json_option, output_option, overwrite_option
               help="Smoothing after decimation.")
 @click.option("--smooth-iterations", type=click.IntRange(0, 1000), default=10, show_default=True,
               help="Smoothing passes.")
-@click.option("--min-piece-fraction", type=click.FloatRange(0, 1, max_open=True), default=0.05, show_default=True,
+@click.option("--min-piece-fraction", type=FiniteFloatRange(0, 1, max_open=True), default=0.05, show_default=True,
               help="Remove pieces smaller than this fraction of the mesh diagonal.")
 @click.option("--max-hole-edges", type=click.IntRange(0, None), default=0, show_default=True,
               help="Close holes bounded by at most this many edges (0 = none).")
@@ -52,13 +55,14 @@ from .options import emit_json, json_option, output_option, overwrite_option
                    "from them (OUT must be .obj, .glb or .gltf) and orient normals toward the cameras.")
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Folder of the photos (default WORKDIR/images).")
-@click.option("--texel-size", type=float, default=None,
+@click.option("--texel-size", type=positive_float, default=None,
               help="Texture: surface size of one texel in CRS units [default: the photos' ground sample distance].")
 @click.option("--texture-size", type=click.IntRange(16, 32768), default=4096, show_default=True,
               help="Texture: largest side of the texture image, pixels.")
 @click.option("--texture-views", type=click.IntRange(1, 16), default=1, show_default=True,
               help="Texture: photos blended per face (1 = the sharpest view).")
 @overwrite_option
+@allow_outside_option
 @json_option
 def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, poisson_backend, threads, radius, max_edge,
          k_normals, orient, viewpoint, recompute_normals, target_faces, smooth, smooth_iterations,

@@ -4,23 +4,28 @@ from __future__ import annotations
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import GEOTIFF, require_suffix
+from .options import FiniteFloatRange, nonneg_float, positive_float
 
 
 @click.command()
 @click.argument("workdir", type=click.Path(exists=True))
 @click.option("--dsm", required=True, type=click.Path(exists=True, dir_okay=False), help="Surface model GeoTIFF (same CRS as the cameras).")
 @output_option
-@click.option("--resolution", type=float, default=None, help="Ortho cell size in metres (default: the DSM's).")
+@click.option("--resolution", type=positive_float, default=None, help="Ortho cell size in metres (default: the DSM's).")
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Image folder when it is not WORKDIR/images.")
-@click.option("--blend-angle", type=float, default=2.0, show_default=True,
+@click.option("--blend-angle", type=FiniteFloatRange(0.0, 90.0), default=2.0, show_default=True,
               help="Degrees: views within about this of the most nadir one are blended across seams.")
 @click.option("--no-occlusion", is_flag=True, help="Skip the visibility test (a conventional, not true, orthophoto).")
 @click.option("--accuracy", "accuracy_out", type=click.Path(dir_okay=False), default=None,
               help="Also write the estimated planimetric accuracy (metres) as a GeoTIFF.")
-@click.option("--dsm-rmse", type=float, default=None, help="Vertical RMSE of the DSM in metres (accuracy estimate).")
+@click.option("--dsm-rmse", type=nonneg_float, default=None, help="Vertical RMSE of the DSM in metres (accuracy estimate).")
 @overwrite_option
+@allow_outside_option
 @json_option
 def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion, accuracy_out, dsm_rmse, overwrite, as_json):
     """True orthophoto of WORKDIR (COLMAP workdir/model folder, or a cameras JSON) over DSM:
@@ -29,6 +34,8 @@ def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion
     from workstation.io.geotiff import read_raster, write_raster
     from workstation.raster.ortho import OrthoParams, read_reconstruction, true_ortho
 
+    require_suffix(output, GEOTIFF, what="GeoTIFF")
+    require_suffix(accuracy_out, GEOTIFF, "--accuracy", "GeoTIFF")
     rec = read_reconstruction(workdir, image_dir)
     d = read_raster(dsm, band=1)
     res = true_ortho(rec, d, OrthoParams(resolution=resolution, blend_angle=blend_angle, occlusion=not no_occlusion,

@@ -5,24 +5,25 @@ from __future__ import annotations
 import click
 
 from .options import emit_json
+from .options import FiniteFloatRange, nonneg_float, positive_float
 
 
 @click.command("plan-flight")
-@click.option("--altitude", type=float, default=1000.0, show_default=True, help="Flying height above ground in metres.")
-@click.option("--speed", type=float, default=60.0, show_default=True, help="Ground speed in m/s.")
-@click.option("--prf", type=float, default=300_000.0, show_default=True, help="Pulse repetition frequency in Hz.")
-@click.option("--scan-rate", "--scan-frequency", "scan_rate", type=float, default=50.0, show_default=True,
+@click.option("--altitude", type=positive_float, default=1000.0, show_default=True, help="Flying height above ground in metres.")
+@click.option("--speed", type=positive_float, default=60.0, show_default=True, help="Ground speed in m/s.")
+@click.option("--prf", type=positive_float, default=300_000.0, show_default=True, help="Pulse repetition frequency in Hz.")
+@click.option("--scan-rate", "--scan-frequency", "scan_rate", type=positive_float, default=50.0, show_default=True,
               help="Scan frequency in Hz (mirror cycles for zigzag, lines for polygon, revolutions for palmer).")
-@click.option("--fov", type=float, default=40.0, show_default=True, help="Full field of view in degrees.")
-@click.option("--overlap", type=float, default=0.3, show_default=True, help="Lateral strip overlap as a fraction 0-1.")
-@click.option("--area-width", type=float, default=2000.0, show_default=True, help="Block width across the lines in metres.")
-@click.option("--area-length", type=float, default=3000.0, show_default=True, help="Block length along the lines in metres.")
-@click.option("--run-in", type=float, default=500.0, show_default=True, help="Extra line length before and after the block in metres.")
-@click.option("--bank", type=float, default=20.0, show_default=True, help="Bank angle in turns in degrees.")
+@click.option("--fov", type=FiniteFloatRange(0.0, 180.0, min_open=True, max_open=True), default=40.0, show_default=True, help="Full field of view in degrees.")
+@click.option("--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True), default=0.3, show_default=True, help="Lateral strip overlap as a fraction 0-1.")
+@click.option("--area-width", type=positive_float, default=2000.0, show_default=True, help="Block width across the lines in metres.")
+@click.option("--area-length", type=positive_float, default=3000.0, show_default=True, help="Block length along the lines in metres.")
+@click.option("--run-in", type=nonneg_float, default=500.0, show_default=True, help="Extra line length before and after the block in metres.")
+@click.option("--bank", type=FiniteFloatRange(0.0, 90.0, min_open=True, max_open=True), default=20.0, show_default=True, help="Bank angle in turns in degrees.")
 @click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default="zigzag", show_default=True,
               help="Scan mechanism.")
-@click.option("--divergence", type=float, default=None, help="Beam divergence in mrad (adds the footprint diameter).")
-@click.option("--target-density", type=float, default=None,
+@click.option("--divergence", type=nonneg_float, default=None, help="Beam divergence in mrad (adds the footprint diameter).")
+@click.option("--target-density", type=positive_float, default=None,
               help="Solve for this point density in points/m^2 per pass (inverse problem).")
 @click.option("--solve-for", type=click.Choice(["prf", "speed", "altitude"]), default="prf", show_default=True,
               help="Which parameter --target-density solves for.")

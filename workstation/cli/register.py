@@ -14,6 +14,8 @@ from workstation.cli.options import (
     output_option,
     overwrite_option,
 )
+from workstation.cli.options import fraction, positive_float
+from workstation.io.textfile import read_text
 
 
 def read_matrix(path) -> np.ndarray:
@@ -23,7 +25,7 @@ def read_matrix(path) -> np.ndarray:
     p = Path(path)
     try:
         if p.suffix.lower() == ".json":
-            obj = json.loads(p.read_text())
+            obj = json.loads(read_text(p))
             M = np.asarray(obj["transform"] if isinstance(obj, dict) else obj, dtype=np.float64)
         else:
             M = np.loadtxt(p, dtype=np.float64)
@@ -40,7 +42,7 @@ def read_pairs(path) -> tuple[np.ndarray, np.ndarray]:
 
     p = Path(path)
     rows = []
-    for line in p.read_text().splitlines():
+    for line in read_text(p).splitlines():
         parts = line.replace(",", " ").split()
         if not parts or line.lstrip().startswith("#"):
             continue
@@ -56,15 +58,12 @@ def read_pairs(path) -> tuple[np.ndarray, np.ndarray]:
     return a[:, :3], a[:, 3:]
 
 
-def write_matrix(result, path, overwrite: bool) -> None:
+def write_matrix(result, tmp: Path) -> None:
     """The result as JSON (``.json``) or the 4x4 matrix as text (any other extension)."""
-    from workstation.io import atomic_path
-
-    with atomic_path(path, overwrite=overwrite) as tmp:
-        if Path(path).suffix.lower() == ".json":
-            Path(tmp).write_text(json.dumps(result.to_dict(), indent=2, default=float))
-        else:
-            np.savetxt(tmp, result.transform, fmt="%.12g")
+    if tmp.suffix.lower() == ".json":
+        tmp.write_text(json.dumps(result.to_dict(), indent=2, default=float))
+    else:
+        np.savetxt(tmp, result.transform, fmt="%.12g")
 
 
 @click.command("register")
@@ -81,14 +80,14 @@ def write_matrix(result, path, overwrite: bool) -> None:
               help="Fine ICP variant.")
 @click.option("--kernel", type=click.Choice(["none", "tukey", "huber", "cauchy", "gm", "l1"]), default="tukey",
               show_default=True, help="Robust kernel of the fine stage.")
-@click.option("--voxel-size", type=float, default=None,
+@click.option("--voxel-size", type=positive_float, default=None,
               help="Voxel edge in metres (CRS units) from which every radius derives; estimated when omitted.")
 @click.option("--init", "init_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="Initial 4x4 source->target matrix (JSON or text).")
 @click.option("--pairs", "pairs_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="CSV of >= 3 picked point pairs 'sx sy sz tx ty tz' (metres) giving the initial transform.")
 @click.option("--scale", "with_scale", is_flag=True, help="Estimate a scale from --pairs (7 DoF).")
-@click.option("--min-fitness", type=float, default=0.2, show_default=True,
+@click.option("--min-fitness", type=fraction, default=0.2, show_default=True,
               help="Smallest accepted overlap (share of source points with a correspondence).")
 @click.option("--matrix-out", type=click.Path(dir_okay=False), default=None,
               help="Also write the result: .json (all fields) or text (the 4x4 matrix).")
@@ -103,17 +102,16 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
     """
     import time
 
-    from workstation.core.errors import InvalidInputError
-    from workstation.io import check_output, read_cloud, write_cloud
+    from workstation.core.errors import InvalidInputError, doing
+    from workstation.io import atomic_paths, check_outputs, read_cloud, write_cloud
     from workstation.registration.icp import ICPParams
     from workstation.registration.merge import transform_cloud
     from workstation.registration.register import RegisterParams
     from workstation.registration.register import register as run_register
     from workstation.registration.transforms import register_point_pairs
 
-    check_output(output, overwrite, inputs=[source, target])
-    if matrix_out:
-        check_output(matrix_out, overwrite, inputs=[source, target])
+    inputs = [source, target, *(p for p in (init_path, pairs_path) if p)]
+    check_outputs([output, matrix_out], overwrite, inputs=inputs)
     t0 = time.perf_counter()
     src = read_cloud(source)
     tgt = read_cloud(target)
@@ -121,7 +119,8 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
     pair_fit = None
     if pairs_path:
         a, b = read_pairs(pairs_path)
-        pair_fit = register_point_pairs(a, b, with_scale=with_scale)
+        with doing(f"fitting the point pairs of {pairs_path}"):
+            pair_fit = register_point_pairs(a, b, with_scale=with_scale)
         init = pair_fit.result.transform
     if method == "pairs":
         if pair_fit is None:
@@ -135,9 +134,12 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
     moved = transform_cloud(src, result.transform).with_crs(tgt.crs or src.crs)
     moved = moved.with_history("register", {"method": method, "target": str(target), "fitness": result.fitness},
                                time.perf_counter() - t0)
-    write_cloud(moved, output, overwrite=overwrite, inputs=[source, target])
-    if matrix_out:
-        write_matrix(result, matrix_out, overwrite)
+    if not matrix_out:
+        write_cloud(moved, output, overwrite=overwrite, inputs=inputs)
+    else:  # both files or neither
+        with atomic_paths([output, matrix_out], overwrite, inputs=inputs) as (cloud_tmp, matrix_tmp):
+            write_cloud(moved, cloud_tmp, overwrite=True)
+            write_matrix(result, matrix_tmp)
     if as_json:
         d = result.to_dict()
         if pair_fit is not None:

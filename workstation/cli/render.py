@@ -4,15 +4,38 @@ from __future__ import annotations
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import nonneg_float, nonneg_int
 
 
 def _size(ctx, param, value):
+    """--size WIDTHxHEIGHT: two pixel counts in the renderer's range (16..8192)."""
     try:
         w, h = (int(v) for v in value.lower().split("x"))
     except ValueError:
         raise click.BadParameter("give WIDTHxHEIGHT in pixels, e.g. 1920x1080") from None
+    if not (16 <= w <= 8192 and 16 <= h <= 8192):
+        raise click.BadParameter(f"{w}x{h}: each side must be 16..8192 pixels")
     return w, h
+
+
+def _background(ctx, param, value):
+    """--background: a colour pyvista knows (a name or #rrggbb), checked before any work."""
+    import difflib
+
+    import pyvista as pv
+
+    try:
+        pv.Color(value)
+    except ValueError:
+        from pyvista.plotting.colors import hex_colors
+
+        near = difflib.get_close_matches(value.lower(), list(hex_colors), n=6, cutoff=0.5)
+        raise click.BadParameter(f"unknown colour {value!r}; use #rrggbb or a name such as "
+                                 + ", ".join(near or ["white", "black", "lightgray", "navy", "beige"])) from None
+    return value
 
 
 @click.command()
@@ -23,12 +46,12 @@ def _size(ctx, param, value):
 @click.option("--view", type=click.Choice(["top", "front", "iso"]), default="iso", show_default=True,
               help="top: orthographic, north up, scale bar; front: looking north; iso: from the south-east.")
 @click.option("--size", default="1024x768", show_default=True, callback=_size, help="Image size WIDTHxHEIGHT in pixels.")
-@click.option("--background", default="white", show_default=True, help="Background colour (name or #rrggbb).")
-@click.option("--point-size", type=float, default=0.0, show_default=True,
+@click.option("--background", default="white", show_default=True, callback=_background, help="Background colour (name or #rrggbb).")
+@click.option("--point-size", type=nonneg_float, default=0.0, show_default=True,
               help="Point diameter in pixels (0 = from the point density).")
 @click.option("--edl", is_flag=True, help="Eye-dome lighting for clouds (shades depth edges).")
 @click.option("--no-legend", is_flag=True, help="No class legend or scalar bar.")
-@click.option("--max-points", type=int, default=0, show_default=True,
+@click.option("--max-points", type=nonneg_int, default=0, show_default=True,
               help="Draw a seeded random subset of at most this many points (0 = all).")
 @click.option("--turntable", type=click.IntRange(0, 720), default=0, show_default=True,
               help="Frames of a turntable orbit: OUT.gif is an animation, OUT.png a numbered PNG sequence.")
@@ -38,6 +61,7 @@ def _size(ctx, param, value):
               help="Render through the camera of this image (name or id) of --reconstruction: its intrinsics, "
                    "pose and image size (replaces --view and --size), so the render overlays the photo.")
 @overwrite_option
+@allow_outside_option
 @json_option
 def render(src, output, color, view, size, background, point_size, edl, no_legend, max_points, turntable,
            workdir, camera_ref, overwrite, as_json):

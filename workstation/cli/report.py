@@ -5,13 +5,14 @@ from __future__ import annotations
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
+from .options import positive_int
 
 
 @click.command()
 @click.argument("workdir", type=click.Path(exists=True, file_okay=False))
 @output_option
 @click.option("--render-size", default="640x480", show_default=True, help="Size of each render, WIDTHxHEIGHT pixels.")
-@click.option("--max-points", type=int, default=2_000_000, show_default=True,
+@click.option("--max-points", type=positive_int, default=2_000_000, show_default=True,
               help="Points drawn per cloud render (seeded subset above).")
 @overwrite_option
 @json_option

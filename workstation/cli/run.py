@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from .options import emit_json, json_option
 
 STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hillshade", "contours"]
@@ -19,6 +21,7 @@ STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hill
 @click.option("--rerun-from", type=click.Choice(STAGES), default=None, help="Run this stage and the later ones again.")
 @click.option("--end-with", type=click.Choice(STAGES[1:]), default=None, help="Stop after this stage.")
 @click.option("--dry-run", is_flag=True, help="Show what would run and what is up to date; run nothing.")
+@allow_outside_option
 @json_option
 def run(project, out, scheduler, workers, rerun_from, end_with, dry_run, as_json):
     """Run PROJECT (a project.toml): every stage it asks for over every chunk of its tiles.

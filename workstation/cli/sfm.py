@@ -7,7 +7,10 @@ from pathlib import Path
 
 import click
 
+from workstation.cli.options import allow_outside_option
+
 from workstation.cli.options import emit_json, json_option, overwrite_option
+from workstation.cli.options import SentinelIntRange, positive_float, positive_int
 from workstation.core.jsonutil import json_clean
 
 
@@ -21,16 +24,17 @@ from workstation.core.jsonutil import json_clean
 @click.option("--crs", help="CRS of the GCP coordinates (EPSG code or WKT), recorded on the georeferenced outputs.")
 @click.option("--matcher", type=click.Choice(["auto", "exhaustive", "sequential", "spatial"]), default="auto", show_default=True, help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential.")
 @click.option("--mapper", type=click.Choice(["incremental", "global"]), default="incremental", show_default=True, help="Incremental (COLMAP) or global (GLOMAP) mapping.")
-@click.option("--max-image-size", type=int, default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
-@click.option("--max-features", type=int, default=8192, show_default=True, help="SIFT features per image.")
+@click.option("--max-image-size", type=SentinelIntRange(-1, min=1), default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
+@click.option("--max-features", type=positive_int, default=8192, show_default=True, help="SIFT features per image.")
 @click.option("--camera-model", default="SIMPLE_RADIAL", show_default=True, help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...).")
 @click.option("--no-principal-point", is_flag=True, help="Keep the principal point fixed in the final bundle adjustment.")
 @click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
-@click.option("--sigma-px", type=float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
-@click.option("--seed", type=int, default=0, show_default=True, help="Random seed (-1 = random).")
+@click.option("--sigma-px", type=positive_float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
+@click.option("--seed", type=SentinelIntRange(-1, min=0), default=0, show_default=True, help="Random seed (-1 = random).")
 @click.option("--dense", "do_dense", is_flag=True, help="Then densify: depth maps and fusion into WORKDIR/dense/fused.ply (as `ws dense`).")
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU plane sweep.")
 @overwrite_option
+@allow_outside_option
 @json_option
 def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustment, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, do_dense, device, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
@@ -44,7 +48,7 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     interval supported).
     """
     from workstation.core.errors import InvalidInputError
-    from workstation.io.atomic import atomic_path
+    from workstation.io.atomic import atomic_path, work_folder
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
 
     camera = None
@@ -75,68 +79,76 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
         camera_model=camera_model, refine_intrinsics=refine_intrinsics,
         refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
     )
-    result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
-    wd = Path(workdir)
-    out = result.to_dict()
-    from workstation.io import write_cloud
+    with work_folder(workdir):  # a failed run removes what it wrote
+        result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
+        wd = Path(workdir)
+        out = result.to_dict()
+        from workstation.io import write_cloud
 
-    write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
-    out["sparse_cloud"] = str(wd / "sparse.ply")
-    s = result.summary
-    click.echo(
-        f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
-        f"{s['mean_reprojection_error_px']:.3f} px, mean track length {s['mean_track_length']:.2f} -> {wd / 'sparse' / '0'}",
-        err=True,
-    )
-    if result.unregistered:
-        click.echo("not registered: " + ", ".join(result.unregistered), err=True)
-    for o in result.other_models:
-        click.echo(f"disconnected model sparse/{o['index']}: " + ", ".join(o["images"]), err=True)
-    if gcps is not None:
-        import pycolmap
-
-        from workstation.interop.pycolmap import (
-            apply_similarity,
-            reconstruction_from_pycolmap,
-            set_poses_and_points,
-            write_model,
+        write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
+        out["sparse_cloud"] = str(wd / "sparse.ply")
+        s = result.summary
+        click.echo(
+            f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
+            f"{s['mean_reprojection_error_px']:.3f} px, mean track length {s['mean_track_length']:.2f} -> {wd / 'sparse' / '0'}",
+            err=True,
         )
-        from workstation.photogrammetry.georef import georeference
+        if result.unregistered:
+            click.echo("not registered: " + ", ".join(result.unregistered), err=True)
+        for o in result.other_models:
+            click.echo(f"disconnected model sparse/{o['index']}: " + ", ".join(o["images"]), err=True)
+        if gcps is not None:
+            out["georef"] = _georeference(wd, images, gcps, sigma_px, crs, gcp_adjustment)
+        if do_dense:
+            from workstation.photogrammetry.dense import DenseParams, run_dense
 
-        rec = pycolmap.Reconstruction(str(wd / "sparse" / "0"))
-        core = reconstruction_from_pycolmap(rec, images, with_tracks=gcp_adjustment != "similarity")
-        geo = georeference(gcps, core, sigma_px=sigma_px, crs=crs, adjustment=gcp_adjustment)
-        apply_similarity(rec, geo.similarity)
-        if geo.meta.get("adjustment") == "bundle":
-            set_poses_and_points(rec, geo.reconstruction)
-        write_model(rec, wd / "georef" / "0")
-        rep = geo.to_dict()
-        with atomic_path(wd / "georef_report.json", overwrite=True) as tmp:
-            Path(tmp).write_text(json.dumps(json_clean(rep), indent=2) + "\n")
-        m = geo.report.metrics
-        if geo.meta.get("adjustment") == "bundle" and m.get("check_n"):
-            click.echo(
-                f"bundle adjustment: check RMSE 3D {m['similarity_check_rmse_3d']:.4f} with the similarity alone -> "
-                f"{m['check_rmse_3d']:.4f}",
-                err=True,
-            )
-        if m.get("check_n"):
-            click.echo(
-                f"check points {m['check_n']}: RMSE X {m['check_rmse_x']:.4f} Y {m['check_rmse_y']:.4f} Z {m['check_rmse_z']:.4f} "
-                f"H {m['check_rmse_h']:.4f} 3D {m['check_rmse_3d']:.4f}; CE90 {m['check_ce90']:.4f} LE90 {m['check_le90']:.4f}; "
-                f"DEM cell >= {m['check_dem_cell_size_min']:.3f}, contour interval >= {m['check_contour_interval_min']:.3f}",
-                err=True,
-            )
-        for note in geo.report.notes:
-            click.echo("note: " + note, err=True)
-        out["georef"] = rep
-    if do_dense:
-        from workstation.photogrammetry.dense import DenseParams, run_dense
+            _, dense_summary = run_dense(wd, images, DenseParams(device=device), overwrite=overwrite)
+            click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
+            out["dense"] = dense_summary
+        with atomic_path(wd / "summary.json", overwrite=True) as tmp:
+            Path(tmp).write_text(json.dumps(json_clean(out), indent=2, default=str) + "\n")
+        if as_json:
+            emit_json(out)
 
-        _, dense_summary = run_dense(wd, images, DenseParams(device=device), overwrite=overwrite)
-        click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
-        out["dense"] = dense_summary
-    with atomic_path(wd / "summary.json", overwrite=True) as tmp:
-        Path(tmp).write_text(json.dumps(json_clean(out), indent=2, default=str) + "\n")
-    if as_json:
-        emit_json(out)
+
+def _georeference(wd: Path, images, gcps, sigma_px: float, crs, gcp_adjustment: str) -> dict:
+    """Move sparse/0 into the GCPs' frame: WORKDIR/georef/0 and georef_report.json; print the
+    check-point accuracy; return the report."""
+    import pycolmap
+
+    from workstation.interop.pycolmap import (
+        apply_similarity,
+        reconstruction_from_pycolmap,
+        set_poses_and_points,
+        write_model,
+    )
+    from workstation.io.atomic import atomic_path
+    from workstation.photogrammetry.georef import georeference
+
+    rec = pycolmap.Reconstruction(str(wd / "sparse" / "0"))
+    core = reconstruction_from_pycolmap(rec, images, with_tracks=gcp_adjustment != "similarity")
+    geo = georeference(gcps, core, sigma_px=sigma_px, crs=crs, adjustment=gcp_adjustment)
+    apply_similarity(rec, geo.similarity)
+    if geo.meta.get("adjustment") == "bundle":
+        set_poses_and_points(rec, geo.reconstruction)
+    write_model(rec, wd / "georef" / "0")
+    rep = geo.to_dict()
+    with atomic_path(wd / "georef_report.json", overwrite=True) as tmp:
+        Path(tmp).write_text(json.dumps(json_clean(rep), indent=2) + "\n")
+    m = geo.report.metrics
+    if geo.meta.get("adjustment") == "bundle" and m.get("check_n"):
+        click.echo(
+            f"bundle adjustment: check RMSE 3D {m['similarity_check_rmse_3d']:.4f} with the similarity alone -> "
+            f"{m['check_rmse_3d']:.4f}",
+            err=True,
+        )
+    if m.get("check_n"):
+        click.echo(
+            f"check points {m['check_n']}: RMSE X {m['check_rmse_x']:.4f} Y {m['check_rmse_y']:.4f} Z {m['check_rmse_z']:.4f} "
+            f"H {m['check_rmse_h']:.4f} 3D {m['check_rmse_3d']:.4f}; CE90 {m['check_ce90']:.4f} LE90 {m['check_le90']:.4f}; "
+            f"DEM cell >= {m['check_dem_cell_size_min']:.3f}, contour interval >= {m['check_contour_interval_min']:.3f}",
+            err=True,
+        )
+    for note in geo.report.notes:
+        click.echo("note: " + note, err=True)
+    return rep

@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from .options import emit_json, overwrite_option
+from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float, positive_int
 
 
 def _triple(ctx, param, value):
@@ -35,36 +36,36 @@ def _xy(ctx, param, value):
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), help="Output cloud (.laz, .las, ...).")
 @click.option("--scene", "scene_path", default=None,
               help="Scene recipe TOML or the name of a shipped one (mixed, urban, rural, forest, mountain, demo_small). Default: mixed.")
-@click.option("--seed", type=int, default=None, help="Seed of the scene and of every random error (default 0).")
+@click.option("--seed", type=nonneg_int, default=None, help="Seed of the scene and of every random error (default 0).")
 @click.option("--config", "config_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="Survey TOML: [survey] scene/seed/area/lever_arm..., [flight], [vehicle], [scanner], [sensor], [errors], [[stations]].")
-@click.option("--altitude", type=float, default=None, help="Flying height above ground in metres (ALS/ULS).")
-@click.option("--speed", type=float, default=None, help="Platform ground speed in m/s (ALS/ULS/MLS).")
-@click.option("--overlap", type=float, default=None, help="Lateral strip overlap as a fraction 0-1 (ALS/ULS).")
-@click.option("--lines", type=int, default=None, help="Number of flight lines to fly (default: cover the scene, at least 2).")
-@click.option("--heading", type=float, default=None, help="Flight line direction in degrees clockwise from north.")
+@click.option("--altitude", type=positive_float, default=None, help="Flying height above ground in metres (ALS/ULS).")
+@click.option("--speed", type=positive_float, default=None, help="Platform ground speed in m/s (ALS/ULS/MLS).")
+@click.option("--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True), default=None, help="Lateral strip overlap as a fraction 0-1 (ALS/ULS).")
+@click.option("--lines", type=positive_int, default=None, help="Number of flight lines to fly (default: cover the scene, at least 2).")
+@click.option("--heading", type=FiniteFloatRange(-360.0, 360.0), default=None, help="Flight line direction in degrees clockwise from north.")
 @click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default=None, help="Airborne scan mechanism.")
-@click.option("--prf", type=float, default=None, help="Pulse repetition frequency in Hz.")
-@click.option("--scan-frequency", type=float, default=None, help="Scan frequency in Hz (mirror cycles, lines or revolutions).")
-@click.option("--fov", type=float, default=None, help="Full field of view in degrees.")
-@click.option("--h-step", type=float, default=None, help="TLS horizontal angular step in degrees.")
-@click.option("--v-step", type=float, default=None, help="TLS vertical angular step in degrees.")
+@click.option("--prf", type=positive_float, default=None, help="Pulse repetition frequency in Hz.")
+@click.option("--scan-frequency", type=positive_float, default=None, help="Scan frequency in Hz (mirror cycles, lines or revolutions).")
+@click.option("--fov", type=FiniteFloatRange(0.0, 360.0, min_open=True), default=None, help="Full field of view in degrees.")
+@click.option("--h-step", type=FiniteFloatRange(0.0, 360.0, min_open=True), default=None, help="TLS horizontal angular step in degrees.")
+@click.option("--v-step", type=FiniteFloatRange(0.0, 180.0, min_open=True), default=None, help="TLS vertical angular step in degrees.")
 @click.option("--station", "stations", multiple=True, callback=_xy, help="TLS station X,Y in local scene metres (repeatable).")
-@click.option("--subrays", type=int, default=None, help="Rays per pulse sampling the beam footprint (1 = first return only).")
-@click.option("--divergence", type=float, default=None, help="Full beam divergence in mrad.")
-@click.option("--wavelength", type=float, default=None, help="Laser wavelength in nm (reflectances are given at 1064 and 1550).")
-@click.option("--max-returns", type=int, default=None, help="Returns recorded per pulse (1-15).")
+@click.option("--subrays", type=positive_int, default=None, help="Rays per pulse sampling the beam footprint (1 = first return only).")
+@click.option("--divergence", type=nonneg_float, default=None, help="Full beam divergence in mrad.")
+@click.option("--wavelength", type=positive_float, default=None, help="Laser wavelength in nm (reflectances are given at 1064 and 1550).")
+@click.option("--max-returns", type=click.IntRange(1, 15), default=None, help="Returns recorded per pulse (1-15).")
 @click.option("--no-errors", is_flag=True, help="Perfect measurements: switch every error off (then apply the error options).")
-@click.option("--range-noise", type=float, default=None, help="1-sigma range noise in metres.")
+@click.option("--range-noise", type=nonneg_float, default=None, help="1-sigma range noise in metres.")
 @click.option("--gnss-noise", callback=_triple, default=None, help="1-sigma GNSS noise E,N,U in metres.")
 @click.option("--gnss-bias", callback=_triple, default=None, help="GNSS bias E,N,U in metres.")
 @click.option("--imu-noise", callback=_triple, default=None, help="1-sigma attitude noise roll,pitch,yaw in degrees.")
 @click.option("--lever-arm-error", callback=_triple, default=None, help="Lever-arm error x,y,z (body frame) in metres.")
 @click.option("--boresight-error", callback=_triple, default=None, help="Boresight error roll,pitch,yaw in degrees.")
-@click.option("--scan-angle-scale", type=float, default=None, help="Relative mirror-angle scale error (negative: smile).")
-@click.option("--scan-angle-offset", type=float, default=None, help="Mirror angle offset in degrees.")
-@click.option("--time-bias", type=float, default=None, help="Scanner-to-navigation clock offset in seconds.")
-@click.option("--range-walk", type=float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
+@click.option("--scan-angle-scale", type=FiniteFloatRange(-1.0, 1.0, min_open=True, max_open=True), default=None, help="Relative mirror-angle scale error (negative: smile).")
+@click.option("--scan-angle-offset", type=FiniteFloatRange(-90.0, 90.0, min_open=True, max_open=True), default=None, help="Mirror angle offset in degrees.")
+@click.option("--time-bias", type=finite_float, default=None, help="Scanner-to-navigation clock offset in seconds.")
+@click.option("--range-walk", type=nonneg_float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
 @click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
               help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
 @click.option("--trajectory", "trajectory_path", type=click.Path(dir_okay=False), default=None,
@@ -93,7 +94,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     from workstation.core.errors import InvalidInputError
     from workstation.core.log import get_logger
     from workstation.core.progress import progress_bar
-    from workstation.io import check_output, format_of, write_cloud
+    from workstation.io import atomic_paths, check_outputs, format_of, write_cloud
     from workstation.lidar.platforms import Station
     from workstation.lidar.scene import build_scene, save_scene, scene_summary
     from workstation.lidar.simulate import ErrorModel, write_trajectory_csv
@@ -102,11 +103,10 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     log = get_logger(__name__)
     t0 = time.perf_counter()
     format_of(output)
-    check_output(output, overwrite)
     traj_out = Path(trajectory_path) if trajectory_path else Path(output).with_suffix(".trajectory.csv")
-    check_output(traj_out, overwrite)
-    if scene_out:
-        check_output(scene_out, overwrite)
+    outputs = [output, traj_out, *([scene_out] if scene_out else [])]
+    inputs = [p for p in (config_path, scene_path) if p and Path(p).is_file()]
+    check_outputs(outputs, overwrite, inputs=inputs)
     top: dict = {}
     if config_path:
         cfg, top = survey_from_toml(config_path, kind)
@@ -153,10 +153,11 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     if point_format == "6":
         cloud = cloud.without_attrs("rgb")
     opts = {"point_format": int(point_format)} if format_of(output)[0] in ("las", "laz") else {}
-    write_cloud(cloud, output, overwrite=overwrite, **opts)
-    write_trajectory_csv(result, traj_out, overwrite=overwrite)
-    if scene_out:
-        save_scene(scene, scene_out, overwrite=overwrite)
+    with atomic_paths(outputs, overwrite, inputs=inputs) as tmps:  # all files or none
+        write_cloud(cloud, tmps[0], overwrite=True, **opts)
+        write_trajectory_csv(result, tmps[1], overwrite=True)
+        if scene_out:
+            save_scene(scene, tmps[2], overwrite=True)
     dt = time.perf_counter() - t0
     log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
     if as_json:

@@ -166,8 +166,16 @@ def aligned_origin(xy: np.ndarray, cell: float) -> np.ndarray:
     return np.floor(column_min(xy) / cell) * cell
 
 
-def grid_index(xy: np.ndarray, cell: float, origin=None) -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray]:
+#: Bytes a filter allocates per grid cell over all its grids (a few float64 surfaces, indices).
+GRID_BYTES_PER_CELL = 64
+
+
+def grid_index(xy: np.ndarray, cell: float, origin=None, option: str = "--cell") -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray]:
     """Cell row/column of each point on a grid of ``cell`` metres.
+
+    The grid's size is checked first (:func:`workstation.core.budget.check_grid`, at most 100
+    cells a point and half the free memory): a cell far too small for the extent is an
+    :class:`InvalidInputError` naming ``option``, not a huge allocation.
 
     Returns
     -------
@@ -175,7 +183,13 @@ def grid_index(xy: np.ndarray, cell: float, origin=None) -> tuple[np.ndarray, np
     shape : (rows, cols)
     origin : (2,) float64 (x, y of the grid's lower-left corner)
     """
+    from workstation.core.budget import cells_for, check_grid
+
     o = column_min(xy) if origin is None else np.asarray(origin, dtype=np.float64)
+    if len(xy):
+        ext = column_max(xy) - o
+        check_grid(cells_for(ext[1], cell), cells_for(ext[0], cell), what="the ground filter's grid", option=option,
+                   cell=cell, bytes_per_cell=GRID_BYTES_PER_CELL, n_points=len(xy))
     c = np.floor((xy[:, 0] - o[0]) / cell).astype(np.int64)
     r = np.floor((xy[:, 1] - o[1]) / cell).astype(np.int64)
     shape = (int(r.max()) + 1, int(c.max()) + 1)
@@ -201,10 +215,11 @@ def grid_min(z: np.ndarray, r: np.ndarray, c: np.ndarray, shape) -> tuple[np.nda
     return zmin.reshape(shape), imin.reshape(shape)
 
 
-def lowest_per_cell(xyz: np.ndarray, cell: float, origin=None) -> np.ndarray:
+def lowest_per_cell(xyz: np.ndarray, cell: float, origin=None, option: str = "--cell") -> np.ndarray:
     """Indices (k,) of the lowest point of each occupied ``cell`` (grid from ``origin``, by
-    default the points' minimum corner), in raster order: PTD's seeds, the riser test's TIN."""
-    r, c, shape, _ = grid_index(xyz[:, :2], cell, origin)
+    default the points' minimum corner), in raster order: PTD's seeds, the riser test's TIN.
+    ``option`` names ``cell`` in the error of a grid too large (:func:`grid_index`)."""
+    r, c, shape, _ = grid_index(xyz[:, :2], cell, origin, option)
     _, imin = grid_min(xyz[:, 2], r, c, shape)
     return imin[imin >= 0]
 
@@ -352,6 +367,14 @@ def bilinear(grid: np.ndarray, xy: np.ndarray, cell: float, origin) -> np.ndarra
     return a
 
 
+def gradient(z: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
+    """``np.gradient`` (dz/drow, dz/dcol) of a grid, 0 along an axis of a single cell (a cloud
+    on one line of cells has no slope across it), where numpy would raise."""
+    gy = np.gradient(z, cell, axis=0) if z.shape[0] > 1 else np.zeros(z.shape)
+    gx = np.gradient(z, cell, axis=1) if z.shape[1] > 1 else np.zeros(z.shape)
+    return gy, gx
+
+
 def trend_tolerance(z: np.ndarray, cell: float, slope: float, factor: float, window: float) -> np.ndarray:
     """Per-cell slope tolerance of a slope-adaptive morphological object test:
     ``max(slope, factor · s)``, ``s`` the box mean over ``window`` (m) of the slope magnitude
@@ -359,7 +382,7 @@ def trend_tolerance(z: np.ndarray, cell: float, slope: float, factor: float, win
     magnitude is averaged, not the surface, so the two flanks of a ridge do not cancel."""
     from scipy.ndimage import uniform_filter
 
-    gy, gx = np.gradient(z, cell)
+    gy, gx = gradient(z, cell)
     width = max(3, int(round(window / cell)) | 1)
     return np.maximum(slope, factor * uniform_filter(np.hypot(gx, gy), width, mode="nearest"))
 
@@ -482,7 +505,14 @@ def opening_steps(surface: np.ndarray, cell: float, windows, opening=None) -> li
     list of (rows, cols) float64, one per window
     """
     opening = opening or open_disk
-    radii = [max(1, int(np.ceil(w / cell))) for w in windows]
+    # a disk reaching every cell opens the grid to its minimum, and later steps are 0: radii
+    # beyond the grid's diagonal change nothing, so they are clamped to it (a window of 1e9 m
+    # costs as much as one the size of the data)
+    reach = int(np.ceil(np.hypot(*surface.shape))) + 1
+    if max(windows) / cell > reach:
+        log.info("window of %g m reaches beyond the %d x %d-cell grid: clamped to %g m",
+                 max(windows), *surface.shape, reach * cell)
+    radii = [max(1, int(np.ceil(min(w / cell, reach)))) for w in windows]
     steepest = np.zeros(surface.shape)
     step = np.empty(surface.shape)
     out: dict[int, np.ndarray] = {}

@@ -330,7 +330,7 @@ def csf_ground(xyz: np.ndarray, p: CSFParams) -> np.ndarray:
     res = float(p.cloth_resolution)
     origin = xyz[:, :2].min(axis=0)
     # particle (r, c) sits at origin + (c, r) * res; each point goes to its nearest particle
-    r, c, shape, _ = common.grid_index(xyz[:, :2] + res / 2, res, origin=origin)
+    r, c, shape, _ = common.grid_index(xyz[:, :2] + res / 2, res, origin=origin, option="--cloth-resolution")
     zmin, imin = common.grid_min(xyz[:, 2], r, c, shape)
     use = np.ones(m, dtype=bool)
     surface_job = None

@@ -376,8 +376,12 @@ def read_isprs_text(path) -> Cloud:
 
 
 def evaluate_clouds(pred: Cloud, ref: Cloud, *, tolerance: float = 0.01, ground_classes=GROUND_CLASSES,
-                    pred_attr: str = "classification") -> tuple[Evaluation, np.ndarray, np.ndarray]:
+                    pred_attr: str = "classification", min_matched: float = 0.5) -> tuple[Evaluation, np.ndarray, np.ndarray]:
     """Match two clouds and evaluate ``pred``'s classes against ``ref``'s.
+
+    ``min_matched`` (fraction): at least this share of the smaller cloud's points must find a
+    partner, or the metrics would describe a few stray points (a wrong file, CRS or tolerance)
+    and :class:`InvalidInputError` is raised instead.
 
     Returns
     -------
@@ -389,10 +393,18 @@ def evaluate_clouds(pred: Cloud, ref: Cloud, *, tolerance: float = 0.01, ground_
         raise InvalidInputError(f"the prediction has no '{pred_attr}'", "run ws ground first", field=pred_attr)
     rc = reference_classes(ref)
     pi, ri, how = match_points(pred.xyz, ref.xyz, tolerance)
+    names = f"{pred.meta.get('source', 'prediction')} vs {ref.meta.get('source', 'reference')}: "
     if pi.size == 0:
         raise InvalidInputError(
-            "no point of the prediction matches a reference point",
+            f"{names}no point of the prediction matches a reference point",
             f"the clouds must hold the same points (within {tolerance} CRS units)")
+    smaller = min(pred.n, ref.n)
+    if pi.size < min_matched * smaller:
+        raise InvalidInputError(
+            f"{names}only {pi.size} of {smaller} points matched ({pi.size / smaller:.1%}; prediction {pred.n}, "
+            f"reference {ref.n} points): the metrics would describe a few stray points",
+            f"check that both files hold the same points in the same CRS and units, and the matching tolerance "
+            f"({tolerance} CRS units); at least {min_matched:.0%} must match", field="min_matched")
     ev = evaluate_labels(rc[ri], np.asarray(pred.attrs[pred_attr])[pi], ground_classes)
     ev = Evaluation(ev.classes, ev.confusion, ev.per_class, ev.overall_accuracy, ev.ground, ev.n_matched,
                     pred.n - pi.size, ref.n - ri.size, how)

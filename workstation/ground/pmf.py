@@ -68,8 +68,16 @@ PRESETS: dict[str, PMFParams] = {
 }
 
 
-def _windows(p: PMFParams) -> list[int]:
-    maxw = max(3, int(np.ceil(p.max_window / p.cell)))
+def _windows(p: PMFParams, shape=None) -> list[int]:
+    """Window sizes (cells) of the progressive opening up to ``max_window``.
+
+    With the grid ``shape``, the list stops at the first window that spans the whole grid: it
+    opens the surface to its minimum, so every later window finds the same surface with a
+    height threshold at least as large and changes no class (a ``max_window`` of 1e9 m costs
+    as much as one the size of the data).
+    """
+    maxw = max(3, int(np.ceil(min(p.max_window / p.cell, 1e15))))  # (an int even for max_window = inf)
+    span = 2 * max(shape) + 1 if shape is not None else None
     out = []
     k = 0
     while True:
@@ -77,6 +85,8 @@ def _windows(p: PMFParams) -> list[int]:
         if w > maxw:
             break
         out.append(w)
+        if span is not None and w >= span:
+            break
         k += 1
     return out or [3]
 
@@ -95,7 +105,7 @@ def pmf_ground(xyz: np.ndarray, p: PMFParams) -> np.ndarray:
     ground = ~low
     z = xyz[:, 2]
     prev_w = 1
-    for w in _windows(p):
+    for w in _windows(p, shape):
         opened = ndimage.grey_opening(surf, size=(w, w), mode="nearest")
         dh = p.initial_distance if prev_w == 1 else min(p.slope * (w - prev_w) * p.cell + p.initial_distance, p.max_distance)
         ground &= (z - opened[r, c]) <= dh

@@ -110,13 +110,13 @@ def _seeds(xyz: np.ndarray, cell: float) -> np.ndarray:
     """Indices of the lowest point per ``cell`` plus the lowest near each corner."""
     from scipy.spatial import cKDTree
 
-    seeds = common.lowest_per_cell(xyz, cell)
+    seeds = common.lowest_per_cell(xyz, cell, option="--seed-cell")
     lo = xyz[:, :2].min(axis=0)
     hi = xyz[:, :2].max(axis=0)
     corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [lo[0], hi[1]], [hi[0], hi[1]]])
     k = min(16, xyz.shape[0])
     _, j = cKDTree(xyz[:, :2]).query(corners, k=k)
-    j = np.atleast_2d(j)
+    j = np.reshape(j, (4, k))  # k = 1 gives a flat (4,) answer
     low = j[np.arange(4), np.argmin(xyz[j, 2], axis=1)]
     return np.unique(np.concatenate([seeds, low]))
 

@@ -164,7 +164,7 @@ def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams, off=(0, 0)) -
 def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:
     """Ground flags (m,) bool of local metric points (m, 3) by SMRF."""
     zpro, origin, _ = smrf_surface(xyz, p)
-    gy, gx = np.gradient(zpro, p.cell)
+    gy, gx = common.gradient(zpro, p.cell)
     gsurf = np.hypot(gx, gy)
     zs = common.bilinear(zpro, xyz[:, :2], p.cell, origin)
     gs = common.bilinear(gsurf, xyz[:, :2], p.cell, origin)

@@ -17,6 +17,8 @@ from workstation.core.products import Mesh, Reconstruction
 
 from .clean import CleanParams, clean
 from .color import ColorTransferParams, transfer_colors
+from workstation.core.geometry import require_spread
+
 from .normals import NormalParams, estimate_normals
 from .quality import QualityParams, mesh_quality
 from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, ball_pivoting, delaunay25d,
@@ -107,7 +109,10 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
     MeshResult
     """
     if cloud.n < 3:
-        raise InvalidInputError(f"{cloud.n} points: too few to mesh")
+        raise InvalidInputError(f"{cloud.n} points: too few to mesh", path=cloud.meta.get("source"))
+    if params.method in ("poisson", "bpa"):  # normals need k neighbours and a surface, before Open3D sees them
+        require_spread(cloud.xyz, 2, what=f"meshing ({params.method})", min_points=max(3, params.normals.k), field="xyz",
+                       path=cloud.meta.get("source"))
     steps: list[StepRecord] = []
     with Timer() as t:
         work = cloud

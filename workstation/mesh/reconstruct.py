@@ -20,6 +20,7 @@ import numpy as np
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.geometry import require_spread
 from workstation.core.log import get_logger
 from workstation.core.products import Mesh
 
@@ -156,6 +157,8 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
     if "normal" not in cloud.attrs:
         raise InvalidInputError("screened Poisson needs oriented normals", "run estimate_normals first",
                                 field="normal")
+    # PoissonRecon crashes the process on one repeated point and makes a tube of a line
+    require_spread(cloud.xyz, 2, what="screened Poisson meshing", field="xyz", path=cloud.meta.get("source"))
     if params.backend == "open3d":
         passive_openmp()
     else:
@@ -235,6 +238,7 @@ def ball_pivoting(cloud: Cloud, params: BallPivotingParams = BallPivotingParams(
     """
     if "normal" not in cloud.attrs:
         raise InvalidInputError("ball pivoting needs oriented normals", "run estimate_normals first", field="normal")
+    require_spread(cloud.xyz, 2, what="ball-pivoting meshing", field="xyz", path=cloud.meta.get("source"))
     pml = import_pymeshlab()
     from workstation.interop.pymeshlab import cloud_to_pymeshlab, meshset_with, pymeshlab_to_mesh
 
@@ -272,7 +276,9 @@ def delaunay25d(cloud: Cloud, params: Delaunay25dParams = Delaunay25dParams()) -
     from scipy.spatial import Delaunay
 
     if cloud.n < 3:
-        raise InvalidInputError(f"{cloud.n} points: a triangulation needs at least 3")
+        raise InvalidInputError(f"{cloud.n} points: a triangulation needs at least 3", path=cloud.meta.get("source"))
+    require_spread(cloud.xyz[:, :2], 2, what="a 2.5D Delaunay triangulation (of X, Y)", field="xyz",
+                   path=cloud.meta.get("source"))
     with Timer() as t:
         xyz = cloud.xyz
         xy = xyz[:, :2]

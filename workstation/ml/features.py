@@ -616,7 +616,9 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     g2 = provisional_ground(xyz, cell, windows[1], p.ground_slope * 2, zmin=zmin, rc=(r, c, shape),
                             steps=steps[1])
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
-    gy, gx = np.gradient(g, cell)
+    from workstation.ground.common import gradient
+
+    gy, gx = gradient(g, cell)  # 0 across a grid of one cell
     F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
     # while the kNN threads finish
     F[:, 24:29] = _echo_features(cloud)

@@ -73,11 +73,20 @@ def set_standardisation(model, X: np.ndarray) -> None:
 
 
 def resolve_device(device: str = "auto"):
-    """``torch.device`` for ``auto`` (CUDA when present), ``cpu`` or ``cuda``."""
+    """``torch.device`` for ``auto`` (CUDA when present), ``cpu`` or ``cuda``.
+
+    ``cuda`` on a machine where torch sees no CUDA device is an :class:`InvalidInputError`
+    naming ``--device``, raised here rather than as torch's error at the first tensor moved.
+    """
     import torch
 
     if device == "auto":
         return torch.device("cuda" if torch.cuda.is_available() else "cpu")
+    if str(device).startswith("cuda") and not torch.cuda.is_available():
+        from workstation.core.errors import InvalidInputError
+
+        why = "this torch has no CUDA support" if torch.version.cuda is None else "no CUDA device is visible"
+        raise InvalidInputError(f"--device {device}: {why}", "use --device cpu or auto", field="device")
     return torch.device(device)
 
 

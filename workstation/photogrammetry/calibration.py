@@ -25,6 +25,10 @@ from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Pose
 
+from workstation.core.geometry import affine_dimension
+
+from workstation.io.textfile import read_text
+
 from .collinearity import opk_from_pose, project
 
 log = get_logger(__name__)
@@ -226,7 +230,7 @@ def read_corner_files(model_file, corners_dir) -> tuple[np.ndarray, list[tuple[s
 
     def pairs(p: Path) -> np.ndarray:
         try:
-            v = np.array(p.read_text().split(), dtype=float)
+            v = np.array(read_text(p).split(), dtype=float)
         except ValueError:
             raise InvalidInputError("non-numeric text in a corner file", path=p) from None
         if v.size % 2:
@@ -529,8 +533,18 @@ def dlt_matrix(X: np.ndarray, uv: np.ndarray, planarity_ratio: float = 0.02) -> 
     if X.ndim != 2 or X.shape[1] != 3 or uv.shape != (X.shape[0], 2):
         raise InvalidInputError(f"need (n, 3) points and (n, 2) pixels, got {X.shape} and {uv.shape}")
     n = X.shape[0]
+    if not (np.isfinite(X).all() and np.isfinite(uv).all()):
+        raise InvalidInputError("a control point has a non-finite coordinate or pixel", "check the point file")
     if n < 6:
         raise InvalidInputError(f"DLT needs at least 6 control points, got {n}", "measure more control points")
+    distinct = len(np.unique(X, axis=0))
+    if distinct < 6:  # 11 parameters need 6 different points, not 6 rows
+        raise InvalidInputError(f"DLT needs at least 6 distinct control points, got {distinct} (of {n} rows)",
+                                "remove repeated rows and measure more control points")
+    if affine_dimension(uv) < 2:
+        raise InvalidInputError(
+            f"the {n} image points are {'all the same pixel' if affine_dimension(uv) == 0 else 'on one line'}",
+            "check the u v columns of the point file")
     sv = np.linalg.svd(X - X.mean(axis=0), compute_uv=False)
     if sv[0] <= 0 or sv[2] < planarity_ratio * sv[0]:
         raise InvalidInputError(
@@ -552,6 +566,23 @@ def dlt_matrix(X: np.ndarray, uv: np.ndarray, planarity_ratio: float = 0.02) -> 
     P = np.linalg.inv(T2) @ Pn @ T3
     P = P / np.linalg.norm(P[2, :3])
     return P
+
+
+def _check_dlt_camera(cam: Camera, rms: float) -> None:
+    """Refuse a DLT camera no physical camera can be: a focal length that is not a positive
+    number of pixels, a principal point outside the image, or residuals as large as the image
+    (the pixels do not belong to the points)."""
+    diag = float(np.hypot(cam.width, cam.height))
+    bad = []
+    if not (np.isfinite([cam.fx, cam.fy]).all() and min(cam.fx, cam.fy) >= 1.0):
+        bad.append(f"focal length {cam.fx:.3g} x {cam.fy:.3g} px")
+    if not (0.0 <= cam.cx <= cam.width and 0.0 <= cam.cy <= cam.height):
+        bad.append(f"principal point ({cam.cx:.1f}, {cam.cy:.1f}) outside the {cam.width} x {cam.height} image")
+    if rms > 0.1 * diag:
+        bad.append(f"RMS residual {rms:.3g} px ({rms / diag:.0%} of the image diagonal)")
+    if bad:
+        raise StageError("calibrate", "the DLT camera is not physical: " + "; ".join(bad),
+                         "check that the u v pixels match the X Y Z points row by row, their units and the image size")
 
 
 def decompose_projection(P: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -698,6 +729,7 @@ def calibrate_dlt(
     rms = float(np.sqrt(np.mean(np.sum(res**2, axis=1))))
     if not np.isfinite(rms):
         raise StageError("calibrate", "DLT produced a non-finite camera", "check the control points")
+    _check_dlt_camera(cam, rms)
     om, ph, ka = opk_from_pose(pose)
     return CalibrationResult(
         camera=cam,
@@ -726,7 +758,7 @@ def read_control_points(path) -> tuple[list[str], np.ndarray, np.ndarray]:
     if not p.is_file():
         raise InvalidInputError("control point file not found", path=p)
     names, xs, us = [], [], []
-    for lineno, line in enumerate(p.read_text().splitlines(), 1):
+    for lineno, line in enumerate(read_text(p).splitlines(), 1):
         line = line.split("#", 1)[0].strip()
         if not line:
             continue

@@ -13,6 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 
 
+#: Cells a side the packed keys ``(i << 32) + j`` hold without wrapping (i, j < 2^31).
+_MAX_INDEX = 2.0**31
+
+
 @dataclass
 class DensityAccumulator:
     """Accumulates occupied cells and hull points over chunks of a large file.
@@ -23,16 +27,23 @@ class DensityAccumulator:
         Grid cell size in CRS units (1 m expressed in those units by the caller).
     metres_per_unit : float
         To express areas in m².
+    strict : bool
+        A cell too small for the data's extent (more than 2^31 cells across) is an
+        :class:`InvalidInputError` naming ``--density-cell`` (True: the user chose the cell),
+        or leaves the occupied-cell figures NaN (False: a default cell on data that spans
+        more than it can index).
     """
 
     cell: float
     metres_per_unit: float = 1.0
     origin: np.ndarray | None = None
     n: int = 0
+    strict: bool = True
 
     def __post_init__(self):
         self._keys = np.empty(0, dtype=np.int64)
         self._hull = np.empty((0, 2))
+        self._too_fine = False
 
     def add(self, xy: np.ndarray) -> None:
         """Add (m, 2) plan coordinates."""
@@ -40,6 +51,19 @@ class DensityAccumulator:
             return
         if self.origin is None:
             self.origin = np.floor(xy.min(axis=0) / self.cell) * self.cell - 2**20 * self.cell
+        span = float(np.max(xy.max(axis=0) - self.origin)) / self.cell
+        self._too_fine |= not span < _MAX_INDEX  # the packed 64-bit cell keys would wrap around
+        if self._too_fine and not self.strict:
+            self._hull = _hull_points(np.vstack([self._hull, xy]))
+            self.n += len(xy)
+            return
+        if self._too_fine:
+            from workstation.core.errors import InvalidInputError
+
+            raise InvalidInputError(
+                f"a density cell of {self.cell:g} CRS units makes {span:.3g} cells across the data "
+                f"(at most {_MAX_INDEX:.3g})", f"use a larger --density-cell, e.g. {self.cell * span / 2**30:.2g}",
+                field="--density-cell")
         ij = np.floor((xy - self.origin) / self.cell).astype(np.int64)
         keys = np.unique((ij[:, 0] << 32) + ij[:, 1])
         self._keys = np.union1d(self._keys, keys)
@@ -51,7 +75,7 @@ class DensityAccumulator:
         density_occupied, density_footprint, nps} with densities in points/m² and NPS in
         CRS units."""
         m2 = self.metres_per_unit**2
-        occ_area = self._keys.size * self.cell**2 * m2
+        occ_area = float("nan") if self._too_fine else self._keys.size * self.cell**2 * m2
         hull_area = _hull_area(self._hull) * m2
         d_occ = self.n / occ_area if occ_area > 0 else float("nan")
         d_fp = self.n / hull_area if hull_area > 0 else float("nan")

@@ -34,8 +34,11 @@ class _Range:
         self.hi = hi if self.hi is None else np.maximum(self.hi, hi)
 
 
-def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0, **read_opts) -> dict:
+def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0, density_strict: bool = True,
+              **read_opts) -> dict:
     """Header-level facts and statistics of a point cloud file.
+
+    ``density_strict``: see :class:`workstation.qc.density.DensityAccumulator` (``strict``).
 
     Returns
     -------
@@ -63,7 +66,7 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
             meta = dict(chunk.meta)
             info = crs_info(crs)
             mpu = info.metres_per_unit if info else 1.0
-            acc = DensityAccumulator(density_cell_m / mpu, mpu)
+            acc = DensityAccumulator(density_cell_m / mpu, mpu, strict=density_strict)
         if chunk.n == 0:
             continue
         count += chunk.n

@@ -172,6 +172,9 @@ def contour_lines(raster: Raster, params: ContourParams = ContourParams()) -> Co
         a = np.where(a == raster.nodata, np.nan, a)
     if not np.isfinite(a).any():
         raise InvalidInputError("the DEM has no valid cell", field="array")
+    if min(a.shape) < 2:
+        raise InvalidInputError(f"a {a.shape[0]} x {a.shape[1]} DEM has no contours (2 x 2 cells at least)",
+                                "grid the cloud with a finer --resolution", field="shape")
     interval, reason = choose_interval(raster, params.interval)
     zmin, zmax = float(np.nanmin(a)), float(np.nanmax(a))
     k0 = math.ceil((zmin - params.base) / interval)

@@ -43,6 +43,7 @@ from typing import Iterator
 
 import numpy as np
 
+from workstation.core.budget import check_grid
 from workstation.core.classes import NOISE, ASPRSClass
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
@@ -54,6 +55,9 @@ from .grid import GridSpec, fill_voids_tin, tin_surface
 log = get_logger(__name__)
 
 KINDS = ("dsm", "dtm", "chm")
+#: Bytes per cell of an in-memory DEM: both accumulators (count, sums, maximum and its
+#: position), the interpolated float64 surface and the float32 result.
+_BYTES_PER_CELL = 96
 NICE_CELLS = (0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 2.5, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0)
 
 
@@ -210,6 +214,13 @@ class _MaxAcc:
 
 
 # --------------------------------------------------------------------------- sources
+def _names(source) -> str:
+    """The input file names of a DEM source (or the clouds' ``source`` meta), for messages."""
+    items = source if isinstance(source, (list, tuple)) else [source]
+    names = [str(s.meta.get("source", "cloud")) if isinstance(s, Cloud) else str(s) for s in items]
+    return ", ".join(names[:3]) + (f" (+{len(names) - 3} more)" if len(names) > 3 else "")
+
+
 def _iter_clouds(source, chunk_size: int) -> Iterator[Cloud]:
     if isinstance(source, Cloud):
         yield source
@@ -665,15 +676,15 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         reason = "given"
     if grid is None:
         grid = GridSpec.from_bounds(*survey.bounds, res)
-    if grid.rows * grid.cols > 400_000_000:
-        raise InvalidInputError(
-            f"grid of {grid.rows}×{grid.cols} cells is too large", "use a coarser --resolution or split the input"
-        )
+    tiled = bool(tile_cells) and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells
+    # out of core only the float32 result spans the grid; in memory the per-cell accumulators too
+    check_grid(grid.rows, grid.cols, what=f"the {kind} grid", option="--resolution", cell=res,
+               bytes_per_cell=4 if tiled else _BYTES_PER_CELL, path=_names(source))
     crs = survey.crs if survey else None
-    if tile_cells and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells:
+    if tiled:
         arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
         if not np.isfinite(arr).any():
-            raise StageError("dem", f"the {kind} has no valid cell", "check the input extent and resolution")
+            raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
         meta = {
             "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
             "resolution": res, "resolution_reason": reason, "points": n_used, "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
@@ -716,7 +727,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
             dsm = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
             arr = np.maximum(dsm - dtm, 0.0)
     if not np.isfinite(arr).any():
-        raise StageError("dem", f"the {kind} has no valid cell", "check the input extent and resolution")
+        raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
     meta = {
         "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
         "resolution": res, "resolution_reason": reason, "points": n_used,

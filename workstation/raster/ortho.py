@@ -35,9 +35,12 @@ from pathlib import Path
 
 import numpy as np
 
+from workstation.core.budget import check_grid
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Image, Pose, Raster, Reconstruction
+
+from workstation.io.textfile import read_text
 
 from .grid import GridSpec
 
@@ -138,16 +141,17 @@ def write_reconstruction_json(rec: Reconstruction, path, overwrite: bool = False
 
 
 def _read_json(path: Path) -> Reconstruction:
+    from workstation.io.paths import resolve_inside
+
     try:
-        doc = json.loads(path.read_text())
+        doc = json.loads(read_text(path))
         cams = {int(k): Camera(int(c["width"]), int(c["height"]), float(c["fx"]), float(c.get("fy", c["fx"])),
                                float(c["cx"]), float(c["cy"]), float(c.get("skew", 0.0)),
                                tuple(float(d) for d in (list(c.get("dist", [])) + [0.0] * 5)[:5]), c.get("model", "OPENCV"))
                 for k, c in doc["cameras"].items()}
         imgs = {}
         for k, im in doc["images"].items():
-            p = im.get("path") or im["name"]
-            p = str((path.parent / p).resolve()) if not Path(p).is_absolute() else p
+            p = str(resolve_inside(im.get("path") or im["name"], path.parent, source=path, field=f"images.{k}.path"))
             imgs[int(k)] = Image(im["name"], int(im["camera_id"]), Pose(np.array(im["R"], float), np.array(im["t"], float)), p)
     except (KeyError, TypeError, ValueError, json.JSONDecodeError) as e:
         raise InvalidInputError(f"not a cameras JSON ({e})", "see write_reconstruction_json for the layout", path=path) from None
@@ -328,6 +332,9 @@ def true_ortho(rec: Reconstruction, dsm: Raster, params: OrthoParams = OrthoPara
     dgrid = GridSpec.from_transform(dsm.transform, dsm_a.shape)
     res = params.resolution or dgrid.res
     xmin, ymin, xmax, ymax = dgrid.bounds
+    # RGBA bytes, the float64 ground coordinates and per-view weights of each cell
+    check_grid(max(1.0, round((ymax - ymin) / res)), max(1.0, round((xmax - xmin) / res)), what="the orthophoto",
+               option="--resolution", cell=res, bytes_per_cell=64)
     og = GridSpec(xmin, ymax, res, max(1, int(round((ymax - ymin) / res))), max(1, int(round((xmax - xmin) / res))))
     zmax = float(np.nanmax(dsm_a))
     dsm_occ = np.where(np.isnan(dsm_a), -np.inf, dsm_a)

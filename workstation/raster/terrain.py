@@ -50,6 +50,10 @@ def _band(raster: Raster) -> np.ndarray:
         a = a[0]
     if raster.nodata is not None and not np.isnan(raster.nodata):
         a = np.where(a == raster.nodata, np.nan, a)
+    if not np.isfinite(a).any():  # a product of nodata only would look like a success
+        raise InvalidInputError(f"the DEM has no valid cell: all {a.size} cells are nodata ({raster.nodata})",
+                                "check the DEM (its extent, nodata value and the classes it was built from)",
+                                path=raster.meta.get("path"), field="array")
     return a
 
 

@@ -110,11 +110,43 @@ class RegisterParams:
             raise InvalidInputError("min_fitness must be in [0, 1]", field="min_fitness")
 
 
+#: Voxels a side Open3D can index (a signed 32-bit voxel coordinate).
+_MAX_VOXELS_A_SIDE = 2**31 - 1
+
+
 def _check_cloud(c: Cloud, name: str) -> None:
+    """Refuse a cloud registration cannot use: not a Cloud, under 10 points, or one point repeated."""
     if not isinstance(c, Cloud):
         raise InvalidInputError(f"{name} must be a Cloud, got {type(c).__name__}", field=name)
+    src = c.meta.get("source")
     if c.n < 10:
-        raise InvalidInputError(f"{name} has {c.n} points; registration needs at least 10", field=name)
+        raise InvalidInputError(f"{name} has {c.n} points; registration needs at least 10", path=src, field=name)
+    if not np.ptp(c.xyz, axis=0).any():
+        raise InvalidInputError(f"all {c.n} points of the {name} are the same point", "check the input file",
+                                path=src, field=name)
+
+
+def _check_voxel(xyz: np.ndarray, voxel: float, smallest: float, name: str) -> None:
+    """Refuse a voxel so small that Open3D cannot index the cloud's extent with it.
+
+    ``smallest`` is the finest voxel any step uses (the fine stage's ``voxel / 3`` or ``/ 9``).
+    """
+    ext = float(np.max(np.ptp(xyz, axis=0)))
+    if ext / smallest >= _MAX_VOXELS_A_SIDE:
+        raise InvalidInputError(
+            f"voxel size {voxel:g} is too small for the {name} ({ext:.4g} across: {ext / smallest:.3g} voxels a side, "
+            f"Open3D indexes at most {_MAX_VOXELS_A_SIDE})",
+            f"give --voxel-size of at least {ext / 2**30 * voxel / smallest:.3g}, or omit it to estimate one from the spacing",
+            field="voxel_size")
+
+
+def _check_downsampled(prep, voxel: float, name: str) -> None:
+    """Refuse a voxel that leaves fewer than 3 points for the coarse (feature) stage."""
+    m = len(prep.down.points)
+    if m < 3:
+        raise InvalidInputError(
+            f"voxel size {voxel:g} leaves {m} point(s) of the {name} after downsampling; the coarse stage needs at least 3",
+            "give a smaller --voxel-size, or omit it to estimate one from the spacing", field="voxel_size")
 
 
 def _colors(c: Cloud):
@@ -175,6 +207,8 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     fine_voxel = params.fine_voxel
     if fine_voxel is None and max(source.n, target.n) > params.fine_max_points:
         fine_voxel = voxel / (9.0 if params.method == "similarity" else 3.0)
+    _check_voxel(xs, voxel, min(voxel, fine_voxel or voxel), "source")
+    _check_voxel(xt, voxel, min(voxel, fine_voxel or voxel), "target")
     meta: dict = {"voxel_size": voxel, "origin": origin.tolist()}
     T0 = None if init is None else local_transform(np.asarray(init, float), origin, origin)
     method = params.method
@@ -193,6 +227,9 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
             remove_outliers=params.remove_outliers, viewpoint=vs)
         pt = prepare(xt, radii, features=need_coarse or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
                      remove_outliers=params.remove_outliers, viewpoint=vt)
+        if need_coarse:
+            _check_downsampled(ps, voxel, "source")
+            _check_downsampled(pt, voxel, "target")
     timings["prepare"] = time.perf_counter() - t0
 
     if need_coarse:

@@ -145,8 +145,9 @@ def _scalar_colors(obj, params: RenderParams):
     if c == "elevation":
         return c, None, np.asarray(xyz[:, 2], dtype=np.float64), f"Elevation ({_units(obj.crs)})"
     if c not in attrs:
-        raise InvalidInputError(f"no attribute '{c}' to colour by",
-                                "available: " + ", ".join(sorted(attrs)) or "none", field=c)
+        raise InvalidInputError(f"--color {c}: neither a colouring nor an attribute of this data",
+                                "use one of " + ", ".join(NAMED_COLORS) + "; attributes here: "
+                                + (", ".join(sorted(attrs)) or "none"), field="color")
     a = np.asarray(attrs[c])
     if a.ndim == 2 and a.shape[1] == 3:
         from workstation.interop.pymeshlab import rgb_to_u8

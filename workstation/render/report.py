@@ -22,6 +22,7 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
+from workstation.io.textfile import read_text
 
 log = get_logger(__name__)
 
@@ -304,7 +305,7 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
     stage_html = []
     for p in jsons:
         try:
-            doc = json.loads(p.read_text())
+            doc = json.loads(read_text(p))
         except (OSError, ValueError) as e:
             stage_html.append(f'<p class="note">{html.escape(p.name)}: unreadable ({html.escape(str(e))})</p>')
             continue
