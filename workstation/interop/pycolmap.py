@@ -147,12 +147,15 @@ def reconstruction_from_pycolmap(rec, image_dir=None, with_tracks: bool = False)
     ``point_ids`` (COLMAP point3D id of each row). ``with_tracks`` also loads the image
     observations (:func:`tracks_from_pycolmap`), needed by a bundle adjustment.
     """
+    from workstation.io.paths import resolve_inside
+
     cameras = {int(cid): camera_from_pycolmap(c) for cid, c in rec.cameras.items()}
     images = {}
     for iid, im in rec.images.items():
         if not im.has_pose:
             continue
-        path = str(Path(image_dir) / im.name) if image_dir is not None else None
+        path = None if image_dir is None else str(
+            resolve_inside(im.name, image_dir, source=image_dir, field=f"name of model image {iid}"))
         images[int(iid)] = Image(im.name, int(im.camera_id), pose_from_pycolmap(im), path)
     n = rec.num_points3D()
     pts = np.empty((n, 3))

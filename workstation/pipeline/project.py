@@ -127,6 +127,9 @@ def _table(doc: dict, key: str, path: Path) -> dict:
 
 
 def _expand_clouds(patterns, folder: Path, path: Path) -> tuple:
+    """The files matching ``patterns``; each must lie in the project folder (or --allow-outside)."""
+    from workstation.io.paths import resolve_inside
+
     if isinstance(patterns, str):
         patterns = [patterns]
     if not isinstance(patterns, list) or not patterns or not all(isinstance(p, str) for p in patterns):
@@ -143,7 +146,7 @@ def _expand_clouds(patterns, folder: Path, path: Path) -> tuple:
             raise InvalidInputError(f"no LAS/LAZ/COPC file matches '{pattern}' (looked in {full.parent})",
                                     "check the pattern; it is relative to the project file's folder",
                                     path=path, field="inputs.clouds")
-        found.update(h.resolve() for h in hits)
+        found.update(resolve_inside(h, folder, source=path, field="inputs.clouds").resolve() for h in hits)
     return tuple(sorted(found))
 
 
