@@ -288,7 +288,8 @@ def test_empty_file_folder_and_random_bytes(tmp_path, ext):
 # ---------------------------------------------------------------------------------------
 # random bytes and random mutations (hypothesis)
 
-_FUZZ = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture], database=None)
+_FUZZ = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture], database=None,
+                 derandomize=True)  # the same examples every run (CI); explore with derandomize=False
 
 
 @pytest.mark.parametrize("variant", _IDS)

@@ -245,3 +245,18 @@ def test_outputs_get_normal_permissions(tmp_path, small_cloud):
     mask = os.umask(0o022)
     os.umask(mask)
     assert stat.S_IMODE(out.stat().st_mode) == 0o666 & ~mask
+
+
+@pytest.mark.parametrize("ext", ["las", "laz"])
+def test_extended_vlrs_survive_a_write(tmp_path, ext):
+    """EVLRs (where copc-lib keeps the CRS) are written after the points, not dropped."""
+    import numpy as np
+
+    from workstation.core.cloud import Cloud
+    from workstation.io import read_cloud, write_cloud
+
+    rec = {"user_id": "test", "record_id": 7, "description": "x", "data": b"hello"}
+    c = Cloud(np.arange(30.0).reshape(10, 3), {}, crs="EPSG:32632").with_meta(las={"evlrs": [rec]})
+    write_cloud(c, tmp_path / f"a.{ext}")
+    back = read_cloud(tmp_path / f"a.{ext}")
+    assert back.meta["las"]["evlrs"] == [rec] and back.n == 10

@@ -120,3 +120,81 @@ def _round_up(x: float) -> str:
         return f"{x:g}"
     e = math.floor(math.log10(x)) - 1
     return f"{math.ceil(x / 10.0 ** e) * 10.0 ** e:.3g}"
+
+
+#: Automatic (default) cell sizes are coarsened until their grid has at most this many cells
+#: per point ...
+AUTO_CELLS_PER_POINT = 16
+#: ... or this many cells in all (a default never changes on data of ordinary density).
+AUTO_MIN_CELLS = 1 << 18
+
+
+def fit_cell(cell: float, extent_x: float, extent_y: float, n_points: int, xy=None) -> float:
+    """A default ``cell`` coarsened so its grid over the extent is sized by the points.
+
+    A default made for dense data (a 1 m cell) on a sparse cloud spread over kilometres would
+    allocate a grid of the bounding box, not of the points; the cell then grows (by a round
+    factor of 2, 2.5, 5 × 10^k) until the grid has at most ``max(AUTO_CELLS_PER_POINT × n,
+    AUTO_MIN_CELLS)`` cells. A cell the user chose is never changed (:func:`check_grid` refuses
+    it instead, naming the option).
+
+    With the points ``xy`` ((n, 2), the units of the extent) the cell grows only when they
+    are spread evenly over their box (:func:`evenly_spread`): a dense survey with one stray
+    point 100 km away keeps its cell (and is refused by :func:`check_grid`) instead of being
+    filtered on a coarse grid.
+
+    Examples
+    --------
+    >>> fit_cell(1.0, 100.0, 100.0, 10_000)          # ordinary data: unchanged
+    1.0
+    >>> fit_cell(1.0, 5000.0, 5000.0, 6000)          # 6,000 points over 5 km x 5 km
+    10.0
+    """
+    limit = max(AUTO_CELLS_PER_POINT * float(n_points), float(AUTO_MIN_CELLS))
+    cells = cells_for(extent_x, cell) * cells_for(extent_y, cell)
+    if not (cell > 0) or cells <= limit or (xy is not None and not evenly_spread(xy, extent_x, extent_y)):
+        return cell
+    for factor in _nice_factors(math.sqrt(cells / limit)):
+        c = cell * factor
+        if cells_for(extent_x, c) * cells_for(extent_y, c) <= limit:
+            return c
+    return cell * math.sqrt(cells / limit) * 2.0  # pragma: no cover - the loop always finds one
+
+
+def _nice_factors(start: float):
+    """1, 2, 2.5, 5 × 10^k factors from the one at or below ``start`` upwards."""
+    e = math.floor(math.log10(max(start, 1.0)))
+    while True:
+        for m in (1.0, 2.0, 2.5, 5.0):
+            if m * 10.0 ** e >= start * 0.999:
+                yield m * 10.0 ** e
+        e += 1
+
+
+#: Share of the cells of the mean point spacing that must hold a point for a cloud to count as
+#: evenly spread (1 - 1/e = 0.63 for uniform random points; a stray point makes it ~0).
+EVEN_SHARE = 1.0 / 3.0
+
+
+def evenly_spread(xy, extent_x: float, extent_y: float) -> bool:
+    """True when points ``xy`` (n, 2) fill their box: at least :data:`EVEN_SHARE` of the
+    cells of the mean spacing ``sqrt(area / n)`` hold a point.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> xy = np.random.default_rng(0).uniform(0, 5000, (6000, 2))
+    >>> evenly_spread(xy, 5000, 5000), evenly_spread(np.vstack([xy[:5999] / 100, [[5000, 5000]]]), 5000, 5000)
+    (True, False)
+    """
+    import numpy as np
+
+    xy = np.asarray(xy, dtype=np.float64)
+    n = len(xy)
+    area = float(extent_x) * float(extent_y)
+    if n == 0 or not (area > 0 and math.isfinite(area)):
+        return False
+    s = math.sqrt(area / n)
+    ij = np.floor((xy - xy.min(axis=0)) / s).astype(np.int64)
+    occupied = len(np.unique(ij[:, 0] * (int(cells_for(extent_y, s)) + 1) + ij[:, 1]))
+    return occupied >= EVEN_SHARE * cells_for(extent_x, s) * cells_for(extent_y, s)

@@ -101,3 +101,10 @@ def doing(what: str) -> Iterator[None]:
             with contextlib.suppress(AttributeError, TypeError):
                 exc.ws_doing = what
         raise
+
+
+def is_library_panic(exc: BaseException) -> bool:
+    """Whether ``exc`` is a Rust library's panic surfacing in Python (pyo3's ``PanicException``,
+    raised by lazrs on some damaged LAZ files). It derives from ``BaseException``, so
+    ``except Exception`` does not see it."""
+    return type(exc).__name__ == "PanicException"

@@ -7,6 +7,13 @@ import logging
 logger = logging.getLogger("workstation")
 logger.addHandler(logging.NullHandler())
 
+_quiet = False
+
+
+def is_quiet() -> bool:
+    """True after ``configure(quiet=True)`` (``ws -q``): no progress and no summary lines."""
+    return _quiet
+
 
 def get_logger(name: str) -> logging.Logger:
     """Child logger of ``workstation`` (pass ``__name__``)."""
@@ -15,6 +22,8 @@ def get_logger(name: str) -> logging.Logger:
 
 def configure(verbosity: int = 0, quiet: bool = False) -> None:
     """Send package logs to stderr through rich: WARNING by default, INFO with -v, DEBUG with -vv."""
+    global _quiet
+    _quiet = bool(quiet)
     level = logging.ERROR if quiet else (logging.WARNING, logging.INFO, logging.DEBUG)[min(verbosity, 2)]
     try:
         from rich.logging import RichHandler

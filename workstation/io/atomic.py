@@ -27,6 +27,9 @@ def check_output(path, overwrite: bool = False, inputs=()) -> Path:
         When the output is one of the inputs or its folder does not exist.
     """
     p = Path(path)
+    from .copc import refuse_copc_output
+
+    refuse_copc_output(p)
     for i in inputs:
         try:
             same = Path(i).exists() and p.exists() and os.path.samefile(i, p)
@@ -40,6 +43,9 @@ def check_output(path, overwrite: bool = False, inputs=()) -> Path:
         raise OutputExistsError(p)
     if p.exists() and p.is_dir():
         raise InvalidInputError("output is a folder", "give a file name", path=p)
+    if p.exists() and not p.is_file():
+        raise InvalidInputError("output exists and is not a regular file (a device or a pipe)",
+                                "give a file name", path=p)
     if not p.parent.exists():
         raise InvalidInputError(f"folder {p.parent} does not exist", "create it first", path=p)
     return p

@@ -269,8 +269,15 @@ def _check_laz_count(path: Path, header) -> None:
 
 
 def _vlr_records(vlrs) -> list[dict]:
+    """The (E)VLRs to keep for writing back, as plain records. The COPC info VLR and hierarchy
+    EVLR are left out without a word: they index this file's bytes and would be false in any
+    file written from the points (a COPC file written as LAZ is plain LAZ)."""
+    from .copc import is_copc_vlr
+
     out = []
     for v in vlrs:
+        if is_copc_vlr(v.user_id, v.record_id):
+            continue
         try:
             data = v.record_data_bytes() if hasattr(v, "record_data_bytes") else bytes(v.record_data)
         except Exception:  # a VLR laspy cannot serialise back: keep nothing rather than garbage
@@ -288,6 +295,11 @@ def _crs_string(header, path) -> str | None:
         return None
     if crs is None:
         return None
+    from workstation.io.crs import apply_unit_geokeys
+
+    fixed = apply_unit_geokeys(crs, header.vlrs)  # ProjLinearUnits/VerticalUnits GeoKeys (laspy ignores them)
+    if fixed is not crs:  # units overridden: no EPSG code says that (skip PROJ's slow search)
+        return fixed.to_wkt()
     epsg = crs.to_epsg(min_confidence=100)
     return f"EPSG:{epsg}" if epsg else crs.to_wkt()
 
@@ -478,7 +490,40 @@ def _range_records(reader, path, start: int, stop: int, chunk_size: int):
                                 "get a complete copy of the file", path=path, field="point_count")
 
 
-def read(path, *, chunk_size: int | None = None) -> Cloud:
+def bounds_mask(arr, header, bounds) -> np.ndarray:
+    """Which records of ``arr`` (raw LAS records) lie inside ``bounds`` (xmin, ymin, xmax, ymax
+    [, zmin, zmax]), by laspy's COPC rule: inclusive, on the integer coordinates the bounds
+    round to, so a plain file and its COPC copy give the same points."""
+    b = np.asarray(bounds, dtype=np.float64)
+    dims = "XYZ"[: len(b) // 2]
+    lo = np.round((b[[0, 1, 4][: len(dims)]] - header.offsets[: len(dims)]) / header.scales[: len(dims)])
+    hi = np.round((b[[2, 3, 5][: len(dims)]] - header.offsets[: len(dims)]) / header.scales[: len(dims)])
+    keep = np.ones(len(arr), dtype=bool)
+    for i, c in enumerate(dims):
+        keep &= (arr[c] >= lo[i]) & (arr[c] <= hi[i])
+    return keep
+
+
+def _read_inside(path: Path, bounds, chunk_size: int | None) -> Cloud:
+    """The points inside ``bounds``: the file streamed chunk by chunk, each chunk's raw records
+    filtered, only the kept records held (compact) until one final fill."""
+    laspy = _laspy()
+    with _open(path) as reader:
+        header = reader.header
+        _check_point_bytes(path, header)
+        n = int(header.point_count)
+        size = chunk_size or (CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS)
+        kept = [rec.array[bounds_mask(rec.array, header, bounds)] for rec in _records(reader, path, n, size)]
+        meta, crs = _meta_and_crs(header, path)
+    arr = np.concatenate(kept) if kept else np.empty(0, header.point_format.dtype())
+    rec = laspy.ScaleAwarePointRecord(arr, header.point_format, header.scales, header.offsets)
+    filler = _allocate(path, header, len(arr))
+    filler.fill(rec, 0)
+    meta["las"]["crs"] = crs
+    return Cloud.from_owned_arrays(filler.xyz, filler.attrs, crs=crs, meta=meta)
+
+
+def read(path, *, chunk_size: int | None = None, bounds=None) -> Cloud:
     """Read a LAS or LAZ file.
 
     Parameters
@@ -487,6 +532,9 @@ def read(path, *, chunk_size: int | None = None) -> Cloud:
     chunk_size : int, optional
         Points decoded per step; bounds the temporary memory (default 262,144 for LAS,
         1,048,576 for LAZ).
+    bounds : (4,) or (6,) floats, optional
+        Only the points inside (xmin, ymin, xmax, ymax[, zmin, zmax]), see :func:`bounds_mask`;
+        the file is streamed, never held whole.
 
     Returns
     -------
@@ -495,6 +543,8 @@ def read(path, *, chunk_size: int | None = None) -> Cloud:
         everything needed to write the file back exactly.
     """
     path = Path(path)
+    if bounds is not None:
+        return _read_inside(path, bounds, chunk_size)
     with _open(path) as reader:
         header = reader.header
         _check_point_bytes(path, header)
@@ -546,10 +596,12 @@ def read_header(path) -> dict:
         }
 
 
-def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | None = None) -> Iterator[Cloud]:
+def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | None = None,
+                bounds=None) -> Iterator[Cloud]:
     """Stream a LAS/LAZ file as clouds of at most ``chunk_size`` points (memory: one chunk);
     with ``start``/``stop``, only the points of that index range (a LAZ file is sought to the
-    compressed chunk that holds ``start``)."""
+    compressed chunk that holds ``start``); with ``bounds``, only the points of each chunk
+    inside them (:func:`bounds_mask`; a chunk may then be empty)."""
     path = Path(path)
     with _open(path) as reader:
         header = reader.header
@@ -563,6 +615,8 @@ def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | N
         else:
             records = _records(reader, path, n, chunk_size)
         for rec in records:
+            if bounds is not None:
+                rec = rec[bounds_mask(rec.array, header, bounds)]
             f = _Filler(header, len(rec))
             f.fill(rec, 0)
             yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
@@ -583,30 +637,137 @@ def _is_geographic(crs: str | None) -> bool:
         return False
 
 
+_INT_LIMIT = 2**31 - 1  # LAS stores X, Y, Z as signed 32-bit integers
+
+
 def _fits(xyz_min, xyz_max, scales, offsets) -> bool:
     lo = (xyz_min - offsets) / scales
     hi = (xyz_max - offsets) / scales
-    lim = 2**31 - 1
-    return bool(np.all(lo >= -lim) and np.all(hi <= lim))
+    return bool(np.all(lo >= -_INT_LIMIT) and np.all(hi <= _INT_LIMIT))
 
 
-def _scales_offsets(cloud: Cloud, las_meta: dict, scales, offsets):
-    if cloud.n:
+def _pow10_floor(v: float) -> float:
+    """The largest power of ten <= ``v`` (``v`` > 0), as an exact decimal float (1e-9, 0.001 ...)."""
+    return float(f"1e{int(np.floor(np.log10(v) + 1e-9))}")
+
+
+def _metres_per_unit(crs: str | None) -> float:
+    """Horizontal metres per CRS unit (111,320 for degrees; 1 when unknown)."""
+    from workstation.io.crs import crs_info
+
+    try:
+        info = crs_info(crs)
+    except InvalidInputError:
+        return 1.0
+    return 1.0 if info is None else float(info.metres_per_unit)
+
+
+def auto_scales(crs: str | None, source_scales=None, source_crs: str | None = None) -> np.ndarray:
+    """Scales (x, y, z) for writing coordinates in ``crs``, keeping the source's resolution.
+
+    Without a source: 1e-7 degrees (about 1 cm) for a geographic CRS, else 0.001 units.
+    With the ``source_scales`` of a file in ``source_crs``, the horizontal ground resolution
+    ``s_xy * metres_per_unit(source)`` is carried over: into degrees at a tenth of it (so a
+    projected -> geographic -> projected round trip stays far below the source's quantum:
+    0.01 m -> 1e-9 degree), into projected units at the power of ten at or below it (1e-7
+    degree -> 0.01 m; 1e-9 degree -> 0.0001 m); between projected CRSs of the same unit the
+    scale is kept. The vertical scale is the source's (heights do not change with a
+    horizontal reprojection).
+
+    Examples
+    --------
+    >>> auto_scales("EPSG:4326").tolist(), auto_scales("EPSG:32632").tolist()
+    ([1e-07, 1e-07, 0.001], [0.001, 0.001, 0.001])
+    >>> auto_scales("EPSG:4326", [0.01, 0.01, 0.01], "EPSG:32632").tolist()
+    [1e-09, 1e-09, 0.01]
+    >>> auto_scales("EPSG:32632", [1e-7, 1e-7, 0.001], "EPSG:4326").tolist()
+    [0.01, 0.01, 0.001]
+    """
+    geo = _is_geographic(crs)
+    if source_scales is None:
+        xy = _GEOGRAPHIC_SCALE if geo else _DEFAULT_SCALE
+        return np.array([xy, xy, _DEFAULT_SCALE])
+    s = np.asarray(source_scales, dtype=np.float64).reshape(3)
+    src_unit, dst_unit = _metres_per_unit(source_crs), _metres_per_unit(crs)
+    ground = float(min(s[0], s[1])) * src_unit  # metres of one horizontal step of the source
+    if geo and not _is_geographic(source_crs):
+        xy = _pow10_floor(ground / dst_unit / 10.0)
+    elif geo or src_unit == dst_unit:
+        xy = float(min(s[0], s[1]))
+    else:
+        xy = _pow10_floor(ground / dst_unit)
+    return np.array([xy, xy, float(s[2])])
+
+
+def auto_offsets(lo, hi, scales, crs: str | None = None) -> np.ndarray:
+    """Offsets at the data's rounded centre: the centre of ``lo``..``hi`` rounded to a step
+    that keeps every coordinate within the 32-bit range at ``scales`` (at most 1 degree for
+    geographic x/y, 1000 units otherwise), so the integers stay small and the file reads
+    naturally (offset -123, 44 for Oregon in degrees; 636000 for metres).
+
+    Examples
+    --------
+    >>> auto_offsets([-123.07, 44.05, 406.0], [-123.06, 44.06, 520.0], [1e-9, 1e-9, 0.01], "EPSG:4326").tolist()
+    [-123.1, 44.1, 0.0]
+    """
+    lo, hi = np.asarray(lo, dtype=np.float64), np.asarray(hi, dtype=np.float64)
+    scales = np.asarray(scales, dtype=np.float64).reshape(3)
+    caps = np.array([1.0, 1.0, 1000.0]) if _is_geographic(crs) else np.full(3, 1000.0)
+    steps = np.array([min(cap, _pow10_floor(_INT_LIMIT * s / 4.0)) for cap, s in zip(caps, scales)])
+    centre = (lo + hi) / 2.0
+    return np.round(np.round(centre / steps) * steps, 12)
+
+
+def fitted_scales(lo, hi, scales) -> np.ndarray:
+    """``scales`` coarsened by powers of ten on the axes whose extent cannot fit 32 bits
+    around any offset (an automatic scale never makes a file unwritable).
+
+    Examples
+    --------
+    >>> fitted_scales([0, 0, 0], [1.0, 5.0, 10.0], [1e-10, 1e-10, 0.001]).tolist()
+    [1e-09, 1e-08, 0.001]
+    """
+    lo, hi = np.asarray(lo, dtype=np.float64), np.asarray(hi, dtype=np.float64)
+    scales = np.asarray(scales, dtype=np.float64).copy()
+    for i in range(3):
+        while (hi[i] - lo[i]) / 2.0 > 0.7 * _INT_LIMIT * scales[i]:
+            scales[i] = _pow10_floor(scales[i] * 10.0 * 1.0001)
+    return scales
+
+
+def _scales_offsets(cloud: Cloud, las_meta: dict, scales, offsets, bounds=None):
+    """The scales and offsets to write ``cloud`` with.
+
+    ``scales``/``offsets`` given by the caller are used as they are (``offsets="auto"`` asks
+    for :func:`auto_offsets`); else those the cloud was read with, else :func:`auto_scales`
+    and :func:`auto_offsets`. ``bounds`` (lo, hi) stands for the data when the cloud is only
+    the first chunk of a stream.
+    """
+    if bounds is not None:
+        lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
+    elif cloud.n:
         lo, hi = cloud.xyz.min(axis=0), cloud.xyz.max(axis=0)
     else:
         lo = hi = np.zeros(3)
+    given = scales is not None
     if scales is None:
-        scales = las_meta.get("scales") or [(_GEOGRAPHIC_SCALE if _is_geographic(cloud.crs) else _DEFAULT_SCALE)] * 3
+        scales = las_meta.get("scales")
+        scales = fitted_scales(lo, hi, auto_scales(cloud.crs)) if scales is None else scales
     scales = np.asarray(scales, dtype=np.float64).reshape(3)
+    if isinstance(offsets, str) and offsets == "auto":
+        offsets = auto_offsets(lo, hi, scales, cloud.crs)
     if offsets is None:
         offsets = las_meta.get("offsets")
         if offsets is None or not _fits(lo, hi, scales, np.asarray(offsets, dtype=float)):
-            offsets = np.floor(lo / 1000.0) * 1000.0 if cloud.n else np.zeros(3)
+            offsets = auto_offsets(lo, hi, scales, cloud.crs)
     offsets = np.asarray(offsets, dtype=np.float64).reshape(3)
     if not _fits(lo, hi, scales, offsets):
+        reach = (_INT_LIMIT * scales).tolist()
         raise InvalidInputError(
-            "coordinates do not fit LAS 32-bit integers at this scale",
-            f"use a coarser scale than {scales.tolist()}",
+            f"coordinates {lo.tolist()} .. {hi.tolist()} do not fit LAS 32-bit integers at scale "
+            f"{scales.tolist()} and offset {offsets.tolist()} (reach ±{reach} from the offset)",
+            "give a coarser --scale or an --offset near the data (or --offset auto)" if given
+            else "give --offset auto or an offset near the data",
             field="xyz",
         )
     return scales, offsets
@@ -698,28 +859,89 @@ def write(
         "1.1"-"1.4" (laspy cannot write 1.0; 1.1 has its layout); raised to what the point
         format needs.
     scales, offsets : (3,) floats, optional
-        Coordinate quantisation; default: those read, else 0.001 (1e-7 for geographic CRSs)
-        and offsets rounded down to 1000 units.
+        Coordinate quantisation; default: those read, else :func:`auto_scales` (0.001, or
+        1e-7 degree for geographic CRSs) and :func:`auto_offsets` (the rounded centre of the
+        data); ``offsets="auto"`` always takes the rounded centre.
     compress : bool, optional
         LAZ when True; default from the suffix of ``path`` (the registry writes to a
         temporary path with the same suffix).
     """
-    laspy = _laspy()
-    path = Path(path)
-    las_meta = dict(cloud.meta.get("las", {}))
-    fmt, ver = _resolve_format(cloud, las_meta, point_format, version)
-    scales, offsets = _scales_offsets(cloud, las_meta, scales, offsets)
-    if compress is None:
-        compress = path.suffix.lower() == ".laz"
-    if chunk_size is None:
-        chunk_size = CHUNK_LAZ if compress else CHUNK_LAS
+    with ChunkWriter(path, cloud, point_format=point_format, version=version, scales=scales, offsets=offsets,
+                     compress=compress, chunk_size=chunk_size) as writer:
+        writer.write(cloud)
 
+
+class ChunkWriter:
+    """Write a LAS/LAZ file chunk by chunk, so a streamed command (crop, filter, tile, merge)
+    holds one chunk in memory.
+
+    The header (point format, version, scales, offsets, extra bytes, VLRs, CRS) is made from
+    ``template``, a cloud with the attributes every chunk will have (the first chunk);
+    ``bounds`` (lo, hi) are those of all the data to come, so the automatic offsets fit every
+    chunk. Chunks must carry the template's attributes; each is checked against the
+    32-bit range before it is written.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "a.las"
+    >>> c = Cloud(np.arange(12.0).reshape(4, 3), {"intensity": [1, 2, 3, 4]})
+    >>> with ChunkWriter(path, c, bounds=c.bounds) as w:
+    ...     w.write(c[:2]); w.write(c[2:])
+    >>> read(path).attrs["intensity"].tolist()
+    [1, 2, 3, 4]
+    """
+
+    def __init__(self, path, template: Cloud, *, point_format=None, version=None, scales=None, offsets=None,
+                 compress: bool | None = None, chunk_size: int | None = None, bounds=None):
+        laspy = _laspy()
+        self.path = Path(path)
+        las_meta = dict(template.meta.get("las", {}))
+        self.fmt, ver = _resolve_format(template, las_meta, point_format, version)
+        scales, offsets = _scales_offsets(template, las_meta, scales, offsets, bounds)
+        self.compress = self.path.suffix.lower() == ".laz" if compress is None else compress
+        self.chunk_size = chunk_size or (CHUNK_LAZ if self.compress else CHUNK_LAS)
+        self.native = _format_attrs(self.fmt)
+        self.template = _drop_unstorable(template, self.fmt, self.native)
+        self.extras = _extra_params(laspy, self.template, self.native, las_meta)
+        self.header = _make_header(laspy, self.template, las_meta, self.fmt, ver, scales, offsets, self.extras)
+        self.count = 0
+        self._writer = laspy.open(str(self.path), mode="w", header=self.header, do_compress=self.compress)
+
+    def write(self, cloud: Cloud) -> None:
+        """Append the points of ``cloud`` (attributes the point format cannot hold are dropped)."""
+        cloud = cloud.without_attrs(*[a for a in cloud.attrs if a not in self.template.attrs])
+        _check_values(cloud, self.fmt)
+        if cloud.n and not _fits(cloud.xyz.min(axis=0), cloud.xyz.max(axis=0), self.header.scales, self.header.offsets):
+            raise InvalidInputError(f"points beyond the 32-bit range of scale {list(self.header.scales)} and offset "
+                                    f"{list(self.header.offsets)}", "give --offset auto or a coarser --scale",
+                                    path=self.path, field="xyz")
+        laspy = _laspy()
+        for start in range(0, cloud.n, self.chunk_size):
+            end = min(cloud.n, start + self.chunk_size)
+            self._writer.write_points(_record(laspy, self.header, cloud, start, end, self.fmt, self.native, self.extras))
+        self.count += cloud.n
+
+    def close(self) -> None:
+        """Write the extended VLRs after the points (laspy writes them only when asked: a CRS
+        kept there, as copc-lib does, would be lost) and close the file."""
+        evlrs = getattr(self.header, "evlrs", None)
+        if evlrs and self.header.version.minor >= 4:
+            self._writer.write_evlrs(evlrs)
+        self._writer.close()
+
+    def __enter__(self) -> "ChunkWriter":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+def _make_header(laspy, cloud: Cloud, las_meta: dict, fmt: int, ver: str, scales, offsets, extras):
+    """The laspy header: format, version, scales/offsets, extra bytes, identifiers, VLRs, CRS."""
     header = laspy.LasHeader(point_format=fmt, version=ver)
     header.scales = scales
     header.offsets = offsets
-    native = _format_attrs(fmt)
-    cloud = _drop_unstorable(cloud, fmt, native)
-    extras = _extra_params(laspy, cloud, native, las_meta)
     if extras:
         header.add_extra_dims([p for _, _, p in extras])
     for key in ("system_identifier", "generating_software"):
@@ -745,13 +967,27 @@ def write(
         import pyproj
 
         try:
-            header.add_crs(pyproj.CRS.from_user_input(cloud.crs))
+            crs = pyproj.CRS.from_user_input(cloud.crs)
         except Exception as exc:
             raise InvalidInputError(f"CRS cannot be written: {exc}", "give an EPSG code or WKT", field="crs") from None
+        try:
+            header.add_crs(crs)
+        except Exception:  # no GeoTIFF keys for a CRS without EPSG code (legacy formats): a WKT record, as LAS 1.4 has
+            from laspy.vlrs.known import WktCoordinateSystemVlr
+
+            header.vlrs.append(WktCoordinateSystemVlr(crs.to_wkt()))
+            if fmt >= 6 or ver == "1.4":
+                header.global_encoding.wkt = True
     evlrs = [laspy.VLR(r["user_id"], r["record_id"], r["description"], r["data"]) for r in las_meta.get("evlrs", [])]
     if evlrs and ver == "1.4":
-        header.evlrs = laspy.VLRList(evlrs) if hasattr(laspy, "VLRList") else evlrs
+        from laspy.vlrs.vlrlist import VLRList
 
+        header.evlrs = VLRList(evlrs)
+    return header
+
+
+def _check_values(cloud: Cloud, fmt: int) -> None:
+    """Refuse class codes a legacy point format cannot hold."""
     classification = cloud.attrs.get("classification")
     if fmt < 6 and classification is not None and classification.size and classification.max() > 31:
         raise InvalidInputError(
@@ -759,11 +995,6 @@ def write(
             "write point format 6 or later (LAS 1.4)",
             field="classification",
         )
-
-    with laspy.open(str(path), mode="w", header=header, do_compress=compress) as writer:
-        for start in range(0, cloud.n, chunk_size):
-            end = min(cloud.n, start + chunk_size)
-            writer.write_points(_record(laspy, header, cloud, start, end, fmt, native, extras))
 
 
 def _record(laspy, header, cloud: Cloud, start: int, end: int, fmt: int, native: set, extras):

@@ -9,11 +9,14 @@ from __future__ import annotations
 
 import importlib
 import inspect
+import math
 from pathlib import Path
 from typing import Iterator
 
+import numpy as np
+
 from workstation.core.cloud import Cloud
-from workstation.core.errors import InvalidInputError, UnsupportedFormatError, WorkstationError
+from workstation.core.errors import InvalidInputError, UnsupportedFormatError, WorkstationError, is_library_panic
 
 from .atomic import atomic_path
 
@@ -58,18 +61,97 @@ def _check_readable(path) -> Path:
     return p
 
 
-def read_cloud(path, **opts) -> Cloud:
+def _check_bounds(bounds) -> tuple[float, ...]:
+    """``bounds`` as (xmin, ymin, xmax, ymax[, zmin, zmax]) floats, each min <= its max."""
+    try:
+        b = tuple(float(v) for v in bounds)
+    except (TypeError, ValueError):
+        b = ()
+    if len(b) not in (4, 6) or not all(math.isfinite(v) for v in b):
+        raise InvalidInputError(f"bounds {bounds!r} are not 4 or 6 finite numbers",
+                                "give xmin,ymin,xmax,ymax or xmin,ymin,xmax,ymax,zmin,zmax", field="--bounds")
+    pairs = [(0, 2), (1, 3), (4, 5)][: len(b) // 2]
+    for (lo, hi), axis in zip(pairs, "xyz"):
+        if b[lo] > b[hi]:
+            raise InvalidInputError(f"bounds {axis}min {b[lo]:g} is greater than {axis}max {b[hi]:g}",
+                                    "give xmin,ymin,xmax,ymax[,zmin,zmax] with each min first", field="--bounds")
+    return b
+
+
+def check_selection(path, bounds=None, resolution=None, level=None) -> dict | None:
+    """The reading options ``--bounds``/``--resolution``/``--level`` checked against ``path``:
+    None when none is given, else {copc, bounds, resolution, level}.
+
+    Resolution and level pick levels of a COPC octree; other files have none to pick from.
+    """
+    if bounds is None and resolution is None and level is None:
+        return None
+    from . import copc
+
+    copc_file = format_of(path)[0] == "laz" and copc.is_copc(path)
+    if (resolution is not None or level is not None) and not copc_file:
+        flag = "--resolution" if resolution is not None else "--level"
+        raise InvalidInputError(f"{flag} reads a level of detail of a COPC file; this file is not COPC (it has no octree)",
+                                "use --bounds alone (any file), or read a .copc.laz made by PDAL writers.copc or untwine",
+                                path=path, field=flag)
+    if resolution is not None and not (math.isfinite(resolution) and resolution > 0):
+        raise InvalidInputError(f"resolution {resolution!r} must be a positive length", field="--resolution")
+    if level is not None and int(level) < 0:
+        raise InvalidInputError(f"level {level!r} must be 0 (the root) or more", field="--level")
+    return {"copc": copc_file, "bounds": None if bounds is None else _check_bounds(bounds),
+            "resolution": resolution, "level": level}
+
+
+def _inside(cloud: Cloud, bounds) -> Cloud:
+    """The points of ``cloud`` inside ``bounds`` (inclusive on floats; formats without integer
+    coordinates)."""
+    b = np.asarray(bounds)
+    half = len(b) // 2
+    lo, hi = b[[0, 1, 4][:half]], b[[2, 3, 5][:half]]
+    xyz = cloud.xyz[:, :half]
+    return cloud[np.all((xyz >= lo) & (xyz <= hi), axis=1)]
+
+
+def _read_selected(path: Path, sel: dict, **opts) -> Cloud:
+    """Read what ``sel`` (:func:`check_selection`) asks: a COPC query, a streamed bounds filter
+    of a LAS/LAZ file, or a whole read then a bounds filter for the other formats."""
+    if sel["copc"]:
+        from . import copc
+
+        return copc.read(path, sel["bounds"], sel["resolution"], sel["level"])
+    mod = _module(path)
+    if mod.__name__ == "workstation.io.las":
+        return mod.read(path, bounds=sel["bounds"], **opts)
+    return _inside(mod.read(path, **opts), sel["bounds"])
+
+
+def read_cloud(path, *, bounds=None, resolution=None, level=None, **opts) -> Cloud:
     """Read any supported point cloud file into a :class:`Cloud`.
 
     Parameters
     ----------
     path : path-like
         .las, .laz, .ply, .pcd, .xyz, .txt, .csv, .pts or .e57.
+    bounds : (4,) or (6,) floats, optional
+        Only the points inside (xmin, ymin, xmax, ymax[, zmin, zmax]), inclusive: a COPC file is
+        queried through its octree, a LAS/LAZ file streamed and filtered chunk by chunk.
+    resolution : float, optional
+        COPC only: the octree levels down to this point spacing (CRS units).
+    level : int, optional
+        COPC only: octree levels 0..level (0 is the root).
     **opts
         Format options (``columns="x,y,z,label"`` for text files, ``scans=[0]`` for E57, ...).
     """
     p = _check_readable(path)
-    cloud = _guarded(p, _module(p).read, p, **opts)
+    sel = check_selection(p, bounds, resolution, level)
+    if sel is None:
+        cloud = _guarded(p, _module(p).read, p, **opts)
+    else:
+        cloud = _guarded(p, _read_selected, p, sel, **opts)
+        if cloud.n == 0 and sel["bounds"] is not None:
+            raise InvalidInputError(f"no points inside --bounds {','.join(f'{v:g}' for v in sel['bounds'])}",
+                                    "compare the box with the file's bounds (ws info --summary FILE)", path=p,
+                                    field="--bounds")
     return cloud.with_meta(source=str(p), format=format_of(p)[0]) if "format" not in cloud.meta else cloud.with_meta(source=str(p))
 
 
@@ -94,20 +176,41 @@ def _guarded(path: Path, func, *args, **opts):
         raise
     except Exception as exc:  # noqa: BLE001 - a reader bug or a library error on a malformed file
         raise _reader_error(path, exc) from exc
+    except BaseException as exc:  # a Rust panic in lazrs (pyo3 PanicException) on a damaged LAZ
+        if not is_library_panic(exc):
+            raise
+        raise _reader_error(path, exc) from exc
 
 
 def write_cloud(cloud: Cloud, path, *, overwrite: bool = False, inputs=(), **opts) -> Path:
-    """Write a cloud atomically; refuses to replace an existing file unless ``overwrite``."""
+    """Write a cloud atomically; refuses to replace an existing file unless ``overwrite``, and
+    refuses ``.copc.laz`` names (no COPC writer: plain LAZ would claim an octree)."""
+    from .copc import refuse_copc_output
+
+    refuse_copc_output(path)
     mod = _module(path)
     with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
         mod.write(cloud, tmp, **opts)
     return Path(path)
 
 
-def iter_chunks(path, chunk_size: int = 1_000_000, **opts) -> Iterator[Cloud]:
-    """Stream a file as clouds of at most ``chunk_size`` points (true streaming for LAS/LAZ)."""
+def iter_chunks(path, chunk_size: int = 1_000_000, *, bounds=None, resolution=None, level=None,
+                **opts) -> Iterator[Cloud]:
+    """Stream a file as clouds of at most ``chunk_size`` points (true streaming for LAS/LAZ).
+
+    ``bounds``/``resolution``/``level`` select points as in :func:`read_cloud` (chunks may then
+    be empty; a COPC query's result is held, then cut into chunks).
+    """
     p = _check_readable(path)
+    sel = check_selection(p, bounds, resolution, level)
     mod = _module(p)
+    if sel is not None and not sel["copc"] and mod.__name__ == "workstation.io.las":
+        opts["bounds"] = sel["bounds"]
+    elif sel is not None:
+        cloud = _guarded(p, _read_selected, p, sel, **opts)
+        for start in range(0, max(cloud.n, 1), chunk_size):
+            yield cloud[start : start + chunk_size]
+        return
     if hasattr(mod, "iter_chunks"):
         chunks = _guarded(p, mod.iter_chunks, p, chunk_size, **opts)
         while True:

@@ -158,24 +158,11 @@ def read_records(files, dtype: np.dtype, box) -> np.ndarray | None:
 
 
 def read_copc(path: Path, box) -> Cloud | None:
-    """The points of a COPC file inside ``box`` by a spatial query of its octree."""
-    import laspy
-    from laspy.copc import Bounds
+    """The points of a COPC file inside ``box`` (half-open, like chunk cores) by a spatial
+    query of its octree (:func:`workstation.io.copc.read`); None when there are none."""
+    from workstation.io import copc
 
-    from workstation.io.las import _Filler, _meta_and_crs
-
-    try:
-        with laspy.CopcReader.open(str(path)) as reader:
-            h = reader.header
-            rec = reader.query(bounds=Bounds(mins=np.array([box[0], box[1]]), maxs=np.array([box[2], box[3]])))
-            meta, crs = _meta_and_crs(h, path)
-            meta["las"]["crs"] = crs
-            f = _Filler(h, len(rec))
-            if len(rec):
-                f.fill(rec, 0)
-    except (laspy.errors.LaspyException, ValueError, OSError, EOFError) as e:
-        raise InvalidInputError(f"COPC query failed: {e}", "the file is truncated or not valid COPC", path=path) from None
-    cloud = Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
+    cloud = copc.read(path, bounds=tuple(box))
     keep = in_box(cloud.xyz[:, 0], cloud.xyz[:, 1], box)
     return cloud[keep] if keep.any() else None
 

@@ -11,7 +11,8 @@ from pathlib import Path
 import numpy as np
 
 from workstation.core.classes import class_name
-from workstation.io.crs import crs_info
+from workstation.io import copc
+from workstation.io.crs import crs_info, crs_units, crs_warnings
 from workstation.io.registry import format_of, iter_chunks
 
 from .density import DensityAccumulator
@@ -25,13 +26,17 @@ class _Range:
     def add(self, a: np.ndarray):
         if a.size == 0:
             return
-        a2 = a.reshape(len(a), -1)
-        if a2.dtype.kind == "f":
-            lo, hi = np.nanmin(a2, axis=0), np.nanmax(a2, axis=0)
-        else:
-            lo, hi = a2.min(axis=0), a2.max(axis=0)
+        lo, hi = _col_min_max(a)
         self.lo = lo if self.lo is None else np.minimum(self.lo, lo)
         self.hi = hi if self.hi is None else np.maximum(self.hi, hi)
+
+
+def _col_min_max(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per-column min and max of (n,) or (n, k) ``a``, NaN ignored for floats. Column by column:
+    numpy reduces a C-ordered (n, 3) array along axis 0 some 5x slower than its three columns."""
+    cols = [a] if a.ndim == 1 else [a[:, i] for i in range(a.shape[1])]
+    fmin, fmax = (np.nanmin, np.nanmax) if a.dtype.kind == "f" else (np.min, np.max)
+    return np.array([fmin(c) for c in cols], a.dtype), np.array([fmax(c) for c in cols], a.dtype)
 
 
 def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0, density_strict: bool = True,
@@ -46,8 +51,11 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
         ``format``, ``point_count``, ``bounds`` ({min, max}), ``crs`` ({name, epsg, unit} or
         None), ``dimensions`` ({name: {dtype, min, max}}), ``classification``
         ({code: count}, string codes), ``classification_names``, ``returns``
-        ({"r/n": count}), ``density`` (see :func:`workstation.qc.density.density`), ``nps``
-        (CRS units), plus ``las`` header facts for LAS/LAZ.
+        ({"r/n": count}), ``density`` (see :func:`workstation.qc.density.density`: points per
+        m², areas in m², ``nps_m`` in metres), ``nps`` (CRS units), ``units`` (horizontal and
+        vertical CRS units, :meth:`workstation.core.units.Units.to_dict`), ``crs_warnings``
+        (why the CRS does not fit the coordinates, :func:`workstation.io.crs.crs_warnings`),
+        plus ``las`` header facts for LAS/LAZ.
     """
     path = Path(path)
     fmt, _ = format_of(path)
@@ -58,19 +66,19 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
     classes = np.zeros(256, dtype=np.int64)
     returns: dict[str, int] = {}
     acc = None
-    crs = None
+    crs = info = None
     meta = {}
     for chunk in iter_chunks(path, chunk_size, **read_opts):
         if acc is None:
             crs = chunk.crs
             meta = dict(chunk.meta)
-            info = crs_info(crs)
+            info = crs_info(crs)  # once: identifying a CRS without EPSG code searches the database
             mpu = info.metres_per_unit if info else 1.0
             acc = DensityAccumulator(density_cell_m / mpu, mpu, strict=density_strict)
         if chunk.n == 0:
             continue
         count += chunk.n
-        clo, chi = chunk.xyz.min(axis=0), chunk.xyz.max(axis=0)
+        clo, chi = _col_min_max(chunk.xyz)
         lo = clo if lo is None else np.minimum(lo, clo)
         hi = chi if hi is None else np.maximum(hi, chi)
         acc.add(chunk.xyz[:, :2])
@@ -81,18 +89,20 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
             classes += np.bincount(chunk.attrs["classification"], minlength=256)
         if "return_number" in chunk.attrs and "number_of_returns" in chunk.attrs:
             key = chunk.attrs["return_number"].astype(np.int32) * 256 + chunk.attrs["number_of_returns"]
-            k, c = np.unique(key, return_counts=True)
-            for kk, cc in zip(k.tolist(), c.tolist()):
+            c = np.bincount(key, minlength=65536)  # both are u8: one histogram, no sort
+            for kk in np.flatnonzero(c).tolist():
                 s = f"{kk // 256}/{kk % 256}"
-                returns[s] = returns.get(s, 0) + cc
-    info = crs_info(crs)
+                returns[s] = returns.get(s, 0) + int(c[kk])
     dens = acc.result() if acc is not None and count else None
     out = {
         "file": str(path),
         "format": fmt,
         "point_count": int(count),
         "bounds": None if lo is None else {"min": lo.tolist(), "max": hi.tolist()},
-        "crs": None if info is None else {"name": info.name, "epsg": info.epsg, "unit": info.unit},
+        "crs": None if info is None else {"name": info.name, "epsg": info.epsg, "unit": info.unit,
+                                          "vertical_unit": info.vertical_unit},
+        "units": crs_units(crs).to_dict(),
+        "crs_warnings": [] if lo is None else crs_warnings(crs, (lo, hi)),
         "dimensions": {
             k: {"dtype": dtypes[k], "min": _py(r.lo), "max": _py(r.hi)} for k, r in ranges.items()
         },
@@ -115,6 +125,10 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
             "extra_dims": [d["name"] for d in las.get("extra_dims", [])],
         }
         out["format_version"] = f"{'LAZ' if las.get('compressed') else 'LAS'} {las.get('version')} PDRF {las.get('point_format')}"
+        out["copc"] = copc.summary(path) if fmt == "laz" else None
+        if out["copc"]:
+            out["format"] = "copc"
+            out["format_version"] = f"COPC {out['copc']['version']} ({out['format_version']})"
     else:
         out["format_version"] = fmt.upper()
     return out
