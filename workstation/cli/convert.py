@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, overwrite_option
+from .options import emit_json, overwrite_option, read_options
+from .pipeline_out import parse_triple, pipeline_out_option, save_pipeline
 
 
 @click.command()
@@ -17,29 +18,53 @@ from .options import emit_json, overwrite_option
 @click.option("--point-format", type=click.IntRange(0, 10), default=None, help="LAS point format of a LAS/LAZ output.")
 @click.option("--las-version", type=click.Choice(["1.0", "1.1", "1.2", "1.3", "1.4"]), default=None,
               help="LAS version of a LAS/LAZ output (raised to what the point format needs).")
+@click.option("--scale", default=None,
+              help="LAS/LAZ output scale: one value or x,y,z (default: the input's, or one that keeps its "
+                   "resolution in the new CRS: 1e-7 degree or finer, 0.001/0.01 m).")
+@click.option("--offset", default=None,
+              help="LAS/LAZ output offset: x,y,z or 'auto' (the data's rounded centre; the default when the "
+                   "input's offsets do not fit).")
+@pipeline_out_option
 @overwrite_option
+@read_options
 @click.option("--json", "as_json", is_flag=True, help="Print a summary as JSON on stdout.")
-def convert(src, dst, crs, to_crs, columns, out_columns, point_format, las_version, overwrite, as_json):
-    """Convert IN to OUT (LAS, LAZ, PLY, PCD, XYZ/TXT/CSV, E57), choosing formats by extension."""
+def convert(src, dst, crs, to_crs, columns, out_columns, point_format, las_version, scale, offset, pipeline_out,
+            overwrite, read_opts, as_json):
+    """Convert IN to OUT (LAS, LAZ, PLY, PCD, XYZ/TXT/CSV, E57), choosing formats by extension.
+
+    Reprojecting to degrees (--to-crs EPSG:4326) writes LAS coordinates at a tenth of the input's
+    ground resolution (1e-9 degree for a 1 cm input) around the data's rounded centre, and back
+    to metres at the matching power of ten, so a round trip returns every point within 1 mm.
+    Heights are not changed unless a CRS with a vertical datum is asked."""
     import time
 
     from workstation.core.log import get_logger
-    from workstation.io import check_output, format_of, read_cloud, write_cloud
+    from workstation.io import check_outputs, format_of, read_cloud, write_cloud
+    import numpy as np
+
+    from workstation.io.las import auto_scales, fitted_scales
     from workstation.io.crs import parse_crs, reproject
 
     log = get_logger(__name__)
     t0 = time.perf_counter()
     format_of(src)
     format_of(dst)
-    check_output(dst, overwrite, inputs=[src])
+    check_outputs([dst, pipeline_out], overwrite, inputs=[src])
+    scales = parse_triple(scale, "--scale", positive=True)
+    offsets = parse_triple(offset, "--offset", allow_auto=True)
     if columns and format_of(src)[0] not in ("xyz", "txt", "csv", "pts"):
         raise click.UsageError("--columns applies to text inputs (.xyz, .txt, .csv, .pts) only")
-    cloud = read_cloud(src, **({"columns": columns} if columns else {}))
+    cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
     if crs:
         parse_crs(crs, "crs")
         cloud = cloud.with_crs(crs).with_history("assign_crs", {"crs": crs})
+    source_crs, source_scales = cloud.crs, cloud.meta.get("las", {}).get("scales")
     if to_crs:
         cloud = reproject(cloud, to_crs)
+        if scales is None:  # keep the input's resolution in the new unit
+            lo, hi = cloud.bounds if cloud.n else (np.zeros(3), np.zeros(3))
+            scales = fitted_scales(lo, hi, auto_scales(cloud.crs, source_scales, source_crs)).tolist()
+        offsets = "auto" if offsets is None else offsets
     opts = {}
     out_fmt = format_of(dst)[0]
     if out_fmt in ("las", "laz"):
@@ -47,14 +72,29 @@ def convert(src, dst, crs, to_crs, columns, out_columns, point_format, las_versi
             opts["point_format"] = point_format
         if las_version is not None:
             opts["version"] = las_version
-    elif point_format is not None or las_version is not None:
-        raise click.UsageError("--point-format and --las-version apply to LAS/LAZ outputs only")
+        if scales is not None:
+            opts["scales"] = scales
+        if offsets is not None:
+            opts["offsets"] = offsets
+    elif point_format is not None or las_version is not None or scale or offset:
+        raise click.UsageError("--point-format, --las-version, --scale and --offset apply to LAS/LAZ outputs only")
     if out_columns:
         if out_fmt not in ("xyz", "txt", "csv", "pts"):
             raise click.UsageError("--out-columns applies to text outputs only")
         opts["columns"] = out_columns
     write_cloud(cloud, dst, overwrite=overwrite, inputs=[src], **opts)
+    if pipeline_out:
+        from workstation.ops import pdal
+
+        stages = [pdal.reader(src, crs)]
+        if to_crs:
+            stages.append({"type": "filters.reprojection", "in_srs": source_crs, "out_srs": to_crs})
+        layout = pdal.las_layout(dst) if out_fmt in ("las", "laz") else None
+        save_pipeline(pipeline_out, stages + [pdal.writer(dst, layout)], overwrite, [src])
     dt = time.perf_counter() - t0
     log.info("wrote %s (%d points) in %.2f s", dst, cloud.n, dt)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("convert", count(cloud.n, "points"), dst, dt, f"CRS {cloud.crs}" if cloud.crs else "no CRS")
     if as_json:
         emit_json({"input": src, "output": dst, "point_count": cloud.n, "crs": cloud.crs, "seconds": dt})

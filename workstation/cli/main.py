@@ -18,6 +18,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
     "convert": ("workstation.cli.convert:convert", "Convert a cloud between formats; assign or reproject its CRS."),
     "register": ("workstation.cli.register:register", "Register a cloud onto another (global + ICP); write the moved source."),
+    "crop": ("workstation.cli.crop:crop", "Keep the points inside (or outside) a box or polygons (GeoJSON, GeoPackage)."),
+    "filter": ("workstation.cli.filter:filter_cmd", "Keep the points matching a PDAL expression (Classification == 2 && ...)."),
+    "thin": ("workstation.cli.thin:thin", "Thin a cloud: one point per voxel, or Poisson-disk sampling."),
+    "tile": ("workstation.cli.tile:tile", "Cut clouds into square tiles named by their lower-left corner (streamed)."),
     "merge": ("workstation.cli.merge:merge", "Merge registered clouds keeping every attribute; optional pose graph."),
     "colorize": ("workstation.cli.colorize:colorize", "Colour a cloud from oriented photos with occlusion tests."),
     "ground": ("workstation.cli.ground:ground", "Classify ground (2) and non-ground (1): SMRF, CSF, PMF, PTD, auto, baselines."),
@@ -70,8 +74,10 @@ def cli(ctx, verbose, quiet):
 
     Products go to files, logs and progress to stderr, --json results to stdout.
     """
+    from workstation.cli.summary import mark_start
     from workstation.core.log import configure
 
+    mark_start()
     ctx.ensure_object(dict)
     ctx.obj["verbose"] = verbose
     configure(verbose, quiet)
@@ -103,6 +109,7 @@ def main(argv=None) -> int:
     """Entry point with the error boundary: exit 0 ok, 1 error (:mod:`workstation.cli.boundary`
     words it), 2 usage error, 128 + n on signal n (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP)."""
     from workstation.cli.boundary import report
+    from workstation.core.errors import is_library_panic
 
     if argv is None:  # the console script (a test calling main(argv) keeps its own handlers)
         _install_signal_handlers()
@@ -128,6 +135,10 @@ def main(argv=None) -> int:
         click.echo("Interrupted.", err=True)
         return 130
     except Exception as e:  # noqa: BLE001 - the boundary: every failure becomes a message
+        return report(e, verbose, argv)
+    except BaseException as e:  # a library's Rust panic is a BaseException; SystemExit is not ours
+        if not is_library_panic(e):
+            raise
         return report(e, verbose, argv)
     return rc if isinstance(rc, int) else 0  # a command's click.exceptions.Exit(n) comes back as n
 

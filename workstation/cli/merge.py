@@ -10,6 +10,7 @@ import numpy as np
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
 from workstation.cli.options import positive_float
+from workstation.cli.pipeline_out import pipeline_out_option, save_pipeline
 from workstation.io.textfile import read_text
 
 
@@ -28,6 +29,17 @@ def read_poses(path, n: int) -> list[np.ndarray]:
     return poses
 
 
+def _save_merge_pipeline(path, inputs, output, overwrite) -> None:
+    """readers..., filters.merge, writer (plain merges; poses and thinning have no PDAL stage here)."""
+    if path:
+        from workstation.io import format_of
+        from workstation.ops import pdal
+
+        layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
+        save_pipeline(path, [*[pdal.reader(p) for p in inputs], {"type": "filters.merge"},
+                             pdal.writer(output, layout)], overwrite, inputs)
+
+
 @click.command("merge")
 @click.argument("inputs", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False))
 @output_option
@@ -40,10 +52,19 @@ def read_poses(path, n: int) -> list[np.ndarray]:
 @click.option("--voxel-size", type=positive_float, default=None, help="Keep one point per voxel of this edge (metres).")
 @click.option("--duplicate-distance", type=positive_float, default=None,
               help="Drop points closer than this (metres) to an earlier input's points (overlap thinning).")
+@click.option("--source-ids", type=click.Choice(["auto", "input", "keep"]), default="auto", show_default=True,
+              help="point_source_id of the output: keep the inputs' (flight lines, as PDAL's filters.merge), the "
+                   "input number 1, 2, ..., or auto: keep them when an input has non-zero ids (always the input "
+                   "number with --poses, --register, --voxel-size or --duplicate-distance).")
+@pipeline_out_option
 @overwrite_option
 @json_option
-def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplicate_distance, overwrite, as_json):
-    """Merge clouds IN... into OUT: union of attributes, point_source_id = input number (1, 2, ...)."""
+def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplicate_distance, source_ids, pipeline_out,
+          overwrite, as_json):
+    """Merge clouds IN... into OUT: union of attributes and point formats, the finest LAS scales.
+
+    Without poses, registration or thinning the files are concatenated chunk by chunk (bounded
+    memory), as PDAL's filters.merge does."""
     from workstation.core.errors import InvalidInputError
     from workstation.io import atomic_paths, check_outputs, read_cloud, write_cloud
     from workstation.registration.merge import MergeParams, merge_clouds
@@ -52,7 +73,20 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         raise InvalidInputError("give either --poses or --register")
     if poses_out and not do_register:
         raise InvalidInputError("--poses-out writes the poses of --register; add --register")
-    check_outputs([output, poses_out], overwrite, inputs=[*inputs, *([poses_path] if poses_path else [])])
+    check_outputs([output, poses_out, pipeline_out], overwrite, inputs=[*inputs, *([poses_path] if poses_path else [])])
+    if not (poses_path or do_register or voxel_size or duplicate_distance):
+        from workstation.ops.merge import merge_files
+
+        summary = merge_files(list(inputs), output, source_ids=source_ids, overwrite=overwrite)
+        _save_merge_pipeline(pipeline_out, inputs, output, overwrite)
+        from workstation.cli.summary import count, emit_summary
+
+        emit_summary("merge", f"{count(summary['points'], 'points')} from {count(len(inputs), 'clouds')}",
+                     [output, pipeline_out], details=[f"{len(summary['attributes'])} attributes",
+                                                      f"source ids {summary['source_ids']}"])
+        if as_json:
+            emit_json({"output": str(output), "inputs": len(inputs), **summary})
+        return
     clouds = [read_cloud(p) for p in inputs]
     poses = read_poses(poses_path, len(clouds)) if poses_path else None
     summary = {}
@@ -69,6 +103,11 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         with atomic_paths([output, poses_out], overwrite, inputs=inputs) as (cloud_tmp, poses_tmp):
             write_cloud(merged, cloud_tmp, overwrite=True)
             poses_tmp.write_text(json.dumps(summary["registration"], indent=2, default=float))
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("merge", f"{count(merged.n, 'points')} from {count(len(inputs), 'clouds')}", [output, poses_out],
+                 details=[f"{len(merged.dims)} attributes", "registered" if do_register else ""])
+    _save_merge_pipeline(pipeline_out, inputs, output, overwrite)
     if as_json:
         emit_json({"output": str(output), "points": merged.n, "inputs": len(inputs),
                    "attributes": merged.dims, **summary})
