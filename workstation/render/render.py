@@ -99,9 +99,36 @@ def _nice_length(x: float) -> float:
     return 10 ** e
 
 
-def _units(crs) -> str:
-    s = str(crs or "").lower()
-    return "ft" if ("foot" in s or "feet" in s or "ftus" in s or "us-ft" in s) else "m"
+def _units(crs):
+    """The CRS's :class:`~workstation.core.units.Units` (the one unit model; metres assumed
+    without a CRS)."""
+    from workstation.io.crs import crs_units
+
+    return crs_units(crs)
+
+
+def _metre_label(units) -> str:
+    """Unit label of lengths shown in metres: "m", or "m, no CRS" when metres are assumed."""
+    return "m" if units.known else "m, no CRS"
+
+
+def scale_bar(units_per_px: float, width_px: int, units, centre_y: float = 0.0) -> tuple[float, str]:
+    """Length of a top-view scale bar in world (CRS) units and its label, in round metres.
+
+    About a quarter of the image width, rounded down to 1, 2 or 5 × 10^k metres and drawn as
+    that many metres in the CRS's unit: a 50 m bar on a US-feet CRS spans 164.04 ft. On a
+    geographic CRS the eastward metres per degree shrink with cos(latitude).
+
+    Examples
+    --------
+    >>> from workstation.core.units import Units, US_SURVEY_FOOT
+    >>> w, label = scale_bar(1.0, 800, Units(US_SURVEY_FOOT, US_SURVEY_FOOT, "US survey foot", "US survey foot"))
+    >>> label, round(w, 2)
+    ('50 m', 164.04)
+    """
+    per_unit = units.h * (math.cos(math.radians(centre_y)) if units.geographic else 1.0)
+    length_m = _nice_length(0.25 * width_px * units_per_px * per_unit)
+    return length_m / per_unit if length_m > 0 else 0.0, f"{length_m:g} {_metre_label(units)}"
 
 
 def _scalar_colors(obj, params: RenderParams):
@@ -142,8 +169,9 @@ def _scalar_colors(obj, params: RenderParams):
         return ("class-face" if face_cls else "class"), class_colors(codes), None, entries
     if c == "uniform":
         return c, None, None, None
-    if c == "elevation":
-        return c, None, np.asarray(xyz[:, 2], dtype=np.float64), f"Elevation ({_units(obj.crs)})"
+    if c == "elevation":  # heights shown in metres whatever the CRS's vertical unit
+        u = _units(getattr(obj, "crs", None))
+        return c, None, u.v_to_m(np.asarray(xyz[:, 2], dtype=np.float64)), f"Elevation ({_metre_label(u)})"
     if c not in attrs:
         raise InvalidInputError(f"--color {c}: neither a colouring nor an attribute of this data",
                                 "use one of " + ", ".join(NAMED_COLORS) + "; attributes here: "
@@ -155,8 +183,12 @@ def _scalar_colors(obj, params: RenderParams):
         return "rgb", rgb_to_u8(a), None, None
     if a.ndim != 1:
         raise InvalidInputError(f"attribute '{c}' has shape {a.shape}: not a scalar", field=c)
-    title = {"intensity": "Intensity", "hag": f"Height above ground ({_units(obj.crs)})"}.get(c, c)
-    return c, None, a.astype(np.float64), title
+    a = a.astype(np.float64)
+    if c == "hag":  # heights above ground are in the CRS's vertical unit: shown in metres
+        u = _units(getattr(obj, "crs", None))
+        return c, None, u.v_to_m(a), f"Height above ground ({_metre_label(u)})"
+    title = {"intensity": "Intensity"}.get(c, c)
+    return c, None, a, title
 
 
 def _point_size(params: RenderParams, lo: np.ndarray, hi: np.ndarray, n: int, size) -> float:
@@ -266,9 +298,9 @@ def _fit_view(pl, view: str, bounds_min: np.ndarray, bounds_max: np.ndarray, siz
     return None
 
 
-def _draw_scale_bar(pl, pv, units_per_px: float, size, centre, zmax, units: str, bg_dark: bool) -> None:
+def _draw_scale_bar(pl, pv, units_per_px: float, size, centre, zmax, units, bg_dark: bool) -> None:
     w, h = size
-    length = _nice_length(0.25 * w * units_per_px)
+    length, label = scale_bar(units_per_px, w, units, float(centre[1]))
     if length <= 0:
         return
     x0_px, y0_px, thick_px = 20, 20, max(4, h // 120)
@@ -282,7 +314,6 @@ def _draw_scale_bar(pl, pv, units_per_px: float, size, centre, zmax, units: str,
         x = wx + i * half
         quad = pv.Rectangle([[x, wy, z], [x + half, wy, z], [x + half, wy + thick_px * units_per_px, z]])
         pl.add_mesh(quad, color=col, lighting=False, show_edges=False)
-    label = f"{length:g} {units}"
     pl.add_text(label, position=(x0_px, y0_px + thick_px + 4), font_size=max(8, h // 70), color=fg)
     pl.add_text("N ^", position=(x0_px, h - 20 - max(8, h // 70) * 2), font_size=max(8, h // 70), color=fg)
 

@@ -2,10 +2,13 @@
 
 Everything is inlined (images as base64 PNG, no scripts, no external files), so the page can
 be mailed or archived. Sections, in order: products found (clouds, meshes, rasters, JSON),
-stages (from ``run.json``, other ``*.json`` records and the clouds' ``history``), renders of
-clouds (top view) and meshes (iso view), plots (class histograms, confusion matrices
-found in JSON files, hillshades of elevation rasters and error maps), and the PNG images
-already in the folder.
+stages (from ``run.json``, other ``*.json`` records, the clouds' ``history`` and the rasters'
+own metadata, so a folder of plain ``ws`` outputs without any JSON still has its stages), ground
+results (ground share of each ground-classified cloud, and the points a filter changed against
+the cloud it came from), renders of clouds (top view, with a legend of the classes present
+beside the image, not over it) and meshes (iso view), plots (class histograms, confusion
+matrices found in JSON files, elevation rasters as hillshades with a tint, hillshades in grey,
+slope and aspect, error maps), and the PNG images already in the folder.
 """
 
 from __future__ import annotations
@@ -230,8 +233,36 @@ def hillshade(z: np.ndarray, cell: float, azimuth_deg: float = 315.0, altitude_d
     return np.where(np.isfinite(z), np.clip(hs, 0, 1), np.nan)
 
 
+def raster_kind(path: Path, meta: dict | None = None, dtype=None, nodata=None) -> str:
+    """What a GeoTIFF holds: ``"hillshade"`` (0-255 shading), ``"slope"``, ``"aspect"``,
+    ``"error"``, ``"image"`` (several bands) or ``"elevation"`` (DSM, DTM, CHM, anything else).
+
+    The ``kind`` written in the file's metadata by ``ws`` decides; without it, the name
+    (``hillshade``, ``shade``, ``_hs``; ``slope``; ``aspect``; ``error``, ``diff``...) and an
+    8-bit single band with nodata 0 (how ``ws hillshade`` writes one).
+    """
+    kind = str((meta or {}).get("kind", "")).lower()
+    if kind in ("hillshade", "slope", "aspect"):
+        return kind
+    if kind in ("dsm", "dtm", "chm", "dem"):
+        return "elevation"
+    name = path.stem.lower()
+    if any(w in name for w in ("error", "diff", "residual", "dod")):
+        return "error"
+    if "shade" in name or name.endswith("_hs") or name == "hs":
+        return "hillshade"
+    for k in ("slope", "aspect"):
+        if k in name:
+            return k
+    if dtype is not None and np.dtype(dtype) == np.uint8 and nodata == 0:
+        return "hillshade"
+    return "elevation"
+
+
 def _plot_raster(path: Path) -> tuple[str, str] | None:
-    """(caption, b64 png) for a GeoTIFF: hillshade for elevation, diverging map for errors."""
+    """(caption, b64 png) for a GeoTIFF: hillshades in grey (0-255 shading, never tinted),
+    elevations as a hillshade with an elevation tint, slope and aspect with their scales,
+    diverging map for errors."""
     try:
         import rasterio
     except ImportError:  # pragma: no cover - declared dependency
@@ -241,20 +272,35 @@ def _plot_raster(path: Path) -> tuple[str, str] | None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from workstation.io.geotiff import META_TAG
+
     with rasterio.open(path) as ds:
         a = ds.read(1, masked=True).astype(np.float64).filled(np.nan)
         cell = abs(ds.transform.a) or 1.0
         bands = ds.count
-    name = path.stem.lower()
+        dtype, nodata = ds.dtypes[0], ds.nodata
+        try:
+            meta = json.loads(ds.tags().get(META_TAG) or "{}")
+        except ValueError:
+            meta = {}
+    kind = "image" if bands > 1 else raster_kind(path, meta if isinstance(meta, dict) else {}, dtype, nodata)
     fig, ax = plt.subplots(figsize=(6, 6 * a.shape[0] / max(a.shape[1], 1) + 0.5))
-    if any(w in name for w in ("error", "diff", "residual", "dod")):
+    if kind == "hillshade":
+        ax.imshow(a, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
+        cap = f"{path.name}: hillshade (grey, 0-255)"
+    elif kind in ("slope", "aspect"):
+        im = ax.imshow(a, cmap="magma" if kind == "slope" else "twilight",
+                       vmin=0, vmax=90 if kind == "slope" else 360, interpolation="nearest")
+        fig.colorbar(im, ax=ax, shrink=0.7, label=f"{kind} (degrees)")
+        cap = f"{path.name}: {kind}"
+    elif kind == "error":
         lim = np.nanpercentile(np.abs(a), 98) if np.isfinite(a).any() else 1.0
         im = ax.imshow(a, cmap="RdBu_r", vmin=-lim, vmax=lim)
         fig.colorbar(im, ax=ax, shrink=0.7, label="error")
         cap = f"{path.name}: error map"
-    elif "hillshade" in name or bands > 1:
+    elif kind == "image":
         ax.imshow(a, cmap="gray")
-        cap = f"{path.name}"
+        cap = f"{path.name}: band 1 of {bands}"
     else:
         ax.imshow(hillshade(a, cell), cmap="gray", vmin=0, vmax=1)
         im = ax.imshow(a, cmap="terrain", alpha=0.45)
@@ -262,6 +308,82 @@ def _plot_raster(path: Path) -> tuple[str, str] | None:
         cap = f"{path.name}: hillshade (315°/45°) with elevation tint"
     ax.set_axis_off()
     return cap, _fig_b64(fig)
+
+
+def _raster_meta(path: Path) -> dict:
+    """The ``ws`` metadata of a GeoTIFF ({} when none or unreadable)."""
+    try:
+        import rasterio
+
+        from workstation.io.geotiff import META_TAG
+
+        with rasterio.open(path) as ds:
+            meta = json.loads(ds.tags().get(META_TAG) or "{}")
+    except Exception:  # noqa: BLE001 - a report shows what it can read
+        return {}
+    return meta if isinstance(meta, dict) else {}
+
+
+def _class_legend_figure(img: np.ndarray, codes: np.ndarray, title: str) -> str:
+    """The render ``img`` with a legend of the classes present in ``codes`` (with their point
+    counts) beside it, outside the image, so it never covers the cloud."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Patch
+
+    from workstation.core.classes import CLASS_COLORS, class_name
+
+    k, n = np.unique(np.asarray(codes), return_counts=True)
+    handles = [Patch(facecolor=np.array(CLASS_COLORS.get(int(c), (128, 128, 128))) / 255, edgecolor="black",
+                     label=f"{int(c)} {class_name(int(c))} ({v:,})") for c, v in zip(k, n) if v > 0]
+    h, w = img.shape[:2]
+    fig, ax = plt.subplots(figsize=(w / 100, h / 100))
+    ax.imshow(img)
+    ax.set_axis_off()
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False,
+              fontsize=8, title="classes", title_fontsize=9)
+    return _fig_b64(fig)
+
+
+def _same_points(a, b) -> bool:
+    """Same coordinates (a filter's output against its input): counts and a sample of xyz."""
+    if a.n != b.n or a.n == 0:
+        return False
+    idx = np.linspace(0, a.n - 1, min(a.n, 1000)).astype(np.int64)
+    return bool(np.array_equal(a.xyz[idx], b.xyz[idx]))
+
+
+def _ground_rows(items, root: Path) -> list[tuple]:
+    """Rows of the ground section: each cloud with ground points (class 2) that is a ground
+    result (a ground stage in its history, "ground" in its name, or the same points as another
+    cloud with other classes), with its figures and, when its input is in the folder, what the
+    filter changed."""
+    from workstation.core.classes import ASPRSClass
+
+    rows = []
+    for p, c in items:
+        if "classification" not in c.attrs:
+            continue
+        cls = np.asarray(c.attrs["classification"])
+        n_ground = int(np.count_nonzero(cls == ASPRSClass.GROUND))
+        # its input: the same points with other classes, written before it
+        src = next(((q, d) for q, d in items if q != p and q.stat().st_mtime < p.stat().st_mtime
+                    and "classification" in d.attrs and _same_points(c, d)
+                    and not np.array_equal(np.asarray(d.attrs["classification"]), cls)), None)
+        by_history = any("ground" in str(h.stage).lower() for h in c.history)
+        if n_ground == 0 or not (by_history or "ground" in p.stem.lower() or src is not None):
+            continue
+        method = next((h.stage for h in reversed(c.history) if "ground" in str(h.stage).lower()), "")
+        changed, before = "", ""
+        if src is not None:
+            scls = np.asarray(src[1].attrs["classification"])
+            changed = f"{int(np.count_nonzero(scls != cls)):,} points vs {src[0].relative_to(root)}"
+            before = f"{100.0 * np.count_nonzero(scls == ASPRSClass.GROUND) / c.n:.1f} %"
+        rows.append((str(p.relative_to(root)), f"{c.n:,}", f"{n_ground:,}", f"{100.0 * n_ground / c.n:.1f} %",
+                     f"{int(np.count_nonzero(cls == ASPRSClass.UNCLASSIFIED)):,}", before, changed, method))
+    return rows
 
 
 CSS = """
@@ -322,21 +444,51 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         if cm is not None:
             stage_html.append(_img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({p.name})"),
                                    f"Confusion matrix from {p.name}"))
-    parts.append("<h2>Stages and figures</h2>" + ("".join(stage_html) or "<p>No JSON records found.</p>"))
+    # the products' own records: a folder of plain ws outputs has no JSON, but its rasters carry
+    # their stage's metadata and its clouds their history
+    prod_rows = []
+    for p in rasters[: params.max_files]:
+        m = _raster_meta(p)
+        if m.get("kind"):
+            figs = {k: v for k, v in m.items() if k not in ("kind", "source", "params", "seconds", "units")}
+            prod_rows.append((str(p.relative_to(root)), m["kind"], m.get("seconds", ""), figs))
+    cloud_cache: dict = {}
+    from workstation.io import read_cloud
+
+    for p in clouds[: params.max_files]:
+        try:
+            cloud_cache[p] = read_cloud(p)
+        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
+            cloud_cache[p] = e
+            continue
+        for h in cloud_cache[p].history:
+            prod_rows.append((str(p.relative_to(root)), h.stage, h.seconds if h.seconds is not None else "",
+                              dict(h.params)))
+    if prod_rows:
+        stage_html.append("<h3>Records in the products</h3>" + _table(prod_rows, ("file", "stage", "seconds", "parameters and figures")))
+    parts.append("<h2>Stages and figures</h2>" + ("".join(stage_html) or
+                 "<p>No records found: no run.json or other JSON in the folder, and no product carries its "
+                 "stage's metadata or history.</p>"))
+
+    ground_rows = _ground_rows([(p, c) for p, c in cloud_cache.items() if not isinstance(c, Exception)], root)
+    if ground_rows:
+        parts.append("<h2>Ground</h2>" + _table(ground_rows, ("cloud", "points", "ground points", "ground",
+                                                              "unclassified (1)", "ground before", "class changed",
+                                                              "stage")))
 
     # clouds: summary, history, render, class histogram
-    from workstation.io import read_cloud
     from workstation.io.mesh import read_mesh
 
     cloud_html = []
     seen: dict = {}
     for p in clouds[: params.max_files]:
-        try:
-            c = read_cloud(p)
-        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
-            cloud_html.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(e))})</p>')
+        c = cloud_cache.get(p)
+        if isinstance(c, Exception):
+            cloud_html.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(c))})</p>')
             continue
-        sig = (c.n, tuple(np.round(c.xyz[:3].ravel(), 6)))
+        # the same points with other attributes (a ground filter's output) are a product of their own
+        sig = (c.n, tuple(np.round(c.xyz[:3].ravel(), 6)),
+               tuple((k, hash(np.ascontiguousarray(v).tobytes())) for k, v in sorted(c.attrs.items())))
         if sig in seen:
             cloud_html.append(f'<p class="note">{html.escape(str(p.relative_to(root)))}: the same points as '
                               f'{html.escape(seen[sig])} (not drawn again)</p>')
@@ -352,8 +504,13 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         col = "class" if "classification" in c.attrs and len(np.unique(c.attrs["classification"])) > 1 else "auto"
         figs = []
         try:
-            img = render(c, RenderParams(size=params.render_size, view="top", color=col, max_points=params.max_points))
-            figs.append(_img(_png_b64(img), f"{p.name}: top view, colour {col}"))
+            img = render(c, RenderParams(size=params.render_size, view="top", color=col, max_points=params.max_points,
+                                         legend=col != "class"))
+            if col == "class":
+                figs.append(_img(_class_legend_figure(img, c.attrs["classification"], p.name),
+                                 f"{p.name}: top view, colour class"))
+            else:
+                figs.append(_img(_png_b64(img), f"{p.name}: top view, colour {col}"))
         except Exception as e:  # noqa: BLE001
             block += f'<p class="note">render failed: {html.escape(str(e))}</p>'
         if "classification" in c.attrs:
