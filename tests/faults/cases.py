@@ -39,11 +39,16 @@ BASE = {
     "dense": ("dense", "."),
     "train": ("train", "recipe.toml", "-o", "model.pt"),
     "demo": ("demo", "-o", "demo"),
+    "crop": ("crop", "cloud.laz", "-o", "crop.laz", "--bounds", "500010,4000010,500040,4000040"),
+    "filter": ("filter", "cloud.laz", "-o", "f.laz", "--expr", "Classification == 2"),
+    "thin": ("thin", "cloud.laz", "-o", "t.laz", "--voxel", "2"),
+    "tile": ("tile", "cloud.laz", "-o", "tiles_out", "--size", "30"),
 }
 # the file each command writes in BASE (for the output cases)
 WRITES = {"convert": "out.las", "ground": "out.laz", "classify": "out.laz", "dem": "out.tif", "hillshade": "hs.tif",
           "contours": "c.geojson", "mesh": "out.ply", "render": "out.png", "register": "reg.laz", "merge": "m.laz",
-          "colorize": "col.laz", "ortho": "ortho.tif", "report": "report.html"}
+          "colorize": "col.laz", "ortho": "ortho.tif", "report": "report.html", "crop": "crop.laz",
+          "filter": "f.laz", "thin": "t.laz"}
 
 
 # --- damaged readers -------------------------------------------------------------------------
@@ -392,7 +397,50 @@ def _rgb_cloud(name: str):
     return f
 
 
+def operation_cases() -> list:
+    """The everyday operations (crop, filter, thin, tile) on bad arguments."""
+    crop, flt = BASE["crop"][:4], BASE["filter"][:4]
+    return [
+        Case("crop-bounds-words", (*crop, "--bounds", "a,b,c,d"), names=("bounds",)),
+        Case("crop-bounds-three", (*crop, "--bounds", "1,2,3"), names=("bounds",)),
+        Case("crop-bounds-inverted", (*crop, "--bounds", "500040,4000040,500010,4000010"), names=("bounds",)),
+        Case("crop-bounds-nan", (*crop, "--bounds", "nan,0,1,1"), names=("bounds",)),
+        Case("crop-polygon-not-json", (*crop, "--polygon", "poly.geojson"), write("poly.geojson", b"{ nope"),
+             names=("poly.geojson",)),
+        Case("crop-polygon-not-utf8", (*crop, "--polygon", "poly.geojson"), write("poly.geojson", NOT_UTF8),
+             names=("poly.geojson",)),
+        Case("crop-polygon-no-polygon", (*crop, "--polygon", "poly.geojson"),
+             write("poly.geojson", b'{"type": "Point", "coordinates": [0, 0]}'), names=("poly.geojson",)),
+        Case("crop-polygon-gpkg-random", (*crop, "--polygon", "poly.gpkg"), write("poly.gpkg", RANDOM),
+             names=("poly.gpkg",)),
+        Case("filter-unknown-dimension", (*flt, "--expr", "Colour == 2"), names=("Colour",)),
+        Case("filter-syntax", (*flt, "--expr", "Classification == == 2"), names=("expr",)),
+        Case("filter-python-injection", (*flt, "--expr", "__import__('os').system('touch pwned')"),
+             names=("expr",)),
+        Case("filter-empty", (*flt, "--expr", ""), names=("expr",)),
+        Case("filter-unbalanced", (*flt, "--expr", "(Classification == 2"), names=("expr",)),
+        Case("thin-both", (*BASE["thin"], "--poisson", "1"), names=("--voxel", "--poisson")),
+        Case("thin-none", BASE["thin"][:4], names=("--voxel", "--poisson")),
+        Case("thin-voxel-tiny", ("thin", "cloud.laz", "-o", "t.laz", "--voxel", "1e-12"), None, "any",
+             names=("--voxel",),
+             outputs=("t.laz",)),
+        Case("tile-output-is-file", ("tile", "cloud.laz", "-o", "cloud.las", "--size", "30"), names=("cloud.las",)),
+        Case("tile-fractional-size", ("tile", "cloud.laz", "-o", "tiles_out", "--size", "7.5"), None, "ok",
+             outputs=("tiles_out/",)),
+        Case("convert-scale-zero", ("convert", "cloud.laz", "out.las", "--scale", "0"), names=("--scale",)),
+        Case("convert-scale-words", ("convert", "cloud.laz", "out.las", "--scale", "a,b,c"), names=("--scale",)),
+        Case("convert-offset-nan", ("convert", "cloud.laz", "out.las", "--offset", "nan,0,0"), names=("--offset",)),
+        Case("convert-scale-too-fine", ("convert", "cloud.laz", "out.las", "--scale", "1e-12"),
+             names=("--scale", "scale")),
+        Case("convert-to-crs-unknown", ("convert", "cloud.laz", "out.las", "--to-crs", "EPSG:999999"),
+             names=("--to-crs", "EPSG:999999")),
+        Case("convert-geocentric-roundtrip-ok", ("convert", "cloud.laz", "geo.laz", "--to-crs", "EPSG:4326"), None,
+             "ok", outputs=("geo.laz",), then=("info", "geo.laz")),
+    ]
+
+
 def cases() -> list:
     """The whole corpus."""
     return [*reader_cases(), *text_file_cases(), *path_cases(), *option_cases(), *data_option_cases(),
-            *degenerate_cases(), *output_cases(), *missing_input_cases(), *issue_cases()]
+            *degenerate_cases(), *output_cases(), *missing_input_cases(), *issue_cases(),
+            *operation_cases()]

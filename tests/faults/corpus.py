@@ -175,7 +175,8 @@ def check(case: Case, good: Path, work: Path, runner=run_inprocess) -> Outcome:
     if case.expect == "ok" and rc not in (0, None):
         o.problems.append(f"failed (exit {rc}) where a result is due")
     allowed = set(case.outputs) if rc == 0 and case.expect in ("ok", "any") else set()
-    left = sorted(set(after) - set(before) - allowed)
+    left = sorted(k for k in set(after) - set(before) - allowed
+                  if not any(a.endswith("/") and k.startswith(a) for a in allowed))  # "dir/": anything in it
     if left:
         o.problems.append(f"files left: {left[:4]}")
     changed = sorted(k for k in before if k in after and before[k] != after[k] and k not in allowed)

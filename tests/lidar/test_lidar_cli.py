@@ -26,7 +26,7 @@ def test_plan_flight_inverse_and_text(capsys):
     assert d["density"] == pytest.approx(8.0) and d["solved_for"] == "altitude"
     assert main(["plan-flight"]) == 0
     assert "swath width" in capsys.readouterr().out
-    assert main(["plan-flight", "--overlap", "1.5"]) == 1
+    assert main(["plan-flight", "--overlap", "1.5"]) == 2  # out of its range: a usage error
 
 
 def test_simulate_tls_cli_writes_las_and_trajectory(tmp_path, capsys):
