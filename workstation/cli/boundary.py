@@ -24,6 +24,7 @@ LIBRARIES = {
     "pyproj": "pyproj (CRS)", "open3d": "Open3D", "pymeshlab": "PyMeshLab",
     "pycolmap": "pycolmap (COLMAP)", "torch": "PyTorch", "PIL": "Pillow (images)",
     "cv2": "OpenCV", "pye57": "pye57 (E57)", "scipy": "SciPy", "copclib": "copclib",
+    "pyo3_runtime": "a Rust library (lazrs, LAZ)",
 }
 
 _OS_HINTS = {

@@ -26,12 +26,12 @@ def _report(result, out: Path, as_json: bool) -> None:
     c = result.camera
     for d in result.dropped:
         log.warning("dropped %s: %s", d["name"], d["reason"])
-    click.echo(
-        f"{result.method}: fx {c.fx:.2f} fy {c.fy:.2f} cx {c.cx:.2f} cy {c.cy:.2f} skew {c.skew:.3f} px, "
-        f"dist {', '.join(f'{v:.5f}' for v in c.dist)}, RMS {result.rms:.3f} px, "
-        f"{len(result.per_image)} image(s) used, {len(result.dropped)} dropped -> {out}",
-        err=True,
-    )
+    from workstation.cli.summary import emit_summary
+
+    emit_summary(f"calibrate {result.method}", f"camera fx {c.fx:.2f} fy {c.fy:.2f} cx {c.cx:.2f} cy {c.cy:.2f} "
+                 f"skew {c.skew:.3f} px, dist {', '.join(f'{v:.5f}' for v in c.dist)}", out,
+                 details=[f"RMS {result.rms:.3f} px", f"{len(result.per_image)} image(s) used",
+                          f"{len(result.dropped)} dropped"])
     if as_json:
         emit_json(result.to_dict())
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, json_option, output_option, overwrite_option
+from .options import emit_json, json_option, output_option, overwrite_option, read_options
 from .options import positive_float
 
 
@@ -29,9 +29,10 @@ from .options import positive_float
               help="Leave still water as ground (by default, level single-echo surfaces of 150 m2 or more whose "
                    "banks rise from them become water, class 9).")
 @overwrite_option
+@read_options
 @json_option
 def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, no_water,
-             overwrite, as_json):
+             overwrite, read_opts, as_json):
     """Classify IN into ground, vegetation (3/4/5), building, water, other (1) and noise (7/18);
     writes `classification` and a `confidence` (0-1) to OUT, keeping every other attribute."""
     import time
@@ -57,13 +58,19 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
         clf.raised_patches = True
     if no_water:
         clf.water = False
-    cloud = read_cloud(src)
+    cloud = read_cloud(src, **read_opts)
     t1 = time.perf_counter()
     out = clf.classify(cloud)
     t2 = time.perf_counter()
     write_cloud(out, output, overwrite=overwrite, inputs=[src])
     codes, counts = np.unique(np.asarray(out.attrs["classification"]), return_counts=True)
-    click.echo(f"classified {cloud.n} points in {t2 - t1:.2f} s ({cloud.n / max(t2 - t1, 1e-9):,.0f} points/s)", err=True)
+    from workstation.cli.summary import count, emit_summary, percent
+    from workstation.core.classes import class_name
+
+    top = sorted(zip(counts.tolist(), codes.tolist()), reverse=True)[:3]
+    emit_summary("classify", count(cloud.n, "points"), output, time.perf_counter() - t0,
+                 [", ".join(f"{class_name(int(c)).lower()} {percent(k, cloud.n)}" for k, c in top),
+                  f"{cloud.n / max(t2 - t1, 1e-9):,.0f} points/s"])
     if as_json:
         emit_json({"input": src, "output": output, "point_count": cloud.n, "classes": dict(zip(codes.tolist(), counts.tolist())),
                    "mean_confidence": float(np.mean(out.attrs["confidence"])), "classify_seconds": t2 - t1,

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from workstation.cli.options import allow_outside_option
+from workstation.cli.options import allow_outside_option, read_options
 
 from workstation.cli.options import (
     emit_json,
@@ -32,8 +32,10 @@ from workstation.cli.options import positive_float, positive_int
               help="Metres a point may lie behind the visible surface and still be painted (default 3 x spacing).")
 @overwrite_option
 @allow_outside_option
+@read_options
 @json_option
-def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth_tolerance, overwrite, as_json):
+def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth_tolerance, overwrite, read_opts,
+             as_json):
     """Colour CLOUD from the oriented photos of a reconstruction; occluded points are not painted.
 
     Adds rgb, colorized (1 painted, 0 seen by no image) and color_views.
@@ -47,7 +49,7 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
     from workstation.registration.colorize import colorize as run_colorize
 
     check_output(output, overwrite, inputs=[cloud])
-    c = read_cloud(cloud)
+    c = read_cloud(cloud, **read_opts)
     depth_maps = None
     if use_depth_maps:
         dense = Path(workdir) / "dense"
@@ -58,6 +60,13 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
     out = run_colorize(c, rec, ColorizeParams(max_views=max_views, depth_tolerance=depth_tolerance),
                        depth_maps=depth_maps)
     write_cloud(out, output, overwrite=overwrite, inputs=[cloud])
+    import numpy as np
+
+    from workstation.cli.summary import count, emit_summary, percent
+
+    n_painted = int(np.count_nonzero(np.asarray(out.attrs["colorized"]))) if "colorized" in out.attrs else 0
+    emit_summary("colorize", count(out.n, "points"), output,
+                 details=[f"painted {percent(n_painted, out.n)}", count(len(rec.images), "images")])
     if as_json:
         painted = int(out.attrs["colorized"].sum())
         emit_json({"output": str(output), "points": out.n, "painted": painted, "images": len(rec.images)})

@@ -2,19 +2,23 @@
 
 from __future__ import annotations
 
+import math
+
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import require_suffix
-from .options import finite_float, nonneg_int, positive_float, positive_int
+from .options import Length, nonneg_int, positive_int, positive_length
 
 
 @click.command()
 @click.argument("dem", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--interval", type=positive_float, default=None,
-              help="Contour interval in metres; default 3x the DEM's vertical RMSE (from its metadata) when known.")
-@click.option("--base", type=finite_float, default=0.0, show_default=True, help="Levels are base + k * interval (metres).")
+@click.option("--interval", type=positive_length, default=None,
+              help="Contour interval in metres whatever the DEM's height unit (or with a unit: 2ft); "
+                   "default 3x the DEM's vertical RMSE (from its metadata) when known.")
+@click.option("--base", type=Length(min_m=-math.inf, open_min=False), default="0", show_default=True,
+              help="Levels are base + k * interval (metres, or with a unit).")
 @click.option("--index-every", type=positive_int, default=5, show_default=True, help="Every n-th level is an index contour.")
 @click.option("--smooth", type=nonneg_int, default=0, show_default=True, help="Chaikin smoothing iterations (0 = none).")
 @overwrite_option
@@ -29,8 +33,15 @@ def contours(dem, output, interval, base, index_every, smooth, overwrite, as_jso
     r = read_raster(dem, band=1)
     cs = contour_lines(r, ContourParams(interval, base, index_every, smooth))
     write_geojson(cs, output, overwrite=overwrite, inputs=[dem])
-    click.echo(f"interval {cs.interval:g} m ({cs.reason}); {len(cs)} lines", err=True)
+    from workstation.io.crs import raster_units
+
+    click.echo(f"interval {raster_units(r).describe_v(cs.interval_m)} ({cs.reason}); {len(cs)} lines", err=True)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("contours", count(len(cs), "lines"), output,
+                 details=[f"interval {cs.interval_m:g} m", count(int(cs.index.sum()), "index contours")])
     if as_json:
-        emit_json({"output": output, "interval": cs.interval, "interval_reason": cs.reason, "lines": len(cs),
+        emit_json({"output": output, "interval": cs.interval, "interval_m": cs.interval_m, "z_unit": cs.z_unit,
+                   "interval_reason": cs.reason, "lines": len(cs),
                    "closed": int(cs.closed.sum()), "index": int(cs.index.sum()),
                    "levels": sorted(set(float(v) for v in cs.levels))})

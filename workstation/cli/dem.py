@@ -2,26 +2,11 @@
 
 from __future__ import annotations
 
-import math
-
 import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import GEOTIFF, require_suffix
-from .options import positive_float, positive_int
-
-
-def _resolution(ctx, param, value: str):
-    """--resolution: a positive, finite cell size in metres, or None for 'auto'."""
-    if value is None or value.lower() == "auto":
-        return None
-    try:
-        r = float(value)
-    except ValueError:
-        raise click.BadParameter("a cell size in metres or 'auto'") from None
-    if not (r > 0 and math.isfinite(r)):
-        raise click.BadParameter("must be a positive, finite number of metres")
-    return r
+from .options import Length, positive_int, positive_length
 
 
 @click.command()
@@ -29,13 +14,14 @@ def _resolution(ctx, param, value: str):
 @output_option
 @click.option("--kind", type=click.Choice(["dsm", "dtm", "chm"]), default="dtm", show_default=True,
               help="Surface: DSM (highest returns), DTM (ground TIN), CHM (DSM - DTM).")
-@click.option("--resolution", default="auto", show_default=True, callback=_resolution,
-              help="Cell size in metres, or 'auto' (from the point spacing and the 3x vertical-RMSE rule).")
+@click.option("--resolution", default="auto", show_default=True, type=Length(auto=True),
+              help="Cell size in metres whatever the CRS unit (or with a unit: 3ft, 1m), or 'auto' "
+                   "(from the point spacing and the 3x vertical-RMSE rule).")
 @click.option("--method", type=click.Choice(["tin", "nn", "idw", "highest"]), default=None,
               help="DTM: tin (default), nn (natural neighbour) or idw; DSM/CHM: highest (default) or tin (TIN of first returns).")
-@click.option("--vertical-rmse", type=positive_float, default=None,
+@click.option("--vertical-rmse", type=positive_length, default=None,
               help="Known vertical RMSE of the points in metres (3x rule for auto cells; contour default).")
-@click.option("--max-edge", type=positive_float, default=None,
+@click.option("--max-edge", type=positive_length, default=None,
               help="Leave voids whose TIN triangles have an edge longer than this (metres) as nodata; default fill all.")
 @click.option("--pit-free", is_flag=True, help="CHM by the pit-free algorithm (Khosravipour et al. 2014).")
 @click.option("--ground-classes", default="2", show_default=True, help="Comma-separated classes used as ground.")
@@ -66,8 +52,15 @@ def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_f
     with doing(f"gridding {', '.join(inputs)}"):
         r = build_dem(list(inputs), params, chunk_size=chunk_size)
     write_raster(r, output, overwrite=overwrite, inputs=inputs)
-    click.echo(f"resolution {r.meta['resolution']:g} m ({r.meta['resolution_reason']})", err=True)
+    from workstation.core.units import Units
+
+    units = Units.from_dict(r.meta.get("units")) or Units()
+    click.echo(f"resolution {units.describe_h(r.meta['resolution_m'])} ({r.meta['resolution_reason']})", err=True)
     get_logger(__name__).info("%s %s written: %d x %d cells", kind, output, *r.shape)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("dem", f"{kind} {r.shape[0]:,} x {r.shape[1]:,} cells", output,
+                 details=[f"cell {r.meta['resolution_m']:g} m", count(r.meta.get("points", 0), "points")])
     if as_json:
         emit_json({"output": output, "rows": r.shape[0], "cols": r.shape[1], "transform": list(r.transform), "crs": r.crs,
                    **{k: v for k, v in r.meta.items() if k != "params"}})

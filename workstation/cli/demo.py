@@ -32,3 +32,6 @@ def demo(outdir, seed, overwrite):
 
     ctx = run_demo(out, seed=seed, on_step=report)
     click.echo(f"Demo products are in {ctx.outdir.resolve()}")
+    from workstation.cli.summary import emit_summary
+
+    emit_summary("demo", "every stage on a synthetic scene", ctx.outdir)

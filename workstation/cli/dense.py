@@ -54,7 +54,8 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
 
         write_cloud(cloud, output, overwrite=overwrite, inputs=[summary["fused"]])
         summary["output"] = str(output)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("dense", count(summary["points"], "points"), [summary["fused"], output], details=summary["device"])
     if as_json:
         emit_json(summary)
-    else:
-        click.echo(f"{summary['points']} points ({summary['device']}) -> {summary['fused']}", err=True)

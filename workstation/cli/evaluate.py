@@ -59,6 +59,10 @@ def evaluate(pred, ref, tolerance, min_matched, plot_dir, ground_classes, pred_c
             files["errors_plan"] = str(plot_errors(pc.xyz[pi], rg, pg, plots[0], title=Path(pred).name,
                                                    overwrite=overwrite))
             files["confusion"] = str(plot_confusion(ev, plots[1], overwrite=overwrite))
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("evaluate", f"{count(ev.n_matched, 'points')} compared", list(files.values()) or None,
+                 details=[f"total error {100 * ev.total_error:.2f} %", f"kappa {100 * ev.kappa:.2f} %"])
     if as_json:
         emit_json({**ev.to_dict(), "prediction": pred, "reference": ref, "plots": files})
         return

@@ -6,7 +6,7 @@ import click
 
 from workstation.cli.options import allow_outside_option
 
-from .options import emit_json, json_option, output_option, overwrite_option
+from .options import emit_json, json_option, output_option, overwrite_option, read_options
 from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float
 
 
@@ -63,11 +63,12 @@ from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, p
               help="Texture: photos blended per face (1 = the sharpest view).")
 @overwrite_option
 @allow_outside_option
+@read_options
 @json_option
 def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, poisson_backend, threads, radius, max_edge,
          k_normals, orient, viewpoint, recompute_normals, target_faces, smooth, smooth_iterations,
          min_piece_fraction, max_hole_edges, no_color, no_quality, workdir, image_dir, texel_size, texture_size,
-         texture_views, overwrite, as_json):
+         texture_views, overwrite, read_opts, as_json):
     """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary.
 
     With --reconstruction the mesh is textured from the oriented photos: OUT.obj comes with
@@ -94,7 +95,7 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
         from workstation.raster.ortho import read_reconstruction
 
         rec = read_reconstruction(workdir, image_dir)
-    cloud = read_cloud(src)
+    cloud = read_cloud(src, **read_opts)
     params = MeshChainParams(
         method=method,
         normals=NormalParams(k=k_normals, orient=orient, recompute=recompute_normals),
@@ -113,5 +114,9 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     res = mesh_cloud(cloud, params, viewpoints=vp, reconstruction=rec)
     write_mesh(res.mesh, output, overwrite=overwrite, inputs=[src])
     log.info("wrote %s: %d faces, %d vertices in %.1f s", output, res.mesh.n_faces, res.mesh.n_vertices, res.seconds)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("mesh", f"{count(res.mesh.n_faces, 'faces')}, {count(res.mesh.n_vertices, 'vertices')}", output,
+                 details=[method, f"from {count(cloud.n, 'points')}"])
     if as_json:
         emit_json({"input": src, "output": output, "method": method, **res.to_dict()})

@@ -94,3 +94,81 @@ def emit_json(obj) -> None:
     text = dumps(obj, indent=2)
     sys.stdout.write(text + "\n")
     sys.stdout.flush()
+
+
+def _parse_bounds(ctx, param, value):
+    """``--bounds "xmin,ymin,xmax,ymax[,zmin,zmax]"`` as a tuple of floats (usage error otherwise)."""
+    if value is None:
+        return None
+    try:
+        b = tuple(float(v) for v in value.replace(" ", "").strip("()[]").split(","))
+    except ValueError:
+        b = ()
+    if len(b) not in (4, 6) or not all(math.isfinite(v) for v in b):
+        raise click.BadParameter(f"{value!r} is not xmin,ymin,xmax,ymax or xmin,ymin,xmax,ymax,zmin,zmax", ctx, param)
+    for lo, hi, axis in ((0, 2, "x"), (1, 3, "y"), (4, 5, "z"))[: len(b) // 2]:
+        if b[lo] > b[hi]:
+            raise click.BadParameter(f"{axis}min {b[lo]:g} is greater than {axis}max {b[hi]:g}", ctx, param)
+    return b
+
+
+def read_options(func=None, *, resolution_flag: str = "--resolution"):
+    """Add ``--bounds``, ``--resolution`` and ``--level`` to a command that reads one point cloud
+    and pass them on as one dict parameter ``read_opts`` for :func:`workstation.io.read_cloud`
+    (``read_cloud(src, **read_opts)``). ``resolution_flag`` renames ``--resolution`` for a command
+    that already has one (``ws dem --resolution`` is the cell size)."""
+    import functools
+
+    def decorate(f):
+        @functools.wraps(f)
+        def wrapper(*args, read_bounds=None, read_resolution=None, read_level=None, **kw):
+            kw["read_opts"] = {"bounds": read_bounds, "resolution": read_resolution, "level": read_level}
+            return f(*args, **kw)
+
+        for opt in (
+            click.option("--level", "read_level", type=nonneg_int, default=None,
+                         help="COPC only: read octree levels 0..LEVEL (0 is the root), a coarser cloud."),
+            click.option(resolution_flag, "read_resolution", type=positive_float, default=None,
+                         help="COPC only: read the octree levels down to this point spacing (CRS units)."),
+            click.option("--bounds", "read_bounds", default=None, callback=_parse_bounds,
+                         metavar="XMIN,YMIN,XMAX,YMAX[,ZMIN,ZMAX]",
+                         help="Read only the points inside this box (CRS units, inclusive): a COPC file is "
+                              "queried through its octree, a LAS/LAZ file streamed and filtered."),
+        ):
+            wrapper = opt(wrapper)
+        return wrapper
+
+    return decorate(func) if func is not None else decorate
+
+
+class Length(click.ParamType):
+    """A length in metres, or with a unit suffix (``2.5``, ``1m``, ``3ft``, ``10cm``, ``2usft``):
+    the value reaching the command is always metres (see :mod:`workstation.core.units`), which
+    the stage converts to the CRS's unit. ``auto=True`` also lets ``auto`` through as None.
+    Negative, zero (unless ``min_m=0`` and ``open_min=False``), NaN and infinite lengths are
+    usage errors."""
+
+    name = "length"
+
+    def __init__(self, min_m: float = 0.0, open_min: bool = True, auto: bool = False):
+        self.min_m, self.open_min, self.auto = min_m, open_min, auto
+
+    def convert(self, value, param, ctx):
+        from workstation.core.units import parse_length
+
+        if value is None or (self.auto and isinstance(value, str) and value.strip().lower() == "auto"):
+            return None
+        try:
+            m = parse_length(value)
+        except ValueError as exc:
+            self.fail(str(exc) + (" or 'auto'" if self.auto else ""), param, ctx)
+        low = m <= self.min_m if self.open_min else m < self.min_m
+        if not math.isfinite(m) or low:
+            self.fail(f"{value!r} must be a finite length {'>' if self.open_min else '>='} {self.min_m:g} m", param, ctx)
+        return m
+
+
+#: A positive length (metres; ``3ft`` etc. accepted).
+positive_length = Length()
+#: A length that may be 0.
+nonneg_length = Length(open_min=False)

@@ -45,5 +45,9 @@ def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion
         write_raster(res.accuracy, accuracy_out, overwrite=overwrite, inputs=[dsm])
     click.echo(f"coverage {100 * res.meta['coverage']:.1f} %, {res.meta['images_used']} images, "
                f"estimated accuracy {res.meta['accuracy_rms_m']:.3f} m RMS", err=True)
+    from workstation.cli.summary import emit_summary, percent
+
+    emit_summary("ortho", f"{res.ortho.shape[0]:,} x {res.ortho.shape[1]:,} cells", [output, accuracy_out],
+                 details=[f"coverage {percent(res.meta['coverage'], 1)}", f"{res.meta['images_used']} images"])
     if as_json:
         emit_json({"output": output, **res.meta})

@@ -140,6 +140,11 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
         with atomic_paths([output, matrix_out], overwrite, inputs=inputs) as (cloud_tmp, matrix_tmp):
             write_cloud(moved, cloud_tmp, overwrite=True)
             write_matrix(result, matrix_tmp)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("register", count(moved.n, "points"), [output, matrix_out],
+                 details=[f"fitness {result.fitness:.3f}", f"inlier RMSE {result.inlier_rmse:.4g}",
+                          "converged" if result.converged else "NOT converged"])
     if as_json:
         d = result.to_dict()
         if pair_fit is not None:

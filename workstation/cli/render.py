@@ -113,6 +113,10 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
     else:
         save_png(render_image(obj, params, camera=view_camera), out, overwrite=overwrite, inputs=[src])
         files.append(str(out))
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("render", count(len(files), "images"), files if len(files) <= 3 else [files[0], "..."],
+                 time.perf_counter() - t0, details=[f"{size[0]}x{size[1]} px", f"colour {color}"])
     if as_json:
         emit_json({"input": src, "files": files, "size": list(size), "color": color,
                    "view": f"camera {camera_ref}" if camera_ref is not None else view,

@@ -28,6 +28,10 @@ def report(workdir, output, render_size, max_points, overwrite, as_json):
         raise click.BadParameter("give WIDTHxHEIGHT, e.g. 640x480", param_hint="--render-size") from None
     t0 = time.perf_counter()
     out = write_report(workdir, output, overwrite=overwrite, params=ReportParams(render_size=(w, h), max_points=max_points))
+    from workstation.cli.summary import emit_summary
+
+    emit_summary("report", f"work folder {workdir}", out, time.perf_counter() - t0,
+                 details=f"{out.stat().st_size / 1e6:.1f} MB")
     if as_json:
         emit_json({"workdir": workdir, "output": str(out), "bytes": out.stat().st_size,
                    "seconds": time.perf_counter() - t0})

@@ -107,6 +107,12 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
             out["dense"] = dense_summary
         with atomic_path(wd / "summary.json", overwrite=True) as tmp:
             Path(tmp).write_text(json.dumps(json_clean(out), indent=2, default=str) + "\n")
+        from workstation.cli.summary import count, emit_summary
+
+        emit_summary("sfm", f"{s['registered']}/{count(s['images'], 'images')} registered, {count(s['points'], 'points')}",
+                     [wd / "sparse" / "0", wd / "sparse.ply", wd / "summary.json"],
+                     details=[f"reprojection {s['mean_reprojection_error_px']:.3f} px",
+                              "georeferenced" if gcps is not None else "", "dense" if do_dense else ""])
         if as_json:
             emit_json(out)
 

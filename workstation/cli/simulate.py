@@ -147,7 +147,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     log.info("scene: %s", scene_summary(scene))
     traj = survey_trajectory(scene, cfg, seed)
     total = count_pulses(traj, cfg.scanner)
-    with progress_bar(f"simulate {kind}", total) as advance:
+    with progress_bar(f"simulate {kind}", total, unit="pulses") as advance:
         result = run_survey(scene, cfg, seed, progress=advance, with_nir=point_format == "8", trajectory=traj)
     cloud = result.cloud
     if point_format == "6":
@@ -160,6 +160,10 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
             save_scene(scene, tmps[2], overwrite=True)
     dt = time.perf_counter() - t0
     log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("simulate", f"{kind} {count(cloud.n, 'points')}", [output, traj_out, scene_out], dt,
+                 details=[count(result.stats["pulses"], "pulses"), count(len(traj.segments), "lines or stations")])
     if as_json:
         import numpy as np
 

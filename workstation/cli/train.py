@@ -19,7 +19,9 @@ def train(recipe, output, overwrite, baseline, as_json):
     from workstation.ml.train import train_from_recipe
 
     card = train_from_recipe(recipe, output, overwrite=overwrite, baseline=baseline)
-    click.echo(f"model {card['model_path']}: {card['epochs']} epochs, validation accuracy "
-               f"{card['validation']['accuracy']:.4f}, {card['total_seconds']:.0f} s", err=True)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("train", f"model, {count(card['epochs'], 'epochs')}", card["model_path"], card["total_seconds"],
+                 details=f"validation accuracy {card['validation']['accuracy']:.4f}")
     if as_json:
         emit_json(card)

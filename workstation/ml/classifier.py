@@ -366,7 +366,7 @@ class PointClassifier:
         rep = TrainReport()
         best, best_state, bad = float("inf"), None, 0
         t0 = time.perf_counter()
-        with progress_bar("training", self.epochs) as advance:
+        with progress_bar("training", self.epochs, unit="epochs") as advance:
             for ep in range(self.epochs):
                 net.train()
                 perm = torch.randperm(len(Xt), generator=g).to(dev)

@@ -458,7 +458,7 @@ def simulated_tiles(recipe: DatasetRecipe, validation_only: bool = False, progre
     from workstation.lidar.scene import build_scene
 
     plan = tile_plan(recipe)
-    items = track(plan, "simulating tiles") if progress else plan
+    items = track(plan, "simulating tiles", unit="tiles") if progress else plan
     cache: dict = {}
     for name, seed, t, val in items:
         if validation_only and not val:

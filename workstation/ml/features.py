@@ -586,7 +586,9 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     futures = [pool.submit(_voxel_eigen, xyz, v, k, p.workers)
                for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
     F = np.empty((n, len(FEATURE_NAMES)), np.float32, order="F")
-    cell = p.cell
+    from workstation.ground.common import auto_cell
+
+    cell = auto_cell(xyz[:, :2], p.cell)  # sparse data over a large extent: grids sized by the points
     r, c, shape = _grid(xyz[:, :2], cell)
     zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
     zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)

@@ -184,7 +184,7 @@ def detect_checkerboard(images: Sequence[Path], cols: int, rows: int, subpix_win
     found, missing = [], []
     size = None
     crit = (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 100, 1e-4)
-    for path in track(list(images), "detect corners"):
+    for path in track(list(images), "detect corners", unit="images"):
         img = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
         if img is None:
             missing.append({"name": Path(path).name, "reason": "cannot be read as an image"})

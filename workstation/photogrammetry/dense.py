@@ -598,7 +598,7 @@ def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
     nm.mkdir(parents=True, exist_ok=True)
     stats = {"images": len(views), "photometric_s": 0.0, "geometric_s": 0.0, "valid_photometric": 0, "valid_geometric": 0}
     t0 = time.perf_counter()
-    for iid in track(sorted(views), "plane sweep"):
+    for iid in track(sorted(views), "plane sweep", unit="views"):
         v = views[iid]
         if not sources[iid]:
             log.warning("%s: no source view in the angle range; no depth map", v.name)
@@ -615,7 +615,7 @@ def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
         stats["valid_photometric"] += int((depth > 0).sum())
     stats["photometric_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    for iid in track(sorted(views), "consistency"):
+    for iid in track(sorted(views), "consistency", unit="views"):
         v = views[iid]
         depth = read_array(dm / f"{v.name}.photometric.bin")
         srcs = [views[j] for j in sources[iid]]

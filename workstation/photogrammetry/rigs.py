@@ -356,7 +356,7 @@ def make_rig(recipe, spec: RigSpec, outdir, overwrite: bool = False) -> RigResul
     caster = RaycastScene(V, F)
     rays = camera_rays(cam, spec.supersample)
     images = {}
-    for k, pose in enumerate(track(rig_poses(spec, centre, size), "render rig"), start=1):
+    for k, pose in enumerate(track(rig_poses(spec, centre, size), "render rig", unit="views"), start=1):
         img = render(V, F, alb, cam, pose, spec.supersample, caster, rays)
         name = f"img_{k:03d}.png"
         with atomic_path(out / "images" / name, overwrite=True) as tmp:

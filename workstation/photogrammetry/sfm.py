@@ -286,7 +286,7 @@ def run_sfm(
             opt.ba_refine_principal_point = False
             opt.mapper.abs_pose_refine_focal_length = False
             opt.mapper.abs_pose_refine_extra_params = False
-        with progress_bar("register images", len(files)) as advance:
+        with progress_bar("register images", len(files), unit="images") as advance:
             recs = pycolmap.incremental_mapping(
                 db, image_dir, sparse, opt, next_image_callback=lambda: advance(1)
             )

@@ -35,11 +35,12 @@ class ContourParams:
     Attributes
     ----------
     interval : float or None
-        Vertical distance between contours in z units (metres). None: 3 × the DEM's
+        Vertical distance between contours in metres, whatever the DEM's height unit (1 m
+        on a DEM in feet gives levels 3.2808... ft apart). None: 3 × the DEM's
         ``vertical_rmse`` (from ``Raster.meta``) rounded up to a round value, or about 20
         levels over the height range when the accuracy is unknown.
     base : float
-        Contours are at ``base + k · interval``.
+        Contours are at ``base + k · interval`` (metres).
     index_every : int
         Every n-th level (multiples of n · interval from ``base``) is an index contour.
     smooth : int
@@ -62,13 +63,18 @@ class ContourSet:
     Attributes
     ----------
     lines : list of (n, 2) float64 arrays
-    levels : (m,) float64, the elevation of each line
+    levels : (m,) float64, the elevation of each line in the DEM's height unit
     closed : (m,) bool
     index : (m,) bool, index contours
     interval : float
+        Spacing of the levels in the DEM's height unit.
     crs : str or None
     reason : str
         How the interval was chosen.
+    interval_m : float
+        The same spacing in metres.
+    z_unit : str
+        The DEM's height unit ("metre", "US survey foot").
     """
 
     lines: list
@@ -79,6 +85,8 @@ class ContourSet:
     crs: str | None = None
     reason: str = ""
     meta: dict = field(default_factory=dict)
+    interval_m: float | None = None
+    z_unit: str = "metre"
 
     def __len__(self) -> int:
         return len(self.lines)
@@ -93,7 +101,8 @@ class ContourSet:
                 "geometry": {"type": "LineString", "coordinates": np.round(pts, decimals).tolist()},
             })
         fc = {"type": "FeatureCollection", "features": feats,
-              "properties": {"interval": self.interval, "interval_reason": self.reason}}
+              "properties": {"interval": self.interval, "interval_m": self.interval_m, "z_unit": self.z_unit,
+                             "interval_reason": self.reason}}
         if self.crs:
             # RFC 7946 drops the crs member; GDAL/QGIS still read it, so coordinates stay usable
             name = self.crs if self.crs.upper().startswith("EPSG:") else None
@@ -110,7 +119,7 @@ def _nice_interval(value: float) -> float:
 
 
 def choose_interval(raster: Raster, interval: float | None) -> tuple[float, str]:
-    """The contour interval and why it was chosen."""
+    """The contour interval in metres and why it was chosen (``interval`` is metres too)."""
     if interval is not None:
         if not interval > 0:
             raise InvalidInputError("interval must be positive", field="interval")
@@ -119,8 +128,13 @@ def choose_interval(raster: Raster, interval: float | None) -> tuple[float, str]
     if rmse:
         iv = _nice_interval(3.0 * float(rmse))
         return iv, f"3 × vertical RMSE {float(rmse):g} m = {3 * float(rmse):.2f} m, rounded up to {iv:g} m"
+    from workstation.io.crs import raster_units
+
     a = np.asarray(raster.array, float)
+    if raster.nodata is not None and not np.isnan(raster.nodata):
+        a = np.where(a == raster.nodata, np.nan, a)
     rng = float(np.nanmax(a) - np.nanmin(a)) if np.isfinite(a).any() else 0.0
+    rng = raster_units(raster).v_to_m(rng)
     iv = _nice_interval(max(rng / 20.0, 0.1))
     return iv, f"vertical accuracy unknown: about 20 levels over the {rng:.1f} m height range -> {iv:g} m"
 
@@ -175,10 +189,14 @@ def contour_lines(raster: Raster, params: ContourParams = ContourParams()) -> Co
     if min(a.shape) < 2:
         raise InvalidInputError(f"a {a.shape[0]} x {a.shape[1]} DEM has no contours (2 x 2 cells at least)",
                                 "grid the cloud with a finer --resolution", field="shape")
-    interval, reason = choose_interval(raster, params.interval)
+    from workstation.io.crs import raster_units
+
+    units = raster_units(raster)
+    interval_m, reason = choose_interval(raster, params.interval)
+    interval, base = units.v_from_m(interval_m), units.v_from_m(params.base)  # metres -> the DEM's heights
     zmin, zmax = float(np.nanmin(a)), float(np.nanmax(a))
-    k0 = math.ceil((zmin - params.base) / interval)
-    k1 = math.floor((zmax - params.base) / interval)
+    k0 = math.ceil((zmin - base) / interval)
+    k1 = math.floor((zmax - base) / interval)
     if k1 - k0 > 10_000:
         raise InvalidInputError(f"{k1 - k0 + 1} contour levels: the interval is too small", field="interval")
     ks = np.arange(k0, k1 + 1)
@@ -186,7 +204,7 @@ def contour_lines(raster: Raster, params: ContourParams = ContourParams()) -> Co
     gen = contourpy.contour_generator(z=np.ma.masked_invalid(a), name="serial", line_type="SeparateCode", corner_mask=True)
     lines, levels, closed, index = [], [], [], []
     for k in ks:
-        level = params.base + k * interval
+        level = base + k * interval
         segs, codes = gen.lines(level)
         for p, c in zip(segs, codes):
             if len(p) < params.min_points:
@@ -205,9 +223,11 @@ def contour_lines(raster: Raster, params: ContourParams = ContourParams()) -> Co
             closed.append(is_closed)
             index.append(params.index_every > 0 and k % params.index_every == 0)
     if not lines:
-        raise StageError("contours", f"no {interval:g} m level crosses the surface ({zmin:.2f}-{zmax:.2f} m)",
-                         "use a smaller --interval")
-    return ContourSet(lines, np.array(levels), np.array(closed, bool), np.array(index, bool), interval, raster.crs, reason)
+        zu = units.v_abbrev
+        raise StageError("contours", f"no {units.describe_v(interval_m)} level crosses the surface "
+                                     f"({zmin:.2f}-{zmax:.2f} {zu})", "use a smaller --interval")
+    return ContourSet(lines, np.array(levels), np.array(closed, bool), np.array(index, bool), interval, raster.crs, reason,
+                      interval_m=interval_m, z_unit=units.v_name)
 
 
 def write_geojson(cs: ContourSet, path, *, overwrite: bool = False, inputs=(), decimals: int = 3) -> Path:

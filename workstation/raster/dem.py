@@ -49,6 +49,7 @@ from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Raster
+from workstation.io.crs import crs_units
 
 from .grid import GridSpec, fill_voids_tin, tin_surface
 
@@ -69,8 +70,9 @@ class DemParams:
     ----------
     kind : {"dsm", "dtm", "chm"}
     resolution : float or None
-        Cell size in CRS units (metres). None chooses it from the point spacing and the
-        vertical RMSE (see :func:`auto_resolution`).
+        Cell size in metres, whatever the CRS unit (a US-feet CRS gets 3.2808... ft cells for
+        1 m). None chooses it from the point spacing and the vertical RMSE (see
+        :func:`auto_resolution`). A ``grid`` given to :func:`build_dem` overrides it.
     method : str
         DTM: ``"tin"`` (linear TIN, default), ``"nn"`` (discrete Sibson natural neighbour)
         or ``"idw"``. DSM: ``"highest"`` (default) or
@@ -79,7 +81,7 @@ class DemParams:
         Known vertical RMSE of the points in metres (for the 3× cell-size rule; stored in the
         raster's meta as ``vertical_rmse`` for contour intervals).
     max_edge : float or None
-        Triangles with an edge longer than this (metres) are not interpolated, leaving NaN;
+        Triangles with an edge longer than this (metres, converted to CRS units) are not interpolated, leaving NaN;
         None fills every void inside the convex hull of the points (buildings, water).
     idw_power : float
         Exponent of inverse-distance weights (dimensionless).
@@ -91,7 +93,7 @@ class DemParams:
     pit_free : bool
         CHM by the pit-free algorithm instead of DSM − DTM.
     pit_free_thresholds : tuple of float
-        Height layers of the pit-free CHM in metres.
+        Height layers of the pit-free CHM in metres (converted to the CRS's vertical unit).
     pit_free_max_edge : float or None
         Freeze distance of the pit-free partial TINs in metres (default 3 cells).
     ground_classes : tuple of int
@@ -303,11 +305,12 @@ def _survey(source, params: DemParams, chunk_size: int, need_area: bool = True) 
     keys = np.empty(0, np.int64)
     crs = None
     vrmse = None
-    cov = 5.0
+    cov = None
     for c in _iter_clouds(source, chunk_size):
         if c.n == 0:
             continue
         crs = crs or c.crs
+        cov = cov or crs_units(crs).h_from_m(COVERAGE_CELL_M)
         vrmse = vrmse or c.meta.get("vertical_rmse")
         keep = _noise_free(c)
         xyz = c.xyz[keep]
@@ -321,11 +324,30 @@ def _survey(source, params: DemParams, chunk_size: int, need_area: bool = True) 
         n_first += int(_first_returns(c).sum())
         if c.get("classification") is not None:
             n_ground += int(np.isin(c.get("classification"), list(params.ground_classes)).sum())
-        k = (np.floor(xyz[:, 0] / cov).astype(np.int64) << 32) + np.floor(xyz[:, 1] / cov).astype(np.int64)
+        k = (np.floor(xyz[:, 0] / cov).astype(np.int64) << 32) + (np.floor(xyz[:, 1] / cov).astype(np.int64) + _KEY_BIAS)
         keys = np.union1d(keys, np.unique(k))
     if n_all == 0:
         raise InvalidInputError("no points (after removing noise classes) to grid", "check the input file")
-    return _Survey((lo[0], lo[1], hi[0], hi[1]), n_all, n_first, n_ground, len(keys) * cov * cov, crs, vrmse)
+    area = _occupied_area(keys, cov, (hi[0] - lo[0]) * (hi[1] - lo[1]), n_all) if need_area else 0.0
+    return _Survey((lo[0], lo[1], hi[0], hi[1]), n_all, n_first, n_ground, area, crs, vrmse)
+
+
+#: Coverage cells of the occupied-area estimate (metres), and the bias that keeps the packed
+#: row key non-negative.
+COVERAGE_CELL_M = 5.0
+_KEY_BIAS = 1 << 31
+
+
+def _occupied_area(keys: np.ndarray, cov: float, bbox_area: float, n: int) -> float:
+    """Area (square CRS units) of the occupied coverage cells, on cells at least as large as the
+    mean point spacing over the bounding box: on sparse data (a few thousand points over
+    kilometres) every point would otherwise fill its own small cell, the spacing would come
+    out as the coverage cell and the grid would be sized by the box, not by the points."""
+    k = max(1, int(math.ceil(math.sqrt(max(bbox_area, 0.0) / max(n, 1)) / cov)))
+    if k > 1:
+        ix, iy = keys >> 32, keys & 0xFFFFFFFF
+        keys = np.unique(((ix // k) << 32) + iy // k)
+    return float(len(keys)) * (k * cov) ** 2
 
 
 def nice_ceil(value: float) -> float:
@@ -344,14 +366,14 @@ def auto_resolution(n_points: int, area: float, vertical_rmse: float | None = No
     n_points : int
         Points that define the surface (ground points for a DTM, first returns for a DSM).
     area : float
-        Area they cover in square CRS units.
+        Area they cover in m².
     vertical_rmse : float, optional
-        Vertical RMSE of the points (CRS units).
+        Vertical RMSE of the points in metres.
 
     Returns
     -------
     (float, str)
-        The cell size and the reason, in words.
+        The cell size in metres and the reason, in words.
 
     Examples
     --------
@@ -624,6 +646,26 @@ def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, til
     return out, n_used
 
 
+def _in_crs_units(params: DemParams, units) -> DemParams:
+    """The lengths of ``params`` (metres) in CRS units, as the gridding code uses them: max edge
+    and freeze distance horizontally, pit-free layers vertically."""
+    from dataclasses import replace
+
+    def h(x):
+        return None if x is None else units.h_from_m(x)
+
+    return replace(params, max_edge=h(params.max_edge), pit_free_max_edge=h(params.pit_free_max_edge),
+                   pit_free_thresholds=tuple(units.v_from_m(t) for t in params.pit_free_thresholds))
+
+
+def _unit_meta(res: float, res_m: float, units) -> dict:
+    """Raster meta saying what the numbers mean: ``resolution`` is the cell in CRS units
+    (``resolution_unit``), ``resolution_m`` the same in metres, ``units`` the CRS units (the
+    raster's values are heights in ``units['vertical']``)."""
+    return {"resolution": float(res), "resolution_unit": units.h_name, "resolution_m": float(res_m),
+            "z_unit": units.v_name, "units": units.to_dict()}
+
+
 def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None,
               tile_cells: int = 4096, buffer_cells: int = 128) -> Raster:
     """Grid a DSM, DTM or CHM from a cloud, a file or several files (one mosaic).
@@ -662,34 +704,41 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     if grid is None or params.resolution is None:
         survey = _survey(source, params, chunk_size, need_area=grid is None and params.resolution is None)
     vrmse = params.vertical_rmse or (survey.vertical_rmse if survey else None)
+    crs = survey.crs if survey else (source.crs if isinstance(source, Cloud) else None)
+    units = crs_units(crs)
     if grid is not None:
-        res = grid.res
+        res, res_m = grid.res, units.h_to_m(grid.res)
         reason = "given grid"
     elif params.resolution is None:
         n = survey.n_ground if kind == "dtm" else (survey.n_first or survey.n_all)
         if n == 0:
             raise InvalidInputError("no ground points to choose a cell size from", "classify ground first or give --resolution")
-        res, reason = auto_resolution(n, survey.area, vrmse)
-        log.info("resolution %g m: %s", res, reason)
+        res_m, reason = auto_resolution(n, units.area_to_m2(survey.area), vrmse)
+        res = units.h_from_m(res_m)
+        log.info("resolution %s: %s", units.describe_h(res_m), reason)
     else:
-        res = float(params.resolution)
+        res_m = float(params.resolution)
+        res = units.h_from_m(res_m)
         reason = "given"
     if grid is None:
         grid = GridSpec.from_bounds(*survey.bounds, res)
     tiled = bool(tile_cells) and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells
-    # out of core only the float32 result spans the grid; in memory the per-cell accumulators too
-    check_grid(grid.rows, grid.cols, what=f"the {kind} grid", option="--resolution", cell=res,
-               bytes_per_cell=4 if tiled else _BYTES_PER_CELL, path=_names(source))
-    crs = survey.crs if survey else None
+    # out of core only the float32 result spans the grid; in memory the per-cell accumulators too;
+    # a grid is sized by its points too (CELLS_PER_POINT), never by a bounding box alone
+    check_grid(grid.rows, grid.cols, what=f"the {kind} grid", option="--resolution", cell=units.h_to_m(res),
+               bytes_per_cell=4 if tiled else _BYTES_PER_CELL, path=_names(source),
+               n_points=survey.n_all if survey else None)
+    user_params, params = params, _in_crs_units(params, units)
     if tiled:
         arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
         if not np.isfinite(arr).any():
             raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
         meta = {
             "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
-            "resolution": res, "resolution_reason": reason, "points": n_used, "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
+            **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used,
+            "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
             "seconds": round(time.perf_counter() - t0, 3),
-            "params": {k: v for k, v in asdict(params).items() if v is not None},
+            "params": {k: v for k, v in asdict(user_params).items() if v is not None},
         }
         if vrmse:
             meta["vertical_rmse"] = float(vrmse)
@@ -730,9 +779,9 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
     meta = {
         "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
-        "resolution": res, "resolution_reason": reason, "points": n_used,
+        **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used,
         "seconds": round(time.perf_counter() - t0, 3),
-        "params": {k: v for k, v in asdict(params).items() if v is not None},
+        "params": {k: v for k, v in asdict(user_params).items() if v is not None},
     }
     if vrmse:
         meta["vertical_rmse"] = float(vrmse)

@@ -28,7 +28,9 @@ class HillshadeParams:
     altitude : float
         Sun elevation above the horizon in degrees.
     z_factor : float
-        Vertical exaggeration (also converts z units to xy units when they differ).
+        Vertical exaggeration (dimensionless). Heights and cell sizes in different units
+        (feet heights on metre cells, degrees) are converted on top of it from the raster's
+        units (:func:`unit_z_factor`), so 1 means true relief in every CRS.
     """
 
     azimuth: float = 315.0
@@ -80,9 +82,18 @@ def horn_gradient(raster: Raster, z_factor: float = 1.0) -> tuple[np.ndarray, np
     return gx, gy
 
 
+def unit_z_factor(raster: Raster) -> float:
+    """Cell-size units per height unit of ``raster``: 1 when both are the same unit, 0.3048
+    for heights in feet on metre cells, about 1/111,320 for metre heights on degree cells."""
+    from workstation.io.crs import raster_units
+
+    return raster_units(raster).z_factor
+
+
 def slope(raster: Raster, z_factor: float = 1.0, units: str = "degrees") -> Raster:
-    """Slope in degrees (or ``units="percent"``) as a float32 raster (NaN nodata)."""
-    gx, gy = horn_gradient(raster, z_factor)
+    """Slope in degrees (or ``units="percent"``) as a float32 raster (NaN nodata); ``z_factor``
+    is an exaggeration on top of the unit conversion (:func:`unit_z_factor`)."""
+    gx, gy = horn_gradient(raster, z_factor * unit_z_factor(raster))
     g = np.hypot(gx, gy)
     arr = np.degrees(np.arctan(g)) if units == "degrees" else 100.0 * g
     return Raster(arr.astype(np.float32), raster.transform, raster.crs, -9999.0, {"kind": "slope", "units": units})
@@ -107,7 +118,8 @@ def hillshade(raster: Raster, params: HillshadeParams = HillshadeParams()) -> Ra
     >>> int(hillshade(flat, HillshadeParams(altitude=45)).array[2, 2])  # 255·cos(45°)
     180
     """
-    gx, gy = horn_gradient(raster, params.z_factor)
+    unit_zf = unit_z_factor(raster)
+    gx, gy = horn_gradient(raster, params.z_factor * unit_zf)
     zen = np.radians(90.0 - params.altitude)
     az = np.radians(params.azimuth)
     slp = np.arctan(np.hypot(gx, gy))
@@ -116,5 +128,6 @@ def hillshade(raster: Raster, params: HillshadeParams = HillshadeParams()) -> Ra
     shade = np.cos(zen) * np.cos(slp) + np.sin(zen) * np.sin(slp) * np.cos(az - asp)
     val = np.clip(255.0 * shade, 0, 255)
     out = np.where(np.isnan(val), 0, np.clip(np.round(val), 1, 255)).astype(np.uint8)
-    meta = {"kind": "hillshade", "azimuth": params.azimuth, "altitude": params.altitude, "z_factor": params.z_factor}
+    meta = {"kind": "hillshade", "azimuth": params.azimuth, "altitude": params.altitude, "z_factor": params.z_factor,
+            "unit_z_factor": unit_zf}
     return Raster(out, raster.transform, raster.crs, 0, meta)
