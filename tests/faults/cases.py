@@ -189,6 +189,9 @@ def path_cases() -> list:
     for label, p in (("dotdot", b'"../../../../etc/hostname"'), ("absolute", b'"/etc/hostname"')):
         out += [Case(f"escape-{label}-ortho", BASE["ortho"], _cameras_path(p), names=("cameras.json",)),
                 Case(f"escape-{label}-colorize", BASE["colorize"], _cameras_path(p), names=("cameras.json",))]
+    out.append(Case("escape-survey-scene-simulate", ("simulate", "tls", "-o", "sim.laz", "--config", "sub/survey.toml"),
+                    both(make_dir("sub"), write("sub/survey.toml", b'[survey]\nscene = "../../evil.toml"\n')),
+                    names=("survey.toml",)))
     out.append(Case("escape-project-run", ("run", "sub/project.toml", "--workers", "1"),
                     both(make_dir("sub"), write("sub/project.toml", b"[inputs]\nclouds = ['../tiles/*.laz']\n")),
                     names=("project.toml",)))

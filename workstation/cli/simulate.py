@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, overwrite_option
+from .options import allow_outside_option, emit_json, overwrite_option
 from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float, positive_int
 
 
@@ -72,6 +72,7 @@ def _xy(ctx, param, value):
               help="Trajectory CSV to write (default: OUT with suffix .trajectory.csv).")
 @click.option("--save-scene", "scene_out", type=click.Path(dir_okay=False), default=None,
               help="Also write the labelled scene mesh (.npz: triangles, class, material, object id, colour).")
+@allow_outside_option
 @overwrite_option
 @click.option("--json", "as_json", is_flag=True, help="Print a summary as JSON on stdout.")
 def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
@@ -115,6 +116,10 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     else:
         cfg = default_survey(kind)
     scene_arg = scene_path or top.get("scene", "mixed")
+    if not scene_path and "scene" in top and str(scene_arg).endswith(".toml"):  # a path written in the config
+        from workstation.io.paths import resolve_inside
+
+        scene_arg = str(resolve_inside(scene_arg, Path(config_path).parent, source=config_path, field="survey.scene"))
     seed = seed if seed is not None else int(top.get("seed", 0))
 
     flight = cfg.flight
