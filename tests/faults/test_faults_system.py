@@ -43,20 +43,20 @@ def _mount_tmpfs(path: Path, opts: str) -> None:
         pytest.skip(f"cannot mount a tmpfs here: {r.stderr.decode().strip()}")
 
 
+def _mounted(folder: Path, opts: str):
+    _mount_tmpfs(folder, opts)
+    yield folder
+    subprocess.run(["umount", str(folder)])
+
+
 @pytest.fixture
 def small_disk(tmp_path):
-    mnt = tmp_path / "small"
-    _mount_tmpfs(mnt, "size=256k")
-    yield mnt
-    subprocess.run(["umount", str(mnt)])
+    yield from _mounted(tmp_path / "small", "size=256k")
 
 
 @pytest.fixture
 def read_only(tmp_path):
-    mnt = tmp_path / "ro"
-    _mount_tmpfs(mnt, "ro,size=64k")
-    yield mnt
-    subprocess.run(["umount", str(mnt)])
+    yield from _mounted(tmp_path / "ro", "ro,size=64k")
 
 
 def test_disk_full_is_a_clean_error_and_leaves_nothing(big_cloud, small_disk):

@@ -58,8 +58,7 @@ def info(file, columns, density_cell, summary, metadata, read_opts, as_json):
     from rich.table import Table
 
     con = Console()
-    con.print(f"[bold]{s['file']}[/bold]  {s['format_version']}")
-    con.print(f"points      {s['point_count']:,}")
+    _print_head(con, s)
     if s.get("copc"):
         _print_copc(con, s["copc"])
     if s["bounds"]:
@@ -119,8 +118,7 @@ def _header_only(file, summary: bool, metadata: bool, read_opts: dict, as_json: 
     from rich.console import Console
 
     con = Console()
-    con.print(f"[bold]{s['file']}[/bold]  {s['format_version']}")
-    con.print(f"points      {s['point_count']:,}")
+    _print_head(con, s)
     if s["points_by_return"]:
         con.print("by return   " + "  ".join(f"{k}: {v:,}" for k, v in s["points_by_return"].items()))
     con.print(f"min         {_fmt(s['bounds']['min'])}")
@@ -138,3 +136,9 @@ def _header_only(file, summary: bool, metadata: bool, read_opts: dict, as_json: 
         _print_copc(con, s["copc"])
     else:
         con.print("copc        no")
+
+
+def _print_head(con, s: dict) -> None:
+    """The first two lines of every ``ws info`` view: file, format, point count."""
+    con.print(f"[bold]{s['file']}[/bold]  {s['format_version']}")
+    con.print(f"points      {s['point_count']:,}")
