@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, json_option, output_option, overwrite_option
-from .options import FiniteFloatRange, nonneg_float, positive_float, positive_int
+from .options import emit_json, json_option, output_option, overwrite_option, read_options
+from .options import FiniteFloatRange, nonneg_float, positive_int
+from .options import nonneg_length, positive_length
 
 
 @click.command()
@@ -19,14 +20,17 @@ from .options import FiniteFloatRange, nonneg_float, positive_float, positive_in
 @click.option("--all-returns", is_flag=True, help="Let first/intermediate returns be ground too (default: last and only).")
 @click.option("--noise/--no-noise", default=False, show_default=True,
               help="Classify noise first (isolated low points -> 7, outliers -> 7/18).")
+@click.option("--noise-step/--no-noise-step", default=None,
+              help="[all but ml] the low-noise step before the filter: points over 1 m under the lowest points "
+                   "around them -> class 7, never ground (default on; as PDAL's filters.elm before filters.smrf).")
 @click.option("--water", is_flag=True,
               help="Then make the ground on still water class 9 (level single-echo surfaces of 150 m2 or more "
                    "whose banks rise from them), as ws classify does.")
 @click.option("--hag", is_flag=True, help="Add the height above ground (hag, CRS vertical unit) from a ground TIN.")
-@click.option("--cell", type=positive_float, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
+@click.option("--cell", type=positive_length, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
 @click.option("--slope", type=nonneg_float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
-@click.option("--window", type=positive_float, default=None, help="[smrf] largest window radius, metres.")
-@click.option("--threshold", type=nonneg_float, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
+@click.option("--window", type=positive_length, default=None, help="[smrf] largest window radius, metres.")
+@click.option("--threshold", type=nonneg_length, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
 @click.option("--scalar", type=nonneg_float, default=None, help="[smrf] elevation scaling factor (metres per unit slope).")
 @click.option("--trend-slope", type=nonneg_float, default=None,
               help="[smrf] slope-adaptive object test: per-cell slope max(--slope, factor x mean terrain slope); 0 = off (PDAL).")
@@ -36,15 +40,15 @@ from .options import FiniteFloatRange, nonneg_float, positive_float, positive_in
               help="[auto, ml] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
 @click.option("--risers/--no-risers", default=None,
               help="[auto] put back rejected points on terrain steps the ground TIN spans (default on).")
-@click.option("--max-window", type=positive_float, default=None, help="[pmf] largest window size, metres.")
-@click.option("--cloth-resolution", type=positive_float, default=None, help="[csf] particle spacing, metres.")
+@click.option("--max-window", type=positive_length, default=None, help="[pmf] largest window size, metres.")
+@click.option("--cloth-resolution", type=positive_length, default=None, help="[csf] particle spacing, metres.")
 @click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
-@click.option("--class-threshold", type=positive_float, default=None, help="[csf] largest distance to the cloth, metres.")
+@click.option("--class-threshold", type=positive_length, default=None, help="[csf] largest distance to the cloth, metres.")
 @click.option("--iterations", type=positive_int, default=None, help="[csf] largest number of time steps.")
 @click.option("--slope-smooth/--no-slope-smooth", default=None, help="[csf] slope post-processing.")
 @click.option("--max-angle", type=FiniteFloatRange(0.0, 90.0, min_open=True), default=None, help="[ptd] iteration angle, degrees.")
-@click.option("--max-distance", type=positive_float, default=None, help="[ptd] iteration distance, metres.")
-@click.option("--seed-cell", type=positive_float, default=None, help="[ptd] seed cell, metres.")
+@click.option("--max-distance", type=positive_length, default=None, help="[ptd] iteration distance, metres.")
+@click.option("--seed-cell", type=positive_length, default=None, help="[ptd] seed cell, metres.")
 @click.option("--tile-points", type=click.IntRange(min=0), default=10_000_000, show_default=True,
               help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never.")
 @click.option("--tile-buffer", type=nonneg_float, default=60.0, show_default=True,
@@ -53,10 +57,11 @@ from .options import FiniteFloatRange, nonneg_float, positive_float, positive_in
               help="Tiles filtered at once, one process each (memory grows with it).")
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
 @overwrite_option
+@read_options
 @json_option
-def ground(src, output, method, preset, reclassify, all_returns, noise, water, hag, cell, slope, window, threshold, scalar,
+def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, water, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
-           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, overwrite, as_json):
+           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, overwrite, read_opts, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
@@ -89,6 +94,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, water, h
         given["reclassify"] = True
     if all_returns:
         given["last_returns_only"] = False
+    if noise_step is not None:
+        given["noise"] = noise_step
     if method == "ml":  # the shipped point classifier (workstation.ml.ground)
         from workstation.ml.ground import MLGroundParams, ml_ground
 
@@ -99,11 +106,15 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, water, h
             params = make_params(method, preset, **given)
         except InvalidInputError as e:
             raise click.UsageError(e.message) from None
-    cloud = read_cloud(src, **({"columns": columns} if columns else {}))
+    cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
     if noise:
         from workstation.ground.noise import classify_noise
 
         cloud = classify_noise(cloud)
+    if method != "ml":
+        from workstation.ground.methods import fit_to_points
+
+        params = fit_to_points(params, cloud, set(given))  # default cells sized by the points
     if method == "ml":
         out = ml_ground(cloud, params)
     elif tile_points and cloud.n > tile_points:
@@ -128,10 +139,15 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, water, h
     cls = np.asarray(out.attrs["classification"])
     n_ground = int(np.count_nonzero(cls == ASPRSClass.GROUND))
     log.info("%s: %d of %d points ground (%.1f %%) in %.2f s", method, n_ground, out.n, 100.0 * n_ground / out.n, dt)
+    from workstation.cli.summary import count, emit_summary, percent
+
+    emit_summary("ground", count(out.n, "points"), output, dt,
+                 [f"ground {percent(n_ground, out.n)}", method, f"{n_tiles} tiles" if n_tiles > 1 else "",
+                  f"water {count(n_water, 'points')}" if water else ""])
     if as_json:
         import dataclasses
 
         emit_json({"input": src, "output": output, "method": method, "preset": preset,
                    "params": dataclasses.asdict(params), "point_count": out.n, "ground_count": n_ground,
                    "ground_fraction": n_ground / out.n, "seconds": dt, "tiles": n_tiles,
-                   "water_count": n_water})
+                   "water_count": n_water, "low_noise_count": int(np.count_nonzero(cls == ASPRSClass.LOW_POINT))})

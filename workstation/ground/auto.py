@@ -29,6 +29,7 @@ from workstation.core.cloud import Cloud
 
 from . import common
 from .csf import CSFParams, csf_ground
+from .noise import LowNoiseParams
 from .patches import PatchParams, raised_patches
 from .pmf import PMFParams, pmf_ground
 from .ptd import PTDParams, ptd_ground
@@ -68,7 +69,7 @@ class AutoParams:
     understorey : bool
         Take the understorey out of the ground under canopy (True; needs return numbers).
     understorey_params : UnderstoreyParams
-    reclassify, last_returns_only : bool
+    reclassify, last_returns_only, noise, noise_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -86,6 +87,8 @@ class AutoParams:
     understorey_params: UnderstoreyParams = field(default_factory=UnderstoreyParams)
     reclassify: bool = False
     last_returns_only: bool = True
+    noise: bool = True
+    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
 
 
 PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "urban", "forest", "steep")}
@@ -130,7 +133,8 @@ def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
     """
     p = replace(params or AutoParams(), **overrides)
     t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only)
+    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
+                          noise=p.noise_params if p.noise else None)
     share = None
     if p.understorey and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs:
         share = canopy_share(prep.xyz[:, :2], np.asarray(cloud.attrs["return_number"])[prep.index],

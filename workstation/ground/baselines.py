@@ -1,6 +1,6 @@
 """Textbook baselines for comparison: lowest point per cell, local minimum with a slope limit.
 
-Low outliers (:func:`workstation.ground.noise.grid_low_points`) are set aside first in both.
+Low noise is set aside first by the low-noise step of every filter (``noise=True``).
 
 * ``lowest``: the lowest point of every ``cell`` and every point within ``threshold`` above
   it is ground (no object removal: roofs wider than a cell stay ground);
@@ -14,14 +14,14 @@ Low outliers (:func:`workstation.ground.noise.grid_low_points`) are set aside fi
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .noise import grid_low_points
+from .noise import LowNoiseParams
 
 STAGE_LOWEST = "ground.lowest"
 STAGE_LOCALMIN = "ground.local_min"
@@ -37,13 +37,16 @@ class LowestParams:
         Cell size, metres (5.0).
     threshold : float
         Height above the cell's lowest point still counted as ground, metres (0.3).
-    reclassify, last_returns_only : bool
+    reclassify, last_returns_only, noise, noise_params
+        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cell: float = 5.0
     threshold: float = 0.3
     reclassify: bool = False
     last_returns_only: bool = True
+    noise: bool = True
+    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
 
 
 @dataclass(frozen=True)
@@ -60,7 +63,8 @@ class LocalMinParams:
         Largest terrain slope, rise over run (0.3).
     threshold : float
         Height tolerance added to the slope term, metres (0.5).
-    reclassify, last_returns_only : bool
+    reclassify, last_returns_only, noise, noise_params
+        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cell: float = 1.0
@@ -69,21 +73,21 @@ class LocalMinParams:
     threshold: float = 0.5
     reclassify: bool = False
     last_returns_only: bool = True
+    noise: bool = True
+    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
 
 
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
     """Ground flags (m,) bool: within ``threshold`` of the lowest point of the cell."""
-    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
-    zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
-    return ~low & (xyz[:, 2] - zmin[r, c] <= p.threshold)
+    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
+    return xyz[:, 2] - zmin[r, c] <= p.threshold
 
 
 def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     """Ground flags (m,) bool by the slope-based local minimum test on the min-grid."""
-    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
-    zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
+    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     filled = np.where(np.isnan(zmin), np.inf, zmin)
     # lowest allowed surface: min over rings k of (erosion by disk k) + slope·k·cell
     bound = filled.copy()
@@ -91,14 +95,15 @@ def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
     for k in range(1, rad + 1):
         er = common._disk_filter(filled, k, True)
         np.minimum(bound, er + p.slope * k * p.cell, out=bound)
-    return ~low & (xyz[:, 2] <= bound[r, c] + p.threshold)
+    return xyz[:, 2] <= bound[r, c] + p.threshold
 
 
 def lowest(cloud: Cloud, params: LowestParams | None = None, **overrides) -> Cloud:
     """Classify ground as the lowest point per cell (and points just above it)."""
     p = replace(params or LowestParams(), **overrides)
     t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE_LOWEST, p.reclassify, p.last_returns_only)
+    prep = common.prepare(cloud, STAGE_LOWEST, p.reclassify, p.last_returns_only,
+                          noise=p.noise_params if p.noise else None)
     return common.write_classes(cloud, prep, lowest_ground(prep.xyz, p), STAGE_LOWEST, p, t0, p.reclassify)
 
 
@@ -106,5 +111,6 @@ def local_min(cloud: Cloud, params: LocalMinParams | None = None, **overrides) -
     """Classify ground by the local minimum with a slope threshold (Vosselman 2000)."""
     p = replace(params or LocalMinParams(), **overrides)
     t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE_LOCALMIN, p.reclassify, p.last_returns_only)
+    prep = common.prepare(cloud, STAGE_LOCALMIN, p.reclassify, p.last_returns_only,
+                          noise=p.noise_params if p.noise else None)
     return common.write_classes(cloud, prep, local_min_ground(prep.xyz, p), STAGE_LOCALMIN, p, t0, p.reclassify)

@@ -6,7 +6,8 @@ given in metres mean metres in a US-survey-feet CRS too, and float precision is 
 large eastings/northings. Results (classes, heights) go back in the CRS's units.
 
 Classes written: :attr:`ASPRSClass.GROUND` (2) for ground, :attr:`ASPRSClass.UNCLASSIFIED` (1)
-for the rest. Points already in another class (anything but 0, 1 and 2) keep it unless
+for the rest, :attr:`ASPRSClass.LOW_POINT` (7) for the isolated low points of the low-noise
+step every filter runs first (:func:`workstation.ground.noise.low_noise`, ``noise=True``). Points already in another class (anything but 0, 1 and 2) keep it unless
 ``reclassify`` is set; noise (7, 18) also stays out of the filter so one bad point cannot pull
 the ground down.
 """
@@ -14,7 +15,7 @@ the ground down.
 from __future__ import annotations
 
 import time
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from functools import lru_cache
 
 import numpy as np
@@ -43,20 +44,14 @@ def crs_unit_factors(crs: str | None) -> tuple[float, float]:
     >>> crs_unit_factors(None)
     (1.0, 1.0)
     """
-    from workstation.io.crs import crs_info
+    from workstation.io.crs import crs_units
 
-    try:
-        info = crs_info(crs)
-    except InvalidInputError:
-        log.warning("cannot parse the CRS; assuming metres")
-        return 1.0, 1.0
-    if info is None:
-        return 1.0, 1.0
-    if info.is_geographic:
+    u = crs_units(crs)  # the one unit model (GeoKey overrides are in the CRS string already)
+    if u.geographic:
         raise InvalidInputError(
-            f"the CRS is geographic ({info.unit}); ground filters need a projected CRS",
+            f"the CRS is geographic ({u.h_name}); ground filters need a projected CRS",
             "reproject first, e.g. ws convert IN OUT --to-crs EPSG:<utm zone>", field="crs")
-    return info.metres_per_unit, info.vertical_metres_per_unit
+    return u.h, u.v
 
 
 @dataclass(frozen=True)
@@ -71,6 +66,9 @@ class Prepared:
         Their indices in the input cloud.
     hfac, vfac : float
         Metres per CRS unit (horizontal, vertical).
+    noise : (k,) int64
+        Indices in the input cloud of the low noise the noise step took out (class 7 when
+        written; empty when the step is off).
     """
 
     xyz: np.ndarray
@@ -78,17 +76,20 @@ class Prepared:
     hfac: float
     vfac: float
     origin: np.ndarray
+    noise: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
 
 
 LATTICE_M = 100.0  # metres; local planar origins are multiples of it (see prepare)
 
 
 def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_only: bool = False,
-            min_points: int = 3) -> Prepared:
+            min_points: int = 3, noise=None) -> Prepared:
     """Select the points a filter uses and convert them to local metres.
 
     Noise classes (7, 18) are left out unless ``reclassify``; with ``last_returns_only`` only
-    last (and only) returns take part (where return numbers are present and valid).
+    last (and only) returns take part (where return numbers are present and valid). With
+    ``noise`` (a :class:`workstation.ground.noise.LowNoiseParams`) the low-noise step runs on
+    those points first and takes its low points out (``Prepared.noise``; class 7 when written).
     """
     n = cloud.n
     if n == 0:
@@ -115,7 +116,17 @@ def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_onl
     # tile or a chunk of a survey is filtered on the cells of the whole survey
     origin[:2] = np.floor(origin[:2] * hf / LATTICE_M) * LATTICE_M / hf
     local = (p - origin) * np.array([hf, hf, vf])
-    return Prepared(local, idx, hf, vf, origin)
+    if noise is None:
+        return Prepared(local, idx, hf, vf, origin)
+    from .noise import low_noise
+
+    low = low_noise(local, noise)
+    if idx.size - int(low.sum()) < min_points:
+        raise StageError(stage, f"only {idx.size - int(low.sum())} usable point(s) (of {n}) after the low-noise step",
+                         "turn the noise step off (--no-noise-step, noise=False)")
+    if low.any():
+        log.info("%s: low-noise step: %d isolated low point(s) -> class 7", stage, int(low.sum()))
+    return Prepared(local[~low], idx[~low], hf, vf, origin, idx[low])
 
 
 def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage: str, params, t0: float,
@@ -136,6 +147,7 @@ def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage:
     ground = np.zeros(cloud.n, dtype=bool)
     ground[prep.index[g]] = True
     new = np.where(ground, np.uint8(ASPRSClass.GROUND), np.uint8(ASPRSClass.UNCLASSIFIED)).astype(np.uint8)
+    new[prep.noise] = np.uint8(ASPRSClass.LOW_POINT)
     old = cloud.attrs.get("classification")
     if old is not None and not reclassify:
         keep = ~np.isin(old, OVERWRITABLE)
@@ -194,6 +206,21 @@ def grid_index(xy: np.ndarray, cell: float, origin=None, option: str = "--cell")
     r = np.floor((xy[:, 1] - o[1]) / cell).astype(np.int64)
     shape = (int(r.max()) + 1, int(c.max()) + 1)
     return r, c, shape, o
+
+
+def auto_cell(xy: np.ndarray, cell: float) -> float:
+    """An internal grid's fixed ``cell`` (metres; not a user option) coarsened so its grid over
+    ``xy`` (local metres) is sized by the points, not by their bounding box
+    (:func:`workstation.core.budget.fit_cell`); unchanged on data of ordinary density."""
+    from workstation.core.budget import fit_cell
+
+    if len(xy) == 0:
+        return cell
+    lo = column_min(xy)
+    ext = column_max(xy) - lo
+    if fit_cell(cell, float(ext[0]), float(ext[1]), len(xy)) == cell:
+        return cell
+    return fit_cell(cell, float(ext[0]), float(ext[1]), len(xy), xy - lo)  # only evenly sparse points
 
 
 def grid_min(z: np.ndarray, r: np.ndarray, c: np.ndarray, shape) -> tuple[np.ndarray, np.ndarray]:

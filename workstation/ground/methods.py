@@ -94,9 +94,63 @@ def ground_filter(cloud: Cloud, method: str = "smrf", preset: str = "default", t
     **overrides
         Parameter fields to replace (None values are ignored).
     """
-    p = make_params(method, preset, **overrides)
+    p = fit_to_points(make_params(method, preset, **overrides), cloud, {k for k, v in overrides.items() if v is not None})
     if tiles is not None:
         from .tiles import ground_tiled
 
         return ground_tiled(cloud, method, p, tiles)
     return methods()[method].func(cloud, p)
+
+
+#: Parameter fields that set a filter's grid cell (metres), in every method's dataclass.
+GRID_FIELDS = ("cell", "cloth_resolution", "candidate_cell")
+
+
+def fit_to_points(params, cloud: Cloud, given=()):
+    """``params`` with every default grid cell (:data:`GRID_FIELDS`, nested parameter
+    dataclasses too) coarsened so its grid is sized by the points, not by the bounding box
+    (:func:`workstation.core.budget.fit_cell`): a few thousand points spread over kilometres
+    then run in seconds instead of allocating a grid of the whole box. Cells in ``given``
+    (chosen by the user) are kept; a grid too large for them is refused, naming the option.
+    A change is logged with the old and new cell.
+    """
+    from workstation.core.budget import fit_cell
+    from workstation.core.log import get_logger
+
+    from .common import crs_unit_factors
+
+    if cloud.n == 0:
+        return params
+    hf, _ = crs_unit_factors(cloud.crs)
+    xy = cloud.xyz[:, :2]
+    ext = (xy.max(axis=0) - xy.min(axis=0)) * hf
+    local = None  # local metres, made only when a cell is too fine for the box
+
+    def spread():
+        nonlocal local
+        local = (xy - xy.min(axis=0)) * hf if local is None else local
+        return local
+
+    def fit(p, prefix=""):
+        changes = {}
+        for f in dataclasses.fields(p):
+            v = getattr(p, f.name)
+            if dataclasses.is_dataclass(v) and not isinstance(v, type):
+                changes[f.name] = fit(v, f"{prefix}{f.name}.")
+            elif f.name in GRID_FIELDS and f.name not in given and isinstance(v, float):
+                new = fit_cell(v, ext[0], ext[1], cloud.n, spread() if _too_fine(v, ext, cloud.n) else None)
+                if new != v:
+                    get_logger(__name__).warning(
+                        "%s%s %g m -> %g m: %d points over %.0f m x %.0f m are too sparse for the default grid",
+                        prefix, f.name, v, new, cloud.n, ext[0], ext[1])
+                    changes[f.name] = new
+        return dataclasses.replace(p, **changes) if changes else p
+
+    return fit(params)
+
+
+def _too_fine(cell: float, ext, n: int) -> bool:
+    """Whether :func:`~workstation.core.budget.fit_cell` would consider coarsening ``cell``."""
+    from workstation.core.budget import fit_cell
+
+    return fit_cell(cell, ext[0], ext[1], n) != cell

@@ -10,6 +10,13 @@ above it to class 18 (:attr:`ASPRSClass.HIGH_NOISE`). Ground filters skip both c
 * radius outliers: fewer than ``min_neighbors`` other points within ``radius``;
 * isolated low points: a point more than ``depth`` below the second-lowest of its ``k``
   horizontal neighbours (so pairs of low points are caught too).
+
+:func:`low_noise` is the **low-noise step every ground filter runs first** (``noise=True`` in
+each method's parameters, ``ws ground --no-noise-step`` to skip it): PDAL and LAStools
+workflows drop low noise before SMRF or lasground (``filters.elm`` / ``filters.outlier``, then
+``filters.smrf``), because one point metres under the terrain becomes a cell minimum, a TIN
+seed or a cloth anchor and is taken for ground with everything around it. Its points get
+class 7 (:attr:`ASPRSClass.LOW_POINT`).
 """
 
 from __future__ import annotations
@@ -21,6 +28,7 @@ import numpy as np
 
 from workstation.core.classes import ASPRSClass
 from workstation.core.cloud import Cloud
+from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 
 from . import common
@@ -100,6 +108,7 @@ def grid_low_points(xyz: np.ndarray, cell: float = 1.0, depth: float = 5.0) -> n
 
     if xyz.shape[0] == 0:
         return np.zeros(0, dtype=bool)
+    cell = common.auto_cell(xyz[:, :2], cell)  # sparse data over a large extent: a coarser grid
     r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     ref = ndimage.median_filter(common.fill_nearest(zmin), size=5, mode="nearest")
@@ -169,3 +178,218 @@ def classify_noise(cloud: Cloud, params: NoiseParams | None = None, **overrides)
     cls[hi[free[hi]]] = int(ASPRSClass.HIGH_NOISE)
     log.info("%s: %d low and %d high noise points", STAGE, int(low.sum()), int(high.sum()))
     return cloud.with_attrs(classification=cls).with_history(STAGE, asdict(p), time.perf_counter() - t0)
+
+
+# -- the low-noise step of every ground filter -----------------------------------------------
+@dataclass(frozen=True)
+class LowNoiseParams:
+    """The low-noise step run before every ground filter (:func:`low_noise`). Lengths in
+    metres, whatever the CRS unit.
+
+    Attributes
+    ----------
+    depth : float
+        How far below its surroundings a point must lie to be low noise, metres (1.0, the
+        threshold of PDAL's ``filters.elm``).
+    cell : float
+        Cell of the lower envelope, metres (2.0): the two lowest points of each cell are what a
+        point is judged against, so canopy, roofs and walls above the ground never are.
+    k : int
+        Envelope points around each point (64): enough that a neighbourhood holds several
+        ground points even where few pulses reach the ground (0.1-0.2 ground points/m² under a
+        closed canopy: a radius of about 7 m).
+    radius : float
+        Farthest envelope point considered, metres (10.0).
+    max_slope : float
+        Steepest local terrain slope the test corrects for, rise over run (1.0).
+    iterations : int
+        Passes (4): after a point is taken out, the next-lowest point of its cell is judged (a
+        low point under a low point, as ELM does).
+    """
+
+    depth: float = 1.0
+    cell: float = 2.0
+    k: int = 64
+    radius: float = 10.0
+    max_slope: float = 1.0
+    iterations: int = 4
+
+
+_SUPPORT = 2  # envelope points at a point's level needed to keep it: pairs of low points go too
+
+
+def _envelope(z: np.ndarray, flat: np.ndarray, size: int, out: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Indices of the lowest and of the second-lowest point of each cell (``out`` excluded)."""
+    first = _cell_argmin(np.where(out, np.inf, z), flat, size)
+    taken = out.copy()
+    taken[first] = True
+    second = _cell_argmin(np.where(taken, np.inf, z), flat, size)
+    return first, second
+
+
+def _cell_argmin(z: np.ndarray, flat: np.ndarray, size: int) -> np.ndarray:
+    """Index of the lowest finite ``z`` of each occupied cell (flat cell index per point)."""
+    zmin = np.full(size, np.inf)
+    np.fmin.at(zmin, flat, z)
+    hit = np.flatnonzero(np.isfinite(z) & (z == zmin[flat]))
+    imin = np.full(size, np.iinfo(np.int64).max, dtype=np.int64)
+    np.minimum.at(imin, flat[hit], hit)
+    return imin[imin != np.iinfo(np.int64).max]
+
+
+def _local_planes(dxy: np.ndarray, nz: np.ndarray, valid: np.ndarray, depth: float,
+                  max_slope: float) -> tuple[np.ndarray, np.ndarray]:
+    """Per point, a robust plane through the lowest neighbour of each 45-degree octant.
+
+    Every plane no steeper than ``max_slope`` through three of the (up to eight) octant minima
+    is tried, the one with the most minima within ``depth`` of it wins (the lower at the point on a tie: the ground is the
+    lower envelope), and the plane is refitted by least squares to those minima. Octants with
+    no ground (only crowns or a roof in them) and other low points among the minima are
+    outvoted, as in RANSAC (Fischler & Bolles 1981) with every sample tried.
+
+    Returns
+    -------
+    coef : (m, 3) float64
+        Height at the point and gradient (dz/dx, dz/dy) of the plane.
+    ok : (m,) bool
+        At least four octants held a neighbour and three minima agree.
+    """
+    from itertools import combinations
+
+    m = nz.shape[0]
+    octant = (np.floor((np.arctan2(dxy[..., 1], dxy[..., 0]) + np.pi) / (np.pi / 4)).astype(np.int64)) % 8
+    lo = np.full((m, 8, 3), np.nan)  # x, y, z of each octant's minimum
+    rows = np.arange(m)
+    for o in range(8):
+        zo = np.where(valid & (octant == o), nz, np.inf)
+        a = np.argmin(zo, axis=1)
+        hit = np.isfinite(zo[rows, a])
+        lo[hit, o, :2] = dxy[rows[hit], a[hit]]
+        lo[hit, o, 2] = zo[rows[hit], a[hit]]
+    have = np.isfinite(lo[..., 2])
+    best = np.full(m, -np.inf)
+    inl = np.zeros((m, 8), dtype=bool)
+    for i, j, k in combinations(range(8), 3):
+        n = np.cross(lo[:, j] - lo[:, i], lo[:, k] - lo[:, i])  # plane normal
+        # a plane steeper than max_slope would join ground on one side to crowns on the other
+        good = have[:, i] & have[:, j] & have[:, k] & (np.abs(n[:, 2]) * max_slope >= np.hypot(n[:, 0], n[:, 1]))
+        good &= np.abs(n[:, 2]) > 1e-9
+        if not good.any():
+            continue
+        nzc = np.where(good, n[:, 2], 1.0)
+        # z of the plane at each octant minimum and at the point (0, 0)
+        zp = lo[:, i, 2] + (n[:, 0] * lo[:, i, 0] + n[:, 1] * lo[:, i, 1]) / nzc
+        zat = zp[:, None] - (n[:, 0, None] * lo[..., 0] + n[:, 1, None] * lo[..., 1]) / nzc[:, None]
+        ins = have & (np.abs(lo[..., 2] - zat) <= depth)
+        score = np.where(good, ins.sum(axis=1) * 1e6 - zp, -np.inf)
+        win = score > best
+        best[win] = score[win]
+        inl[win] = ins[win]
+    w = inl.astype(np.float64)
+    ok = (have.sum(axis=1) >= 4) & (w.sum(axis=1) >= 3)
+    A = np.concatenate([np.ones((m, 8, 1)), np.nan_to_num(lo[..., :2])], axis=-1)
+    ata = np.einsum("nki,nk,nkj->nij", A, w, A) + 1e-9 * np.eye(3)
+    atb = np.einsum("nki,nk,nk->ni", A, w, np.nan_to_num(lo[..., 2]))
+    coef = np.linalg.solve(ata, atb[..., None])[..., 0]
+    return coef, ok
+
+
+def low_noise(xyz: np.ndarray, p: LowNoiseParams | None = None) -> np.ndarray:
+    """(m,) bool: isolated low points, which no ground filter should see.
+
+    An Extended Local Minimum test (Chen et al. 2012, "Upward-fusion urban DTM generating
+    method using airborne Lidar data", ISPRS J. Photogramm. 72:121-130; PDAL's
+    ``filters.elm``: a cell's lowest point more than 1 m below the next lowest is noise, and
+    the next one is judged in turn), made independent of the grid, of the slope and of the
+    density:
+
+    1. the *lower envelope*: the lowest and second-lowest point of every ``cell`` (objects above
+       the ground never take part, so sparse ground under a closed canopy is judged against
+       other ground, not against the crowns: the failure of SMRF's grid low-outlier test and
+       of a k-nearest-neighbour test over all points);
+    2. for each cell minimum, its ``k`` nearest envelope points within ``radius``: a robust
+       plane through the lowest of them in each of eight directions (:func:`_local_planes`)
+       gives the local terrain height and slope;
+    3. the minimum is low noise when it lies more than ``depth`` under that plane **and** fewer
+       than two of the envelope points lie within ``depth`` of its height, corrected for the
+       plane's slope (capped at ``max_slope``; as they are within one cell): a true ground
+       point at the foot of a slope or in a ditch has neighbours at its level, a multipath
+       return does not;
+    4. repeated on the next-lowest point of each cell that lost a point (``iterations``).
+
+    Limit: a lone ground return with no other ground within about ``radius`` and objects all
+    around it (between wagons, under a station roof: 60 of ISPRS samp42's ground points) is
+    geometrically such a low point and is taken too.
+
+    Parameters
+    ----------
+    xyz : (m, 3) float64
+        Local metric points (metres; :func:`workstation.ground.common.prepare`).
+    p : LowNoiseParams, optional
+
+    Returns
+    -------
+    (m,) bool
+        True on low noise.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> xy = rng.uniform(0, 40, (4000, 2))
+    >>> xyz = np.column_stack([xy, 0.2 * xy[:, 0]])
+    >>> xyz[7, 2] -= 20.0
+    >>> np.flatnonzero(low_noise(xyz)).tolist()
+    [7]
+    """
+    from scipy.spatial import cKDTree
+
+    p = p or LowNoiseParams()
+    m = xyz.shape[0]
+    noise = np.zeros(m, dtype=bool)
+    if m < 3 or p.depth <= 0:
+        return noise
+    z = xyz[:, 2]
+    # an internal grid: coarsened on a cloud spread far wider than its points; a grid that
+    # still does not fit is left to the filter, whose own check refuses it naming its option
+    cell = common.auto_cell(xyz[:, :2], p.cell)
+    try:
+        r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
+    except InvalidInputError:
+        log.warning("%s: the points are spread too wide for the low-noise step's grid; step skipped", STAGE)
+        return noise
+    flat = r * shape[1] + c
+    size = shape[0] * shape[1]
+    judge_cells = None  # first pass: every cell
+    for _ in range(max(1, int(p.iterations))):
+        first, second = _envelope(z, flat, size, noise)
+        env = np.concatenate([first, second])
+        cand = first if judge_cells is None else first[np.isin(flat[first], judge_cells)]
+        if cand.size == 0 or env.size <= _SUPPORT:
+            break
+        kk = min(int(p.k) + 1, env.size)
+        d, j = cKDTree(xyz[env, :2]).query(xyz[cand, :2], k=kk, distance_upper_bound=p.radius, workers=-1)
+        valid = np.isfinite(d)
+        nb = env[np.where(valid, j, 0)]
+        valid &= nb != cand[:, None]
+        dxy = xyz[nb, :2] - xyz[cand, None, :2]
+        nz = np.where(valid, z[nb], np.inf)
+        coef, ok = _local_planes(dxy, nz, valid, p.depth, p.max_slope)
+        g = coef[:, 1:]
+        s = np.hypot(g[:, 0], g[:, 1])
+        g *= np.minimum(1.0, p.max_slope / np.maximum(s, 1e-12))[:, None]
+        g[~ok] = 0.0
+        zc = z[cand, None]
+        level = np.abs(nz - np.einsum("nkd,nd->nk", dxy, g) - zc)
+        # as they are too within a cell of the point, where a wrong plane slope counts most
+        close = np.einsum("nkd,nkd->nk", dxy, dxy) <= cell * cell
+        level = np.where(close, np.minimum(level, np.abs(nz - zc)), level)
+        support = ((level <= p.depth) & valid).sum(axis=1)
+        # without a plane (an edge, a corner): under the second-lowest envelope point, as ELM
+        second_low = np.partition(nz, 1, axis=1)[:, 1] if nz.shape[1] > 1 else nz[:, 0]
+        below = np.where(ok, z[cand] < coef[:, 0] - p.depth, z[cand] < second_low - p.depth)
+        new = cand[below & (support < _SUPPORT) & (valid.sum(axis=1) >= _SUPPORT)]
+        if new.size == 0:
+            break
+        noise[new] = True
+        judge_cells = np.unique(flat[new])
+    return noise

@@ -98,14 +98,14 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import QhullError, cKDTree
 
-    from .common import grid_index, grid_min
+    from .common import auto_cell, grid_index, grid_min
 
     g = np.asarray(ground, dtype=bool).copy()
     for _ in range(p.max_passes):
         idx = np.flatnonzero(g)
         if len(idx) < 4:
             break
-        r, c, shape, _ = grid_index(xyz[idx, :2], p.cell)
+        r, c, shape, _ = grid_index(xyz[idx, :2], auto_cell(xyz[idx, :2], p.cell))
         _, low = grid_min(xyz[idx, 2], r, c, shape)
         cell_rep = low.ravel()  # per cell: the index (into idx) of its lowest ground point
         rep = cell_rep[cell_rep >= 0]

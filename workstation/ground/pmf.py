@@ -4,7 +4,8 @@ Zhang K., Chen S.-C., Whitman D., Shyu M.-L., Yan J., Zhang C. (2003) "A progres
 morphological filter for removing nonground measurements from airborne LIDAR data",
 IEEE Trans. Geosci. Remote Sens. 41(4):872-882.
 
-Low outliers (:func:`workstation.ground.noise.grid_low_points`) are set aside first. On the
+Low noise is set aside first by the low-noise step of every filter
+(:func:`workstation.ground.noise.low_noise`, ``noise=True``). On the
 minimum-height grid (empty cells filled with the nearest value), openings with square
 windows of growing size ``w_k = 2·b^k + 1`` cells (exponential growth, ``b = 2``) up to
 ``max_window`` are applied to the previous opened surface; at each step the height threshold
@@ -16,13 +17,14 @@ its cell is non-ground. Square openings are separable running minima/maxima (sci
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
+from .noise import LowNoiseParams
 
 STAGE = "ground.pmf"
 
@@ -45,7 +47,7 @@ class PMFParams:
         Largest height threshold, metres (2.5).
     exponential : bool
         Window sizes 2·2^k + 1 cells (True) or 2k + 1 (False).
-    reclassify, last_returns_only : bool
+    reclassify, last_returns_only, noise, noise_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -57,6 +59,8 @@ class PMFParams:
     exponential: bool = True
     reclassify: bool = False
     last_returns_only: bool = True
+    noise: bool = True
+    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
 
 
 PRESETS: dict[str, PMFParams] = {
@@ -95,14 +99,10 @@ def pmf_ground(xyz: np.ndarray, p: PMFParams) -> np.ndarray:
     """Ground flags (m,) bool of local metric points by PMF."""
     from scipy import ndimage
 
-    from .noise import grid_low_points
-
-    low = grid_low_points(xyz)
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
-    zmin, _ = common.grid_min(np.where(low, np.inf, xyz[:, 2]), r, c, shape)
-    zmin[np.isinf(zmin)] = np.nan
+    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     surf = common.fill_nearest(zmin)
-    ground = ~low
+    ground = np.ones(xyz.shape[0], dtype=bool)
     z = xyz[:, 2]
     prev_w = 1
     for w in _windows(p, shape):
@@ -124,6 +124,7 @@ def pmf(cloud: Cloud, params: PMFParams | None = None, **overrides) -> Cloud:
     """
     p = replace(params or PMFParams(), **overrides)
     t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only)
+    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
+                          noise=p.noise_params if p.noise else None)
     g = pmf_ground(prep.xyz, p)
     return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)

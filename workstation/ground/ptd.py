@@ -33,13 +33,14 @@ docs/benchmarks.md (Ground filtering).
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
+from .noise import LowNoiseParams
 
 STAGE = "ground.ptd"
 
@@ -76,7 +77,7 @@ class PTDParams:
         Stop when fewer than this fraction of the candidates joined in an iteration (0.0005).
     max_iterations : int
         (100).
-    reclassify, last_returns_only : bool
+    reclassify, last_returns_only, noise, noise_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -94,6 +95,8 @@ class PTDParams:
     max_iterations: int = 100
     reclassify: bool = False
     last_returns_only: bool = True
+    noise: bool = True
+    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
 
 
 PRESETS: dict[str, PTDParams] = {
@@ -267,15 +270,13 @@ def ptd_ground(xyz: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -
     ``seeds`` (m,) bool: points known to be ground, the initial TIN (with the corner seeds)
     instead of the lowest point per ``seed_cell``.
     """
-    from .noise import grid_low_points
-
     r, c, shape, _ = common.grid_index(xyz[:, :2], p.candidate_cell, origin=xyz[:, :2].min(axis=0))
     _, imin = common.grid_min(xyz[:, 2], r, c, shape)
     ci = imin[imin >= 0]  # raster order
-    # low outliers (SMRF's test: 5 m below the 5 x 5 m median of the lowest points) never seed
-    # or join the TIN; the k-neighbour test of CSF also took ground out of flat urban samples
-    # (ISPRS samp42 4.16 -> 2.10 %, six-sample mean 4.50 -> 4.32 %)
-    ci = ci[~grid_low_points(xyz[ci])]
+    # low outliers never seed or join the TIN: the low-noise step (noise=True) took them out
+    # before (a k-neighbour test over all points took ground out of flat urban samples, ISPRS
+    # samp42 4.16 -> 2.10 %; a grid test, 5 m under the 5 x 5 m median of the lowest points,
+    # took it out under a closed canopy)
     init = None
     if seeds is not None:
         init = np.asarray(seeds, dtype=bool)[ci]
@@ -295,6 +296,7 @@ def ptd(cloud: Cloud, params: PTDParams | None = None, **overrides) -> Cloud:
     """
     p = replace(params or PTDParams(), **overrides)
     t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only)
+    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
+                          noise=p.noise_params if p.noise else None)
     g = ptd_ground(prep.xyz, p)
     return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)

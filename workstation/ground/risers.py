@@ -60,7 +60,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
     """
     from scipy.spatial import QhullError
 
-    from .common import delaunay, grid_index, locate, lowest_per_cell
+    from .common import auto_cell, delaunay, grid_index, locate, lowest_per_cell
 
     g = np.asarray(ground, dtype=bool).copy()
     idx = np.flatnonzero(g)
@@ -79,7 +79,7 @@ def riser_fill(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray | None = N
     except (QhullError, ValueError):  # collinear or too few distinct points: no TIN
         return g
     # point location walks from the previous query's triangle: raster order keeps it short
-    r, c, shape, _ = grid_index(xyz[cand, :2], 1.0, origin)
+    r, c, shape, _ = grid_index(xyz[cand, :2], auto_cell(xyz[cand, :2], 1.0), origin)  # a sort key only
     cand = cand[np.argsort(r * shape[1] + c, kind="stable")]
     simplex = locate(tri, xyz[cand, :2] - origin)
     inside = simplex >= 0

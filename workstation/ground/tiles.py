@@ -215,10 +215,10 @@ def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TilePara
 
     desc = f"ground ({method}) tile by tile" + (f", {tiles.workers} processes" if tiles.workers > 1 else "")
     if tiles.workers == 1:
-        for core, sel in track(layout, desc, total=len(layout)):
+        for core, sel in track(layout, desc, total=len(layout), unit="tiles"):
             collect(core, _filter_tile(*task(core, sel)))
     else:
-        with progress_bar(desc, len(layout)) as advance:
+        with progress_bar(desc, len(layout), unit="tiles") as advance:
             _filter_on_dask(layout, task, collect, advance, tiles.workers)
     if record is None or not (cls == ASPRSClass.GROUND).any():
         raise StageError(STAGE, f"no ground point found in any of {len(layout)} tiles",

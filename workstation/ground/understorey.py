@@ -79,7 +79,7 @@ def canopy_share(xy: np.ndarray, return_number: np.ndarray, number_of_returns: n
     last = (nr > 0) & (rn >= nr)
     if not last.any():
         return np.zeros(len(xy))
-    r, c, shape, _ = common.grid_index(xy, cell)
+    r, c, shape, _ = common.grid_index(xy, common.auto_cell(xy, cell))
     flat = r * shape[1] + c
     size = shape[0] * shape[1]
     pulses = np.bincount(flat[last], minlength=size)
@@ -98,7 +98,7 @@ def plane_residual(xyz: np.ndarray, cell: float, query=None) -> tuple[np.ndarray
     if len(qi) == 0:
         return np.zeros(0), np.zeros(0)
     lo = common.column_min(xyz)
-    r, c, shape, _ = common.grid_index(xyz[:, :2], cell, lo[:2])
+    r, c, shape, _ = common.grid_index(xyz[:, :2], common.auto_cell(xyz[:, :2], cell), lo[:2])
     flat = r * shape[1] + c
     size = shape[0] * shape[1]
     x, y, z = (xyz[:, a] - lo[a] for a in range(3))
@@ -130,6 +130,7 @@ def envelope_height(xyz: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarra
     """Height of each point above the inpainted per-``cell`` minimum surface, and that
     surface's slope magnitude at the point; both (m,) float64."""
     lo = common.column_min(xyz[:, :2])
+    cell = common.auto_cell(xyz[:, :2], cell)
     r, c, shape, _ = common.grid_index(xyz[:, :2], cell, lo)
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     surf = common.inpaint(zmin.reshape(shape))

@@ -134,7 +134,7 @@ def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
         cand &= np.asarray(number_of_returns) <= 1
     if m == 0 or not cand.any():
         return water, offset
-    r, c, shape, _ = common.grid_index(xyz[:, :2], p.cell)
+    r, c, shape, _ = common.grid_index(xyz[:, :2], common.auto_cell(xyz[:, :2], p.cell))
     flat = r * shape[1] + c
     size = shape[0] * shape[1]
 
