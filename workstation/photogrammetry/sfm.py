@@ -161,6 +161,24 @@ def choose_matcher(n_images: int, has_gps: bool, params: SfMParams) -> str:
     return "spatial" if has_gps else "sequential"
 
 
+def check_images_readable(files) -> None:
+    """Refuse files named like images that no image library can open (their headers only are
+    read), so a folder of non-images is not reported later as "too few matches"."""
+    from PIL import Image as PILImage
+
+    bad = []
+    for f in files:
+        try:
+            with PILImage.open(f) as im:
+                im.verify()
+        except Exception:  # noqa: BLE001 - any decoder failure means: not a readable image
+            bad.append(f)
+    if bad:
+        more = f" and {len(bad) - 1} more" if len(bad) > 1 else ""
+        raise InvalidInputError(f"not a readable image{more}", "remove or replace it; SfM reads png, jpg, tif ...",
+                                path=bad[0])
+
+
 def run_sfm(
     image_dir,
     workdir,
@@ -207,6 +225,7 @@ def run_sfm(
     pycolmap = import_pycolmap()
     image_dir = Path(image_dir)
     files = list_images(image_dir)
+    check_images_readable(files)
     names = [f.name for f in files]
     if len(files) < 2:
         raise InvalidInputError(f"structure from motion needs at least 2 images, found {len(files)}", path=image_dir)
