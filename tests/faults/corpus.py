@@ -168,6 +168,8 @@ def check(case: Case, good: Path, work: Path, runner=run_inprocess) -> Outcome:
         o.problems.append(f"crash (exit {rc})")
     if "Traceback" in stderr:
         o.problems.append("traceback")
+    if "weights_only" in stderr:  # a library's advice to load untrusted code must not reach the user
+        o.problems.append("message advises weights_only=False")
     if "internal error" in stderr:
         o.problems.append("bug reported by the error boundary")
     if case.expect == "error" and rc == 0:

@@ -22,6 +22,7 @@ from __future__ import annotations
 import io
 import json
 import time
+import warnings
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -668,9 +669,13 @@ class PointClassifier:
         if not p.exists():
             raise InvalidInputError("model file not found", "train one with `ws train` or use the shipped model", path=p)
         try:
-            payload = torch.load(p, map_location="cpu", weights_only=True)
-        except Exception as e:
-            raise InvalidInputError(f"not a loadable model: {e}", path=p) from None
+            with warnings.catch_warnings():  # torch's pickle-protocol warning: the error below says it all
+                warnings.simplefilter("ignore")
+                payload = torch.load(p, map_location="cpu", weights_only=True)
+        except Exception:  # torch's message advises weights_only=False, i.e. running the file's code: not ours
+            raise InvalidInputError("not a workstation model file (it holds more than tensors and plain values, "
+                                    "or is damaged); it is not executed", "give a model written by `ws train`",
+                                    path=p) from None
         if not isinstance(payload, dict) or payload.get("format") != FORMAT:
             raise InvalidInputError("not a workstation point classifier", path=p)
         feats = json.loads(payload["features"])
