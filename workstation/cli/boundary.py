@@ -47,7 +47,6 @@ class Explained:
 
     message: str
     hint: str | None = None
-    bug: bool = False
 
 
 def _where(exc: BaseException) -> str:
@@ -86,8 +85,7 @@ def explain(exc: BaseException) -> Explained:
     return Explained(
         f"internal error{_where(exc)}: {type(exc).__name__}: {exc}",
         "this is a bug in workstation, not in your data or options. Please report it on the "
-        "project's issue tracker with the command line and the output of the same command run with -v",
-        bug=True,
+        "project's issue tracker with the command line and the output of the same command run with -v"
     )
 
 

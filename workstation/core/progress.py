@@ -52,11 +52,6 @@ def progress_mode() -> str:
     return "plain" if stream is not None else "off"
 
 
-def _enabled() -> bool:
-    """True when a rich bar is drawn (see :func:`progress_mode`)."""
-    return progress_mode() == "rich"
-
-
 def format_duration(seconds: float) -> str:
     """``"12 s"``, ``"3 min 05 s"``, ``"1 h 02 min"``."""
     s = max(0.0, float(seconds))

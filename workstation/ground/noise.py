@@ -91,30 +91,6 @@ def isolated_low_points(xyz: np.ndarray, depth: float = 1.5, k: int = 10) -> np.
     return xyz[:, 2] < ref - depth
 
 
-def grid_low_points(xyz: np.ndarray, cell: float = 1.0, depth: float = 5.0) -> np.ndarray:
-    """(m,) bool: points more than ``depth`` below the 5x5-cell median of the lowest-point grid.
-
-    A grid version of :func:`isolated_low_points`: O(m), for the fast grid filters; the
-    5 m default is SMRF's low-outlier depth (2 m flags ground on steep slopes: PMF 7.8 % -> 8.9 %
-    mean total error on the six ISPRS samples).
-
-    Parameters
-    ----------
-    xyz : (m, 3) float64, metres.
-    cell, depth : float
-        Grid cell and depth, metres.
-    """
-    from scipy import ndimage
-
-    if xyz.shape[0] == 0:
-        return np.zeros(0, dtype=bool)
-    cell = common.auto_cell(xyz[:, :2], cell)  # sparse data over a large extent: a coarser grid
-    r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
-    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
-    ref = ndimage.median_filter(common.fill_nearest(zmin), size=5, mode="nearest")
-    return xyz[:, 2] < ref[r, c] - depth
-
-
 def statistical_outliers(xyz: np.ndarray, k: int = 8, std_ratio: float = 3.0) -> np.ndarray:
     """(m,) bool: mean distance to the ``k`` nearest 3D neighbours > mean + std_ratio·std."""
     from scipy.spatial import cKDTree

@@ -134,7 +134,7 @@ def envelope_height(xyz: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarra
     r, c, shape, _ = common.grid_index(xyz[:, :2], cell, lo)
     zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
     surf = common.inpaint(zmin.reshape(shape))
-    gy, gx = np.gradient(surf, cell) if min(shape) > 1 else (np.zeros(shape), np.zeros(shape))
+    gy, gx = common.gradient(surf, cell)
     return (xyz[:, 2] - common.bilinear(surf, xyz[:, :2], cell, lo),
             common.bilinear(np.hypot(gx, gy), xyz[:, :2], cell, lo))
 

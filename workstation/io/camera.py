@@ -44,7 +44,7 @@ from workstation.core.errors import InvalidInputError
 from workstation.core.jsonutil import dumps
 from workstation.core.products import Camera
 
-from ._fields import check_utf8
+from .textfile import read_text
 from .atomic import atomic_path
 
 REQUIRED = ("model", "width", "height", "fx", "fy", "cx", "cy")
@@ -105,10 +105,8 @@ def read_camera(path) -> Camera:
     p = Path(path)
     if not p.is_file():
         raise InvalidInputError("camera file not found", path=p)
-    data = p.read_bytes()
-    check_utf8(data, p)
     try:
-        d = json.loads(data.decode("utf-8-sig"))
+        d = json.loads(read_text(p))
     except json.JSONDecodeError as e:
         raise InvalidInputError(f"not valid JSON: {e.msg} at line {e.lineno}", "see workstation.io.camera for the schema",
                                 path=p) from None

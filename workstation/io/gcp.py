@@ -48,7 +48,7 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 
-from ._fields import check_utf8
+from .textfile import read_text
 
 ROLES = ("control", "check")
 
@@ -106,9 +106,7 @@ def read_gcp(path) -> list[GCP]:
     p = Path(path)
     if not p.is_file():
         raise InvalidInputError("GCP file not found", path=p)
-    data = p.read_bytes()
-    check_utf8(data, p)
-    lines = [ln for ln in data.decode("utf-8-sig").splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    lines = [ln for ln in read_text(p).splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
         raise InvalidInputError("empty GCP file", path=p)
     try:

@@ -260,10 +260,11 @@ def _body(path: Path, offset: int) -> np.ndarray:
     return np.memmap(path, dtype=np.uint8, mode="r", offset=offset)
 
 
-def _element_offsets(header: _Header, buf: np.ndarray, endian: str, path: Path) -> list[int]:
-    """Start offset of every element in the body, then the end of the last one."""
+def _element_offsets(header: _Header, buf: np.ndarray, endian: str, path: Path, upto: int | None = None) -> list[int]:
+    """Start offset of every element in the body (of the first ``upto + 1`` with ``upto``), then
+    the end of the last one walked."""
     offsets = [0]
-    for el in header.elements:
+    for el in header.elements[: None if upto is None else upto + 1]:
         offsets.append(_skip_binary_element(el, buf, offsets[-1], endian, path))
     return offsets
 
@@ -274,14 +275,17 @@ def _read_binary(path: Path, header: _Header, vi: int, vel: _Element) -> np.ndar
     dt = vel.dtype(endian)
     buf = _body(path, header.body_offset)
     text = looks_like_numbers(buf)
+    # Faces with mixed list lengths after the vertices can only be walked instance by instance:
+    # stop at the vertices then (their bytes are still bounded), and check the whole body otherwise.
+    tail_lists = any(el.has_lists for el in header.elements[vi + 1:])
     try:
-        offsets = _element_offsets(header, buf, endian, path)
+        offsets = _element_offsets(header, buf, endian, path, upto=vi if tail_lists else None)
     except InvalidInputError:
         if text:
             raise _mismatch(path, header.format) from None
         raise
-    extra = buf.size - offsets[-1]
-    if extra and text:
+    extra = 0 if tail_lists else buf.size - offsets[-1]
+    if text and (extra or tail_lists):
         raise _mismatch(path, header.format)
     last = header.elements[-1]
     if extra >= max(_min_size(last), 1):

@@ -184,10 +184,8 @@ def _guarded(path: Path, func, *args, **opts):
 
 def write_cloud(cloud: Cloud, path, *, overwrite: bool = False, inputs=(), **opts) -> Path:
     """Write a cloud atomically; refuses to replace an existing file unless ``overwrite``, and
-    refuses ``.copc.laz`` names (no COPC writer: plain LAZ would claim an octree)."""
-    from .copc import refuse_copc_output
-
-    refuse_copc_output(path)
+    refuses ``.copc.laz`` names (no COPC writer: plain LAZ would claim an octree; checked by
+    :func:`~workstation.io.atomic.check_output`)."""
     mod = _module(path)
     with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
         mod.write(cloud, tmp, **opts)

@@ -16,7 +16,7 @@ import numpy as np
 from workstation.core.cloud import Cloud, concatenate
 from workstation.core.errors import InvalidInputError, StageError
 
-from .stream import CHUNK, cloud_sink, input_bounds, input_chunks, union_bounds
+from .stream import CHUNK, chain_first, cloud_sink, input_bounds, input_chunks, union_bounds
 
 SOURCE_IDS = ("auto", "input", "keep")
 
@@ -51,7 +51,8 @@ def merge_files(inputs, output, *, source_ids: str = "auto", overwrite: bool = F
     if source_ids not in SOURCE_IDS:
         raise InvalidInputError(f"unknown source id rule '{source_ids}'", f"one of {', '.join(SOURCE_IDS)}",
                                 field="source_ids")
-    firsts = [next(input_chunks(p, chunk_size), None) for p in inputs]
+    streams = [input_chunks(p, chunk_size) for p in inputs]
+    firsts = [next(it, None) for it in streams]  # each input is read once: its first chunk is kept
     if any(f is None for f in firsts):
         raise InvalidInputError("has no points", path=inputs[[f is None for f in firsts].index(True)])
     crs_set = {f.crs for f in firsts if f.crs}
@@ -64,9 +65,9 @@ def merge_files(inputs, output, *, source_ids: str = "auto", overwrite: bool = F
     bounds = union_bounds(input_bounds(p) for p in inputs)
     counts = []
     with cloud_sink(output, template, overwrite=overwrite, inputs=inputs, bounds=bounds, **write_opts) as sink:
-        for k, src in enumerate(inputs):
+        for k in range(len(inputs)):
             before = sink.count
-            for chunk in input_chunks(src, chunk_size):
+            for chunk in chain_first(firsts[k], streams[k]):
                 c = concatenate([template, chunk], check_crs=False)
                 if number:
                     c = c.with_attrs(point_source_id=np.full(c.n, k + 1, np.uint16))

@@ -114,7 +114,7 @@ def stream_select(src, output, select: Callable[[Cloud], np.ndarray], *, stage: 
     total = 0
     first_mask = np.asarray(select(first), dtype=bool)  # a bad parameter fails here, before any file is made
     with cloud_sink(output, first, overwrite=overwrite, inputs=[src], bounds=input_bounds(src), **write_opts) as sink:
-        for k, chunk in enumerate(_chain(first, chunks)):
+        for k, chunk in enumerate(chain_first(first, chunks)):
             total += chunk.n
             mask = first_mask if k == 0 else np.asarray(select(chunk), dtype=bool)
             if mask.any():
@@ -125,6 +125,7 @@ def stream_select(src, output, select: Callable[[Cloud], np.ndarray], *, stage: 
     return total, sink.count
 
 
-def _chain(first: Cloud, rest: Iterator[Cloud]) -> Iterator[Cloud]:
+def chain_first(first: Cloud, rest: Iterator[Cloud]) -> Iterator[Cloud]:
+    """``first`` then the rest of its stream: the chunk a caller looked at is not read twice."""
     yield first
     yield from rest

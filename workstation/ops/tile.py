@@ -23,7 +23,7 @@ from workstation.core.cloud import Cloud, concatenate
 from workstation.core.errors import InvalidInputError, OutputExistsError, StageError
 from workstation.pipeline.chunks import Chunk
 
-from .stream import CHUNK, cloud_sink, input_bounds, input_chunks, union_bounds
+from .stream import CHUNK, cloud_sink, input_chunks
 
 MAX_OPEN = 200  # tile writers open at once (file handles, LAZ encoder buffers)
 MAX_TILES = 100_000  # more files than this from one command is a mistaken --size, not a tiling
@@ -94,19 +94,21 @@ def tile_memberships(xy: np.ndarray, size: float, buffer: float = 0.0):
             yield idx, ix[idx] + dx, iy[idx] + dy
 
 
-def occupied_tiles(inputs, params: TileParams, chunk_size: int) -> list[tuple[int, int]]:
-    """The tiles that receive at least one point (buffer included), from one streamed pass:
-    the cost follows the points, not the bounding box (a sparse file over 100 km² is cheap)."""
+def occupied_tiles(inputs, params: TileParams, chunk_size: int) -> tuple[list, tuple[float, float]]:
+    """The tiles that receive at least one point (buffer included) and the z range of all the
+    points, from one streamed pass: the cost follows the points, not the bounding box."""
     keys: set = set()
+    zlo, zhi = np.inf, -np.inf
     for src in inputs:
         for chunk in input_chunks(src, chunk_size):
+            zlo, zhi = min(zlo, float(chunk.xyz[:, 2].min())), max(zhi, float(chunk.xyz[:, 2].max()))
             for _, ix, iy in tile_memberships(chunk.xyz[:, :2], params.size, params.buffer):
                 keys.update(map(tuple, np.unique(np.column_stack([ix, iy]), axis=0).tolist()))
             if len(keys) > MAX_TILES:
                 raise InvalidInputError(f"--size {params.size:g} would write more than {MAX_TILES:,} tiles",
                                         "give a larger --size (in the CRS units, like the coordinates)",
                                         path=src, field="--size")
-    return sorted(keys)
+    return sorted(keys), (zlo, zhi)
 
 
 class _Tiles:
@@ -150,11 +152,7 @@ def tile_files(inputs, folder, params: TileParams, *, overwrite: bool = False, c
     """
     folder = Path(folder)
     inputs = [Path(p) for p in inputs]
-    bounds = union_bounds(input_bounds(p) for p in inputs)
-    if bounds is None:  # a non-LAS input: its extent from the points (read whole anyway)
-        clouds = [next(input_chunks(p, chunk_size)) for p in inputs]
-        bounds = (np.min([c.bounds[0] for c in clouds], axis=0), np.max([c.bounds[1] for c in clouds], axis=0))
-    cands = occupied_tiles(inputs, params, chunk_size)
+    cands, zrange = occupied_tiles(inputs, params, chunk_size)
     if not overwrite:
         for ix, iy in cands:
             path = folder / (tile_name(ix, iy, params.size) + params.ext)
@@ -164,7 +162,7 @@ def tile_files(inputs, folder, params: TileParams, *, overwrite: bool = False, c
     counts: dict[str, int] = {}
     for g in range(0, len(cands), MAX_OPEN):
         group = set(cands[g:g + MAX_OPEN])
-        tiles = _Tiles(folder, params, overwrite, inputs, (bounds[0][2], bounds[1][2]))
+        tiles = _Tiles(folder, params, overwrite, inputs, zrange)
         with tiles.stack:
             for src in inputs:
                 for chunk in input_chunks(src, chunk_size):

@@ -541,9 +541,10 @@ def dlt_matrix(X: np.ndarray, uv: np.ndarray, planarity_ratio: float = 0.02) -> 
     if distinct < 6:  # 11 parameters need 6 different points, not 6 rows
         raise InvalidInputError(f"DLT needs at least 6 distinct control points, got {distinct} (of {n} rows)",
                                 "remove repeated rows and measure more control points")
-    if affine_dimension(uv) < 2:
+    dim = affine_dimension(uv)
+    if dim < 2:
         raise InvalidInputError(
-            f"the {n} image points are {'all the same pixel' if affine_dimension(uv) == 0 else 'on one line'}",
+            f"the {n} image points are {'all the same pixel' if dim == 0 else 'on one line'}",
             "check the u v columns of the point file")
     sv = np.linalg.svd(X - X.mean(axis=0), compute_uv=False)
     if sv[0] <= 0 or sv[2] < planarity_ratio * sv[0]:

@@ -204,7 +204,6 @@ def _client(options: RunOptions, project):
     return client, cluster
 
 
-
 def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_id: str) -> str | None:
     """Submit ``todo`` to Dask and record each task as it ends; returns the dashboard address."""
     from distributed import as_completed

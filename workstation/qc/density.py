@@ -53,8 +53,8 @@ class DensityAccumulator:
             self.origin = np.floor(xy.min(axis=0) / self.cell) * self.cell - 2**20 * self.cell
         span = float(np.max(xy.max(axis=0) - self.origin)) / self.cell
         self._too_fine |= not span < _MAX_INDEX  # the packed 64-bit cell keys would wrap around
+        self._hull = _hull_points(np.vstack([self._hull, _hull_candidates(xy)]))
         if self._too_fine and not self.strict:
-            self._hull = _hull_points(np.vstack([self._hull, xy]))
             self.n += len(xy)
             return
         if self._too_fine:
@@ -68,7 +68,6 @@ class DensityAccumulator:
         keys = sorted_unique((ij[:, 0] << 32) + ij[:, 1])
         # two sorted runs: the stable sort (timsort) merges them in linear time
         self._keys = sorted_unique(np.concatenate([self._keys, keys]), kind="stable")
-        self._hull = _hull_points(np.vstack([self._hull, _hull_candidates(xy)]))
         self.n += len(xy)
 
     def result(self) -> dict:
