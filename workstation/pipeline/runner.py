@@ -241,6 +241,7 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
                     failures.append({"task": t.id, "error": rec["error"]})
                 progress.advance(t.phase, rec.get("points", 0))
     except KeyboardInterrupt:
+        _quiet_event_loop_logs()
         client.cancel(list(futures.values()), force=True)
         raise
     finally:
@@ -249,6 +250,16 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
         if cluster is not None:
             cluster.close()
     return dashboard
+
+
+def _quiet_event_loop_logs() -> None:
+    """After Ctrl-C or a signal, the tasks cancelled under Dask's event loop log their
+    interruption with tracebacks (tornado, asyncio, distributed): not errors of the run, which
+    ends with "Interrupted." and exit 128 + n."""
+    import logging
+
+    for name in ("tornado.application", "tornado.general", "asyncio", "distributed"):
+        logging.getLogger(name).setLevel(logging.CRITICAL + 1)
 
 
 def _submit(client, t, futures, manifest, options):
