@@ -47,7 +47,7 @@ def write_copc(cloud, path) -> None:
 
 def test_copc_query_equals_a_full_read_inside_the_box(tmp_path):
     from workstation.io import read_cloud
-    from workstation.pipeline.catalog import read_tile_info
+    from workstation.io.catalog import read_tile_info
     from workstation.pipeline.chunkio import read_copc
 
     cloud = tile_cloud(0, 0)

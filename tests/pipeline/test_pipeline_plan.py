@@ -13,7 +13,7 @@ from pipeline_synth import CRS, TILE, X0, Y0, write_project, write_tiles
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.io import read_cloud, write_cloud
-from workstation.pipeline.catalog import Catalog, TileInfo, build_catalog
+from workstation.io.catalog import Catalog, TileInfo, build_catalog
 from workstation.pipeline.chunkio import index_file, read_bins
 from workstation.pipeline.chunks import Chunk, chunk_grid
 from workstation.pipeline.manifest import Manifest

@@ -195,7 +195,7 @@ def cluster(tmp_path_factory):
 
 # ----------------------------------------------------------------------------- end to end
 def test_run_writes_chunk_points_cog_dems_and_run_json(survey, baseline):
-    from workstation.pipeline.catalog import build_catalog
+    from workstation.io.catalog import build_catalog
     from workstation.raster.grid import GridSpec
 
     out, doc = baseline.path, baseline.json

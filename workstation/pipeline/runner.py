@@ -26,7 +26,7 @@ from workstation.core.log import get_logger
 from workstation.core.signals import workers_starting
 
 from . import plan as P
-from .catalog import build_catalog
+from workstation.io.catalog import build_catalog
 from .chunks import chunk_grid
 from .manifest import Manifest
 from .project import load_project

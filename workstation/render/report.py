@@ -16,7 +16,6 @@ from __future__ import annotations
 import base64
 import datetime as _dt
 import html
-import io
 import json
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,6 +25,12 @@ import numpy as np
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 from workstation.io.textfile import read_text
+
+from .html import fig_b64 as _fig_b64
+from .html import fmt as _fmt
+from .html import img as _img
+from .html import png_b64 as _png_b64
+from .html import table as _table
 
 log = get_logger(__name__)
 
@@ -54,44 +59,6 @@ class ReportParams:
     max_points: int = 2_000_000
     max_files: int = 12
     max_depth: int = 3
-
-
-def _png_b64(img: np.ndarray) -> str:
-    from PIL import Image as PILImage
-
-    buf = io.BytesIO()
-    PILImage.fromarray(np.asarray(img, dtype=np.uint8)).save(buf, format="PNG", optimize=True)
-    return base64.b64encode(buf.getvalue()).decode("ascii")
-
-
-def _fig_b64(fig) -> str:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
-    import matplotlib.pyplot as plt
-
-    plt.close(fig)
-    return base64.b64encode(buf.getvalue()).decode("ascii")
-
-
-def _img(b64: str, alt: str) -> str:
-    return f'<figure><img alt="{html.escape(alt)}" src="data:image/png;base64,{b64}"><figcaption>{html.escape(alt)}</figcaption></figure>'
-
-
-def _fmt(v) -> str:
-    if isinstance(v, float):
-        return f"{v:.6g}"
-    if isinstance(v, (list, tuple)) and len(v) > 8:
-        return html.escape(json.dumps(v[:8])[:-1] + ", ...]")
-    if isinstance(v, (dict, list, tuple)):
-        s = json.dumps(v, default=str)
-        return html.escape(s if len(s) < 300 else s[:300] + "...")
-    return html.escape(str(v))
-
-
-def _table(rows, header=("", "")) -> str:
-    h = "".join(f"<th>{html.escape(str(c))}</th>" for c in header)
-    body = "".join("<tr>" + "".join(f"<td>{_fmt(c)}</td>" for c in r) + "</tr>" for r in rows)
-    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
 
 
 def _flatten(d, prefix="", out=None, limit=60):

@@ -144,13 +144,15 @@ def _crs_name(crs: str) -> str:
         return crs[:60]
 
 
-def build_catalog(paths, crs: str | None = None) -> Catalog:
+def build_catalog(paths, crs: str | None = None, inputs_hint: str = "check [inputs] clouds") -> Catalog:
     """The catalog of ``paths`` (LAS/LAZ/COPC files) from their headers.
 
     Parameters
     ----------
     crs : str, optional
         The project's CRS: tiles without one take it; tiles with another are refused.
+    inputs_hint : str
+        What to check when there is no input or every tile is empty (says where inputs are given).
 
     Raises
     ------
@@ -159,19 +161,19 @@ def build_catalog(paths, crs: str | None = None) -> Catalog:
     """
     tiles = [read_tile_info(p) for p in paths]
     if not tiles:
-        raise InvalidInputError("the project has no input tiles", "check [inputs] clouds")
+        raise InvalidInputError("there are no input tiles", inputs_hint)
     ref = crs or next((t.crs for t in tiles if t.crs), None)
     for t in tiles:
         if t.crs and ref and not _same_crs(t.crs, ref):
             raise InvalidInputError(
-                f"CRS {_crs_name(t.crs)} differs from the project's {_crs_name(ref)}",
+                f"CRS {_crs_name(t.crs)} differs from the other tiles' {_crs_name(ref)}",
                 "reproject the tile first (ws convert IN OUT --to-crs ...) or fix [project] crs; "
                 "chunks are cut in one coordinate system", path=t.path, field="crs")
         if t.point_count and not np.all(np.isfinite(t.bounds)):
             raise InvalidInputError("header bounds are not finite numbers", "repair the header (e.g. lasinfo -repair)",
                                     path=t.path, field="bounds")
     if not any(t.point_count for t in tiles):
-        raise InvalidInputError("every input tile is empty", "check [inputs] clouds")
+        raise InvalidInputError("every input tile is empty", inputs_hint)
     without = [t.path.name for t in tiles if not t.crs]
     if without and ref:
         log.info("%d tile(s) without a CRS take %s", len(without), _crs_name(ref))
