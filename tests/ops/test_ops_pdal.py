@@ -50,11 +50,31 @@ DOCUMENTED = {
                     "scale_x", "scale_y", "scale_z", "offset_x", "offset_y", "offset_z", "filesource_id",
                     "discard_high_return_numbers", "extra_dims", "pdal_metadata", "vlrs"},
     # https://pdal.io/en/stable/stages/writers.ply.html, writers.text.html
+    # https://pdal.io/en/stable/stages/readers.copc.html (+ reader_opts.md)
+    "readers.copc": {"filename", "override_srs", "default_srs", "count", "bounds", "polygon", "ogr", "requests",
+                     "resolution", "header", "query", "vlr", "keep_alive", "fix_dims", "srs_vlr_order", "nosrs"},
+    # https://pdal.io/en/stable/stages/filters.range.html, filters.assign.html (+ filter_opts.md: where)
+    "filters.range": {"limits", "where", "where_merge"},
+    "filters.assign": {"assignment", "condition", "value", "where", "where_merge"},
+    # https://pdal.io/en/stable/stages/filters.hag_delaunay.html, filters.delaunay.html
+    "filters.hag_delaunay": {"count", "allow_extrapolation", "where", "where_merge"},
+    "filters.delaunay": {"where", "where_merge"},
+    # https://pdal.io/en/stable/stages/filters.faceraster.html
+    "filters.faceraster": {"resolution", "nodata", "mesh", "origin_x", "origin_y", "width", "height",
+                           "max_triangle_edge_length", "where", "where_merge"},
+    # https://pdal.io/en/stable/stages/writers.gdal.html (bounds or origin_x/origin_y/width/height, not both)
+    "writers.gdal": {"filename", "binmode", "resolution", "radius", "power", "gdaldriver", "gdalopts", "data_type",
+                     "nodata", "output_type", "window_size", "dimension", "bounds", "origin_x", "origin_y", "width",
+                     "height", "override_srs", "default_srs", "metadata", "pdal_metadata"},
+    # https://pdal.io/en/stable/stages/writers.raster.html
+    "writers.raster": {"filename", "gdaldriver", "gdalopts", "rasters", "data_type", "nodata"},
     "writers.ply": {"filename", "storage_mode", "dims", "faces", "sized_types", "precision"},
     "writers.text": {"filename", "format", "order", "keep_unspecified", "jscode", "quote_header", "write_header",
                      "newline", "delimiter", "precision"},
 }
-ENUMS = {("filters.voxeldownsize", "mode"): {"center", "first"}, ("filters.sort", "order"): {"ASC", "DESC"}}
+ENUMS = {("filters.voxeldownsize", "mode"): {"center", "first"}, ("filters.sort", "order"): {"ASC", "DESC"},
+         ("writers.gdal", "output_type"): {"min", "max", "mean", "idw", "count", "stdev", "all"},
+         ("writers.gdal", "binmode"): {"true", "false"}}
 
 
 def _check(stages):
@@ -123,3 +143,116 @@ def test_pipeline_out_is_checked_before_work(tmp_path, src, capsys):
     assert main(["filter", str(src), "-o", str(tmp_path / "o.laz"), "--expr", "Z > 0",
                  "--pipeline-out", str(tmp_path / "p.json")]) == 1
     assert not (tmp_path / "o.laz").exists()
+
+
+# --------------------------------------------------------------------------- ws dem
+def _range_keeps(limits: str, dim: str, values) -> np.ndarray:
+    """Which ``values`` of ``dim`` pass PDAL ``filters.range`` limits (closed ``[a:b]`` ranges of
+    one dimension ORed, as documented)."""
+    import re
+
+    keep = np.zeros(len(values), bool)
+    for name, a, b in re.findall(r"(\w+)\[(\d*):(\d*)\]", limits):
+        if name == dim:
+            keep |= (values >= (float(a) if a else -np.inf)) & (values <= (float(b) if b else np.inf))
+    return keep
+
+
+def _grid_of(stage, raster):
+    """The writer/faceraster grid equals the raster written (origin = lower-left corner, CRS units)."""
+    a, _, c, _, e, f = raster.transform
+    rows, cols = raster.array.shape
+    assert stage["resolution"] == a and stage["origin_x"] == c and stage["origin_y"] == f + e * rows
+    assert (stage["width"], stage["height"]) == (cols, rows)
+    assert "bounds" not in stage  # PDAL: bounds or origin/width/height, not both
+
+
+@pytest.mark.parametrize("args, types", [
+    (["--kind", "dsm"], ["readers.las", "filters.range", "writers.gdal"]),
+    (["--kind", "dsm", "--method", "tin"],
+     ["readers.las", "filters.range", "filters.delaunay", "filters.faceraster", "writers.raster"]),
+    (["--kind", "dtm", "--max-edge", "5"],
+     ["readers.las", "filters.range", "filters.delaunay", "filters.faceraster", "writers.raster"]),
+    (["--kind", "dtm", "--method", "idw"], ["readers.las", "filters.range", "writers.gdal"]),
+    (["--kind", "chm", "--ground-classes", "2,9"],
+     ["readers.las", "filters.assign", "filters.hag_delaunay", "filters.range", "writers.gdal"]),
+    (["--kind", "dsm", "--bounds", "480010,5450010,480030,5450030"],
+     ["readers.las", "filters.crop", "filters.range", "writers.gdal"]),
+])
+def test_dem_pipeline(tmp_path, src, args, types):
+    from workstation.core.classes import NOISE
+    from workstation.io.geotiff import read_raster
+
+    out = tmp_path / "d.tif"
+    assert main(["dem", str(src), "-o", str(out), "--resolution", "1", *args, "--pipeline-out", str(tmp_path / "p.json")]) == 0
+    stages = json.loads((tmp_path / "p.json").read_text())
+    assert _check(stages) == types
+    r = read_raster(out)
+    last = stages[-1]
+    assert last["filename"] == str(out) and last["nodata"] == -9999.0 and last["data_type"] == "float"
+    _grid_of(stages[-2] if last["type"] == "writers.raster" else last, r)
+    codes = np.arange(256)
+    keep = _range_keeps(next(s for s in stages if s["type"] == "filters.range")["limits"], "Classification", codes)
+    if "dtm" in args:
+        assert list(codes[keep]) == [2]
+        face = [s for s in stages if s["type"] == "filters.faceraster"]
+        assert not face or face[0]["max_triangle_edge_length"] == 5.0
+        if "idw" in args:
+            assert last["output_type"] == "idw" and last["power"] == 2.0
+    else:  # every class but the noise classes (7 and 18)
+        assert list(codes[~keep]) == sorted(int(c) for c in NOISE)
+        assert last["type"] != "writers.gdal" or last["output_type"] == "max"
+    if "chm" in args:
+        assert last["dimension"] == "HeightAboveGround"
+        assert stages[1]["value"] == ["Classification = 2 WHERE Classification == 9"]
+    if "--bounds" in args:
+        assert stages[1]["bounds"] == "([480010.0, 480030.0], [5450010.0, 5450030.0])"
+
+
+def test_dem_pipeline_feet_resolution_in_crs_units(tmp_path):
+    """--resolution is metres; the pipeline, like the raster, is in the CRS's unit (US feet)."""
+    rng = np.random.default_rng(5)
+    xyz = rng.uniform(0, 300, (3000, 3)) + [2_000_000, 600_000, 0]
+    c = Cloud(xyz, {"classification": np.full(3000, 2, np.uint8)}, crs="EPSG:2994")
+    write_cloud(c, tmp_path / "ft.laz")
+    assert main(["dem", str(tmp_path / "ft.laz"), "-o", str(tmp_path / "d.tif"), "--kind", "dsm", "--resolution", "3",
+                 "--pipeline-out", str(tmp_path / "p.json")]) == 0
+    w = json.loads((tmp_path / "p.json").read_text())[-1]
+    assert w["resolution"] == pytest.approx(3 / 0.3048)
+
+
+def test_dem_pipeline_two_inputs_merged(tmp_path, src):
+    assert main(["dem", str(src), str(src), "-o", str(tmp_path / "d.tif"), "--kind", "dsm", "--resolution", "2",
+                 "--pipeline-out", str(tmp_path / "p.json")]) == 0
+    stages = json.loads((tmp_path / "p.json").read_text())
+    assert _check(stages)[:3] == ["readers.las", "readers.las", "filters.merge"]
+
+
+@pytest.mark.parametrize("args", [["--kind", "dtm", "--method", "nn"], ["--kind", "chm", "--pit-free"]])
+def test_dem_pipeline_refused_without_a_pdal_equivalent(tmp_path, src, args, capsys):
+    out = tmp_path / "d.tif"
+    rc = main(["dem", str(src), "-o", str(out), "--resolution", "1", *args, "--pipeline-out", str(tmp_path / "p.json")])
+    assert rc == 2 and not out.exists() and not (tmp_path / "p.json").exists()
+    assert "PDAL" in capsys.readouterr().err
+
+
+def test_dem_pipeline_copc_query(tmp_path):
+    """A COPC input is queried by readers.copc: bounds as PDAL text, --level as that level's resolution."""
+    pytest.importorskip("copclib")
+    from copc_synth import write_copc
+
+    from workstation.io import copc
+
+    rng = np.random.default_rng(2)
+    xyz = rng.uniform(0, 60, (5000, 3)) + [480000, 5450000, 0]
+    path = tmp_path / "c.copc.laz"
+    write_copc(path, xyz, max_levels=4)
+    assert main(["dem", str(path), "-o", str(tmp_path / "d.tif"), "--kind", "dsm", "--resolution", "2",
+                 "--bounds", "480010,5450010,480040,5450040", "--level", "2",
+                 "--pipeline-out", str(tmp_path / "p.json")]) == 0
+    stages = json.loads((tmp_path / "p.json").read_text())
+    assert _check(stages) == ["readers.copc", "filters.range", "writers.gdal"]
+    r = stages[0]
+    assert r["bounds"] == "([480010.0, 480040.0], [5450010.0, 5450040.0])"
+    assert r["resolution"] == pytest.approx(copc.read_info(path).spacing / 4)
+    assert copc.level_range(r["resolution"], None, copc.read_info(path).spacing) == range(0, 3)

@@ -6,7 +6,8 @@ import click
 
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import GEOTIFF, require_suffix
-from .options import Length, positive_int, positive_length
+from .options import Length, positive_int, positive_length, read_options
+from .pipeline_out import pipeline_out_option
 
 
 @click.command()
@@ -26,19 +27,31 @@ from .options import Length, positive_int, positive_length
 @click.option("--pit-free", is_flag=True, help="CHM by the pit-free algorithm (Khosravipour et al. 2014).")
 @click.option("--ground-classes", default="2", show_default=True, help="Comma-separated classes used as ground.")
 @click.option("--chunk-size", default=2_000_000, show_default=True, type=positive_int, help="Points read per chunk (memory bound).")
+@read_options(resolution_flag="--copc-resolution")
+@pipeline_out_option
 @overwrite_option
 @json_option
-def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_free, ground_classes, chunk_size, overwrite, as_json):
+def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_free, ground_classes, chunk_size,
+        read_opts, pipeline_out, overwrite, as_json):
     """Grid INPUTS (one or more point cloud files, mosaicked) into a DSM, DTM or CHM GeoTIFF.
 
     Files are streamed in chunks; the output is a tiled, DEFLATE-compressed GeoTIFF with
-    overviews, the input CRS and nodata -9999.
+    overviews, the input CRS and nodata -9999. With --bounds only the points inside the box are
+    read and the grid covers the box (cells aligned to multiples of the cell size).
     """
     from workstation.core.errors import InvalidInputError
     from workstation.core.log import get_logger
     from workstation.io.geotiff import write_raster
 
     require_suffix(output, GEOTIFF, what="GeoTIFF")
+    if pipeline_out:
+        from workstation.io import check_outputs
+        from workstation.ops.pdal import dem_equivalent
+
+        why = dem_equivalent(method, kind, pit_free)
+        if why:
+            raise click.UsageError(f"--pipeline-out: {why}")
+        check_outputs([output, pipeline_out], overwrite, inputs=inputs)
     from workstation.raster.dem import DemParams, build_dem
 
     try:
@@ -50,8 +63,14 @@ def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_f
     from workstation.core.errors import doing
 
     with doing(f"gridding {', '.join(inputs)}"):
-        r = build_dem(list(inputs), params, chunk_size=chunk_size)
+        r = build_dem(list(inputs), params, chunk_size=chunk_size, read_opts=read_opts)
     write_raster(r, output, overwrite=overwrite, inputs=inputs)
+    if pipeline_out:
+        from workstation.ops.pdal import dem_stages
+
+        from .pipeline_out import save_pipeline
+
+        save_pipeline(pipeline_out, dem_stages(inputs, output, r, read_opts), overwrite, inputs)
     from workstation.core.units import Units
 
     units = Units.from_dict(r.meta.get("units")) or Units()

@@ -50,6 +50,9 @@ def info(file, columns, density_cell, summary, metadata, read_opts, as_json):
     from click.core import ParameterSource
 
     given = click.get_current_context().get_parameter_source("density_cell") is not ParameterSource.DEFAULT
+    from workstation.io.registry import crs_checked
+
+    crs_checked(file)  # the report shows the CRS warnings itself
     s = summarize(file, density_cell_m=density_cell, density_strict=given, **opts)
     if as_json:
         emit_json(s)

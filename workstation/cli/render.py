@@ -7,7 +7,7 @@ import click
 from workstation.cli.options import allow_outside_option
 
 from .options import emit_json, json_option, output_option, overwrite_option
-from .options import nonneg_float, nonneg_int
+from .options import nonneg_float, nonneg_int, read_options
 
 
 def _size(ctx, param, value):
@@ -60,12 +60,14 @@ def _background(ctx, param, value):
 @click.option("--camera", "camera_ref", default=None, metavar="IMAGE",
               help="Render through the camera of this image (name or id) of --reconstruction: its intrinsics, "
                    "pose and image size (replaces --view and --size), so the render overlays the photo.")
+@read_options
 @overwrite_option
 @allow_outside_option
 @json_option
 def render(src, output, color, view, size, background, point_size, edl, no_legend, max_points, turntable,
-           workdir, camera_ref, overwrite, as_json):
-    """Render the cloud or mesh IN to OUT (.png, or .gif with --turntable)."""
+           workdir, camera_ref, read_opts, overwrite, as_json):
+    """Render the cloud or mesh IN to OUT (.png, or .gif with --turntable); --bounds renders only
+    the points inside a box (a COPC file queried, --level/--resolution a coarser cloud)."""
     import time
     from pathlib import Path
 
@@ -96,7 +98,7 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
         rec = read_reconstruction(workdir)
         view_camera = reconstruction_view(rec, find_image(rec, camera_ref))
         size = (view_camera[0].width, view_camera[0].height)
-    obj = load_product(src)
+    obj = load_product(src, **read_opts)
     params = RenderParams(size=size, color=color, view=view, background=background, point_size=point_size, edl=edl,
                           legend=not no_legend, max_points=max_points)
     files = []

@@ -17,10 +17,17 @@ import numpy as np
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, UnsupportedFormatError, WorkstationError, is_library_panic
+from workstation.core.log import get_logger
 
 from .atomic import atomic_path
 
+#: Files whose CRS was already checked against their coordinates (path, mtime, size): the
+#: warning of :func:`_warn_crs` is shown once per file per process.
+_CRS_CHECKED: set = set()
+
 # extension -> (format name, module)
+log = get_logger(__name__)
+
 FORMATS: dict[str, tuple[str, str]] = {
     ".las": ("las", "workstation.io.las"),
     ".laz": ("laz", "workstation.io.las"),
@@ -152,7 +159,54 @@ def read_cloud(path, *, bounds=None, resolution=None, level=None, **opts) -> Clo
             raise InvalidInputError(f"no points inside --bounds {','.join(f'{v:g}' for v in sel['bounds'])}",
                                     "compare the box with the file's bounds (ws info --summary FILE)", path=p,
                                     field="--bounds")
+    _warn_crs(p, cloud)
     return cloud.with_meta(source=str(p), format=format_of(p)[0]) if "format" not in cloud.meta else cloud.with_meta(source=str(p))
+
+
+def _crs_key(path: Path) -> tuple:
+    st = path.stat()
+    return str(path.resolve()), st.st_mtime_ns, st.st_size
+
+
+def crs_checked(path) -> None:
+    """Mark ``path`` as having its CRS warnings shown by the caller (``ws info`` prints them in
+    its report), so reading it does not repeat them on stderr. A missing file is left to the reader."""
+    try:
+        _CRS_CHECKED.add(_crs_key(Path(path)))
+    except OSError:
+        pass
+
+
+def _file_extent(path: Path, cloud: Cloud):
+    """(min, max) of the file's coordinates in CRS units: its LAS/LAZ header's (the whole file,
+    no point read), else the points of ``cloud``."""
+    if format_of(path)[0] in ("las", "laz"):
+        import laspy
+
+        with laspy.open(str(path)) as r:
+            return np.asarray(r.header.mins, float), np.asarray(r.header.maxs, float)
+    return cloud.xyz.min(axis=0), cloud.xyz.max(axis=0)
+
+
+def _warn_crs(path: Path, cloud: Cloud) -> None:
+    """Log, once per file, why its CRS does not fit its coordinates
+    (:func:`workstation.io.crs.crs_warnings`: degrees on 1e6 coordinates, a geocentric CRS on
+    eastings ...). A warning only: a failure of the check itself is logged at debug level."""
+    if not cloud.crs or cloud.n == 0:
+        return
+    try:
+        key = _crs_key(path)
+        if key in _CRS_CHECKED:
+            return
+        _CRS_CHECKED.add(key)
+        from .crs import crs_warnings
+
+        msgs = crs_warnings(cloud.crs, _file_extent(path, cloud))
+    except Exception as exc:  # noqa: BLE001 - a plausibility check must never stop a read
+        log.debug("CRS check of %s skipped: %s", path, exc)
+        return
+    for m in msgs:
+        log.warning("%s: %s", path.name, m)
 
 
 def _reader_error(path: Path, exc: Exception) -> InvalidInputError:
@@ -201,6 +255,16 @@ def iter_chunks(path, chunk_size: int = 1_000_000, *, bounds=None, resolution=No
     """
     p = _check_readable(path)
     sel = check_selection(p, bounds, resolution, level)
+    checked = False
+    for chunk in _chunks(p, sel, chunk_size, **opts):
+        if not checked and chunk.n:
+            _warn_crs(p, chunk)
+            checked = True
+        yield chunk
+
+
+def _chunks(p: Path, sel: dict | None, chunk_size: int, **opts) -> Iterator[Cloud]:
+    """The chunks of :func:`iter_chunks` (``sel`` from :func:`check_selection`)."""
     mod = _module(p)
     if sel is not None and not sel["copc"] and mod.__name__ == "workstation.io.las":
         opts["bounds"] = sel["bounds"]

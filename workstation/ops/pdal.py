@@ -1,5 +1,5 @@
-"""The PDAL pipeline equivalent to a run of ``ws convert``, ``crop``, ``filter``, ``thin``, ``tile``
-or ``merge`` (``--pipeline-out FILE.json``), so a PDAL user can check or replay what was done.
+"""The PDAL pipeline equivalent to a run of ``ws convert``, ``crop``, ``filter``, ``thin``, ``tile``,
+``merge`` or ``dem`` (``--pipeline-out FILE.json``), so a PDAL user can check or replay what was done.
 
 A pipeline is a JSON list of stages (https://pdal.io/en/stable/pipeline.html): readers, then
 filters, then a writer, each ``{"type": "<kind>.<name>", option: value, ...}``. Only the stage
@@ -22,6 +22,15 @@ STAGE_OPTIONS: dict[str, set[str]] = {
     "readers.pcd": {"filename", "override_srs"},
     "readers.text": {"filename", "override_srs"},
     "readers.e57": {"filename", "override_srs"},
+    "readers.copc": {"filename", "override_srs", "bounds", "resolution"},
+    "filters.range": {"limits"},
+    "filters.assign": {"value"},
+    "filters.hag_delaunay": set(),
+    "filters.delaunay": set(),
+    "filters.faceraster": {"resolution", "origin_x", "origin_y", "width", "height", "max_triangle_edge_length"},
+    "writers.gdal": {"filename", "resolution", "output_type", "dimension", "binmode", "power", "data_type",
+                     "nodata", "gdaldriver", "gdalopts", "origin_x", "origin_y", "width", "height"},
+    "writers.raster": {"filename", "data_type", "nodata", "gdaldriver", "gdalopts"},
     "filters.crop": {"bounds", "polygon", "outside", "a_srs"},
     "filters.expression": {"expression"},
     "filters.reprojection": {"in_srs", "out_srs"},
@@ -114,6 +123,145 @@ def thin_stages(voxel: float | None = None, keep: str = "first", poisson: float 
     if keep in ("lowest", "highest"):
         stages.append({"type": "filters.sort", "dimension": "Z", "order": "ASC" if keep == "lowest" else "DESC"})
     return stages + [{"type": "filters.voxeldownsize", "cell": float(voxel), "mode": "first"}]
+
+
+def _bounds_text(bounds) -> str:
+    """PDAL's bounds text ``([xmin, xmax], [ymin, ymax][, [zmin, zmax]])``."""
+    return crop_stage(bounds)["bounds"]
+
+
+def _copc_reader(path, read_opts: dict) -> dict:
+    """``readers.copc`` with the query of ``read_opts``: ``bounds``, and ``resolution`` (CRS
+    units); a ``level`` L becomes the resolution of that level (root spacing / 2**L), which
+    selects the same levels 0..L."""
+    from workstation.io import copc
+
+    stage = {"type": "readers.copc", "filename": str(path)}
+    if read_opts.get("bounds") is not None:
+        stage["bounds"] = _bounds_text(read_opts["bounds"])
+    res = read_opts.get("resolution")
+    if read_opts.get("level") is not None:
+        res = copc.read_info(path).spacing / 2.0 ** int(read_opts["level"])
+    if res is not None:
+        stage["resolution"] = float(res)
+    return stage
+
+
+def read_stages(inputs, read_opts: dict | None = None) -> list[dict]:
+    """Readers of ``inputs`` (merged when several) that read what ``read_opts`` selects
+    (``--bounds``/``--resolution``/``--level``): a COPC file is queried by ``readers.copc``,
+    other files are read whole and cropped (``filters.crop``)."""
+    from workstation.io import copc
+
+    opts = {k: v for k, v in (read_opts or {}).items() if v is not None}
+    stages = [_copc_reader(p, opts) if opts and copc.is_copc(p) else reader(p) for p in inputs]
+    plain = any(s["type"] != "readers.copc" for s in stages)
+    if len(stages) > 1:
+        stages.append({"type": "filters.merge"})
+    if plain and opts.get("bounds") is not None:
+        stages.append(crop_stage(opts["bounds"]))
+    return stages
+
+
+def class_limits(codes) -> str:
+    """``filters.range`` limits keeping the classification codes ``codes`` (ranges of one
+    dimension are ORed by PDAL)."""
+    return ",".join(f"Classification[{int(c)}:{int(c)}]" for c in sorted(set(codes)))
+
+
+def not_class_limits(codes) -> str:
+    """``filters.range`` limits keeping every code 0..255 except ``codes`` (as the ORed ranges
+    between them: PDAL ORs ranges of one dimension, so negated ranges cannot be combined)."""
+    out, start = [], 0
+    for c in sorted(set(int(c) for c in codes)):
+        if c > start:
+            out.append(f"Classification[{start}:{c - 1}]")
+        start = c + 1
+    if start <= 255:
+        out.append(f"Classification[{start}:255]")
+    return ",".join(out)
+
+
+def _raster_grid(raster) -> dict:
+    """The grid ``raster`` covers as PDAL's ``resolution`` (CRS units), ``origin_x``/``origin_y``
+    (lower-left corner) and ``width``/``height`` (cells)."""
+    a, _, c, _, e, f = raster.transform
+    rows, cols = raster.array.shape[-2:]
+    return {"resolution": float(a), "origin_x": float(c), "origin_y": float(f + e * rows),
+            "width": int(cols), "height": int(rows)}
+
+
+def _ground_as_class2(classes) -> list[dict]:
+    """``filters.assign`` making ``classes`` the class 2 that ``filters.hag_delaunay`` takes as
+    ground (nothing when the ground is class 2 alone; a class 2 not listed becomes 1)."""
+    classes = sorted(set(int(c) for c in classes))
+    if classes == [2]:
+        return []
+    value = [] if 2 in classes else ["Classification = 1 WHERE Classification == 2"]
+    return [{"type": "filters.assign", "value": value + [f"Classification = 2 WHERE Classification == {c}"
+                                                        for c in classes if c != 2]}]
+
+
+#: GeoTIFF layout of ``ws dem`` outputs (float32, nodata -9999, tiled, DEFLATE).
+_GTIFF = {"data_type": "float", "nodata": -9999.0, "gdaldriver": "GTiff", "gdalopts": "TILED=YES,COMPRESS=DEFLATE"}
+
+
+def dem_stages(inputs, output, raster, read_opts: dict | None = None) -> list[dict]:
+    """The PDAL pipeline of a ``ws dem`` run that wrote ``raster`` (its ``meta``: kind, method,
+    params) to ``output``, on the exact grid written (resolution in CRS units).
+
+    * DSM ``highest``: noise classes (7, 18) left out, ``writers.gdal`` ``output_type=max`` with
+      ``binmode`` (points inside each cell only); ``tin``: first returns, ``filters.delaunay``
+      then ``filters.faceraster`` and ``writers.raster``.
+    * DTM ``tin``: the ground classes (``filters.range``), a Delaunay TIN rasterised by
+      ``filters.faceraster`` (``max_triangle_edge_length`` = ``--max-edge`` in CRS units);
+      ``idw``: ``writers.gdal`` ``output_type=idw`` with the same power (PDAL weights the points
+      within its radius, ws the k nearest cell representatives).
+    * CHM: ground classes as class 2 (``filters.assign``), ``filters.hag_delaunay``, noise left
+      out, the highest ``HeightAboveGround`` per cell (``writers.gdal``).
+
+    Natural neighbour (``nn``) and the pit-free CHM have no PDAL stage: see :func:`dem_equivalent`.
+    """
+    from workstation.core.classes import NOISE
+
+    meta = raster.meta
+    kind, method, p = meta["kind"], meta["method"], meta["params"]
+    grid = _raster_grid(raster)
+    stages = read_stages(inputs, read_opts)
+    if kind == "dtm":
+        stages.append({"type": "filters.range", "limits": class_limits(p["ground_classes"])})
+    else:
+        if kind == "chm":
+            stages += _ground_as_class2(p["ground_classes"]) + [{"type": "filters.hag_delaunay"}]
+        first = "ReturnNumber[0:1]," if (kind == "dsm" and method == "tin") else ""
+        stages.append({"type": "filters.range", "limits": first + not_class_limits(NOISE)})
+    if method == "tin" and kind != "chm":
+        face = {"type": "filters.faceraster", **grid}
+        if p.get("max_edge"):
+            from workstation.core.units import Units
+
+            units = Units.from_dict(meta.get("units")) or Units()
+            face["max_triangle_edge_length"] = float(units.h_from_m(p["max_edge"]))
+        return stages + [{"type": "filters.delaunay"}, face,
+                         {"type": "writers.raster", "filename": str(output), **_GTIFF}]
+    gdal = {"type": "writers.gdal", "filename": str(output), **grid, **_GTIFF}
+    if kind == "chm":
+        gdal["dimension"] = "HeightAboveGround"
+    if method == "idw":
+        gdal.update(output_type="idw", power=float(p.get("idw_power", 2.0)))
+    else:
+        gdal.update(output_type="max", binmode="true")
+    return stages + [gdal]
+
+
+def dem_equivalent(method: str | None, kind: str, pit_free: bool) -> str | None:
+    """Why a ``ws dem`` run has no PDAL pipeline (None when it has one): PDAL has no
+    natural-neighbour interpolation and no pit-free CHM."""
+    if pit_free:
+        return "the pit-free CHM has no PDAL stage"
+    if kind == "dtm" and method == "nn":
+        return "natural-neighbour interpolation has no PDAL stage (use --method tin or idw)"
+    return None
 
 
 def write_pipeline(stages: list[dict], path, overwrite: bool = False, inputs=()) -> Path:

@@ -223,18 +223,42 @@ def _names(source) -> str:
     return ", ".join(names[:3]) + (f" (+{len(names) - 3} more)" if len(names) > 3 else "")
 
 
+class _Selected(list):
+    """Input files (or clouds) of a DEM with the reading options every pass over them applies:
+    ``bounds`` (CRS units; a COPC file queried, a LAS/LAZ file filtered chunk by chunk) and the
+    COPC ``resolution`` (CRS units) or ``level``."""
+
+    def __init__(self, items, read_opts: dict):
+        super().__init__(items)
+        self.read_opts = read_opts
+
+
+def _select(source, read_opts: dict | None):
+    """``source`` with the reading options that are set (:class:`_Selected`), or as it is."""
+    opts = {k: v for k, v in (read_opts or {}).items() if v is not None}
+    if not opts:
+        return source
+    items = [source] if isinstance(source, (str, Path, Cloud)) else list(source)
+    if any(isinstance(c, Cloud) for c in items) and set(opts) != {"bounds"}:
+        raise InvalidInputError("resolution and level pick levels of a COPC file; a cloud in memory has none",
+                                "give bounds alone", field="read_opts")
+    return _Selected(items, opts)
+
+
 def _iter_clouds(source, chunk_size: int) -> Iterator[Cloud]:
     if isinstance(source, Cloud):
         yield source
         return
     paths = [source] if isinstance(source, (str, Path)) else list(source)
+    opts = getattr(source, "read_opts", {})
     from workstation.io import iter_chunks
+    from workstation.io.registry import _inside
 
     for p in paths:
         if isinstance(p, Cloud):
-            yield p
+            yield _inside(p, opts["bounds"]) if opts else p
         else:
-            yield from iter_chunks(p, chunk_size)
+            yield from iter_chunks(p, chunk_size, **opts)
 
 
 def _noise_free(c: Cloud) -> np.ndarray:
@@ -658,6 +682,22 @@ def _in_crs_units(params: DemParams, units) -> DemParams:
                    pit_free_thresholds=tuple(units.v_from_m(t) for t in params.pit_free_thresholds))
 
 
+def _box_grid(box, res: float) -> GridSpec:
+    """The grid of a ``--bounds`` box (CRS units): its edges snapped outward to multiples of the
+    cell ``res`` (CRS units), so its cells are cells of the whole DEM's grid (also aligned to
+    multiples) and a box already on multiples is the grid exactly (as ``gdalwarp -te``)."""
+    eps = 1e-9
+    c0, r0 = math.floor(box[0] / res + eps), math.floor(box[1] / res + eps)
+    c1, r1 = max(math.ceil(box[2] / res - eps), c0 + 1), max(math.ceil(box[3] / res - eps), r0 + 1)
+    return GridSpec(c0 * res, r1 * res, res, r1 - r0, c1 - c0)
+
+
+def _read_meta(source) -> dict:
+    """``{"read": {...}}``: the reading options (bounds, COPC resolution/level) a DEM was built with."""
+    opts = getattr(source, "read_opts", None)
+    return {"read": {k: list(v) if k == "bounds" else v for k, v in opts.items()}} if opts else {}
+
+
 def _unit_meta(res: float, res_m: float, units) -> dict:
     """Raster meta saying what the numbers mean: ``resolution`` is the cell in CRS units
     (``resolution_unit``), ``resolution_m`` the same in metres, ``units`` the CRS units (the
@@ -667,7 +707,7 @@ def _unit_meta(res: float, res_m: float, units) -> dict:
 
 
 def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None,
-              tile_cells: int = 4096, buffer_cells: int = 128) -> Raster:
+              tile_cells: int = 4096, buffer_cells: int = 128, read_opts: dict | None = None) -> Raster:
     """Grid a DSM, DTM or CHM from a cloud, a file or several files (one mosaic).
 
     Parameters
@@ -683,6 +723,12 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     buffer_cells : int
         Overlap of the tiles in cells; voids (buildings, lakes) narrower than this are filled
         exactly as in a single pass.
+    read_opts : dict, optional
+        ``bounds`` (xmin, ymin, xmax, ymax[, zmin, zmax], CRS units, inclusive): only the points
+        inside are read, and the grid covers the box (aligned to multiples of the cell, as a
+        whole DEM's cells are, so the two agree cell for cell away from the box's edges);
+        ``resolution`` (CRS units) / ``level``: a COPC file's levels of detail (see
+        :func:`workstation.io.read_cloud`).
 
     Returns
     -------
@@ -698,6 +744,8 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         The result has no valid cell.
     """
     t0 = time.perf_counter()
+    source = _select(source, read_opts)
+    box = getattr(source, "read_opts", {}).get("bounds")
     kind = params.kind
     method = params.method or ("tin" if kind == "dtm" else "highest")
     survey = None
@@ -721,7 +769,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         res = units.h_from_m(res_m)
         reason = "given"
     if grid is None:
-        grid = GridSpec.from_bounds(*survey.bounds, res)
+        grid = _box_grid(box, res) if box is not None else GridSpec.from_bounds(*survey.bounds, res)
     tiled = bool(tile_cells) and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells
     # out of core only the float32 result spans the grid; in memory the per-cell accumulators too;
     # a grid is sized by its points too (CELLS_PER_POINT), never by a bounding box alone
@@ -739,6 +787,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
             "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
             "seconds": round(time.perf_counter() - t0, 3),
             "params": {k: v for k, v in asdict(user_params).items() if v is not None},
+            **_read_meta(source),
         }
         if vrmse:
             meta["vertical_rmse"] = float(vrmse)
@@ -762,6 +811,9 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
             tacc.add(c.xyz[m, 0], c.xyz[m, 1], c.xyz[m, 2])
             if gacc is None:
                 n_used += int(m.sum())
+    if box is not None and n_used == 0:
+        raise InvalidInputError(f"no points to grid inside --bounds {','.join(f'{v:g}' for v in box)}",
+                                "compare the box with the files' bounds (ws info --summary FILE)", field="--bounds")
     if gacc is not None and not (gacc.count > 0).any():
         raise StageError("dem", "no ground points in the input", "classify ground first (ws ground) or check --ground-classes")
     if kind == "dtm":
@@ -782,6 +834,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
         **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used,
         "seconds": round(time.perf_counter() - t0, 3),
         "params": {k: v for k, v in asdict(user_params).items() if v is not None},
+        **_read_meta(source),
     }
     if vrmse:
         meta["vertical_rmse"] = float(vrmse)

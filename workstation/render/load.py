@@ -31,12 +31,18 @@ def is_mesh_file(path) -> bool:
     return ext in MESH_ONLY or (ext == ".ply" and ply_face_count(p) > 0)
 
 
-def load_product(path) -> Cloud | Mesh:
-    """A :class:`Mesh` for mesh files (PLY with faces, OBJ, glTF, OFF), else a :class:`Cloud`."""
+def load_product(path, **read_opts) -> Cloud | Mesh:
+    """A :class:`Mesh` for mesh files (PLY with faces, OBJ, glTF, OFF), else a :class:`Cloud`;
+    ``read_opts`` (``bounds`` in CRS units, COPC ``resolution``/``level``) select the points read
+    (:func:`workstation.io.read_cloud`) and apply to clouds only."""
+    read_opts = {k: v for k, v in read_opts.items() if v is not None}
     if is_mesh_file(path):
+        if read_opts:
+            raise InvalidInputError("--bounds, --resolution and --level select points of a cloud; this is a mesh",
+                                    "leave them out for a mesh", path=path, field="--" + next(iter(read_opts)))
         from workstation.io.mesh import read_mesh
 
         return read_mesh(path)
     from workstation.io import read_cloud
 
-    return read_cloud(path)
+    return read_cloud(path, **read_opts)
