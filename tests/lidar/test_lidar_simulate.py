@@ -262,3 +262,74 @@ def test_mls_drive_sees_road_and_both_sides():
     assert (side > 5).sum() > 100 and (side < -5).sum() > 100
     # the vehicle's own height above the road is the IMU height plus the lever arm (scanner 0.6 m higher)
     assert res.true_trajectory.position[:, 2].min() > float(scene.vertices[:, 2].min())
+
+
+def _three_lines(area=(-60, 60, -60, 60), altitude=150.0):
+    spec = FlightSpec(altitude=altitude, speed=50.0, swath=2 * altitude * np.tan(np.radians(20)), n_lines=3,
+                      overlap=0.5, run_in=0.0, heading_deg=0.0, oscillation=Oscillation.none())
+    return flight_lines(area, PLANE_Z, spec, np.random.default_rng(0))
+
+
+def test_line_bias_shifts_only_that_line_by_its_offset():
+    traj = _three_lines()
+    scan = ScanPattern("zigzag", prf=20_000, scan_frequency=40, fov_deg=40)
+    bias = (2, 0.02, -0.03, 0.10)
+    base = simulate(plane_scene(400, PLANE_Z), traj, scan, Sensor(subrays=1), ErrorModel.none(), seed=5)
+    moved = simulate(plane_scene(400, PLANE_Z), traj, scan, Sensor(subrays=1), ErrorModel.none(line_bias_m=(bias,)),
+                     seed=5)
+    sid = moved.cloud.attrs["point_source_id"]
+    assert [s.source_id for s in traj.segments] == [1, 2, 3] and set(np.unique(sid)) == {1, 2, 3}
+    np.testing.assert_array_equal(sid, base.cloud.attrs["point_source_id"])
+    d = moved.cloud.xyz - base.cloud.xyz
+    two = sid == 2
+    # a flat plane, perfect measurements: line 2 is 0.10 m higher (and 2 cm east, 3 cm south), the others unchanged
+    np.testing.assert_allclose(d[two], np.broadcast_to([0.02, -0.03, 0.10], d[two].shape), atol=1e-6)
+    np.testing.assert_allclose(d[~two], 0.0, atol=1e-6)
+    np.testing.assert_allclose(moved.cloud.xyz[two, 2], PLANE_Z + 0.10, atol=1e-3)
+    # the navigation solution written out carries the bias during line 2 only
+    seg = traj.segments[1]
+    t = moved.trajectory.time
+    inside, outside = (t > seg.t0) & (t < seg.t1), (t < traj.segments[0].t1)
+    np.testing.assert_allclose(moved.trajectory.position[inside] - traj.position[inside],
+                               np.broadcast_to([0.02, -0.03, 0.10], (int(inside.sum()), 3)), atol=1e-9)
+    np.testing.assert_allclose(moved.trajectory.position[outside], traj.position[outside], atol=1e-9)
+
+
+def test_line_bias_is_checked():
+    from workstation.core.errors import InvalidInputError
+
+    import tomllib
+
+    from workstation.lidar.survey import apply_overrides, default_survey
+
+    toml = tomllib.loads("[errors]\nline_bias_m = [[2, 0.0, 0.0, 0.1], [3, 0.05, 0, 0]]\n")  # a survey config
+    assert apply_overrides(default_survey("als"), toml).errors.line_bias_m == ((2, 0.0, 0.0, 0.1), (3, 0.05, 0.0, 0.0))
+    for bad in ([(0, 0, 0, 0.1)], [(2, 0, 0)], [(2.5, 0, 0, 0)], [(2, 0, 0, float("nan"))], [(2, 0, 0, 1), (2, 0, 0, 2)]):
+        with pytest.raises(InvalidInputError):
+            ErrorModel(line_bias_m=bad)
+    with pytest.raises(InvalidInputError, match="line 7"):
+        simulate(plane_scene(400, PLANE_Z), _one_line(), SCAN, Sensor(subrays=1),
+                 ErrorModel.none(line_bias_m=((7, 0, 0, 0.1),)), seed=3)
+
+
+def test_line_bias_cli_option(tmp_path, capsys):
+    import json
+
+    from workstation.cli.main import main
+    from workstation.io import read_cloud
+
+    base = ["simulate", "als", "--scene", "demo_small", "--no-errors", "--altitude", "150", "--lines", "2",
+            "--prf", "10000", "--scan-frequency", "20", "--subrays", "1", "--json"]
+    assert main([*base, "-o", str(tmp_path / "a.laz")]) == 0
+    assert main([*base, "-o", str(tmp_path / "b.laz"), "--line-bias", "2:0,0,0.25"]) == 0
+    capsys.readouterr()
+    a, b = read_cloud(tmp_path / "a.laz"), read_cloud(tmp_path / "b.laz")
+    two = b.attrs["point_source_id"] == 2
+    assert two.any() and (~two).any()
+    dz = b.xyz[:, 2] - a.xyz[:, 2]
+    np.testing.assert_allclose(dz[two], 0.25, atol=2e-3)  # LAS z scale 1 mm
+    np.testing.assert_allclose(dz[~two], 0.0, atol=2e-3)
+    for bad in ("2", "2:0,0", "x:0,0,1", "2:0,0,nan", "0:0,0,1"):
+        assert main([*base, "-o", str(tmp_path / "c.laz"), "--line-bias", bad]) == 2
+    assert "--line-bias" in capsys.readouterr().err
+    assert main([*base, "-o", str(tmp_path / "c.laz"), "--line-bias", "9:0,0,1"]) == 1  # no line 9 flown

@@ -20,6 +20,26 @@ def _triple(ctx, param, value):
     return parts
 
 
+def _line_bias(ctx, param, value):
+    """``LINE:dE,dN,dU`` (repeatable) -> ((line, dE, dN, dU), ...) in metres."""
+    import math
+
+    out = []
+    for v in value or ():
+        try:
+            line, rest = v.split(":")
+            sid = int(line)
+            d = tuple(float(a) for a in rest.split(","))
+        except ValueError:
+            raise click.BadParameter(f"'{v}' is not LINE:dE,dN,dU (e.g. 2:0,0,0.1)") from None
+        if len(d) != 3 or not all(math.isfinite(a) for a in d) or not 1 <= sid <= 65535:
+            raise click.BadParameter(f"'{v}': give a line id 1-65535 and three finite offsets in metres")
+        if sid in {o[0] for o in out}:
+            raise click.BadParameter(f"line {sid} is given twice")
+        out.append((sid, *d))
+    return tuple(out)
+
+
 def _xy(ctx, param, value):
     out = []
     for v in value or ():
@@ -65,6 +85,9 @@ def _xy(ctx, param, value):
 @click.option("--scan-angle-scale", type=FiniteFloatRange(-1.0, 1.0, min_open=True, max_open=True), default=None, help="Relative mirror-angle scale error (negative: smile).")
 @click.option("--scan-angle-offset", type=FiniteFloatRange(-90.0, 90.0, min_open=True, max_open=True), default=None, help="Mirror angle offset in degrees.")
 @click.option("--time-bias", type=finite_float, default=None, help="Scanner-to-navigation clock offset in seconds.")
+@click.option("--line-bias", "line_bias", multiple=True, callback=_line_bias, metavar="LINE:dE,dN,dU",
+              help="Navigation bias of one flight line (its point source id) east,north,up in metres, "
+                   "e.g. 2:0,0,0.1 raises line 2 by 10 cm (repeatable).")
 @click.option("--range-walk", type=nonneg_float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
 @click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
               help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
@@ -78,7 +101,7 @@ def _xy(ctx, param, value):
 def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
              scan_frequency, fov, h_step, v_step, stations, subrays, divergence, wavelength, max_returns, no_errors,
              range_noise, gnss_noise, gnss_bias, imu_noise, lever_arm_error, boresight_error, scan_angle_scale,
-             scan_angle_offset, time_bias, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
+             scan_angle_offset, time_bias, line_bias, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
     """Simulate an ALS, ULS, MLS or TLS survey of a synthetic scene.
 
     Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
@@ -141,7 +164,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
                       ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
                       ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
                       ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
-                      ("range_walk_m", range_walk)):
+                      ("range_walk_m", range_walk), ("line_bias_m", line_bias or None)):
         if val is not None:
             errors = replace(errors, **{name: val})
     vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle

@@ -32,8 +32,8 @@ For every pulse (vectorised in batches; no Python loop over pulses):
    saturating at ``saturation_power``.
 6. **Measurement and processing**: the recorded range gets Gaussian noise; the point is then
    georeferenced the way a user would: with the *encoder* angle, the *nominal* mounting and the
-   *navigation solution* (true trajectory plus GNSS noise and bias and IMU attitude noise,
-   read at the pulse time plus the time bias). Every error of :class:`ErrorModel` is therefore
+   *navigation solution* (true trajectory plus GNSS noise, bias and per-line bias and IMU
+   attitude noise, read at the pulse time plus the time bias). Every error of :class:`ErrorModel` is therefore
    visible the way it appears in real data (strip offsets, the smile of a scan-angle scale
    error, boresight tilts).
 
@@ -202,6 +202,13 @@ class ErrorModel:
         Amplitude-dependent range bias of leading-edge timing (range walk): a return at the
         detection threshold is ranged ``range_walk_m`` too long, a saturated one not at all,
         log-linear in received power in between. Default 0.02.
+    line_bias_m : tuple of (line_id, dE, dN, dU)
+        Navigation position bias per flight line (m, east / north / up), as a different GNSS
+        ambiguity fix per line gives: while the scanning segment of point source id ``line_id``
+        is flown, the navigation solution is offset by (dE, dN, dU), so that line's points move
+        rigidly by it (a strip shifted against its neighbours, what the swath-overlap DZ check
+        of the USGS Lidar Base Specification detects). Ids must be flown segments of the
+        trajectory; each at most once. Default () (none).
     """
 
     range_noise_m: float = 0.02
@@ -215,6 +222,10 @@ class ErrorModel:
     scan_angle_offset_deg: float = 0.0
     time_bias_s: float = 0.0
     range_walk_m: float = 0.02
+    line_bias_m: tuple = ()
+
+    def __post_init__(self):
+        object.__setattr__(self, "line_bias_m", _line_biases(self.line_bias_m))
 
     @classmethod
     def none(cls, **overrides) -> "ErrorModel":
@@ -224,6 +235,27 @@ class ErrorModel:
                  boresight_error_deg=(0.0, 0.0, 0.0), scan_angle_scale=0.0, scan_angle_offset_deg=0.0, time_bias_s=0.0, range_walk_m=0.0)
         z.update(overrides)
         return cls(**z)
+
+
+def _line_biases(value) -> tuple:
+    """``line_bias_m`` as a tuple of ``(int id, dE, dN, dU)``, checked (ids 1..65535, unique,
+    finite metres); a TOML list of lists is accepted."""
+    out, seen = [], set()
+    for item in value or ():
+        try:
+            sid, de, dn, du = item
+            sid_f, d = float(sid), tuple(float(v) for v in (de, dn, du))
+        except (TypeError, ValueError):
+            raise InvalidInputError(f"line bias {item!r} is not (line_id, dE, dN, dU)",
+                                    "e.g. (2, 0.0, 0.0, 0.1) for line 2 raised 10 cm", field="line_bias_m") from None
+        if not (sid_f.is_integer() and 1 <= sid_f <= 65535) or not np.all(np.isfinite(d)):
+            raise InvalidInputError(f"line bias {item!r}: the id must be an integer 1-65535 and the offsets "
+                                    "finite metres", field="line_bias_m")
+        if int(sid_f) in seen:
+            raise InvalidInputError(f"line {int(sid_f)} is biased twice", "give each line once", field="line_bias_m")
+        seen.add(int(sid_f))
+        out.append((int(sid_f), *d))
+    return tuple(out)
 
 
 @dataclass
@@ -443,7 +475,7 @@ def _truth(ret: dict, origins: np.ndarray, dirs: np.ndarray, origin: np.ndarray)
 
 
 def _nav_errors(traj: Trajectory, errors: ErrorModel, rng: np.random.Generator) -> Trajectory:
-    """The navigation solution: true trajectory plus GNSS noise/bias and IMU attitude noise."""
+    """The navigation solution: true trajectory plus GNSS noise/bias, per-line biases and IMU attitude noise."""
     t = traj.time
     k = t.size
     dpos = np.broadcast_to(np.asarray(errors.gnss_bias_m, float), (k, 3)).copy()
@@ -454,11 +486,29 @@ def _nav_errors(traj: Trajectory, errors: ErrorModel, rng: np.random.Generator) 
         white = rng.normal(0, 1, (knots.size, 3)) * sig
         for i in range(3):
             dpos[:, i] += np.interp(t, knots, white[:, i])
+    _add_line_biases(dpos, traj, errors.line_bias_m)
     drpy = np.zeros((k, 3))
     sa = np.radians(np.asarray(errors.imu_noise_deg, float))
     if np.any(sa > 0):
         drpy = rng.normal(0, 1, (k, 3)) * sa
     return traj.with_offsets(dpos, drpy)
+
+
+def _add_line_biases(dpos: np.ndarray, traj: Trajectory, biases: tuple) -> None:
+    """Add each line's (dE, dN, dU) to the navigation samples of its scanning segments, from the
+    last sample at or before the segment start to the first at or after its end, so every pulse
+    of the line is georeferenced with the full bias (turns between lines are not scanned)."""
+    t = traj.time
+    ids = sorted({s.source_id for s in traj.segments})
+    for sid, *d in biases:
+        segs = [s for s in traj.segments if s.source_id == sid]
+        if not segs:
+            raise InvalidInputError(f"line bias for line {sid}, but the trajectory flies lines {ids}",
+                                    "use the point source id of a flown line", field="line_bias_m")
+        for s in segs:
+            i0 = max(int(np.searchsorted(t, s.t0, "right")) - 1, 0)
+            i1 = min(int(np.searchsorted(t, s.t1, "left")), t.size - 1)
+            dpos[i0 : i1 + 1] += d
 
 
 def _to_map(rpy: np.ndarray, v_b: np.ndarray, trig=None) -> np.ndarray:
