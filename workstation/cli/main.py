@@ -41,6 +41,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "calibrate": ("workstation.cli.calibrate:calibrate", "Calibrate a camera (Zhang planar target or DLT) to CAMERA.json."),
     "sfm": ("workstation.cli.sfm:sfm", "Orient photos and build a sparse cloud (pycolmap); georeference with GCPs."),
     "run": ("workstation.cli.run:run", "Process a project (project.toml): every stage over every chunk, on a Dask cluster."),
+    "qc": ("workstation.cli.qc:qc", "Check a LiDAR delivery against USGS QL0-QL3 or ASPRS classes: format, density, voids, swath DZ, NVA/VVA."),
     "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU plane sweep or CUDA PatchMatch) and fusion."),
 }
 

@@ -8,7 +8,7 @@ from workstation.cli.options import allow_outside_option
 
 from .options import emit_json, json_option
 
-STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hillshade", "contours"]
+STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hillshade", "contours", "qc"]
 
 
 @click.command()

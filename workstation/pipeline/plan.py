@@ -3,7 +3,7 @@
 Stages, in the order data flows: ``index`` (each plain LAS/LAZ input binned by chunk once),
 ``points`` (the point stages on a chunk and its buffer), ``rasters`` (DEM and density tiles
 of a chunk), ``mosaic`` (one COG per product), then ``hillshade`` and ``contours`` of the
-DTM mosaic. Each task lists the tasks it depends on and carries a key (see
+DTM mosaic, and ``qc`` (the delivery checked as ``ws qc`` does, one streaming task). Each task lists the tasks it depends on and carries a key (see
 :mod:`.manifest`); the runner skips those done with the same key.
 """
 
@@ -15,7 +15,7 @@ from pathlib import Path
 from . import tasks as T
 from .manifest import Manifest, task_key
 
-PHASES = ("index", "points", "rasters", "mosaic", "hillshade", "contours")
+PHASES = ("index", "points", "rasters", "mosaic", "hillshade", "contours", "qc")
 
 
 @dataclass
@@ -97,8 +97,24 @@ def build_tasks(ctx: T.RunContext, plan, grid, manifest: Manifest) -> list[Task]
             tasks.append(task)
     raster_tasks = _raster_tasks(ctx, plan, grid, points_of, input_deps, inputs_of)
     tasks += raster_tasks
-    tasks += _mosaic_tasks(ctx, plan, raster_tasks)
+    mosaics = _mosaic_tasks(ctx, plan, raster_tasks)
+    tasks += mosaics
+    tasks += _qc_tasks(ctx, plan, list(points_of.values()), mosaics, file_hash)
     return tasks
+
+
+def _qc_tasks(ctx, plan, points, mosaics, file_hash) -> list[Task]:
+    """The QC of the run's point outputs (the input tiles without point stages) and its DTM:
+    one task after them all, taking the outputs that exist."""
+    if plan.qc is None:
+        return []
+    dtm = next((m for m in mosaics if m.id == "mosaic/dtm"), None)
+    deps = [*points, *([dtm] if dtm else [])]
+    p = plan.params_of("qc")
+    inputs = {} if points else dict(file_hash)
+    args = (ctx, plan.qc, _point_folder(plan), dtm.args[3] if dtm else None, str(ctx.out / "qc"))
+    return [Task("qc/delivery", "qc", T.qc_task, args, [d.id for d in deps],
+                 task_key("qc", p, list(inputs.values()), [d.key for d in deps]), p, barrier=True, inputs=inputs)]
 
 
 def _raster_tasks(ctx, plan, grid, points_of, input_deps, inputs_of) -> list[Task]:
@@ -151,9 +167,9 @@ def forced_phases(plan, rerun_from: str | None) -> set[str]:
         return set()
     phase = {"noise": "points", "ground": "points", "classify": "points", "hag": "points", "dem": "rasters",
              "density": "rasters", "hillshade": "hillshade", "contours": "contours", "index": "index",
-             "mosaic": "mosaic"}[rerun_from]
+             "mosaic": "mosaic", "qc": "qc"}[rerun_from]
     later = PHASES[PHASES.index(phase):]
-    if phase in ("hillshade", "contours"):
+    if phase in ("hillshade", "contours", "qc"):
         later = (phase,)
     return set(later)
 

@@ -55,7 +55,7 @@ from workstation.core.errors import InvalidInputError
 POINT_STAGES = ("noise", "ground", "classify", "hag")
 RASTER_STAGES = ("dem", "density")
 MOSAIC_STAGES = ("hillshade", "contours")
-USER_STAGES = POINT_STAGES + RASTER_STAGES + MOSAIC_STAGES
+USER_STAGES = POINT_STAGES + RASTER_STAGES + MOSAIC_STAGES + ("qc",)
 CLOUD_SUFFIXES = (".las", ".laz")
 
 

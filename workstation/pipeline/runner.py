@@ -267,7 +267,12 @@ def _submit(client, t, futures, manifest, options):
     if t.phase == "mosaic":  # the tiles that exist once every raster task has ended
         ctx, grid, product, out, meta = args
         args = (ctx, grid, P.tile_paths(manifest, t.deps, product), out, meta)
-    deps = [futures[d] for d in t.deps if d in futures and t.phase != "mosaic"]
+    if t.phase == "qc":  # the point outputs that exist once every point task has ended
+        ctx, stage, folder, dtm, out = args
+        clouds = [p for p in manifest.outputs_of(t.deps) if p.endswith(".laz")] if folder else [
+            str(x.path) for x in ctx.tiles]
+        args = (ctx, stage, sorted(clouds), dtm if dtm and Path(dtm).exists() else None, out)
+    deps = [futures[d] for d in t.deps if d in futures and not t.barrier]
     fut = client.submit(t.func, *args, *deps, key=f"{t.id}|{t.key[:12]}", pure=False, retries=options.retries)
     futures[t.id] = fut
     return fut
@@ -280,7 +285,7 @@ def _record(t, fut, futures, manifest, broken: set, run_id) -> dict:
             "finished": time.strftime("%Y-%m-%dT%H:%M:%S")}
     if fut.status == "finished":
         rec = {**base, "status": "done", **fut.result()}
-        if t.phase == "mosaic" and any(d in broken for d in t.deps):
+        if t.barrier and any(d in broken for d in t.deps):
             rec["status"] = "partial"  # built from the tiles there are; not 'done', so it reruns
     elif any(d in broken or (d in futures and futures[d].status in ("error", "cancelled")) for d in t.deps):
         rec = {**base, "status": "skipped", "error": "an upstream task failed"}

@@ -68,6 +68,34 @@ class DensityStage:
 
 
 @dataclass(frozen=True)
+class QCStage:
+    """``[stages.qc]``: check the run's point outputs (or its inputs, without point stages)
+    and its DTM as ``ws qc`` does, into ``OUT/qc/``.
+
+    Attributes
+    ----------
+    spec : str
+        ``usgs-ql0``…``usgs-ql3`` or ``asprs-<X>cm``.
+    checkpoints : str or None
+        Checkpoint CSV, relative to the project file.
+    checkpoint_rmse : float
+        The checkpoints' own vertical RMSE (m).
+    """
+
+    spec: str = "usgs-ql2"
+    checkpoints: str | None = None
+    checkpoint_rmse: float = 0.0
+
+    def __post_init__(self):
+        from workstation.qc.specs import get_spec
+
+        get_spec(self.spec)
+        if not (isinstance(self.checkpoint_rmse, (int, float)) and 0 <= self.checkpoint_rmse < 100):
+            raise InvalidInputError(f"checkpoint_rmse {self.checkpoint_rmse!r} m is outside 0-100 m",
+                                    field="checkpoint_rmse")
+
+
+@dataclass(frozen=True)
 class StagePlan:
     """Every stage a project asks for, parsed; None for a stage it does not ask for."""
 
@@ -79,6 +107,7 @@ class StagePlan:
     density: DensityStage | None = None
     hillshade: object = None
     contours: object = None
+    qc: QCStage | None = None
     ends_with: str | None = None
     stages: tuple = field(default_factory=tuple)
 
@@ -144,6 +173,21 @@ def _dem_stage(table: dict, path: Path) -> DemStage:
     return DemStage(tuple(kinds), params)
 
 
+def _qc_stage(table: dict, path: Path) -> QCStage:
+    """``[stages.qc]`` with its checkpoint file resolved against the project file's folder (and
+    kept inside it unless ``--allow-outside``)."""
+    from workstation.io.paths import resolve_inside
+
+    stage = dataclass_from_table(QCStage, table, "stages.qc", path)
+    if stage.checkpoints is None:
+        return stage
+    cps = resolve_inside(stage.checkpoints, Path(path).parent, source=path, field="stages.qc.checkpoints")
+    if not cps.is_file():
+        raise InvalidInputError(f"checkpoint file {stage.checkpoints} not found", path=path,
+                                field="stages.qc.checkpoints")
+    return dataclasses.replace(stage, checkpoints=str(cps))
+
+
 def parse_stages(project: Project, end_with: str | None = None) -> StagePlan:
     """The :class:`StagePlan` of ``project``, cut after ``end_with`` when given."""
     from workstation.ground.hag import HAGParams
@@ -177,6 +221,7 @@ def parse_stages(project: Project, end_with: str | None = None) -> StagePlan:
         "density": lambda tb: dataclass_from_table(DensityStage, tb, "stages.density", path),
         "hillshade": lambda tb: dataclass_from_table(HillshadeParams, tb, "stages.hillshade", path),
         "contours": lambda tb: dataclass_from_table(ContourParams, tb, "stages.contours", path),
+        "qc": lambda tb: _qc_stage(tb, path),
     }
     parsed = {s: parsers[s](t[s]) for s in wanted}
     if "hillshade" in parsed or "contours" in parsed:

@@ -337,3 +337,20 @@ def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dic
     cs = contour_lines(read_raster(dtm), params)
     write_geojson(cs, out, overwrite=True)
     return {"lines": len(cs.lines), "interval": cs.interval, "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
+
+
+# ----------------------------------------------------------------------------- quality control
+def qc_task(ctx: RunContext, stage, clouds: list, dtm: str | None, out: str) -> dict:
+    """``ws qc`` over the run's point outputs (or its inputs) and its DTM, into ``out``."""
+    from workstation.qc.run import QCParams, write_qc
+
+    t0 = time.perf_counter()
+    if not clouds:
+        raise StageError("qc", "no point file to check", "check the earlier stages' errors")
+    cps = None if stage.checkpoints is None else ctx.project_folder / stage.checkpoints
+    params = QCParams(spec=stage.spec, checkpoints=cps, checkpoint_rmse_m=float(stage.checkpoint_rmse),
+                      dem=Path(dtm) if dtm else None)
+    doc = write_qc(clouds, out, params, overwrite=True)
+    outs = [str(p) for p in sorted(Path(out).iterdir()) if p.is_file()]
+    return {"points": doc["points"], "spec": doc["verdict"]["spec"], "pass": doc["verdict"]["pass"],
+            "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": outs}

@@ -1,0 +1,117 @@
+"""`ws qc` benchmarks; one JSON line per result on stdout.
+
+  python scripts/bench_qc.py real   [--data DIR]            ws qc on bcts_1 and bcts_2 (three flight lines
+                                                          each): seconds, ANPD, coverage, voids, swath pairs
+  python scripts/bench_qc.py swath  [--bias 0.10]           a simulated ALS flight (ws simulate als) with and
+                                                          without line 2 raised by --bias metres (--line-bias):
+                                                          RMSDz of the pairs against the injected offset
+  python scripts/bench_qc.py scale  TILES... [--max-points N]   ws qc over a catalog (e.g. /work/bench/c200/tiles,
+                                                          made by bench_project.py catalog): seconds, points/s,
+                                                          peak memory
+
+DIR for the data defaults to ../shared/data (or $WS_SHARED_DATA).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+WS = str(Path(sys.executable).with_name("ws"))
+
+
+def emit(d):
+    print(json.dumps(d), flush=True)
+
+
+def data_dir(arg) -> Path:
+    return Path(arg or os.environ.get("WS_SHARED_DATA") or REPO.parent / "shared" / "data")
+
+
+def ws_qc(inputs, out: Path, *extra) -> tuple[dict, float, float]:
+    """Run `ws qc` as its own process: (the JSON document, seconds, peak RSS of the child in MB)."""
+    t0 = time.perf_counter()
+    r = subprocess.run([WS, "-q", "qc", *map(str, inputs), "-o", str(out), "--json", "--overwrite", *extra],
+                       capture_output=True, text=True)
+    dt = time.perf_counter() - t0
+    if r.returncode != 0:
+        raise SystemExit(f"ws qc failed ({r.returncode}): {r.stderr[-2000:]}")
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
+    return json.loads(r.stdout), dt, peak
+
+
+def _brief(doc: dict) -> dict:
+    return {"points": doc["points"], "anpd": doc["anpd"], "anps": doc["anps"], "coverage": doc["coverage"],
+            "voids": doc["voids"], "swaths": doc["swaths"], "findings": len(doc["findings"]),
+            "verdict": doc["verdict"]["pass"], "spec": doc["verdict"]["spec"]}
+
+
+def real(args):
+    d = data_dir(args.data) / "lidar"
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("bcts_1.laz", "bcts_2.laz"):
+            doc, dt, peak = ws_qc([d / name], Path(tmp) / name)
+            emit({"bench": "qc_real", "file": name, "seconds": round(dt, 2), "peak_mb": round(peak), **_brief(doc)})
+
+
+def swath(args):
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        for bias in (0.0, args.bias):
+            laz = tmp / f"flight_{bias:g}.laz"
+            cmd = [WS, "-q", "simulate", "als", "-o", str(laz), "--scene", args.scene, "--seed", "1", "--lines", "3"]
+            if bias:
+                cmd += ["--line-bias", f"2:0,0,{bias}"]
+            subprocess.run(cmd, check=True, capture_output=True)
+            doc, dt, _ = ws_qc([laz], tmp / f"qc_{bias:g}")
+            for p in doc["swaths"]:
+                involved = 2 in (p["a"], p["b"])
+                emit({"bench": "qc_swath", "injected_m": bias if involved else 0.0, "a": p["a"], "b": p["b"],
+                      "rmsdz": p["rmsdz"], "mean_dz": p["mean_dz"], "cells": p["cells"],
+                      "error_m": round(abs(p["rmsdz"] - (bias if involved else 0.0)), 4), "seconds": round(dt, 2)})
+
+
+def scale(args):
+    tiles = sorted(Path(t) for t in args.tiles)
+    if args.max_points:
+        from workstation.io.catalog import read_tile_info
+
+        keep, n = [], 0
+        for t in tiles:
+            if n >= args.max_points:
+                break
+            keep.append(t)
+            n += read_tile_info(t).point_count
+        tiles = keep
+    with tempfile.TemporaryDirectory() as tmp:
+        doc, dt, peak = ws_qc(tiles, Path(tmp) / "qc")
+        emit({"bench": "qc_scale", "files": len(tiles), "seconds": round(dt, 1),
+              "points_per_s": round(doc["points"] / dt), "peak_mb": round(peak), **_brief(doc) | {"swaths": len(doc["swaths"])}})
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    r = sub.add_parser("real")
+    r.add_argument("--data")
+    s = sub.add_parser("swath")
+    s.add_argument("--bias", type=float, default=0.10)
+    s.add_argument("--scene", default="rural")
+    c = sub.add_parser("scale")
+    c.add_argument("tiles", nargs="+")
+    c.add_argument("--max-points", type=int, default=0)
+    args = ap.parse_args()
+    sys.path.insert(0, str(REPO))
+    {"real": real, "swath": swath, "scale": scale}[args.cmd](args)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,282 @@
+"""``ws qc``: check a LiDAR delivery against a specification, in two streaming passes.
+
+The delivery's catalog comes from the file headers (:func:`workstation.io.catalog.build_catalog`:
+bounds, counts, one CRS). Pass 1 streams every file once through the checks that need nothing
+measured beforehand; its aggregate nominal point spacing (ANPS) then sizes the grid of pass 2
+(cells of 2×ANPS, as the USGS Lidar Base Specification grids density and swath separation).
+The checks are accumulators (:mod:`workstation.qc.context`), so memory is bounded by the grids
+and one chunk, whatever the number of points.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError
+from workstation.core.log import get_logger
+from workstation.io.registry import format_of, iter_chunks
+
+from .context import QCGrid
+
+log = get_logger(__name__)
+
+
+@dataclass(frozen=True)
+class QCParams:
+    """What ``ws qc`` checks and against which specification.
+
+    Attributes
+    ----------
+    spec : str
+        Specification name (:func:`workstation.qc.specs.get_spec`): ``usgs-ql0``…``usgs-ql3`` or
+        ``asprs-<X>cm``.
+    checkpoints : Path or None
+        Checkpoint CSV (id, x, y, z, land cover) in the delivery's CRS units.
+    checkpoint_rmse_m : float
+        The checkpoints' own vertical RMSE (m), combined into the Edition 2 accuracy.
+    dem : Path or None
+        A DEM GeoTIFF of the delivery to check against the checkpoints and the 3× rules.
+    surface_cell_m : float or None
+        Cell of the ground surface used by the classification checks (m); default the larger of
+        1 m and twice the header's mean point spacing.
+    chunk_size : int
+        Points read at a time.
+    """
+
+    spec: str = "usgs-ql2"
+    checkpoints: Path | None = None
+    checkpoint_rmse_m: float = 0.0
+    dem: Path | None = None
+    surface_cell_m: float | None = None
+    chunk_size: int = 2_000_000
+
+
+def _catalog(paths):
+    from workstation.io.catalog import build_catalog
+
+    for p in paths:
+        if format_of(p)[0] not in ("las", "laz"):
+            raise InvalidInputError("ws qc checks LAS/LAZ/COPC deliveries", "convert it first: ws convert IN OUT.laz",
+                                    path=p, field="INPUT")
+    return build_catalog(paths, inputs_hint="give the delivery's LAS/LAZ/COPC files")
+
+
+def _units(crs):
+    from workstation.io.crs import crs_units
+
+    return crs_units(crs)
+
+
+def _grid(cat, cell_m: float, units, what: str) -> QCGrid:
+    """A grid of ``cell_m`` metres over the catalog, refused when it would not fit in memory
+    (the delivery's extent is then too large for its spacing: check it in pieces)."""
+    from workstation.core.budget import check_grid
+
+    g = QCGrid.over(cat.bounds, cell_m / units.h, units)
+    check_grid(g.rows, g.cols, what=what, option="INPUT extent", bytes_per_cell=64.0,
+               path=", ".join(t.path.name for t in cat.tiles[:3]))
+    return g
+
+
+def _header_spacing_m(cat, units) -> float:
+    """Mean point spacing (m) over the catalog's extent, from the headers alone."""
+    x0, y0, x1, y1 = cat.bounds
+    area = max((x1 - x0) * (y1 - y0), 1e-12) * units.h**2
+    return math.sqrt(area / max(cat.point_count, 1))
+
+
+def _stream(cat, checks, chunk_size: int, advance, per_file=None, unreadable=None) -> None:
+    """Feed every chunk of every file to ``checks`` (``add(chunk, source)``) and to the file's
+    own check in ``per_file`` ({path: check with ``add(chunk)``}). A file whose points cannot be
+    read (a header count the data does not hold) is recorded in ``unreadable`` ({path: reason})
+    and left out; the other files go on."""
+    unreadable = {} if unreadable is None else unreadable
+    for t in cat.tiles:
+        src = str(t.path)
+        if src in unreadable:
+            continue
+        own = (per_file or {}).get(src)
+        try:
+            for chunk in iter_chunks(t.path, chunk_size):
+                if own is not None:
+                    own.add(chunk)
+                for c in checks:
+                    c.add(chunk, src)
+                advance(chunk.n)
+        except InvalidInputError as exc:
+            unreadable[src] = str(exc)
+
+
+def _unreadable_findings(unreadable: dict) -> list[dict]:
+    from .context import Finding
+
+    return [Finding("format", "error", f, "points", "readable point records", "unreadable",
+                    f"the points could not be read, so the file is left out of every other check: {why}").to_dict()
+            for f, why in unreadable.items()]
+
+
+def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
+    """Check the delivery ``paths`` and write its maps into ``out_dir`` (an existing folder).
+
+    Returns
+    -------
+    dict
+        The QC document: ``points``, ``anpd`` (pts/m²), ``anps`` (m), ``coverage``, ``voids``,
+        ``swaths``, ``nva``, ``vva`` (m or None), ``verdict``, ``findings`` and one section per
+        check; every length in metres.
+    """
+    from workstation.core.progress import progress_bar
+
+    from .specs import get_spec
+
+    spec = get_spec(params.spec)
+    t0 = time.perf_counter()
+    paths = [Path(p) for p in paths]
+    cat = _catalog(paths)
+    units = _units(cat.crs)
+    cps = _read_checkpoints(params)
+    surface_cell = params.surface_cell_m or max(1.0, 2.0 * _header_spacing_m(cat, units))
+    fmt, dens, cls1 = _pass1_checks(cat, units, surface_cell)
+    unreadable: dict = {}
+    with progress_bar("qc pass 1 of 2", cat.point_count, "points") as advance:
+        _stream(cat, [dens, cls1], params.chunk_size, advance, per_file=fmt, unreadable=unreadable)
+    density = dens.result()
+    anps = density.get("anps")
+    if not anps or not np.isfinite(anps):
+        raise InvalidInputError("no first returns to measure the point spacing", "check the return numbers",
+                                path=paths[0], field="return_number")
+    grid2 = _grid(cat, 2.0 * anps, units, "2×ANPS coverage grid")
+    cov, sw, cls2, cpp = _pass2_checks(grid2, anps, cls1, cps, units, spec)
+    with progress_bar("qc pass 2 of 2", cat.point_count, "points") as advance:
+        _stream(cat, [c for c in (cov, sw, cls2, cpp) if c is not None], params.chunk_size, advance,
+                unreadable=unreadable)
+    doc = _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params)
+    doc["findings"] = _unreadable_findings(unreadable) + doc["findings"]
+    doc["maps"] = _write_maps(out_dir, cat.crs, cov, sw)
+    from .specs import verdict
+
+    doc["verdict"] = verdict(spec, doc)
+    doc["seconds"] = round(time.perf_counter() - t0, 2)
+    return doc
+
+
+def _read_checkpoints(params: QCParams):
+    if params.checkpoints is None:
+        return None
+    from .accuracy import read_checkpoints
+
+    return read_checkpoints(params.checkpoints)
+
+
+def _pass1_checks(cat, units, surface_cell_m: float):
+    from .classes import ClassParams, ClassPass1, class_grid
+    from .coverage import DensityPass
+    from .validate import FormatCheck
+
+    fmt = {str(t.path): FormatCheck(t.path) for t in cat.tiles}
+    cp = ClassParams(cell_m=surface_cell_m)
+    return fmt, DensityPass(units), ClassPass1(class_grid(cat.bounds, units, cp), cp)
+
+
+def _pass2_checks(grid2, anps, cls1, cps, units, spec):
+    """The pass-2 checks, their limits taken from the specification."""
+    from .accuracy import CheckpointPass
+    from .coverage import CoverageParams, CoveragePass
+    from .swath import SwathParams, SwathPass
+
+    sp = SwathParams(**{k: v for k, v in (("rmsdz_limit_m", spec.rmsdz_max), ("max_dz_limit_m", spec.max_dz),
+                                          ("precision_limit_m", spec.intraswath_max)) if v is not None})
+    cpp = CheckpointPass(cps, units) if cps is not None else None
+    return (CoveragePass(grid2, anps, CoverageParams(required_coverage=spec.coverage_min)), SwathPass(grid2, sp),
+            cls1.second_pass(), cpp)
+
+
+def _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params) -> dict:
+    """Assemble the QC document from the checks' results (lengths in metres)."""
+    from .classes import class_checks, class_findings
+
+    coverage, swath = cov.result(), sw.result()
+    classes = class_checks(cls1, cls2)
+    accuracy = _accuracy(cpp, params) if cpp is not None else None
+    dem = _dem_accuracy(params, cps, density) if params.dem is not None else None
+    findings = [f.to_dict() for c in fmt.values() for f in c.findings()]
+    for c in (dens, cov, sw):
+        findings += [f.to_dict() for f in c.findings()]
+    findings += [f.to_dict() for f in class_findings(classes)]
+    if cpp is not None:
+        findings += [f.to_dict() for f in getattr(cpp, "findings", lambda: [])()]
+    return {
+        "files": [str(t.path) for t in cat.tiles], "points": int(cat.point_count), "crs": cat.crs,
+        "units": units.to_dict(), "anpd": density.get("anpd"), "anps": density.get("anps"),
+        "coverage": coverage.get("coverage"), "voids": coverage.get("voids"),
+        "swaths": swath.get("swaths", []),
+        "nva": _pick(accuracy, "asprs2014", "nva"), "vva": _pick(accuracy, "asprs2014", "vva"),
+        "format": {k: c.result() for k, c in fmt.items()},
+        "density": density, "coverage_detail": coverage, "swath": swath, "classes": classes,
+        "accuracy": accuracy, "dem_accuracy": dem, "findings": findings,
+    }
+
+
+def _pick(d, *keys):
+    for k in keys:
+        if not isinstance(d, dict) or d.get(k) is None:
+            return None
+        d = d[k]
+    return d
+
+
+def _accuracy(cpp, params: QCParams) -> dict:
+    from .accuracy import vertical_accuracy
+
+    table = cpp.result()
+    rows = [r for r in table["checkpoints"] if r.get("dz") is not None]
+    dz = np.array([r["dz"] for r in rows], float)
+    veg = np.array([bool(r["vegetated"]) for r in rows], bool)
+    acc = vertical_accuracy(dz, veg, checkpoint_rmse_m=params.checkpoint_rmse_m, ids=[r["id"] for r in rows])
+    return {**acc, "checkpoints": table["checkpoints"], "unmatched": table.get("unmatched", [])}
+
+
+def _dem_accuracy(params: QCParams, cps, density) -> dict:
+    from .accuracy import dem_accuracy, three_x_rule
+
+    d = dem_accuracy(params.dem, cps, checkpoint_rmse_m=params.checkpoint_rmse_m) if cps is not None else {}
+    cell_m = d.get("cell_m") if d else None
+    if cell_m is None:
+        from workstation.io.crs import raster_units
+        from workstation.io.geotiff import read_raster
+
+        r = read_raster(params.dem, band=1)
+        cell_m = abs(r.transform[0]) * raster_units(r).h
+        d = {**d, "cell_m": cell_m}
+    d["rules"] = three_x_rule(cell_m, _pick(d, "rmsez"), density.get("anps"),
+                              checkpoint_rmse_m=params.checkpoint_rmse_m or None)
+    return d
+
+
+def _write_maps(out_dir: Path, crs, cov, sw) -> dict:
+    """The maps of the checks (density, voids, DZ) in ``out_dir``; names relative to it."""
+    maps = {}
+    for check in (cov, sw):
+        for name, path in check.write(Path(out_dir), crs).items():
+            maps[name] = Path(path).name
+    return maps
+
+
+def write_qc(paths, out_dir, params: QCParams = QCParams(), overwrite: bool = False) -> dict:
+    """:func:`run_qc` into the report folder ``out_dir``: ``report.html``, ``qc.json`` and the
+    maps, built beside it and swapped in whole (nothing half-written is ever left)."""
+    from workstation.core.jsonutil import dumps
+    from workstation.io.atomic import atomic_dir
+
+    from .report import write_html
+
+    with atomic_dir(out_dir, overwrite=overwrite) as tmp:
+        doc = run_qc(paths, tmp, params)
+        (tmp / "qc.json").write_text(dumps(doc, indent=1))
+        write_html(doc, tmp / "report.html", tmp)
+    return doc
