@@ -43,7 +43,11 @@ BASE = {
     "filter": ("filter", "cloud.laz", "-o", "f.laz", "--expr", "Classification == 2"),
     "thin": ("thin", "cloud.laz", "-o", "t.laz", "--voxel", "2"),
     "tile": ("tile", "cloud.laz", "-o", "tiles_out", "--size", "30"),
+    "qc": ("qc", "cloud.laz", "-o", "qcdir"),
 }
+# what ws qc writes into its report folder
+QC_FILES = tuple(f"qcdir/{f}" for f in ("qc.json", "report.html", "density.tif", "voids.tif", "voids.geojson",
+                                        "dz.tif", "dz_values.tif"))
 # the file each command writes in BASE (for the output cases)
 WRITES = {"convert": "out.las", "ground": "out.laz", "classify": "out.laz", "dem": "out.tif", "hillshade": "hs.tif",
           "contours": "c.geojson", "mesh": "out.ply", "render": "out.png", "register": "reg.laz", "merge": "m.laz",
@@ -109,12 +113,13 @@ def reader_cases() -> list:
         "convert": lambda f: ("convert", f, "out.laz"),
         "ground": lambda f: ("ground", f, "-o", "out.laz"),
         "dem": lambda f: ("dem", f, "-o", "out.tif", "--resolution", "1"),
+        "qc": lambda f: ("qc", f, "-o", "qcdir"),
     }
     for name in ("cloud.las", "cloud.laz"):
         for mut, dmg, expect in _las_mutations(name):
             for cmd, argv in commands.items():
                 cases.append(Case(f"read-{name}-{mut}-{cmd}", argv(name), dmg, expect, names=(name,),
-                                  outputs=("out.laz", "out.tif")))
+                                  outputs=("out.laz", "out.tif", *QC_FILES)))
     for name in ("cloud.ply", "cloud.pcd", "cloud.xyz"):
         for mut, dmg, expect in _text_mutations(name, None):
             for cmd in ("info", "ground"):
@@ -153,6 +158,8 @@ def text_file_cases() -> list:
                  names=("gcp.csv",)),
             Case(f"dlt-{mut}-calibrate", ("calibrate", "dlt", "points.csv", "--image-size", "640x480", "-o", "cam.json"),
                  write("points.csv", data), names=("points.csv",)),
+            Case(f"checkpoints-{mut}-qc", (*BASE["qc"], "--checkpoints", "cps.csv"), write("cps.csv", data),
+                 names=("cps.csv",)),
         ]
     cases += [
         Case("pairs-two-register", (*BASE["register"], "--pairs", "pairs.csv", "--method", "pairs"),
@@ -172,6 +179,11 @@ def text_file_cases() -> list:
              names=("project.toml",)),
         Case("project-no-match-run", BASE["run"], write("project.toml", b"[inputs]\nclouds = ['none/*.laz']\n"),
              names=("project.toml",)),
+        Case("checkpoints-words-qc", (*BASE["qc"], "--checkpoints", "cps.csv"),
+             write("cps.csv", b"id,x,y,z,cover\ncp1,abc,4000020,100,open terrain\n"), names=("cps.csv",)),
+        Case("checkpoints-cover-qc", (*BASE["qc"], "--checkpoints", "cps.csv"),
+             write("cps.csv", b"id,x,y,z,cover\ncp1,500020,4000020,100,lava lamp\n"), names=("cps.csv",)),
+        Case("spec-unknown-qc", (*BASE["qc"], "--spec", "usgs-ql9"), names=("--spec",)),
         Case("dlt-degenerate-calibrate", ("calibrate", "dlt", "points.csv", "--image-size", "640x480", "-o", "cam.json"),
              write("points.csv", b"".join(b"p%d %d 0 0 %d 0\n" % (i, i, i) for i in range(12))), names=("points.csv",)),
     ]

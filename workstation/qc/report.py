@@ -18,6 +18,7 @@ _CSS = """body{font-family:sans-serif;margin:2em;max-width:72em}table{border-col
 td,th{border:1px solid #ccc;padding:.2em .5em;text-align:left}th{background:#eee}.pass{color:#060;font-weight:bold}
 .fail{color:#b00;font-weight:bold}.na{color:#777}figure{display:inline-block;margin:.5em}img{max-width:36em}"""
 MAX_FINDINGS = 500
+MAX_MAP_PIXELS = 1200  # the longer side of a map as drawn in the page
 
 
 def _verdict(v: dict) -> str:
@@ -55,7 +56,8 @@ def _raster_figure(path: Path, title: str, cmap: str = "viridis", label: str = "
     import rasterio
 
     with rasterio.open(path) as src:
-        a = src.read(masked=True)
+        step = max(1, -(-max(src.height, src.width) // MAX_MAP_PIXELS))  # decimated: a picture, not the data
+        a = src.read(out_shape=(src.count, max(1, src.height // step), max(1, src.width // step)), masked=True)
         b = src.bounds
     fig, ax = plt.subplots(figsize=(6, 5))
     ext = (b.left, b.right, b.bottom, b.top)
