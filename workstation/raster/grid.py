@@ -18,7 +18,9 @@ The TIN machinery is vectorised numpy (no Python loop over points or triangles):
   circumcircle and its corners lie on the void rim, so it is also a triangle of the rim
   triangulation: the fill equals a full-TIN interpolation there.
 * :func:`rasterize_triangles` — barycentric linear interpolation of triangles at the cell
-  centres they cover, bucketed by triangle size so that each bucket is one array operation.
+  centres they cover, grouped by bounding-box size so that each group is one array operation;
+  triangles whose bounding box holds no cell to fill are skipped (most rim triangles of a
+  void fill lie between occupied cells).
 """
 
 from __future__ import annotations
@@ -102,7 +104,11 @@ class GridSpec:
 
 
 def _bary(p0u, p0v, p1u, p1v, p2u, p2v, qu, qv):
-    """Barycentric coordinates of (qu, qv) in triangles (arrays broadcast); den 0 -> nan."""
+    """Barycentric coordinates of (qu, qv) in triangles (arrays broadcast); den 0 -> nan.
+
+    The reference formula: :func:`lattice_tin` and :func:`rasterize_triangles` evaluate it with
+    the query-independent terms hoisted out, operation for operation (bit-identical results).
+    """
     den = (p1v - p2v) * (p0u - p2u) + (p2u - p1u) * (p0v - p2v)
     with np.errstate(divide="ignore", invalid="ignore"):
         l0 = ((p1v - p2v) * (qu - p2u) + (p2u - p1u) * (qv - p2v)) / den
@@ -157,25 +163,54 @@ def lattice_tin(du, dv, z, valid, max_edge: float | None = None) -> np.ndarray:
     ad = (U["D"] - U["A"]) ** 2 + (V["D"] - V["A"]) ** 2 <= (U["C"] - U["B"]) ** 2 + (V["C"] - V["B"]) ** 2
     # triangle 1: (A, B, D) if AD else (A, B, C); triangle 2: (A, D, C) if AD else (B, D, C)
     def pick(k_ad, k_bc, arr):
-        return np.where(ad, arr[k_ad], arr[k_bc])
+        return arr[k_ad] if k_ad == k_bc else np.where(ad, arr[k_ad], arr[k_bc])
 
     tris = []
     for corners in ((("A", "A"), ("B", "B"), ("D", "C")), (("A", "B"), ("D", "D"), ("C", "C"))):
         tu = [pick(a, b, U) for a, b in corners]
         tv = [pick(a, b, V) for a, b in corners]
-        tz = [pick(a, b, Z) for a, b in corners]
+        tz = [np.ascontiguousarray(pick(a, b, Z)) for a, b in corners]
         ok = qvalid & _edges_ok(tu, tv, max_edge)
-        tris.append((tu, tv, tz, ok))
+        # the terms of _bary that do not depend on the query point, evaluated as _bary does
+        (p0u, p1u, p2u), (p0v, p1v, p2v) = tu, tv
+        a0, b0, a1, b1 = p1v - p2v, p2u - p1u, p2v - p0v, p0u - p2u
+        den = a0 * b1 + b0 * (p0v - p2v)
+        tris.append((a0, b0, a1, b1, den, p2u, p2v, tz, ok))
     for k in ("A", "B", "C", "D"):
         qu, qv = base[k]
         view = out[sl[k]]
-        for tu, tv, tz, ok in tris:
-            l0, l1, l2 = _bary(tu[0], tv[0], tu[1], tv[1], tu[2], tv[2], qu, qv)
+        for a0, b0, a1, b1, den, p2u, p2v, tz, ok in tris:
+            x, y = qu - p2u, qv - p2v
+            with np.errstate(divide="ignore", invalid="ignore"):
+                l0 = (a0 * x + b0 * y) / den
+                l1 = (a1 * x + b1 * y) / den
+                l2 = 1.0 - l0 - l1
             inside = ok & (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS) & np.isnan(view)
-            if inside.any():
+            i = np.flatnonzero(inside)
+            if len(i):
                 with np.errstate(invalid="ignore"):  # NaN corners lie outside `inside`
-                    view[inside] = (l0 * tz[0] + l1 * tz[1] + l2 * tz[2])[inside]
+                    view[inside] = l0.ravel()[i] * tz[0].ravel()[i] + l1.ravel()[i] * tz[1].ravel()[i] + l2.ravel()[i] * tz[2].ravel()[i]
     return out
+
+
+# stencil sides of rasterize_triangles: 1, 2, 3, 4, 6, 8, 12, ... (at most 1.5x a box side)
+_STENCIL_SIZES = np.unique(np.concatenate([1 << np.arange(32, dtype=np.int64), 3 << np.arange(31, dtype=np.int64)]))
+
+
+def _box_has_any(mask: np.ndarray, vmin, vmax, umin, umax) -> np.ndarray:
+    """Whether each inclusive box ``[vmin, vmax] x [umin, umax]`` of ``mask`` holds a True cell.
+
+    A summed-area table of ``mask``: O(cells) once, then O(1) per box. The boxes must lie
+    inside the grid and be non-empty.
+    """
+    R, C = mask.shape
+    sat = np.zeros((R + 1, C + 1), np.int32 if R * C < 2**31 else np.int64)
+    sat[1:, 1:] = mask
+    np.cumsum(sat, axis=1, out=sat)
+    np.cumsum(sat, axis=0, out=sat)
+    flat, W = sat.ravel(), C + 1
+    lo_v, hi_v = vmin * W, (vmax + 1) * W
+    return (flat.take(hi_v + umax + 1) - flat.take(lo_v + umax + 1) - flat.take(hi_v + umin) + flat.take(lo_v + umin)) > 0
 
 
 def rasterize_triangles(tri_u, tri_v, tri_z, out, target=None, chunk: int = 2_000_000) -> int:
@@ -191,50 +226,109 @@ def rasterize_triangles(tri_u, tri_v, tri_z, out, target=None, chunk: int = 2_00
         Written in place where a triangle covers a cell centre (and ``target`` is True).
     target : (rows, cols) bool, optional
         Cells that may be written.
+    chunk : int
+        Bound on the cells evaluated by one array operation (temporary memory).
 
     Returns
     -------
     int
-        Number of cells written.
+        Number of (triangle, cell) writes: a cell centre on an edge shared by two triangles
+        counts twice.
+
+    Notes
+    -----
+    Triangles whose bounding box holds no ``target`` cell are dropped up front (a
+    summed-area table of ``target``): they would write nothing. The others are evaluated over
+    their bounding box rounded up, in each direction separately, to 1, 2, 3, 4, 6, 8, 12, ...
+    cells (so a long thin triangle costs about its box, not the square of its longer side). The
+    arithmetic per cell is that of :func:`_bary`, term for term. A cell centre covered
+    by several triangles (on a shared edge, within ``_EPS``) takes the value of the last of
+    them in the order (size class ``ceil(log2(max(w, h)))`` of the box, then input index);
+    that order is kept by a per-cell rank of the last write, so the result does not depend
+    on how the work is grouped.
     """
     R, C = out.shape
     if len(tri_u) == 0:
         return 0
-    umin = np.ceil(tri_u.min(1) - _EPS).astype(np.int64)
-    umax = np.floor(tri_u.max(1) + _EPS).astype(np.int64)
-    vmin = np.ceil(tri_v.min(1) - _EPS).astype(np.int64)
-    vmax = np.floor(tri_v.max(1) + _EPS).astype(np.int64)
+    # corner-wise min/max: the same values as .min(1)/.max(1), much faster on (m, 3)
+    umin = np.ceil(np.minimum(np.minimum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) - _EPS).astype(np.int64)
+    umax = np.floor(np.maximum(np.maximum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) + _EPS).astype(np.int64)
+    vmin = np.ceil(np.minimum(np.minimum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) - _EPS).astype(np.int64)
+    vmax = np.floor(np.maximum(np.maximum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) + _EPS).astype(np.int64)
     umin = np.maximum(umin, 0)
     vmin = np.maximum(vmin, 0)
     umax = np.minimum(umax, C - 1)
     vmax = np.minimum(vmax, R - 1)
     w = umax - umin + 1
     h = vmax - vmin + 1
-    keep = (w > 0) & (h > 0)
-    size = np.maximum(w, h)
-    bucket = np.zeros(len(size), dtype=np.int64)
-    bucket[keep] = np.ceil(np.log2(np.maximum(size[keep], 1))).astype(np.int64)
+    keep = np.flatnonzero((w > 0) & (h > 0))
+    if target is not None:
+        target = np.ascontiguousarray(target, dtype=bool)
+        if len(keep):
+            keep = keep[_box_has_any(target, vmin[keep], vmax[keep], umin[keep], umax[keep])]
+    if len(keep) == 0:
+        return 0
+    umin, umax, vmin, vmax, w, h = umin[keep], umax[keep], vmin[keep], vmax[keep], w[keep], h[keep]
+    tu, tv, tz = tri_u[keep], tri_v[keep], tri_z[keep]
+    # write order of a cell covered by several triangles: size class, then input index
+    size_class = np.ceil(np.log2(np.maximum(np.maximum(w, h), 1))).astype(np.int64)
+    rdt = np.int32 if len(keep) < 2**31 - 1 else np.int64
+    rank = np.empty(len(keep), rdt)
+    rank[np.argsort(size_class, kind="stable")] = np.arange(len(keep), dtype=rdt)
+    # the terms of _bary that depend on the triangle only, evaluated as _bary does
+    p0u, p1u, p2u = tu[:, 0], tu[:, 1], tu[:, 2]
+    p0v, p1v, p2v = tv[:, 0], tv[:, 1], tv[:, 2]
+    a0, b0 = p1v - p2v, p2u - p1u
+    a1, b1 = p2v - p0v, p0u - p2u
+    den = a0 * b1 + b0 * (p0v - p2v)
+    last = np.full(R * C, -1, rdt)  # rank of the triangle that wrote each cell
+    tflat = None if target is None else target.ravel()
     written = 0
-    for b in np.unique(bucket[keep]):
-        idx = np.flatnonzero(keep & (bucket == b))
-        s = 1 << int(b)
-        ov, ou = np.divmod(np.arange(s * s), s)
-        step = max(1, chunk // (s * s))
-        for start in range(0, len(idx), step):
-            I = idx[start : start + step]
-            cu = umin[I, None] + ou[None, :]
-            cv = vmin[I, None] + ov[None, :]
-            m = (cu <= umax[I, None]) & (cv <= vmax[I, None])
-            tu, tv, tz = tri_u[I], tri_v[I], tri_z[I]
-            l0, l1, l2 = _bary(tu[:, 0:1], tv[:, 0:1], tu[:, 1:2], tv[:, 1:2], tu[:, 2:3], tv[:, 2:3], cu, cv)
+    sizes = _STENCIL_SIZES
+    kw = np.searchsorted(sizes, w)
+    kh = np.searchsorted(sizes, h)
+    group = kh * len(sizes) + kw
+    order = np.lexsort((rank, group))
+    umin_f, umax_f = umin.astype(np.float64), umax.astype(np.float64)
+    vmin_f, vmax_f = vmin.astype(np.float64), vmax.astype(np.float64)
+    oflat = out.reshape(-1) if out.flags.c_contiguous else None
+    for g in np.split(order, np.flatnonzero(np.diff(group[order])) + 1):
+        sw, sh = int(sizes[kw[g[0]]]), int(sizes[kh[g[0]]])
+        ov, ou = np.divmod(np.arange(sw * sh, dtype=np.float64), sw)
+        step = max(1, chunk // (sw * sh))
+        for start in range(0, len(g), step):
+            I = g[start : start + step]
+            # cell centres as floats (exact integers): the same differences as int - float
+            cu = umin_f[I, None] + ou
+            cv = vmin_f[I, None] + ov
+            m = (cu <= umax_f[I, None]) & (cv <= vmax_f[I, None])
+            qu = cu - p2u[I, None]
+            qv = cv - p2v[I, None]
+            d = den[I, None]
+            with np.errstate(divide="ignore", invalid="ignore"):  # zero-area triangles: nan/inf
+                l0 = (a0[I, None] * qu + b0[I, None] * qv) / d
+                l1 = (a1[I, None] * qu + b1[I, None] * qv) / d
+                l2 = 1.0 - l0 - l1
             m &= (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS)
-            if target is not None:
-                m[m] = target[cv[m], cu[m]]
-            if not m.any():
+            k = np.flatnonzero(m)
+            f = (cv.ravel()[k] * C + cu.ravel()[k]).astype(np.int64)
+            if tflat is not None:
+                hit = tflat.take(f)
+                k, f = k[hit], f[hit]
+            if len(k) == 0:
                 continue
-            val = l0 * tz[:, 0:1] + l1 * tz[:, 1:2] + l2 * tz[:, 2:3]
-            out[cv[m], cu[m]] = val[m]
-            written += int(m.sum())
+            written += len(k)
+            t = I[k // (sw * sh)]
+            with np.errstate(invalid="ignore"):
+                val = l0.ravel()[k] * tz[t, 0] + l1.ravel()[k] * tz[t, 1] + l2.ravel()[k] * tz[t, 2]
+            rk = rank[t]
+            np.maximum.at(last, f, rk)  # well defined for repeated cells, unlike last[f] = rk
+            win = last.take(f) == rk  # one write per cell: its highest-ranked triangle
+            f, val = f[win], val[win]
+            if oflat is not None:
+                oflat[f] = val
+            else:
+                out[f // C, f % C] = val
     return written
 
 
