@@ -105,6 +105,10 @@ def test_verdict_lists_each_criterion_and_fails_ql1_density(report):
     assert anpd["threshold"] == 8.0 and anpd["pass"] is False  # 4 pts/m² < QL1's 8
     assert v["pass"] is False
     assert all(set(c) >= {"name", "value", "threshold", "pass"} for c in v["criteria"])
+    cov = next(c for n, c in names.items() if n.startswith("cells of 2×ANPS"))
+    assert cov["value"] == pytest.approx(doc["coverage"]) and cov["pass"] is True
+    rms = next(c for n, c in names.items() if n.startswith("interswath RMSDz"))
+    assert rms["value"] == pytest.approx(SHIFT, abs=0.01) and rms["pass"] == (rms["value"] <= 0.08)
 
 
 def test_report_folder_holds_the_page_the_document_and_the_maps(report):

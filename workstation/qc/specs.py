@@ -120,7 +120,7 @@ def _get(d: dict | None, *keys):
 
 def verdict(spec: Spec, results: dict) -> dict:
     """The specification's table measured on ``results`` (the QC result document, lengths in m)."""
-    density, coverage, swath = results.get("density"), results.get("coverage"), results.get("swath")
+    density, coverage, swath = results.get("density"), results.get("coverage_detail"), results.get("swath")
     acc, dem = results.get("accuracy"), results.get("dem_accuracy")
     pairs = [p for p in (_get(swath, "swaths") or []) if p.get("cells", 0) > 0]
     intra = [s["precision_m"] for s in (_get(swath, "intraswath") or []) if s.get("precision_m") is not None]
