@@ -7,13 +7,13 @@ PIP := $(VENV)/bin/pip
 STAMP := $(VENV)/.installed
 PYTEST_ARGS ?=
 
-.PHONY: demo test install sysdeps bench clean
+.PHONY: demo test install sysdeps bench clean docs docs-pages docs-examples
 
 $(STAMP): pyproject.toml
 	@$(MAKE) --no-print-directory sysdeps
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PIP) install -q --upgrade pip setuptools wheel
-	$(PIP) install -q -e ".[test]"
+	$(PIP) install -q -e ".[test,docs]"
 	@touch $(STAMP)
 
 install: $(STAMP)
@@ -45,8 +45,23 @@ demo: $(STAMP)
 test: $(STAMP)
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 
+# The user guide (MkDocs, in docs/guide; the tools are the `docs` extra, installed with the rest
+# so that tests/test_docs.py builds it in `make test` too). docs-pages rewrites the generated
+# pages (command pages from each command's --help, worked examples from their recorded output);
+# docs-examples reruns every worked example first (minutes; the pages showing a real file need
+# ../shared/data). The site goes to build/site.
+docs-pages: $(STAMP)
+	$(PY) scripts/gen_cli_docs.py
+
+docs: docs-pages
+	NO_MKDOCS_2_WARNING=1 $(VENV)/bin/mkdocs build --strict
+	@echo "User guide: build/site/index.html"
+
+docs-examples: $(STAMP)
+	$(PY) scripts/gen_cli_docs.py --run-examples
+
 bench: $(STAMP)
 	@for s in scripts/bench_*.py; do echo "== $$s"; $(PY) $$s; done
 
 clean:
-	rm -rf $(VENV) demo_output .pytest_cache
+	rm -rf $(VENV) demo_output .pytest_cache build/site build/doc-examples

@@ -272,16 +272,16 @@ _GEOCENTRIC_RADIUS = (6_330_000.0, 6_420_000.0)
 def crs_warnings(crs: str | None, bounds) -> list[str]:
     """Reasons why ``crs`` does not fit coordinates in ``bounds`` (empty when it fits).
 
+    Checks: a geocentric CRS on points whose distance from the Earth's centre is not about
+    6,371 km (projected eastings/northings look like that); a geographic CRS with |lon| > 180
+    or |lat| > 90; a projected CRS whose coordinates lie far (more than half the area's own
+    size) outside its area of use; heights in feet under metre eastings (a note, not an error).
+
     Parameters
     ----------
     crs : str or None
     bounds : ((3,) min, (3,) max) or ((2,) min, (2,) max)
         Coordinate bounds in the CRS's units.
-
-    Checks: a geocentric CRS on points whose distance from the Earth's centre is not about
-    6,371 km (projected eastings/northings look like that); a geographic CRS with |lon| > 180
-    or |lat| > 90; a projected CRS whose coordinates lie far (more than half the area's own
-    size) outside its area of use; heights in feet under metre eastings (a note, not an error).
 
     Examples
     --------

@@ -235,6 +235,8 @@ def write_mosaic(tiles, transform, shape: tuple, path, *, crs=None, nodata=-9999
                  overwrite: bool = False, blocksize: int = 256) -> Path:
     """Write a Cloud-Optimized GeoTIFF mosaic of GeoTIFF tiles on one grid, a tile at a time.
 
+    Memory is one tile at a time; overviews are averaged (nearest for integer rasters).
+
     Parameters
     ----------
     tiles : sequence of (path, row_offset, col_offset)
@@ -242,8 +244,6 @@ def write_mosaic(tiles, transform, shape: tuple, path, *, crs=None, nodata=-9999
         cells no tile covers are ``nodata``.
     transform : tuple
         The mosaic's affine transform (a, b, c, d, e, f); ``shape`` is (rows, cols).
-
-    Memory is one tile at a time; overviews are averaged (nearest for integer rasters).
     """
     rasterio = _rasterio()
     from rasterio.enums import Resampling

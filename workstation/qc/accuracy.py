@@ -758,6 +758,8 @@ def three_x_rule(cell_m: float, rmse_m: float | None, anps_m: float | None, *,
 
     ``pass`` is None when a quantity is unknown (None).
 
+    Examples
+    --------
     >>> [r["pass"] for r in three_x_rule(1.0, 0.1, 0.7)]
     [True, True]
     """

@@ -1,7 +1,7 @@
 """DSM, DTM and CHM from point clouds; heights above a DTM raster.
 
-Methods
--------
+Notes
+-----
 * DSM, ``method="highest"``: the highest non-noise return in each cell (lidR ``p2r``, PDAL
   ``writers.gdal`` ``output_type=max``); empty cells are filled by the TIN of the neighbouring
   cell maxima. ``method="tin"``: a TIN of the highest first return per cell (lidR
