@@ -39,7 +39,7 @@ For every pulse (vectorised in batches; no Python loop over pulses):
 
 References
 ----------
-R. M. Jelalian (1992). Laser Radar Systems. Artech House.
+A. V. Jelalian (1992). Laser Radar Systems. Artech House.
 W. Wagner, A. Ullrich, V. Ducic, T. Melzer, N. Studnicka (2006). Gaussian decomposition and
 calibration of a novel small-footprint full-waveform digitising airborne laser scanner.
 ISPRS J. Photogramm. Remote Sens. 60(2):100-112.
