@@ -102,7 +102,7 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
 
     recipe, spec = load_rig(Path(__file__).resolve().parents[1] / "datasets_synth" / f"{recipe_name}.toml")
     tag = recipe_name

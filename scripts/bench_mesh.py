@@ -395,7 +395,7 @@ def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: s
     from workstation.mesh.normals import viewpoints_from_reconstruction
     from workstation.photogrammetry.georef import Similarity, transform_reconstruction
     from workstation.photogrammetry.rigs import load_rig, load_truth
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
     from workstation.registration.register import RegisterParams, register
     from workstation.registration.transforms import make_transform
 
@@ -477,7 +477,7 @@ def texture_heritage(workdir):
     from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig, surface_colour
     from workstation.registration.colorize import bilinear
 
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
 
     recipe, spec = load_rig("rig_heritage")
     wall_r = None

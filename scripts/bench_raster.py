@@ -301,7 +301,8 @@ def bench_ortho(tmp: Path):
     import cv2
     from scipy.ndimage import binary_erosion, distance_transform_edt
 
-    from workstation.raster.ortho import OrthoParams, read_reconstruction, true_ortho
+    from workstation.photogrammetry.sfm import read_reconstruction
+    from workstation.raster.ortho import OrthoParams, true_ortho
     from workstation.raster.synthetic_aerial import AerialRig, AerialScene, make_dataset
 
     scene, rig, res = AerialScene(), AerialRig(), 0.5

@@ -410,7 +410,7 @@ def sfm_tls_data(work: Path, step_deg: float = 0.3, max_image_size: int = 640, r
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
 
     work.mkdir(parents=True, exist_ok=True)
     rigdir, sfmdir = work / "rig", work / ("rig_sfm_cal" if calibrated else "rig_sfm")
@@ -519,8 +519,8 @@ def bench_colorize_rig(work: Path, supersample: int = 3, modes=("zbuffer", "exac
     from workstation.core.cloud import Cloud
     from workstation.interop.pycolmap import read_model
     from workstation.photogrammetry.rigs import _target_scene, load_rig, surface_colour
-    from workstation.raster.ortho import read_reconstruction
-    from workstation.raster.synthetic_aerial import camera_rays
+    from workstation.photogrammetry.sfm import read_reconstruction
+    from workstation.photogrammetry.collinearity import camera_rays
     from workstation.registration.colorize import (
         ColorizeParams,
         colorize,

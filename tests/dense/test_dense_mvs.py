@@ -43,7 +43,7 @@ def _rig(n=4, w=160, h=120, f=150.0):
 
 def _true_depth(V, F, cam, pose):
     from workstation.interop.open3d_raycast import RaycastScene
-    from workstation.raster.synthetic_aerial import camera_rays
+    from workstation.photogrammetry.collinearity import camera_rays
 
     rays = camera_rays(cam, 1).reshape(-1, 3)
     t, _ = RaycastScene(V, F).cast(np.broadcast_to(pose.center, rays.shape), rays @ pose.R)

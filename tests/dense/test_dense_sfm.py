@@ -15,7 +15,7 @@ from workstation.photogrammetry.rigs import box_wall_rig, box_wall_scene
 def test_sfm_dense_flag_orients_then_densifies(tmp_path, capsys):
     from workstation.photogrammetry.dense import evaluate
     from workstation.photogrammetry.georef import fit_similarity
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
 
     # radial distortion in the images; the true camera (with k1, k2) given as ws calibrate writes it
     rec = box_wall_rig(tmp_path / "rig", n=8, width=320, height=240, focal_px=300.0, dist=(-0.12, 0.04, 0, 0, 0))

@@ -36,7 +36,7 @@ def _images_and_cameras(folder: Path) -> None:
     import cv2
 
     from workstation.core.products import Camera, Image, Pose, Reconstruction
-    from workstation.raster.ortho import write_reconstruction_json
+    from workstation.io.reconstruction import write_reconstruction_json
 
     (folder / "images").mkdir()
     cam = Camera(64, 48, 60.0, 60.0, 31.5, 23.5)

@@ -15,6 +15,7 @@ MODULES = [
     "workstation.photogrammetry.sfm",
     "workstation.io.camera",
     "workstation.io.gcp",
+    "workstation.io.reconstruction",
 ]
 
 

@@ -6,8 +6,10 @@ import numpy as np
 import pytest
 
 from workstation.core.products import Camera, Pose, Raster, Reconstruction
-from workstation.raster.ortho import OrthoParams, project_points, read_reconstruction, true_ortho
-from workstation.raster.synthetic_aerial import AerialRig, AerialScene, camera_rays, make_dataset, undistort
+from workstation.photogrammetry.collinearity import camera_rays, pixels_to_normalized
+from workstation.photogrammetry.sfm import read_reconstruction
+from workstation.raster.ortho import OrthoParams, project_points, true_ortho
+from workstation.raster.synthetic_aerial import AerialRig, AerialScene, make_dataset
 
 SCENE = AerialScene(size=100.0, buildings=((25.0, 30.0, 45.0, 48.0, 12.0), (60.0, 55.0, 78.0, 80.0, 18.0)))
 RIG = AerialRig(height=60.0, width=160, height_px=120, focal_px=150.0)
@@ -36,9 +38,9 @@ def test_project_points_matches_opencv(rng):
     ref = cv2.projectPoints(X, rvec, t, cam.K, np.array(cam.dist))[0][:, 0]
     np.testing.assert_allclose(uv, ref, atol=1e-6)
     np.testing.assert_allclose(depth, (X @ R.T + t)[:, 2])
-    # the renderer's inverse model: undistort(project(X)) is the pinhole ray of X
+    # the renderer's inverse model: pixels_to_normalized(project(X)) is the pinhole ray of X
     xc = X @ R.T + t
-    np.testing.assert_allclose(undistort(cam, uv), xc[:, :2] / xc[:, 2:], atol=1e-7)
+    np.testing.assert_allclose(pixels_to_normalized(uv, cam), xc[:, :2] / xc[:, 2:], atol=1e-7)
 
 
 def test_rig_has_the_planned_overlap():
@@ -120,7 +122,7 @@ def test_occlusion_matches_exact_ray_casting(dataset):
 
 def test_cameras_json_round_trip(tmp_path, dataset):
     from workstation.core.errors import InvalidInputError
-    from workstation.raster.ortho import write_reconstruction_json
+    from workstation.io.reconstruction import write_reconstruction_json
 
     from workstation.io.paths import ALLOW_OUTSIDE
 

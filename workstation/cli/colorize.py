@@ -44,7 +44,7 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
 
     from workstation.interop.pycolmap import read_model
     from workstation.io import check_output, read_cloud, write_cloud
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
     from workstation.registration.colorize import ColorizeParams, read_depth_maps
     from workstation.registration.colorize import colorize as run_colorize
 

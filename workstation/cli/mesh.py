@@ -92,7 +92,7 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     check_output(output, overwrite, inputs=[src])
     rec = None
     if workdir is not None:
-        from workstation.raster.ortho import read_reconstruction
+        from workstation.photogrammetry.sfm import read_reconstruction
 
         rec = read_reconstruction(workdir, image_dir)
     cloud = read_cloud(src, **read_opts)

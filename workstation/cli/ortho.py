@@ -32,7 +32,8 @@ def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion
     backward projection with distortion, occlusion test against the DSM, bilinear sampling,
     most-nadir view with seam blending. RGBA GeoTIFF, alpha 0 where no image sees the ground."""
     from workstation.io.geotiff import read_raster, write_raster
-    from workstation.raster.ortho import OrthoParams, read_reconstruction, true_ortho
+    from workstation.photogrammetry.sfm import read_reconstruction
+    from workstation.raster.ortho import OrthoParams, true_ortho
 
     require_suffix(output, GEOTIFF, what="GeoTIFF")
     require_suffix(accuracy_out, GEOTIFF, "--accuracy", "GeoTIFF")

@@ -92,7 +92,7 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
     t0 = time.perf_counter()
     view_camera = None
     if camera_ref is not None:
-        from workstation.raster.ortho import read_reconstruction
+        from workstation.photogrammetry.sfm import read_reconstruction
         from workstation.render.render import find_image, reconstruction_view
 
         rec = read_reconstruction(workdir)

@@ -340,7 +340,8 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         and ``rgb`` carried per corner, ``face_attrs["texture_view"]`` (m,) int32 (best image
         id, -1 unseen) and the texture (h, w, 3) uint8 in ``meta["texture"]``.
     """
-    from workstation.registration.colorize import _load_image, bilinear, project
+    from workstation.io.images import read_image
+    from workstation.registration.colorize import bilinear, project
 
     if mesh.n_faces == 0:
         raise InvalidInputError("the mesh has no faces", field="faces")
@@ -364,7 +365,7 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
             if iid not in cache:
                 im = rec.images[iid]
                 cam = rec.cameras[im.camera_id]
-                a = images[iid] if images is not None and iid in images else _load_image(im, image_root)
+                a = images[iid] if images is not None and iid in images else read_image(im, image_root)
                 if a.shape[0] != cam.height or a.shape[1] != cam.width:
                     raise InvalidInputError(f"image {im.name} is {a.shape[1]}x{a.shape[0]} but its camera says "
                                             f"{cam.width}x{cam.height}", field="images")

@@ -255,8 +255,8 @@ def _image_ids_by_name(rec: Reconstruction) -> dict[str, int]:
 
 
 def _single_threaded_blas():
-    """LSMR does level-1 BLAS only (dot products, norms), where threads never pay and, on a
-    loaded machine, OpenBLAS's spinning threads made the adjustment 10-15× slower (measured)."""
+    """Limit BLAS to one thread: LSMR does level-1 BLAS only (dot products, norms), where
+    threads bring no speed and OpenBLAS's spinning threads slow a loaded machine down."""
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - threadpoolctl comes with scikit-learn
@@ -266,16 +266,17 @@ def _single_threaded_blas():
     return threadpool_limits(limits=1, user_api="blas")
 
 
-def _solve(least_squares, fun, jac, sparsity, x, stages, params, image_residuals, weight, n_tie_obs):
-    """The solver runs of :func:`bundle_adjust`: graduated loss scales, then rejection rounds."""
+def _solve(least_squares, prob: "_Problem", x, stages, params):
+    """The solver runs of :func:`bundle_adjust`: graduated loss scales, then rejection rounds
+    (tie observations beyond ``reject_sigma`` get weight 0 in ``prob.weight``)."""
     nfev, rejected, rounds, sol = 0, 0, 0, None
     while stages:
         f_scale = stages.pop(0)
         sol = least_squares(
-            fun,
+            prob.fun,
             x,
-            jac=jac if params.jacobian == "analytic" else "2-point",
-            jac_sparsity=None if params.jacobian == "analytic" else sparsity,
+            jac=prob.jac if params.jacobian == "analytic" else "2-point",
+            jac_sparsity=None if params.jacobian == "analytic" else prob.sparsity,
             method="trf",
             tr_solver="lsmr",
             loss=params.loss,
@@ -286,8 +287,8 @@ def _solve(least_squares, fun, jac, sparsity, x, stages, params, image_residuals
             gtol=params.tolerance,
             max_nfev=params.max_evaluations,
             # LSMR's default 1e-6 stopping tolerances leave the weak modes of a block (a bend)
-            # out of each step, so the solver crawls and stops early on ftol; solving each
-            # trust-region step accurately converges in ~20 evaluations (measured)
+            # out of each step, so the solver stops early on ftol; an accurate solve of each
+            # trust-region step lets it converge
             tr_options={"atol": params.lsmr_tolerance, "btol": params.lsmr_tolerance},
         )
         x, nfev = sol.x, nfev + sol.nfev
@@ -296,15 +297,330 @@ def _solve(least_squares, fun, jac, sparsity, x, stages, params, image_residuals
         # bounded influence is not enough for the weak modes of a block (the dome is one):
         # drop tie observations beyond reject_sigma and adjust again, as COLMAP filters
         # observations after each bundle adjustment
-        e = np.linalg.norm(image_residuals(x), axis=1) / params.sigma_px
-        bad = (e > params.reject_sigma) & (weight > 0)
-        bad[n_tie_obs:] = False  # control measurements are reported, never silently dropped
+        e = np.linalg.norm(prob.image_residuals(x), axis=1) / params.sigma_px
+        bad = (e > params.reject_sigma) & (prob.weight > 0)
+        bad[prob.n_tie_obs:] = False  # control measurements are reported, never silently dropped
         if bad.any():
-            weight[bad] = 0.0
+            prob.weight[bad] = 0.0
             rejected += int(bad.sum())
             rounds += 1
             stages.append(params.loss_scale)
     return x, nfev, rejected, sol
+
+
+def _check_inputs(rec: Reconstruction, control: Sequence, params: BundleParams) -> None:
+    """Refuse unknown options, points that are not control points and a model without tracks."""
+    if params.jacobian not in ("analytic", "2-point"):
+        raise InvalidInputError(f"jacobian {params.jacobian!r} is not 'analytic' or '2-point'", field="jacobian")
+    if params.loss not in _LOSSES:
+        raise InvalidInputError(f"loss {params.loss!r} is not one of {', '.join(_LOSSES)}", field="loss")
+    if params.sigma_px <= 0 or params.loss_scale <= 0:
+        raise InvalidInputError("sigma_px and loss_scale must be positive")
+    bad = [g.name for g in control if g.role != "control"]
+    if bad:
+        raise InvalidInputError(
+            f"only control points enter the bundle adjustment; {', '.join(bad)} are not (check points must stay independent)",
+            "pass the control points only",
+        )
+    if rec.tracks is None or rec.points is None:
+        raise InvalidInputError("the reconstruction has no tie-point tracks", "load it with its observations (read_model(..., with_tracks=True))")
+
+
+@dataclass
+class _Control:
+    """Control points observed in ≥ 2 oriented images and their image observations.
+
+    ``xyz`` is relative to ``origin`` (the mean of the surveyed points: a local frame keeps
+    finite-difference steps and sums well scaled); ``sigma`` is NaN where the GCP gives none;
+    ``point``/``image``/``uv`` are per observation (control point index, image position in the
+    sorted image ids, pixel).
+    """
+
+    gcps: list
+    xyz: np.ndarray
+    sigma: np.ndarray
+    point: np.ndarray
+    image: np.ndarray
+    uv: np.ndarray
+    origin: np.ndarray
+
+
+def _control_observations(rec: Reconstruction, control: Sequence, ids: np.ndarray) -> _Control:
+    """The control points with ≥ 2 observations in images of ``rec`` (≥ 3 of them needed)."""
+    by_name = _image_ids_by_name(rec)
+    g_used, g_xyz, g_sig, co_g, co_img, co_uv = [], [], [], [], [], []
+    for g in control:
+        rows = [(by_name.get(img, by_name.get(str(img).rsplit("/", 1)[-1])), u, v) for img, u, v in g.observations]
+        rows = [r for r in rows if r[0] is not None]
+        if len(rows) < 2:
+            continue
+        k = len(g_used)
+        g_used.append(g)
+        g_xyz.append(np.asarray(g.xyz, dtype=float))
+        g_sig.append(np.nan if g.sigma is None else float(g.sigma))
+        for iid, u, v in rows:
+            co_g.append(k)
+            co_img.append(int(np.searchsorted(ids, iid)))
+            co_uv.append((u, v))
+    n_g = len(g_used)
+    if n_g < 3:
+        raise InvalidInputError(
+            f"{n_g} control point(s) observed in ≥ 2 oriented images: the bundle adjustment needs 3 to fix its datum",
+            "measure the control points in more images, or use the similarity alone",
+        )
+    origin = np.mean(g_xyz, axis=0)
+    return _Control(g_used, np.array(g_xyz) - origin, np.array(g_sig), np.array(co_g, dtype=np.int64),
+                    np.array(co_img, dtype=np.int64), np.array(co_uv, dtype=float), origin)
+
+
+@dataclass
+class _Ties:
+    """Tie points seen in ≥ 2 images of the reconstruction and their observations.
+
+    ``active``: indices of those points in ``rec.points``; ``X0``: their coordinates relative
+    to the control origin; ``point``/``image``/``uv``: per observation (index into ``active``,
+    image position in the sorted image ids, pixel).
+    """
+
+    active: np.ndarray
+    X0: np.ndarray
+    point: np.ndarray
+    image: np.ndarray
+    uv: np.ndarray
+
+
+def _tie_observations(rec: Reconstruction, ids: np.ndarray, origin: np.ndarray) -> _Ties:
+    """Observations of tie points in images of ``rec`` (points seen in < 2 images are left out)."""
+    tr = rec.tracks
+    pts_world = np.asarray(rec.points, dtype=float)
+    known = np.isin(tr.image, ids)
+    t_pt_all, t_img_all, t_uv_all = tr.point[known], np.searchsorted(ids, tr.image[known]), tr.uv[known]
+    counts = np.bincount(t_pt_all, minlength=pts_world.shape[0])
+    active = np.flatnonzero(counts >= 2)
+    remap = np.full(pts_world.shape[0], -1, dtype=np.int64)
+    remap[active] = np.arange(active.shape[0])
+    keep = remap[t_pt_all] >= 0
+    return _Ties(active, pts_world[active] - origin, remap[t_pt_all[keep]], t_img_all[keep], t_uv_all[keep])
+
+
+def _control_sigma(ctrl: _Control, R0, C0, K0, img_cam, params: BundleParams) -> np.ndarray:
+    """σ of each control point's surveyed coordinates: the GCP's own, else
+    ``default_gcp_sigma``, else ``sigma_px`` times the point's mean ground sampling distance."""
+    n_g = len(ctrl.gcps)
+    co_g, co_img = ctrl.point, ctrl.image
+    depth0 = np.einsum("mij,mj->mi", R0[co_img], ctrl.xyz[co_g] - C0[co_img])[:, 2]
+    gsd = np.abs(depth0) / K0[img_cam[co_img], 0]
+    gsd_mean = np.bincount(co_g, weights=gsd, minlength=n_g) / np.bincount(co_g, minlength=n_g)
+    g_sig = ctrl.sigma.copy()
+    unset = ~np.isfinite(g_sig)
+    g_sig[unset] = params.default_gcp_sigma if params.default_gcp_sigma is not None else params.sigma_px * gsd_mean[unset]
+    if np.any(g_sig <= 0):
+        raise InvalidInputError("control point σ must be positive", field="sigma")
+    return g_sig
+
+
+class _Problem:
+    """The least-squares problem of :func:`bundle_adjust`.
+
+    The unknowns ``x`` are corrections to the starting values (all zero at the start), laid
+    out as [6 per free image (rotation vector, centre shift) | ``_INTR`` per camera when the
+    intrinsics are refined | 3 per tie point | 3 per control point]: the solver's relative step
+    tolerance then measures the corrections themselves, not the size of the coordinates (with
+    absolute coordinates a 1e-6 relative tolerance would stop a 100 m block at centimetre
+    steps). Residuals are the image residuals (tie observations first, then control) divided
+    by ``sigma_px`` and weighted by ``weight`` (0 for rejected observations), then the control
+    points' ground corrections divided by their σ.
+    """
+
+    _intr = [0, 1, 2, 3, 5, 6]  # positions of fx, fy, cx, cy, k1, k2 in a _camera_array row
+
+    def __init__(self, rec: Reconstruction, ids: np.ndarray, cam_ids: list, ctrl: _Control, ties: _Ties, params: BundleParams):
+        n_img = ids.shape[0]
+        cam_pos = {c: k for k, c in enumerate(cam_ids)}
+        img_cam = np.array([cam_pos[int(rec.images[i].camera_id)] for i in ids], dtype=np.int64)
+        self.K0 = np.stack([_camera_array(rec.cameras[c]) for c in cam_ids])
+        self.R0 = np.stack([np.asarray(rec.images[i].pose.R, dtype=float) for i in ids])
+        self.C0 = np.stack([rec.images[i].pose.center for i in ids]) - ctrl.origin
+        self.X0, self.g_xyz = ties.X0, ctrl.xyz
+        n_t = ties.active.shape[0]
+        self.o_pt = np.concatenate([ties.point, n_t + ctrl.point])
+        self.o_img = np.concatenate([ties.image, ctrl.image])
+        self.o_uv = np.vstack([ties.uv.reshape(-1, 2), ctrl.uv])
+        self.o_cam = img_cam[self.o_img]
+        self.m = self.o_pt.shape[0]
+        self.n_tie_obs = ties.point.shape[0]
+        self._free_images(n_img, params)
+        self.g_sig = _control_sigma(ctrl, self.R0, self.C0, self.K0, img_cam, params)
+        self.sigma_px = params.sigma_px
+        self.n_intr = _INTR * len(cam_ids) if params.refine_intrinsics else 0
+        self.off_cam = 6 * self.n_free
+        self.off_pt = self.off_cam + self.n_intr
+        self.off_g = self.off_pt + 3 * n_t
+        self.n_par = self.off_g + 3 * len(ctrl.gcps)
+        self.x0 = np.zeros(self.n_par)
+        self.weight = np.ones(self.m)  # 0 for tie observations rejected as gross errors
+        self._sparsity_pattern()
+
+    def _free_images(self, n_img: int, params: BundleParams) -> None:
+        """Images with ≥ ``min_image_observations`` observations get pose parameters."""
+        per_img = np.bincount(self.o_img, minlength=n_img)
+        self.free = np.flatnonzero(per_img >= params.min_image_observations)
+        self.fixed = np.setdiff1d(np.arange(n_img), self.free)
+        self.free_pos = np.full(n_img, -1, dtype=np.int64)
+        self.free_pos[self.free] = np.arange(self.free.shape[0])
+        self.n_free = self.free.shape[0]
+        if self.n_free == 0:
+            raise InvalidInputError(
+                f"no image has {params.min_image_observations} observations to refine its pose",
+                "check that the tracks belong to this reconstruction",
+            )
+
+    def unpack(self, x):
+        """Rotations, centres, camera arrays and points (ties then control) at corrections ``x``."""
+        from scipy.spatial.transform import Rotation
+
+        pp = x[: self.off_cam].reshape(-1, 6)
+        R = self.R0.copy()
+        R[self.free] = Rotation.from_rotvec(pp[:, :3]).as_matrix() @ self.R0[self.free]
+        C = self.C0.copy()
+        C[self.free] += pp[:, 3:]
+        K = self.K0.copy()
+        if self.n_intr:
+            K[:, self._intr] += x[self.off_cam : self.off_pt].reshape(-1, _INTR)
+        X = np.vstack([self.X0 + x[self.off_pt : self.off_g].reshape(-1, 3), self.g_xyz + x[self.off_g :].reshape(-1, 3)])
+        return R, C, K, X
+
+    def image_residuals(self, x):
+        """Projected minus observed pixels, (m, 2), unweighted."""
+        R, C, K, X = self.unpack(x)
+        uv, _ = project_many(X[self.o_pt], R[self.o_img], C[self.o_img], K[self.o_cam])
+        return uv - self.o_uv
+
+    def fun(self, x):
+        ri = self.image_residuals(x) * (self.weight / self.sigma_px)[:, None]
+        rg = x[self.off_g :].reshape(-1, 3) / self.g_sig[:, None]
+        return np.concatenate([ri.ravel(), rg.ravel()])
+
+    def _sparsity_pattern(self) -> None:
+        """Rows and columns of the Jacobian's non-zeros: an image residual (u, v) depends on its
+        image's pose (when free), its camera's intrinsics (when refined) and its point; a
+        ground residual on its control point."""
+        from scipy.sparse import coo_matrix
+
+        m, n_g3 = self.m, self.n_par - self.off_g
+        blocks = []  # (observation rows, (m', k) parameter columns)
+        self.fp = self.free_pos[self.o_img]
+        self.sel = np.flatnonzero(self.fp >= 0)
+        blocks.append((self.sel, 6 * self.fp[self.sel][:, None] + np.arange(6)))
+        if self.n_intr:
+            blocks.append((np.arange(m), self.off_cam + _INTR * self.o_cam[:, None] + np.arange(_INTR)))
+        blocks.append((np.arange(m), self.off_pt + 3 * self.o_pt[:, None] + np.arange(3)))
+        rr, cc = [2 * m + np.arange(n_g3)], [self.off_g + np.arange(n_g3)]
+        for obs, cols in blocks:
+            for j in (0, 1):  # u row 2k, v row 2k + 1
+                rr.append(np.repeat(2 * obs + j, cols.shape[1]))
+                cc.append(cols.ravel())
+        self.rows = np.concatenate(rr)
+        self.cols = np.concatenate(cc)
+        self.shape = (2 * m + n_g3, self.n_par)
+        self.sparsity = coo_matrix((np.ones(self.rows.shape[0], dtype=np.int8), (self.rows, self.cols)), shape=self.shape).tocsr()
+
+    def jac(self, x):
+        """The analytic Jacobian, entries in the order of the sparsity pattern (rows, cols)."""
+        from scipy.sparse import coo_matrix
+
+        R, C, K, X = self.unpack(x)
+        d_rot, d_c, d_x, d_k = projection_jacobians(X[self.o_pt], R[self.o_img], C[self.o_img], K[self.o_cam])
+        w = (self.weight / self.sigma_px)[:, None, None]
+        sel, fp = self.sel, self.fp
+        Jl = _left_jacobian_so3(x[: self.off_cam].reshape(-1, 6)[:, :3])
+        d_pose = np.concatenate([d_rot[sel] @ Jl[fp[sel]], d_c[sel]], axis=2) * w[sel]
+        parts = [d_pose] + ([d_k * w] if self.n_intr else []) + [d_x * w]
+        data = [np.repeat(1.0 / self.g_sig, 3)]
+        for d in parts:
+            for j in (0, 1):
+                data.append(d[:, j, :].ravel())
+        return coo_matrix((np.concatenate(data), (self.rows, self.cols)), shape=self.shape).tocsr()
+
+    def summary(self, x) -> dict:
+        """RMS image residuals (all, tie, control; rejected observations left out) and the RMS
+        ground correction of the control points."""
+        e = np.sum(self.image_residuals(x) ** 2, axis=1)
+        e = np.where(self.weight > 0, e, np.nan)
+        dg = x[self.off_g :].reshape(-1, 3)
+        n_tie_obs = self.n_tie_obs
+        return {
+            "rms_px": float(np.sqrt(np.nanmean(e))),
+            "tie_rms_px": float(np.sqrt(np.nanmean(e[:n_tie_obs]))) if n_tie_obs else float("nan"),
+            "control_rms_px": float(np.sqrt(np.nanmean(e[n_tie_obs:]))),
+            "control_ground_rms": float(np.sqrt(np.mean(np.sum(dg**2, axis=1)))),
+        }
+
+    def loss_scales(self, params: BundleParams) -> list:
+        """Graduated robustness: when the starting model is far off (a bent block starts with
+        residuals of many σ), a loss that turns robust at 3σ would treat every residual as an
+        outlier and crawl; start with the loss turning at the robust spread of the initial
+        residuals (their 90th percentile: up to 10 % gross errors stay down-weighted) and finish
+        at the nominal scale."""
+        r0 = np.abs(self.fun(self.x0)[: 2 * self.m])
+        start = max(params.loss_scale, float(np.quantile(r0, 0.9)))
+        return [start, params.loss_scale] if params.loss != "linear" and start > 2 * params.loss_scale else [params.loss_scale]
+
+
+def _adjusted_model(rec: Reconstruction, ids, cam_ids, prob: _Problem, x, ctrl: _Control, ties: _Ties):
+    """Cameras, images and points of ``rec`` after the corrections ``x``, in the survey frame,
+    and the adjusted control points by name."""
+    R, C, K, X = prob.unpack(x)
+    origin = ctrl.origin
+    images = {}
+    for k, iid in enumerate(ids):
+        im = rec.images[int(iid)]
+        Cw = C[k] + origin
+        images[int(iid)] = Image(im.name, im.camera_id, Pose(R[k], -R[k] @ Cw), im.path)
+    cameras = dict(rec.cameras)
+    if prob.n_intr:
+        for k, c in enumerate(cam_ids):
+            old = rec.cameras[c]
+            fx, fy, cx, cy, _, k1, k2 = (*K[k, :5], K[k, 5], K[k, 6])
+            d = list((list(old.dist) + [0.0] * 5)[:5])
+            d[0], d[1] = float(k1), float(k2)
+            cameras[c] = Camera(old.width, old.height, float(fx), float(fy), float(cx), float(cy), old.skew, tuple(d), old.model)
+    n_t = ties.active.shape[0]
+    pts = np.asarray(rec.points, dtype=float).copy()
+    pts[ties.active] = X[:n_t] + origin
+    control_xyz = {g.name: X[n_t + k] + origin for k, g in enumerate(ctrl.gcps)}
+    return cameras, images, pts, control_xyz
+
+
+def _statistics(rec, ids, prob: _Problem, ctrl: _Control, ties: _Ties, params: BundleParams, before, after, scales, run) -> dict:
+    """The ``stats`` of :class:`BundleResult`; ``run`` is (nfev, rejected, sol, t_start)."""
+    nfev, rejected, sol, t_start = run
+    m, n_tie_obs, n_t = prob.m, prob.n_tie_obs, ties.active.shape[0]
+    return {
+        "observations": int(m),
+        "tie_observations": int(n_tie_obs),
+        "control_observations": int(m - n_tie_obs),
+        "tie_points": int(n_t),
+        "tie_points_held": int(np.asarray(rec.points).shape[0] - n_t),
+        "control_points": int(len(ctrl.gcps)),
+        "control_sigma": {g.name: float(s) for g, s in zip(ctrl.gcps, prob.g_sig)},
+        "free_images": int(prob.n_free),
+        "fixed_images": [rec.images[int(ids[k])].name for k in prob.fixed],
+        "parameters": int(prob.n_par),
+        "refine_intrinsics": bool(params.refine_intrinsics),
+        "loss": params.loss,
+        "sigma_px": float(params.sigma_px),
+        **{f"{k}_before": v for k, v in before.items()},
+        **{f"{k}_after": v for k, v in after.items()},
+        "cost_before": float(0.5 * np.sum(prob.fun(prob.x0) ** 2)),
+        "cost_after": float(sol.cost),
+        "evaluations": int(nfev),
+        "rejected_observations": int(rejected),
+        "loss_scales": [float(v) for v in scales],
+        "status": int(sol.status),
+        "message": str(sol.message),
+        "seconds": time.perf_counter() - t_start,
+    }
 
 
 def bundle_adjust(rec: Reconstruction, control: Sequence, params: BundleParams = BundleParams()) -> BundleResult:
@@ -333,246 +649,26 @@ def bundle_adjust(rec: Reconstruction, control: Sequence, params: BundleParams =
         The solver produced non-finite values.
     """
     from scipy.optimize import least_squares
-    from scipy.sparse import coo_matrix
-    from scipy.spatial.transform import Rotation
 
     t_start = time.perf_counter()
-    if params.jacobian not in ("analytic", "2-point"):
-        raise InvalidInputError(f"jacobian {params.jacobian!r} is not 'analytic' or '2-point'", field="jacobian")
-    if params.loss not in _LOSSES:
-        raise InvalidInputError(f"loss {params.loss!r} is not one of {', '.join(_LOSSES)}", field="loss")
-    if params.sigma_px <= 0 or params.loss_scale <= 0:
-        raise InvalidInputError("sigma_px and loss_scale must be positive")
-    bad = [g.name for g in control if g.role != "control"]
-    if bad:
-        raise InvalidInputError(
-            f"only control points enter the bundle adjustment; {', '.join(bad)} are not (check points must stay independent)",
-            "pass the control points only",
-        )
-    if rec.tracks is None or rec.points is None:
-        raise InvalidInputError("the reconstruction has no tie-point tracks", "load it with its observations (read_model(..., with_tracks=True))")
-
+    _check_inputs(rec, control, params)
     ids = np.array(sorted(int(i) for i in rec.images), dtype=np.int64)
-    n_img = ids.shape[0]
     cam_ids = sorted(int(c) for c in rec.cameras)
-    cam_pos = {c: k for k, c in enumerate(cam_ids)}
-    img_cam = np.array([cam_pos[int(rec.images[i].camera_id)] for i in ids], dtype=np.int64)
-    K0 = np.stack([_camera_array(rec.cameras[c]) for c in cam_ids])
-    R0 = np.stack([np.asarray(rec.images[i].pose.R, dtype=float) for i in ids])
-    C_world = np.stack([rec.images[i].pose.center for i in ids])
-
-    # control observations
-    by_name = _image_ids_by_name(rec)
-    g_used, g_xyz, g_sig, co_g, co_img, co_uv = [], [], [], [], [], []
-    for g in control:
-        rows = [(by_name.get(img, by_name.get(str(img).rsplit("/", 1)[-1])), u, v) for img, u, v in g.observations]
-        rows = [r for r in rows if r[0] is not None]
-        if len(rows) < 2:
-            continue
-        k = len(g_used)
-        g_used.append(g)
-        g_xyz.append(np.asarray(g.xyz, dtype=float))
-        g_sig.append(np.nan if g.sigma is None else float(g.sigma))
-        for iid, u, v in rows:
-            co_g.append(k)
-            co_img.append(int(np.searchsorted(ids, iid)))
-            co_uv.append((u, v))
-    n_g = len(g_used)
-    if n_g < 3:
-        raise InvalidInputError(
-            f"{n_g} control point(s) observed in ≥ 2 oriented images: the bundle adjustment needs 3 to fix its datum",
-            "measure the control points in more images, or use the similarity alone",
-        )
-    origin = np.mean(g_xyz, axis=0)  # local frame: keeps finite-difference steps and sums well scaled
-    g_xyz = np.array(g_xyz) - origin
-    co_g = np.array(co_g, dtype=np.int64)
-    co_img = np.array(co_img, dtype=np.int64)
-    co_uv = np.array(co_uv, dtype=float)
-    C0 = C_world - origin
-
-    # tie observations: images of the reconstruction only, points seen in >= 2 of them
-    tr = rec.tracks
-    pts_world = np.asarray(rec.points, dtype=float)
-    known = np.isin(tr.image, ids)
-    t_pt_all, t_img_all, t_uv_all = tr.point[known], np.searchsorted(ids, tr.image[known]), tr.uv[known]
-    counts = np.bincount(t_pt_all, minlength=pts_world.shape[0])
-    active = np.flatnonzero(counts >= 2)
-    remap = np.full(pts_world.shape[0], -1, dtype=np.int64)
-    remap[active] = np.arange(active.shape[0])
-    keep = remap[t_pt_all] >= 0
-    t_pt, t_img, t_uv = remap[t_pt_all[keep]], t_img_all[keep], t_uv_all[keep]
-    n_t = active.shape[0]
-    X0 = pts_world[active] - origin
-
-    o_pt = np.concatenate([t_pt, n_t + co_g])
-    o_img = np.concatenate([t_img, co_img])
-    o_uv = np.vstack([t_uv.reshape(-1, 2), co_uv])
-    o_cam = img_cam[o_img]
-    m = o_pt.shape[0]
-    n_tie_obs = t_pt.shape[0]
-
-    per_img = np.bincount(o_img, minlength=n_img)
-    free = np.flatnonzero(per_img >= params.min_image_observations)
-    fixed = np.setdiff1d(np.arange(n_img), free)
-    free_pos = np.full(n_img, -1, dtype=np.int64)
-    free_pos[free] = np.arange(free.shape[0])
-    n_free = free.shape[0]
-    if n_free == 0:
-        raise InvalidInputError(
-            f"no image has {params.min_image_observations} observations to refine its pose",
-            "check that the tracks belong to this reconstruction",
-        )
-
-    # default control sigma: sigma_px times the mean ground sampling distance of the point
-    depth0 = np.einsum("mij,mj->mi", R0[co_img], g_xyz[co_g] - C0[co_img])[:, 2]
-    gsd = np.abs(depth0) / K0[img_cam[co_img], 0]
-    gsd_mean = np.bincount(co_g, weights=gsd, minlength=n_g) / np.bincount(co_g, minlength=n_g)
-    g_sig = np.array(g_sig)
-    unset = ~np.isfinite(g_sig)
-    g_sig[unset] = params.default_gcp_sigma if params.default_gcp_sigma is not None else params.sigma_px * gsd_mean[unset]
-    if np.any(g_sig <= 0):
-        raise InvalidInputError("control point σ must be positive", field="sigma")
-
-    n_cam = len(cam_ids)
-    n_intr = _INTR * n_cam if params.refine_intrinsics else 0
-    off_cam = 6 * n_free
-    off_pt = off_cam + n_intr
-    off_g = off_pt + 3 * n_t
-    n_par = off_g + 3 * n_g
-    # The unknowns are corrections to the starting values (all zero at the start): the
-    # solver's relative step tolerance then measures the corrections themselves, not the
-    # size of the coordinates (with absolute coordinates a 1e-6 relative tolerance would stop
-    # a 100 m block at centimetre steps).
-    x0 = np.zeros(n_par)
-    intr = [0, 1, 2, 3, 5, 6]
-
-    def unpack(x):
-        pp = x[:off_cam].reshape(-1, 6)
-        R = R0.copy()
-        R[free] = Rotation.from_rotvec(pp[:, :3]).as_matrix() @ R0[free]
-        C = C0.copy()
-        C[free] += pp[:, 3:]
-        K = K0.copy()
-        if n_intr:
-            K[:, intr] += x[off_cam:off_pt].reshape(-1, _INTR)
-        X = np.vstack([X0 + x[off_pt:off_g].reshape(-1, 3), g_xyz + x[off_g:].reshape(-1, 3)])
-        return R, C, K, X
-
-    def image_residuals(x):
-        R, C, K, X = unpack(x)
-        uv, _ = project_many(X[o_pt], R[o_img], C[o_img], K[o_cam])
-        return uv - o_uv
-
-    weight = np.ones(m)  # 0 for tie observations rejected as gross errors
-
-    def fun(x):
-        ri = image_residuals(x) * (weight / params.sigma_px)[:, None]
-        rg = x[off_g:].reshape(-1, 3) / g_sig[:, None]
-        return np.concatenate([ri.ravel(), rg.ravel()])
-
-    # Jacobian sparsity: an image residual (u, v) depends on its image's pose (when free), its
-    # camera's intrinsics (when refined) and its point; a ground residual on its control point
-    blocks = []  # (observation rows, (m', k) parameter columns)
-    fp = free_pos[o_img]
-    sel = np.flatnonzero(fp >= 0)
-    blocks.append((sel, 6 * fp[sel][:, None] + np.arange(6)))
-    if n_intr:
-        blocks.append((np.arange(m), off_cam + _INTR * o_cam[:, None] + np.arange(_INTR)))
-    blocks.append((np.arange(m), off_pt + 3 * o_pt[:, None] + np.arange(3)))
-    rr, cc = [2 * m + np.arange(3 * n_g)], [off_g + np.arange(3 * n_g)]
-    for obs, cols in blocks:
-        for j in (0, 1):  # u row 2k, v row 2k + 1
-            rr.append(np.repeat(2 * obs + j, cols.shape[1]))
-            cc.append(cols.ravel())
-    rr = np.concatenate(rr)
-    cc = np.concatenate(cc)
-    shape = (2 * m + 3 * n_g, n_par)
-    sparsity = coo_matrix((np.ones(rr.shape[0], dtype=np.int8), (rr, cc)), shape=shape).tocsr()
-
-    def jac(x):
-        """The analytic Jacobian, entries in the order of the sparsity pattern (rr, cc)."""
-        R, C, K, X = unpack(x)
-        d_rot, d_c, d_x, d_k = projection_jacobians(X[o_pt], R[o_img], C[o_img], K[o_cam])
-        w = (weight / params.sigma_px)[:, None, None]
-        Jl = _left_jacobian_so3(x[:off_cam].reshape(-1, 6)[:, :3])
-        d_pose = np.concatenate([d_rot[sel] @ Jl[fp[sel]], d_c[sel]], axis=2) * w[sel]
-        parts = [d_pose] + ([d_k * w] if n_intr else []) + [d_x * w]
-        data = [np.repeat(1.0 / g_sig, 3)]
-        for d in parts:
-            for j in (0, 1):
-                data.append(d[:, j, :].ravel())
-        return coo_matrix((np.concatenate(data), (rr, cc)), shape=shape).tocsr()
-
-    def summary(x):
-        e = np.sum(image_residuals(x) ** 2, axis=1)
-        e = np.where(weight > 0, e, np.nan)
-        dg = x[off_g:].reshape(-1, 3)
-        return {
-            "rms_px": float(np.sqrt(np.nanmean(e))),
-            "tie_rms_px": float(np.sqrt(np.nanmean(e[:n_tie_obs]))) if n_tie_obs else float("nan"),
-            "control_rms_px": float(np.sqrt(np.nanmean(e[n_tie_obs:]))),
-            "control_ground_rms": float(np.sqrt(np.mean(np.sum(dg**2, axis=1)))),
-        }
-
-    before = summary(x0)
-    # Graduated robustness: when the starting model is far off (a bent block starts with
-    # residuals of many σ), a loss that turns robust at 3σ would treat every residual as an
-    # outlier and crawl; start with the loss turning at the robust spread of the initial
-    # residuals (their 90th percentile: up to 10 % gross errors stay down-weighted) and finish
-    # at the nominal scale.
-    r0 = np.abs(fun(x0)[: 2 * m])
-    start = max(params.loss_scale, float(np.quantile(r0, 0.9)))
-    scales = [start, params.loss_scale] if params.loss != "linear" and start > 2 * params.loss_scale else [params.loss_scale]
+    ctrl = _control_observations(rec, control, ids)
+    ties = _tie_observations(rec, ids, ctrl.origin)
+    prob = _Problem(rec, ids, cam_ids, ctrl, ties, params)
+    before = prob.summary(prob.x0)
+    scales = prob.loss_scales(params)
     with _single_threaded_blas():
-        x, nfev, rejected, sol = _solve(least_squares, fun, jac, sparsity, x0, list(scales), params, image_residuals, weight, n_tie_obs)
+        x, nfev, rejected, sol = _solve(least_squares, prob, prob.x0, list(scales), params)
     if not np.all(np.isfinite(x)):
         raise StageError("bundle_adjust", "the adjustment produced non-finite values", "check the GCP observations and names")
-    after = summary(x)
-    R, C, K, X = unpack(x)
-    images = {}
-    for k, iid in enumerate(ids):
-        im = rec.images[int(iid)]
-        Cw = C[k] + origin
-        images[int(iid)] = Image(im.name, im.camera_id, Pose(R[k], -R[k] @ Cw), im.path)
-    cameras = dict(rec.cameras)
-    if n_intr:
-        for k, c in enumerate(cam_ids):
-            old = rec.cameras[c]
-            fx, fy, cx, cy, _, k1, k2 = (*K[k, :5], K[k, 5], K[k, 6])
-            d = list((list(old.dist) + [0.0] * 5)[:5])
-            d[0], d[1] = float(k1), float(k2)
-            cameras[c] = Camera(old.width, old.height, float(fx), float(fy), float(cx), float(cy), old.skew, tuple(d), old.model)
-    pts = pts_world.copy()
-    pts[active] = X[:n_t] + origin
-    control_xyz = {g.name: X[n_t + k] + origin for k, g in enumerate(g_used)}
-    stats = {
-        "observations": int(m),
-        "tie_observations": int(n_tie_obs),
-        "control_observations": int(m - n_tie_obs),
-        "tie_points": int(n_t),
-        "tie_points_held": int(pts_world.shape[0] - n_t),
-        "control_points": int(n_g),
-        "control_sigma": {g.name: float(s) for g, s in zip(g_used, g_sig)},
-        "free_images": int(n_free),
-        "fixed_images": [rec.images[int(ids[k])].name for k in fixed],
-        "parameters": int(n_par),
-        "refine_intrinsics": bool(params.refine_intrinsics),
-        "loss": params.loss,
-        "sigma_px": float(params.sigma_px),
-        **{f"{k}_before": v for k, v in before.items()},
-        **{f"{k}_after": v for k, v in after.items()},
-        "cost_before": float(0.5 * np.sum(fun(x0) ** 2)),
-        "cost_after": float(sol.cost),
-        "evaluations": int(nfev),
-        "rejected_observations": int(rejected),
-        "loss_scales": [float(v) for v in scales],
-        "status": int(sol.status),
-        "message": str(sol.message),
-        "seconds": time.perf_counter() - t_start,
-    }
+    after = prob.summary(x)
+    cameras, images, pts, control_xyz = _adjusted_model(rec, ids, cam_ids, prob, x, ctrl, ties)
+    stats = _statistics(rec, ids, prob, ctrl, ties, params, before, after, scales, (nfev, rejected, sol, t_start))
     log.info(
         "bundle adjustment: %d observations, %d tie + %d control points, %d images free; image RMS %.3f -> %.3f px in %d evaluations",
-        m, n_t, n_g, n_free, before["rms_px"], after["rms_px"], nfev,
+        prob.m, ties.active.shape[0], len(ctrl.gcps), prob.n_free, before["rms_px"], after["rms_px"], nfev,
     )
     meta = dict(rec.meta)
     meta["bundle_adjustment"] = {k: v for k, v in stats.items() if k not in ("control_sigma",)}

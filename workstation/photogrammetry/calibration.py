@@ -29,7 +29,7 @@ from workstation.core.geometry import affine_dimension
 
 from workstation.io.textfile import read_text
 
-from .collinearity import opk_from_pose, project
+from .collinearity import opk_from_pose, points_and_pixels, project
 
 log = get_logger(__name__)
 
@@ -252,6 +252,80 @@ def read_corner_files(model_file, corners_dir) -> tuple[np.ndarray, list[tuple[s
     return model, views
 
 
+def _require_views(nv: int, params: ZhangParams, dropped: list) -> None:
+    """Refuse fewer than ``params.min_views`` views (naming the first dropped images)."""
+    if nv < params.min_views:
+        raise InvalidInputError(
+            f"Zhang's method needs at least {params.min_views} views of the target, {nv} usable"
+            + (f" ({len(dropped)} dropped: " + ", ".join(f"{d['name']}: {d['reason']}" for d in dropped[:5]) + ")" if dropped else ""),
+            "take more photos of the board from different angles (ideally 10-20)",
+        )
+
+
+def _opencv_flags(params: ZhangParams) -> int:
+    """``cv2.calibrateCamera`` flags of the parameters held fixed."""
+    import cv2
+
+    flags = 0
+    if params.fix_k3:
+        flags |= cv2.CALIB_FIX_K3
+    if params.fix_tangential:
+        flags |= cv2.CALIB_ZERO_TANGENT_DIST
+    if params.fix_aspect:
+        flags |= cv2.CALIB_FIX_ASPECT_RATIO
+    return flags
+
+
+def _calibrate_without_outliers(objs: list, views: list, image_size, params: ZhangParams, dropped: list):
+    """OpenCV's calibration (``calibrateCameraExtended``), repeated without the outlier views
+    (:class:`ZhangParams` ``outlier_factor``) at most ``max_rounds`` times; dropped views are
+    appended to ``dropped``.
+
+    Returns the views and target points used, the number of rounds and OpenCV's
+    (rms, K, dist, rvecs, tvecs, std of the intrinsics, per-view RMS).
+    """
+    import cv2
+
+    flags = _opencv_flags(params)
+    crit = (cv2.TERM_CRITERIA_COUNT + cv2.TERM_CRITERIA_EPS, 200, 1e-12)
+    rounds = 0
+    while True:
+        rounds += 1
+        op = [o.astype(np.float32) for o in objs]
+        ip = [v[1].astype(np.float32).reshape(-1, 1, 2) for v in views]
+        K0 = np.eye(3) if params.fix_aspect else None  # FIX_ASPECT_RATIO keeps the ratio of K0 (1)
+        rms, K, dist, rvecs, tvecs, std_in, std_ex, per_view = cv2.calibrateCameraExtended(
+            op, ip, tuple(int(s) for s in image_size), K0, None, flags=flags, criteria=crit
+        )
+        per_view = np.asarray(per_view).ravel()
+        med = float(np.median(per_view))
+        mad = float(np.median(np.abs(per_view - med)))
+        limit = max(params.outlier_factor * med, med + 5 * 1.4826 * mad)
+        bad = np.nonzero(per_view > limit)[0]
+        if len(bad) == 0 or rounds > params.max_rounds or len(views) - len(bad) < params.min_views:
+            break
+        for i in bad:
+            dropped.append({"name": views[i][0], "reason": f"outlier: RMS {per_view[i]:.3f} px > limit {limit:.3f} px"})
+            log.warning("dropping %s: reprojection RMS %.3f px > %.3f px", views[i][0], per_view[i], limit)
+        keep = [i for i in range(len(views)) if i not in set(bad.tolist())]
+        views = [views[i] for i in keep]
+        objs = [objs[i] for i in keep]
+        _require_views(len(views), params, dropped)
+    return views, objs, rounds, (rms, K, dist, rvecs, tvecs, std_in, per_view)
+
+
+def _view_table(views, objs, rvecs, tvecs, per_view) -> tuple[list, dict]:
+    """Per-image rows ``{"name", "rms_px", "n_points"}`` and poses by image name."""
+    import cv2
+
+    per_image, poses = [], {}
+    for (name, pts), o, rv, tv, e in zip(views, objs, rvecs, tvecs, per_view):
+        R, _ = cv2.Rodrigues(rv)
+        poses[name] = Pose(R, np.asarray(tv, dtype=float).ravel())
+        per_image.append({"name": name, "rms_px": float(e), "n_points": int(len(pts))})
+    return per_image, poses
+
+
 def calibrate_zhang(
     object_points: np.ndarray | Sequence[np.ndarray],
     views: Sequence[tuple[str, np.ndarray]],
@@ -281,53 +355,14 @@ def calibrate_zhang(
     InvalidInputError
         Fewer than ``params.min_views`` usable views.
     """
-    import cv2
-
     dropped = [dict(d) for d in dropped]
     views = list(views)
     objs = object_points if isinstance(object_points, (list, tuple)) else [object_points] * len(views)
     objs = [np.asarray(o, dtype=np.float64) for o in objs]
-
-    def need(nv):
-        if nv < params.min_views:
-            raise InvalidInputError(
-                f"Zhang's method needs at least {params.min_views} views of the target, {nv} usable"
-                + (f" ({len(dropped)} dropped: " + ", ".join(f"{d['name']}: {d['reason']}" for d in dropped[:5]) + ")" if dropped else ""),
-                "take more photos of the board from different angles (ideally 10-20)",
-            )
-
-    need(len(views))
-    flags = 0
-    if params.fix_k3:
-        flags |= cv2.CALIB_FIX_K3
-    if params.fix_tangential:
-        flags |= cv2.CALIB_ZERO_TANGENT_DIST
-    if params.fix_aspect:
-        flags |= cv2.CALIB_FIX_ASPECT_RATIO
-    crit = (cv2.TERM_CRITERIA_COUNT + cv2.TERM_CRITERIA_EPS, 200, 1e-12)
-    rounds = 0
-    while True:
-        rounds += 1
-        op = [o.astype(np.float32) for o in objs]
-        ip = [v[1].astype(np.float32).reshape(-1, 1, 2) for v in views]
-        K0 = np.eye(3) if params.fix_aspect else None  # FIX_ASPECT_RATIO keeps the ratio of K0 (1)
-        rms, K, dist, rvecs, tvecs, std_in, std_ex, per_view = cv2.calibrateCameraExtended(
-            op, ip, tuple(int(s) for s in image_size), K0, None, flags=flags, criteria=crit
-        )
-        per_view = np.asarray(per_view).ravel()
-        med = float(np.median(per_view))
-        mad = float(np.median(np.abs(per_view - med)))
-        limit = max(params.outlier_factor * med, med + 5 * 1.4826 * mad)
-        bad = np.nonzero(per_view > limit)[0]
-        if len(bad) == 0 or rounds > params.max_rounds or len(views) - len(bad) < params.min_views:
-            break
-        for i in bad:
-            dropped.append({"name": views[i][0], "reason": f"outlier: RMS {per_view[i]:.3f} px > limit {limit:.3f} px"})
-            log.warning("dropping %s: reprojection RMS %.3f px > %.3f px", views[i][0], per_view[i], limit)
-        keep = [i for i in range(len(views)) if i not in set(bad.tolist())]
-        views = [views[i] for i in keep]
-        objs = [objs[i] for i in keep]
-        need(len(views))
+    _require_views(len(views), params, dropped)
+    views, objs, rounds, (rms, K, dist, rvecs, tvecs, std_in, per_view) = _calibrate_without_outliers(
+        objs, views, image_size, params, dropped
+    )
     dist = np.asarray(dist, dtype=float).ravel()
     d5 = np.zeros(5)
     d5[: min(5, dist.size)] = dist[:5]
@@ -353,11 +388,7 @@ def calibrate_zhang(
     std = {n: float(s_in[i]) for i, n in enumerate(names) if i < s_in.size}
     if std_skew is not None:
         std["skew"] = float(std_skew)
-    per_image, poses = [], {}
-    for (name, pts), o, rv, tv, e in zip(views, objs, rvecs, tvecs, per_view):
-        R, _ = cv2.Rodrigues(rv)
-        poses[name] = Pose(R, np.asarray(tv, dtype=float).ravel())
-        per_image.append({"name": name, "rms_px": float(e), "n_points": int(len(pts))})
+    per_image, poses = _view_table(views, objs, rvecs, tvecs, per_view)
     result = CalibrationResult(
         camera=cam,
         rms=float(rms),
@@ -528,10 +559,7 @@ def dlt_matrix(X: np.ndarray, uv: np.ndarray, planarity_ratio: float = 0.02) -> 
     >>> np.round([K[0, 0], K[1, 1], K[0, 2], K[1, 2]], 4).tolist(), np.round(C, 4).tolist()
     ([1500.0, 1500.0, 500.0, 400.0], [1.0, 2.0, 30.0])
     """
-    X = np.asarray(X, dtype=float)
-    uv = np.asarray(uv, dtype=float)
-    if X.ndim != 2 or X.shape[1] != 3 or uv.shape != (X.shape[0], 2):
-        raise InvalidInputError(f"need (n, 3) points and (n, 2) pixels, got {X.shape} and {uv.shape}")
+    X, uv = points_and_pixels(X, uv)
     n = X.shape[0]
     if not (np.isfinite(X).all() and np.isfinite(uv).all()):
         raise InvalidInputError("a control point has a non-finite coordinate or pixel", "check the point file")
@@ -624,6 +652,86 @@ def _camera_from_vector(v: np.ndarray, base: Camera, dist_terms: int, skew: bool
     return Camera(base.width, base.height, float(fx), float(fy), float(cx), float(cy), float(sk), tuple(d.tolist()), base.model)
 
 
+def _levenberg_marquardt(resid, x: np.ndarray, steps: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Minimise ``|resid(x)|²`` by Levenberg–Marquardt with a central-difference Jacobian
+    (parameter steps ``steps``); stops when no damping gives a lower cost or every update is
+    below 1e-3 of its step. Returns the parameters and their residuals."""
+    from .collinearity import _numeric_jacobian
+
+    r = resid(x)
+    lam = 1e-3
+    for _ in range(100):
+        J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
+        A = J.T @ J
+        g = J.T @ r
+        ok = False
+        for _ in range(20):
+            try:
+                dx = np.linalg.solve(A + lam * np.diag(np.diag(A) + 1e-12), -g)
+            except np.linalg.LinAlgError:
+                lam *= 10
+                continue
+            rn = resid(x + dx)
+            if rn @ rn <= r @ r:
+                x, r, lam, ok = x + dx, rn, max(lam / 10, 1e-12), True
+                break
+            lam *= 10
+        if not ok or np.max(np.abs(dx) / steps) < 1e-3:
+            break
+    return x, r
+
+
+def _refine_dlt(X: np.ndarray, uv: np.ndarray, cam: Camera, R: np.ndarray, C: np.ndarray, params: DLTParams):
+    """Refine the decomposed DLT camera and pose (and ``params.distortion`` terms) on the
+    collinearity equations. Returns (camera, pose, standard deviations by name)."""
+    from .collinearity import _numeric_jacobian, rotvec_to_matrix
+
+    dt = int(params.distortion)
+    if dt not in (0, 2, 5):
+        raise InvalidInputError("distortion terms must be 0, 2 or 5", field="distortion")
+    v0 = [cam.fx, cam.fy, cam.cx, cam.cy] + ([cam.skew] if params.estimate_skew else []) + [0.0] * dt
+    ni = len(v0)
+    x0 = np.array(v0 + [0, 0, 0] + list(C), dtype=float)
+    R0 = R.copy()
+    scale = float(np.mean(np.linalg.norm(X - C, axis=1)))
+
+    def unpack(x):
+        c = _camera_from_vector(x[:ni], cam, dt, params.estimate_skew)
+        Rn = R0 @ rotvec_to_matrix(x[ni : ni + 3]).T
+        return c, Pose(Rn, -Rn @ x[ni + 3 : ni + 6])
+
+    def resid(x):
+        c, p = unpack(x)
+        return (uv - project(X, c, p)).ravel()
+
+    steps = np.concatenate([np.full(ni, 1e-6), np.full(3, 1e-8), np.full(3, 1e-8 * scale)])
+    steps[:4] = 1e-6 * max(cam.fx, 1.0)
+    if params.estimate_skew:
+        steps[4] = 1e-6 * max(cam.fx, 1.0)
+    x, r = _levenberg_marquardt(resid, x0.copy(), steps)
+    refined, pose = unpack(x)
+    J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
+    n = X.shape[0]
+    dof = 2 * n - len(x)
+    if dof <= 0:
+        raise InvalidInputError(
+            f"{n} points cannot fix {len(x)} refined parameters", "add control points or estimate fewer distortion terms"
+        )
+    s0 = float(r @ r / dof)
+    try:
+        cov = s0 * np.linalg.inv(J.T @ J)
+        sd = np.sqrt(np.clip(np.diag(cov), 0, None))
+    except np.linalg.LinAlgError:
+        sd = np.full(len(x), np.nan)
+    names = ["fx", "fy", "cx", "cy"] + (["skew"] if params.estimate_skew else []) + (
+        ["k1", "k2"] if dt == 2 else (["k1", "k2", "p1", "p2", "k3"] if dt == 5 else [])
+    )
+    std = {nm: float(sd[i]) for i, nm in enumerate(names)}
+    std.update({"rot_x_deg": float(np.degrees(sd[ni])), "rot_y_deg": float(np.degrees(sd[ni + 1])), "rot_z_deg": float(np.degrees(sd[ni + 2]))})
+    std.update({"X": float(sd[ni + 3]), "Y": float(sd[ni + 4]), "Z": float(sd[ni + 5])})
+    return refined, pose, std
+
+
 def calibrate_dlt(
     X: np.ndarray,
     uv: np.ndarray,
@@ -652,8 +760,6 @@ def calibrate_dlt(
     -------
     CalibrationResult
     """
-    from .collinearity import _numeric_jacobian, rotvec_to_matrix
-
     X = np.asarray(X, dtype=float)
     uv = np.asarray(uv, dtype=float)
     P = dlt_matrix(X, uv, params.planarity_ratio)
@@ -664,74 +770,12 @@ def calibrate_dlt(
     std: dict[str, float] = {}
     n = X.shape[0]
     if params.refine:
-        dt = int(params.distortion)
-        if dt not in (0, 2, 5):
-            raise InvalidInputError("distortion terms must be 0, 2 or 5", field="distortion")
-        v0 = [cam.fx, cam.fy, cam.cx, cam.cy] + ([cam.skew] if params.estimate_skew else []) + [0.0] * dt
-        ni = len(v0)
-        x0 = np.array(v0 + [0, 0, 0] + list(C), dtype=float)
-        R0 = R.copy()
-        scale = float(np.mean(np.linalg.norm(X - C, axis=1)))
-
-        def unpack(x):
-            c = _camera_from_vector(x[:ni], cam, dt, params.estimate_skew)
-            Rn = R0 @ rotvec_to_matrix(x[ni : ni + 3]).T
-            return c, Pose(Rn, -Rn @ x[ni + 3 : ni + 6])
-
-        def resid(x):
-            c, p = unpack(x)
-            return (uv - project(X, c, p)).ravel()
-
-        steps = np.concatenate([np.full(ni, 1e-6), np.full(3, 1e-8), np.full(3, 1e-8 * scale)])
-        steps[:4] = 1e-6 * max(cam.fx, 1.0)
-        if params.estimate_skew:
-            steps[4] = 1e-6 * max(cam.fx, 1.0)
-        x = x0.copy()
-        r = resid(x)
-        lam = 1e-3
-        for _ in range(100):
-            J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
-            A = J.T @ J
-            g = J.T @ r
-            ok = False
-            for _ in range(20):
-                try:
-                    dx = np.linalg.solve(A + lam * np.diag(np.diag(A) + 1e-12), -g)
-                except np.linalg.LinAlgError:
-                    lam *= 10
-                    continue
-                rn = resid(x + dx)
-                if rn @ rn <= r @ r:
-                    x, r, lam, ok = x + dx, rn, max(lam / 10, 1e-12), True
-                    break
-                lam *= 10
-            if not ok or np.max(np.abs(dx) / steps) < 1e-3:
-                break
-        cam, pose = unpack(x)
-        J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
-        dof = 2 * n - len(x)
-        if dof <= 0:
-            raise InvalidInputError(
-                f"{n} points cannot fix {len(x)} refined parameters", "add control points or estimate fewer distortion terms"
-            )
-        s0 = float(r @ r / dof)
-        try:
-            cov = s0 * np.linalg.inv(J.T @ J)
-            sd = np.sqrt(np.clip(np.diag(cov), 0, None))
-        except np.linalg.LinAlgError:
-            sd = np.full(len(x), np.nan)
-        names = ["fx", "fy", "cx", "cy"] + (["skew"] if params.estimate_skew else []) + (
-            ["k1", "k2"] if dt == 2 else (["k1", "k2", "p1", "p2", "k3"] if dt == 5 else [])
-        )
-        std = {nm: float(sd[i]) for i, nm in enumerate(names)}
-        std.update({"rot_x_deg": float(np.degrees(sd[ni])), "rot_y_deg": float(np.degrees(sd[ni + 1])), "rot_z_deg": float(np.degrees(sd[ni + 2]))})
-        std.update({"X": float(sd[ni + 3]), "Y": float(sd[ni + 4]), "Z": float(sd[ni + 5])})
+        cam, pose, std = _refine_dlt(X, uv, cam, R, C, params)
     res = uv - project(X, cam, pose)
     rms = float(np.sqrt(np.mean(np.sum(res**2, axis=1))))
     if not np.isfinite(rms):
         raise StageError("calibrate", "DLT produced a non-finite camera", "check the control points")
     _check_dlt_camera(cam, rms)
-    om, ph, ka = opk_from_pose(pose)
     return CalibrationResult(
         camera=cam,
         rms=rms,

@@ -167,6 +167,22 @@ def pixels_to_normalized(uv: np.ndarray, camera: Camera) -> np.ndarray:
     return undistort_normalized(np.column_stack([xd, yd]), camera.dist)
 
 
+def camera_rays(camera: Camera, supersample: int = 1) -> np.ndarray:
+    """Unit ray directions in the camera frame through every (sub-)pixel, (h·s, w·s, 3).
+
+    Sub-pixel (r, c) passes through the distorted image point u = (c + 0.5)/s − 0.5,
+    v = (r + 0.5)/s − 0.5 (pixel centres at integers).
+    """
+    s = supersample
+    us = (np.arange(camera.width * s) + 0.5) / s - 0.5
+    vs = (np.arange(camera.height * s) + 0.5) / s - 0.5
+    U, V = np.meshgrid(us, vs)
+    und = pixels_to_normalized(np.column_stack([U.ravel(), V.ravel()]), camera)
+    d = np.column_stack([und, np.ones(len(und))])
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    return d.reshape(camera.height * s, camera.width * s, 3)
+
+
 def project(X: np.ndarray, camera: Camera, pose: Pose, return_depth: bool = False, return_normalized: bool = False):
     """Project world points into an image with the collinearity equations and OpenCV distortion.
 
@@ -322,6 +338,91 @@ def _initial_pose_opencv(X: np.ndarray, uv: np.ndarray, camera: Camera) -> Pose:
     return Pose(R, tvec.ravel())
 
 
+def points_and_pixels(X, uv) -> tuple[np.ndarray, np.ndarray]:
+    """``X`` as (n, 3) and ``uv`` as (n, 2) float arrays; refuses other shapes."""
+    X = np.asarray(X, dtype=float)
+    uv = np.asarray(uv, dtype=float)
+    if X.ndim != 2 or X.shape[1] != 3 or uv.shape != (X.shape[0], 2):
+        raise InvalidInputError(f"need (n, 3) points and (n, 2) pixels, got {X.shape} and {uv.shape}")
+    return X, uv
+
+
+def _resection_result(final: Pose, C: np.ndarray, cov: np.ndarray, sigma0: float, r: np.ndarray,
+                      iterations: int) -> ResectionResult:
+    """The :class:`ResectionResult` of a converged resection: pose, centre ``C``, residuals ``r``."""
+    std = np.sqrt(np.clip(np.diag(cov), 0, None))
+    om, ph, ka = opk_from_pose(final)
+    res2 = r.reshape(-1, 2)
+    return ResectionResult(
+        pose=final,
+        omega=om,
+        phi=ph,
+        kappa=ka,
+        centre=C.copy(),
+        covariance=cov,
+        std_centre=std[3:],
+        std_angles_deg=np.degrees(std[:3]),
+        sigma0_px=sigma0,
+        residuals=res2,
+        rms_px=float(np.sqrt(np.mean(np.sum(res2**2, axis=1)))),
+        iterations=iterations,
+        converged=True,
+    )
+
+
+def _resection_lm(resid, R: np.ndarray, C: np.ndarray, steps: np.ndarray, scale: float, params: ResectionParams):
+    """Levenberg–Marquardt on the pose: each step is a small world-frame rotation and a centre
+    shift (:func:`_pose_params`) applied to the current (R, C). ``resid(d, R, C)`` gives the
+    pixel residuals after step ``d``. Stops when no damping lowers the cost or the step is
+    below ``params.tolerance`` (rotation, radians; centre, times ``scale``).
+
+    Returns the rotation, the centre, the residuals and the iteration count.
+
+    Raises
+    ------
+    StageError
+        Not converged in ``params.max_iterations``.
+    """
+    lam = 1e-3
+    it = 0
+    r = resid(np.zeros(6), R, C)
+    for it in range(1, params.max_iterations + 1):
+        J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
+        A = J.T @ J
+        g = J.T @ r
+        improved = False
+        for _ in range(20):
+            step = np.linalg.solve(A + lam * np.diag(np.diag(A) + 1e-12), -g)
+            r_new = resid(step, R, C)
+            if r_new @ r_new <= r @ r:
+                pose_new = _pose_params(R, C, step)
+                R, C = np.asarray(pose_new.R), np.asarray(pose_new.center)
+                r = r_new
+                lam = max(lam / 10, 1e-12)
+                improved = True
+                break
+            lam *= 10
+        small = np.all(np.abs(step[:3]) < max(params.tolerance, 1e-15)) and np.all(
+            np.abs(step[3:]) < max(params.tolerance, 1e-15) * scale
+        )
+        if not improved or small:
+            return R, C, r, it
+    raise StageError("resection", f"did not converge in {params.max_iterations} iterations", "check the point ids")
+
+
+def _covariance(J: np.ndarray, r: np.ndarray, dof: int, a_posteriori: bool, sigma_px: float) -> tuple[np.ndarray, float]:
+    """``var · (JᵀJ)⁻¹`` and the a-posteriori σ0 of residuals ``r`` with ``dof`` degrees of
+    freedom (NaN without redundancy); ``var`` is σ0² when ``a_posteriori``, else
+    ``sigma_px²``. A singular JᵀJ gives a NaN covariance."""
+    sigma0 = float(np.sqrt(r @ r / dof)) if dof > 0 else float("nan")
+    var = sigma0**2 if a_posteriori else sigma_px**2
+    try:
+        cov = var * np.linalg.inv(J.T @ J)
+    except np.linalg.LinAlgError:
+        cov = np.full((J.shape[1], J.shape[1]), np.nan)
+    return cov, sigma0
+
+
 def resect(
     X: np.ndarray,
     uv: np.ndarray,
@@ -367,10 +468,7 @@ def resect(
     >>> np.round(res.centre, 6).tolist(), round(float(np.degrees(res.kappa)), 6)
     ([5.0, -3.0, 60.0], 22.918312)
     """
-    X = np.asarray(X, dtype=float)
-    uv = np.asarray(uv, dtype=float)
-    if X.ndim != 2 or X.shape[1] != 3 or uv.shape != (X.shape[0], 2):
-        raise InvalidInputError(f"need (n, 3) points and (n, 2) pixels, got {X.shape} and {uv.shape}")
+    X, uv = points_and_pixels(X, uv)
     n = X.shape[0]
     if n < 3:
         raise InvalidInputError(
@@ -385,64 +483,15 @@ def resect(
     def resid(d, R=None, C=None):
         return (uv - project(X, camera, _pose_params(R, C, d))).ravel()
 
-    lam = 1e-3
-    converged = False
-    it = 0
-    r = resid(np.zeros(6), R, C)
-    for it in range(1, params.max_iterations + 1):
-        J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
-        A = J.T @ J
-        g = J.T @ r
-        improved = False
-        for _ in range(20):
-            step = np.linalg.solve(A + lam * np.diag(np.diag(A) + 1e-12), -g)
-            r_new = resid(step, R, C)
-            if r_new @ r_new <= r @ r:
-                pose_new = _pose_params(R, C, step)
-                R, C = np.asarray(pose_new.R), np.asarray(pose_new.center)
-                r = r_new
-                lam = max(lam / 10, 1e-12)
-                improved = True
-                break
-            lam *= 10
-        small = np.all(np.abs(step[:3]) < max(params.tolerance, 1e-15)) and np.all(
-            np.abs(step[3:]) < max(params.tolerance, 1e-15) * scale
-        )
-        if not improved or small:
-            converged = True
-            break
-    if not converged:
-        raise StageError("resection", f"did not converge in {params.max_iterations} iterations", "check the point ids")
+    R, C, r, it = _resection_lm(resid, R, C, steps, scale, params)
     final = Pose(R, -R @ C)
     _, depth = project(X, camera, final, return_depth=True)
     if np.any(depth <= 0):
         raise StageError("resection", "some control points lie behind the resected camera", "check the observations")
     J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
     dof = 2 * n - 6
-    sigma0 = float(np.sqrt(r @ r / dof)) if dof > 0 else float("nan")
-    var = sigma0**2 if dof > 0 else params.sigma_px**2
-    try:
-        cov = var * np.linalg.inv(J.T @ J)
-    except np.linalg.LinAlgError:
-        cov = np.full((6, 6), np.nan)
-    std = np.sqrt(np.clip(np.diag(cov), 0, None))
-    om, ph, ka = opk_from_pose(final)
-    res2 = r.reshape(-1, 2)
-    return ResectionResult(
-        pose=final,
-        omega=om,
-        phi=ph,
-        kappa=ka,
-        centre=C.copy(),
-        covariance=cov,
-        std_centre=std[3:],
-        std_angles_deg=np.degrees(std[:3]),
-        sigma0_px=sigma0,
-        residuals=res2,
-        rms_px=float(np.sqrt(np.mean(np.sum(res2**2, axis=1)))),
-        iterations=it,
-        converged=converged,
-    )
+    cov, sigma0 = _covariance(J, r, dof, dof > 0, params.sigma_px)
+    return _resection_result(final, C, cov, sigma0, r, it)
 
 
 # --------------------------------------------------------------------------------------------
@@ -477,6 +526,31 @@ class IntersectionResult:
     sigma0_px: float
     max_angle_deg: float
     meta: Mapping[str, Any] = field(default_factory=dict)
+
+
+def _linear_intersection(uv: np.ndarray, cameras: Sequence[Camera], poses: Sequence[Pose]) -> tuple[np.ndarray, float]:
+    """The homogeneous linear triangulation of one point (rows normalised) and the largest
+    angle between two of its rays, degrees."""
+    rows = []
+    dirs = []
+    for k in range(uv.shape[0]):
+        xy = pixels_to_normalized(uv[k : k + 1], cameras[k])[0]
+        R = np.asarray(poses[k].R, dtype=float)
+        t = np.asarray(poses[k].t, dtype=float)
+        P = np.hstack([R, t[:, None]])
+        rows.append(xy[0] * P[2] - P[0])
+        rows.append(xy[1] * P[2] - P[1])
+        d = R.T @ np.array([xy[0], xy[1], 1.0])
+        dirs.append(d / np.linalg.norm(d))
+    A = np.array(rows)
+    A = A / np.linalg.norm(A, axis=1, keepdims=True)
+    _, _, Vt = np.linalg.svd(A)
+    h = Vt[-1]
+    if abs(h[3]) < 1e-15:
+        raise StageError("intersection", "rays are parallel: the point is at infinity", "use images with a wider base")
+    D = np.array(dirs)
+    cosang = np.clip(D @ D.T, -1, 1)
+    return h[:3] / h[3], float(np.degrees(np.arccos(cosang.min())))
 
 
 def intersect(
@@ -528,34 +602,14 @@ def intersect(
             f"{len(cameras)} cameras, {len(poses)} poses",
             "observe the point in at least two oriented images",
         )
-    rows = []
-    dirs = []
-    for k in range(m):
-        xy = pixels_to_normalized(uv[k : k + 1], cameras[k])[0]
-        R = np.asarray(poses[k].R, dtype=float)
-        t = np.asarray(poses[k].t, dtype=float)
-        P = np.hstack([R, t[:, None]])
-        rows.append(xy[0] * P[2] - P[0])
-        rows.append(xy[1] * P[2] - P[1])
-        d = R.T @ np.array([xy[0], xy[1], 1.0])
-        dirs.append(d / np.linalg.norm(d))
-    A = np.array(rows)
-    A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    _, _, Vt = np.linalg.svd(A)
-    h = Vt[-1]
-    if abs(h[3]) < 1e-15:
-        raise StageError("intersection", "rays are parallel: the point is at infinity", "use images with a wider base")
-    Xp = h[:3] / h[3]
-    D = np.array(dirs)
-    cosang = np.clip(D @ D.T, -1, 1)
-    max_angle = float(np.degrees(np.arccos(cosang.min())))
+    Xp, max_angle = _linear_intersection(uv, cameras, poses)
     scale = max(float(np.mean([np.linalg.norm(Xp - p.center) for p in poses])), 1e-9)
     step = 1e-7 * scale * np.ones(3)
 
     def resid(Xq):
         return np.concatenate([uv[k] - project(Xq[None], cameras[k], poses[k])[0] for k in range(m)])
 
-    for _ in range(iterations):
+    for _ in range(iterations):  # Gauss–Newton
         r = resid(Xp)
         J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
         dx, *_ = np.linalg.lstsq(J, -r, rcond=None)
@@ -565,12 +619,7 @@ def intersect(
     r = resid(Xp)
     J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
     dof = 2 * m - 3
-    sigma0 = float(np.sqrt(r @ r / dof)) if dof > 0 else float("nan")
-    var = sigma0**2 if (dof >= 3 and a_posteriori) else sigma_px**2
-    try:
-        cov = var * np.linalg.inv(J.T @ J)
-    except np.linalg.LinAlgError:
-        cov = np.full((3, 3), np.nan)
+    cov, sigma0 = _covariance(J, r, dof, dof >= 3 and a_posteriori, sigma_px)
     res2 = r.reshape(-1, 2)
     return IntersectionResult(
         point=Xp,

@@ -281,6 +281,61 @@ def _box(a, r):
     return cv2.boxFilter(a, -1, (2 * r + 1, 2 * r + 1), borderType=cv2.BORDER_REFLECT)
 
 
+def _plane_inverse_depths(shape: tuple, srcs: list[_View], rel: list, Kinv: np.ndarray, near: float, far: float,
+                          params: DenseParams) -> np.ndarray:
+    """Inverse depths of the sweep planes, uniform from ``1/near`` to ``1/far``; their count is
+    the largest disparity range of the centre of the (h, w) reference image among the sources
+    over ``plane_step_px`` (16 to ``max_planes``)."""
+    h, w = shape
+    ray = Kinv @ np.array([w / 2, h / 2, 1.0])
+    span = 0.0
+    for s, (Rrel, trel) in zip(srcs, rel):
+        p0 = s.K @ (Rrel @ (ray * near) + trel)
+        p1 = s.K @ (Rrel @ (ray * far) + trel)
+        span = max(span, float(np.hypot(*(p0[:2] / p0[2] - p1[:2] / p1[2]))))
+    n_planes = int(np.clip(np.ceil(span / params.plane_step_px), 16, params.max_planes))
+    return np.linspace(1.0 / near, 1.0 / far, n_planes)
+
+
+def _plane_ncc(ref_img, mr, sr, src_imgs, srcs: list[_View], rel: list, Kinv: np.ndarray, d: float, r: int) -> np.ndarray:
+    """(sources, h, w) windowed NCC of the reference image with each source image warped onto
+    it through the fronto-parallel plane at depth ``d`` (-1 where the source has no pixel).
+    ``mr``/``sr``: windowed mean and standard deviation of the reference image."""
+    import cv2
+
+    h, w = ref_img.shape
+    eps = 1e-3
+    n = np.array([0.0, 0.0, 1.0])
+    scores = np.empty((len(srcs), h, w), np.float32)
+    for si, (s, img) in enumerate(zip(srcs, src_imgs)):
+        Rrel, trel = rel[si]
+        H = s.K @ (Rrel + np.outer(trel, n) / d) @ Kinv  # ref pixel -> source pixel
+        warped = cv2.warpPerspective(img, H, (w, h), flags=cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP,
+                                     borderMode=cv2.BORDER_CONSTANT, borderValue=-1.0)
+        valid = warped >= 0  # border value -1 marks pixels outside the source image
+        ms = _box(warped, r)
+        vs = np.maximum(_box(warped * warped, r) - ms * ms, 0)
+        cov = _box(ref_img * warped, r) - mr * ms
+        ncc = cov / (sr * np.sqrt(vs) + eps)
+        ncc[~valid] = -1.0
+        scores[si] = ncc
+    return scores
+
+
+def _subplane_depth(inv, best, best_k, s_prev, s_next, textured, params: DenseParams) -> np.ndarray:
+    """Depth from the best plane refined by a parabola through the scores of planes k-1, k,
+    k+1 (in inverse depth); 0 where the score, the texture or the plane index is unusable."""
+    n_planes = len(inv)
+    interior = (best_k > 0) & (best_k < n_planes - 1)
+    den = s_prev - 2 * best + s_next
+    off = np.where(interior & (den < -1e-6), 0.5 * (s_prev - s_next) / np.where(den < -1e-6, den, -1), 0.0)
+    off = np.clip(off, -0.5, 0.5)
+    kf = best_k + off
+    step = (inv[-1] - inv[0]) / max(n_planes - 1, 1)
+    invd = inv[0] + kf * step
+    return np.where((best >= params.min_ncc) & textured & interior & (invd > 0), 1.0 / np.maximum(invd, 1e-12), 0.0)
+
+
 def plane_sweep(ref_img, ref: _View, src_imgs, srcs: list[_View], params: DenseParams, near=None, far=None):
     """Winner-take-all plane-sweep depth of one reference image.
 
@@ -302,51 +357,25 @@ def plane_sweep(ref_img, ref: _View, src_imgs, srcs: list[_View], params: DenseP
     score : (h, w) float32
         Aggregated NCC of the chosen plane.
     """
-    import cv2
-
     near = ref.near if near is None else near
     far = ref.far if far is None else far
     h, w = ref_img.shape
     r = params.window // 2
-    eps = 1e-3
     mr = _box(ref_img, r)
-    vr = np.maximum(_box(ref_img * ref_img, r) - mr * mr, 0)
-    sr = np.sqrt(vr)
+    sr = np.sqrt(np.maximum(_box(ref_img * ref_img, r) - mr * mr, 0))
     textured = sr >= params.min_texture
-    # planes uniform in inverse depth; count from the largest disparity range among sources
     Kinv = np.linalg.inv(ref.K)
-    ray = Kinv @ np.array([w / 2, h / 2, 1.0])
-    span = 0.0
-    for s in srcs:
-        Rrel, trel = s.R @ ref.R.T, s.t - s.R @ ref.R.T @ ref.t
-        p0 = s.K @ (Rrel @ (ray * near) + trel)
-        p1 = s.K @ (Rrel @ (ray * far) + trel)
-        span = max(span, float(np.hypot(*(p0[:2] / p0[2] - p1[:2] / p1[2]))))
-    n_planes = int(np.clip(np.ceil(span / params.plane_step_px), 16, params.max_planes))
-    inv = np.linspace(1.0 / near, 1.0 / far, n_planes)
+    rel = [(s.R @ ref.R.T, s.t - s.R @ ref.R.T @ ref.t) for s in srcs]
+    inv = _plane_inverse_depths((h, w), srcs, rel, Kinv, near, far, params)
+    n_planes = len(inv)
     best = np.full((h, w), -2.0, np.float32)
     best_k = np.full((h, w), -1, np.int32)
     s_prev = np.zeros((h, w), np.float32)
     s_next = np.zeros((h, w), np.float32)
     prev = np.full((h, w), -2.0, np.float32)
     k_top = min(params.top_k, len(srcs))
-    n = np.array([0.0, 0.0, 1.0])
-    rel = [(s.R @ ref.R.T, s.t - s.R @ ref.R.T @ ref.t) for s in srcs]
     for k, invd in enumerate(inv):
-        d = 1.0 / invd
-        scores = np.empty((len(srcs), h, w), np.float32)
-        for si, (s, img) in enumerate(zip(srcs, src_imgs)):
-            Rrel, trel = rel[si]
-            H = s.K @ (Rrel + np.outer(trel, n) / d) @ Kinv  # ref pixel -> source pixel
-            warped = cv2.warpPerspective(img, H, (w, h), flags=cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP,
-                                         borderMode=cv2.BORDER_CONSTANT, borderValue=-1.0)
-            valid = warped >= 0  # border value -1 marks pixels outside the source image
-            ms = _box(warped, r)
-            vs = np.maximum(_box(warped * warped, r) - ms * ms, 0)
-            cov = _box(ref_img * warped, r) - mr * ms
-            ncc = cov / (sr * np.sqrt(vs) + eps)
-            ncc[~valid] = -1.0
-            scores[si] = ncc
+        scores = _plane_ncc(ref_img, mr, sr, src_imgs, srcs, rel, Kinv, 1.0 / invd, r)
         if k_top == 1:
             agg = scores.max(0)
         else:
@@ -359,15 +388,7 @@ def plane_sweep(ref_img, ref: _View, src_imgs, srcs: list[_View], params: DenseP
         best_k[better] = k
         s_prev[better] = prev[better]
         prev = agg
-    # sub-plane refinement: parabola through (k-1, k, k+1) in plane index (inverse depth)
-    interior = (best_k > 0) & (best_k < n_planes - 1)
-    den = s_prev - 2 * best + s_next
-    off = np.where(interior & (den < -1e-6), 0.5 * (s_prev - s_next) / np.where(den < -1e-6, den, -1), 0.0)
-    off = np.clip(off, -0.5, 0.5)
-    kf = best_k + off
-    step = (inv[-1] - inv[0]) / max(n_planes - 1, 1)
-    invd = inv[0] + kf * step
-    depth = np.where((best >= params.min_ncc) & textured & interior & (invd > 0), 1.0 / np.maximum(invd, 1e-12), 0.0)
+    depth = _subplane_depth(inv, best, best_k, s_prev, s_next, textured, params)
     return depth.astype(np.float32), best
 
 

@@ -350,6 +350,90 @@ def bundle_possible(gcps: Sequence, reconstruction: Reconstruction | None, info:
     return True, ""
 
 
+def _model_positions(gcps: Sequence, reconstruction: Reconstruction | None, sigma_px: float):
+    """(positions, info, problems) as :func:`triangulate_gcps`; without a reconstruction only
+    the points given in model coordinates have a position."""
+    if reconstruction is not None:
+        return triangulate_gcps(gcps, reconstruction, sigma_px)
+    return (
+        {g.name: np.asarray(g.model_xyz, dtype=float) for g in gcps if g.model_xyz is not None},
+        {},
+        {g.name: "no model position (mx, my, mz) and no reconstruction to triangulate in" for g in gcps if g.model_xyz is None},
+    )
+
+
+def _report(control, check, positions, info, to_survey, sim: Similarity, scale: float | None = None):
+    """Residual rows of the control and check points at ``positions`` mapped by ``to_survey``
+    (triangulation std scaled by ``scale``, default the similarity's) and their metrics."""
+    rows = _residual_rows(control + check, positions, info, to_survey, sim.scale if scale is None else scale)
+    metrics: dict[str, Any] = {"control_n": len(control), "scale": sim.scale}
+    metrics.update(_metrics(rows))
+    return rows, metrics
+
+
+def _fit_control(control: Sequence, positions: Mapping[str, np.ndarray], notes: list) -> Similarity:
+    """The model -> survey similarity of the control points (≥ 3 needed)."""
+    if len(control) <= 2:
+        raise InvalidInputError(
+            f"only {len(control)} usable control point(s): a 7-parameter similarity (3 shifts, 3 rotations, "
+            "1 scale) needs at least 3 control points not on one line — 2 points leave the rotation about "
+            "their joining line free, 1 point fixes only the shift"
+            + (f" ({'; '.join(notes)})" if notes else ""),
+            "add control points (5+ spread over the site recommended) or change the role of some check points",
+        )
+    src = np.array([positions[g.name] for g in control])
+    dst = np.array([g.xyz for g in control])
+    sim = fit_similarity(src, dst)
+    if not np.isfinite(sim.scale) or sim.scale <= 0:
+        raise StageError("georeference", "the similarity has a non-positive scale", "check the GCP names and coordinates")
+    return sim
+
+
+def _bundle_refinement(control, check, sim: Similarity, positions, info, rec: Reconstruction, sigma_px: float, bundle,
+                       sim_metrics: dict, notes: list):
+    """Run :func:`.bundle.bundle_adjust` on the similarity-transformed model ``rec`` and
+    intersect the control and check points again from the adjusted images.
+
+    Returns the residual rows, the metrics (with the similarity-only RMSEs as
+    ``similarity_*``), the result meta and the adjusted reconstruction; appends to ``notes``.
+    """
+    import dataclasses
+
+    from .bundle import BundleParams, bundle_adjust
+
+    bp = dataclasses.replace(bundle if bundle is not None else BundleParams(), sigma_px=sigma_px)
+    ba = bundle_adjust(rec, [g for g in control if g.name in info], bp)
+    pos2, info2, problems2 = triangulate_gcps(control + check, ba.reconstruction, sigma_px)
+    lost = [g for g in control + check if g.name not in pos2]
+    for g in lost:
+        notes.append(f"{g.name}: not intersected after the bundle adjustment ({problems2.get(g.name, '')}); similarity position kept")
+        pos2[g.name] = sim.apply(positions[g.name][None])[0]
+    rows, metrics = _report(control, check, pos2, info2, lambda X: np.asarray(X, dtype=float), sim, 1.0)
+    metrics.update({f"similarity_{k}": v for k, v in sim_metrics.items() if k.startswith(("check_rmse", "control_rmse"))})
+    notes.append(
+        f"bundle adjustment with {ba.stats['control_points']} control points, {ba.stats['tie_points']} tie points and "
+        f"{ba.stats['free_images']} images: image RMS {ba.stats['rms_px_before']:.3f} -> {ba.stats['rms_px_after']:.3f} px"
+        + (
+            f"; check RMSE 3D {sim_metrics['check_rmse_3d']:.4g} (similarity) -> {metrics['check_rmse_3d']:.4g}"
+            if check else ""
+        )
+    )
+    return rows, metrics, {"adjustment": "bundle", "bundle": dict(ba.stats)}, ba.reconstruction
+
+
+def _check_point_notes(check: Sequence) -> list[str]:
+    """Notes on the number of check points behind the accuracy figures."""
+    notes = []
+    if not check:
+        notes.append(
+            "no check points: the accuracy is unknown (control residuals measure the fit only); "
+            "mark some surveyed points as role=check"
+        )
+    if len(check) and len(check) < 20:
+        notes.append(f"{len(check)} check points: ASPRS (2014) asks for at least 20 for a formal accuracy statement")
+    return notes
+
+
 def georeference(
     gcps: Sequence,
     reconstruction: Reconstruction | None = None,
@@ -363,13 +447,10 @@ def georeference(
 
     1. Every GCP with image observations is intersected in the model (space intersection);
        control points fix the 7-parameter similarity (Umeyama 1991).
-    2. With ``adjustment`` "auto" or "bundle", and when :func:`bundle_possible` (tie-point
-       tracks in the reconstruction, ≥ 3 control points with ≥ 2 image observations), the
-       similarity-transformed model goes through :func:`.bundle.bundle_adjust`: poses, tie
-       points and control points (intrinsics with ``bundle.refine_intrinsics``) are refined
-       on the image observations and the control points' surveyed coordinates weighted by
-       their σ. Check points never enter it. Otherwise (or with "similarity") the similarity
-       alone georeferences the model, and a note says why.
+    2. With ``adjustment`` "auto" or "bundle", and when :func:`bundle_possible`, the
+       similarity-transformed model goes through :func:`.bundle.bundle_adjust` (check points
+       never enter it). Otherwise (or with "similarity") the similarity alone georeferences
+       the model, and a note says why.
     3. Check points are intersected from the final images and compared with their survey
        coordinates; with the bundle adjustment the similarity-only figures are kept as
        ``similarity_check_*`` (before) beside ``check_*`` (after).
@@ -411,75 +492,25 @@ def georeference(
     >>> res.meta["adjustment"]
     'similarity'
     """
-    import dataclasses
-
-    from .bundle import BundleParams, bundle_adjust
-
     if adjustment not in ADJUSTMENTS:
         raise InvalidInputError(f"adjustment {adjustment!r} is not one of {', '.join(ADJUSTMENTS)}", field="adjustment")
     if not gcps:
         raise InvalidInputError("no ground control points")
-    positions, info, problems = triangulate_gcps(gcps, reconstruction, sigma_px) if reconstruction is not None else (
-        {g.name: np.asarray(g.model_xyz, dtype=float) for g in gcps if g.model_xyz is not None},
-        {},
-        {g.name: "no model position (mx, my, mz) and no reconstruction to triangulate in" for g in gcps if g.model_xyz is None},
-    )
+    positions, info, problems = _model_positions(gcps, reconstruction, sigma_px)
     notes = [f"{name}: not used, {why}" for name, why in problems.items()]
     control = [g for g in gcps if g.role == "control" and g.name in positions]
     check = [g for g in gcps if g.role == "check" and g.name in positions]
-    if len(control) <= 2:
-        raise InvalidInputError(
-            f"only {len(control)} usable control point(s): a 7-parameter similarity (3 shifts, 3 rotations, "
-            "1 scale) needs at least 3 control points not on one line — 2 points leave the rotation about "
-            "their joining line free, 1 point fixes only the shift"
-            + (f" ({'; '.join(notes)})" if notes else ""),
-            "add control points (5+ spread over the site recommended) or change the role of some check points",
-        )
-    src = np.array([positions[g.name] for g in control])
-    dst = np.array([g.xyz for g in control])
-    sim = fit_similarity(src, dst)
-    if not np.isfinite(sim.scale) or sim.scale <= 0:
-        raise StageError("georeference", "the similarity has a non-positive scale", "check the GCP names and coordinates")
-    rows = _residual_rows(control + check, positions, info, sim.apply, sim.scale)
-    metrics: dict[str, Any] = {"control_n": len(control), "scale": sim.scale}
-    metrics.update(_metrics(rows))
+    sim = _fit_control(control, positions, notes)
+    rows, metrics = _report(control, check, positions, info, sim.apply, sim)
     rec_out = transform_reconstruction(reconstruction, sim, crs) if reconstruction is not None else None
     meta: dict[str, Any] = {"adjustment": "similarity"}
     ok, why = bundle_possible(gcps, reconstruction, info)
     if adjustment == "bundle" and not ok:
         raise InvalidInputError(f"the bundle adjustment cannot run: {why}", "use adjustment='similarity' (the default 'auto' falls back to it)")
     if adjustment != "similarity" and ok:
-        bp = dataclasses.replace(bundle if bundle is not None else BundleParams(), sigma_px=sigma_px)
-        ba = bundle_adjust(rec_out, [g for g in control if g.name in info], bp)
-        pos2, info2, problems2 = triangulate_gcps(control + check, ba.reconstruction, sigma_px)
-        lost = [g for g in control + check if g.name not in pos2]
-        for g in lost:
-            notes.append(f"{g.name}: not intersected after the bundle adjustment ({problems2.get(g.name, '')}); similarity position kept")
-            pos2[g.name] = sim.apply(positions[g.name][None])[0]
-        sim_metrics = metrics
-        rows = _residual_rows(control + check, pos2, info2, lambda X: np.asarray(X, dtype=float), 1.0)
-        metrics = {"control_n": len(control), "scale": sim.scale}
-        metrics.update(_metrics(rows))
-        metrics.update({f"similarity_{k}": v for k, v in sim_metrics.items() if k.startswith(("check_rmse", "control_rmse"))})
-        meta = {"adjustment": "bundle", "bundle": dict(ba.stats)}
-        rec_out = ba.reconstruction
-        notes.append(
-            f"bundle adjustment with {ba.stats['control_points']} control points, {ba.stats['tie_points']} tie points and "
-            f"{ba.stats['free_images']} images: image RMS {ba.stats['rms_px_before']:.3f} -> {ba.stats['rms_px_after']:.3f} px"
-            + (
-                f"; check RMSE 3D {sim_metrics['check_rmse_3d']:.4g} (similarity) -> {metrics['check_rmse_3d']:.4g}"
-                if check else ""
-            )
-        )
-    elif adjustment == "similarity":
-        notes.append("similarity only (bundle adjustment not asked)")
+        rows, metrics, meta, rec_out = _bundle_refinement(control, check, sim, positions, info, rec_out, sigma_px, bundle,
+                                                          metrics, notes)
     else:
-        notes.append(f"similarity only: {why}")
-    if not check:
-        notes.append(
-            "no check points: the accuracy is unknown (control residuals measure the fit only); "
-            "mark some surveyed points as role=check"
-        )
-    if len(check) and len(check) < 20:
-        notes.append(f"{len(check)} check points: ASPRS (2014) asks for at least 20 for a formal accuracy statement")
+        notes.append("similarity only (bundle adjustment not asked)" if adjustment == "similarity" else f"similarity only: {why}")
+    notes += _check_point_notes(check)
     return GeorefResult(sim, QCReport(metrics=metrics, tables={"points": rows}, notes=tuple(notes)), rec_out, meta)

@@ -35,6 +35,8 @@ from workstation.core.log import get_logger
 from workstation.core.products import Camera, Image, Pose, Reconstruction
 from workstation.io.textfile import read_text
 
+from .collinearity import camera_rays
+
 log = get_logger(__name__)
 
 LAYOUTS = ("ring", "convergent", "grid")
@@ -284,10 +286,9 @@ def render(vertices, faces, albedo, camera: Camera, pose: Pose, supersample: int
     """(h, w, 3) uint8 image of a textured mesh by ray casting (first hit, sub-pixel average).
 
     ``rays``: camera-frame unit rays (h·s, w·s, 3) from
-    :func:`workstation.raster.synthetic_aerial.camera_rays`; background (misses) is sky grey.
+    :func:`workstation.photogrammetry.collinearity.camera_rays`; background (misses) is sky grey.
     """
     from workstation.interop.open3d_raycast import RaycastScene
-    from workstation.raster.synthetic_aerial import camera_rays
 
     caster = caster or RaycastScene(vertices, faces)
     d_cam = camera_rays(camera, supersample) if rays is None else rays
@@ -342,8 +343,7 @@ def make_rig(recipe, spec: RigSpec, outdir, overwrite: bool = False) -> RigResul
     from workstation.core.progress import track
     from workstation.interop.open3d_raycast import RaycastScene
     from workstation.io import atomic_path
-    from workstation.raster.ortho import write_reconstruction_json
-    from workstation.raster.synthetic_aerial import camera_rays
+    from workstation.io.reconstruction import write_reconstruction_json
 
     out = Path(outdir)
     if (out / "images").exists() and any((out / "images").iterdir()) and not overwrite:
@@ -394,8 +394,6 @@ def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_
     and the demo; depth range 5-20 m). ``dist``: OpenCV (k1, k2, p1, p2, k3) applied to the
     images (the model is then OPENCV)."""
     import cv2
-
-    from workstation.raster.synthetic_aerial import camera_rays
 
     V, F, alb = box_wall_scene()
     d = tuple(float(x) for x in (list(dist) + [0.0] * 5)[:5])

@@ -4,8 +4,7 @@ Feature extraction (SIFT), matching (exhaustive for small sets; sequential for l
 sets, spatial when the images carry GPS priors), incremental mapping (or global mapping,
 GLOMAP — Pan et al., ECCV 2024 — where pycolmap has it), then, when the intrinsics are
 self-calibrated, one final bundle adjustment that also frees the principal point: COLMAP's
-mapper keeps it at the image centre, which tilts every camera when the real one is off-centre
-(on Strecha's fountain-P11 this alone takes the median rotation error from 0.49° to 0.06°).
+mapper keeps it at the image centre, which tilts every camera when the real one is off-centre.
 
 ``WORKDIR`` follows COLMAP's layout: ``database.db``, ``sparse/0`` (binary model of the largest
 reconstruction), ``sparse/1``... (other, disconnected models), later ``dense/``.
@@ -15,6 +14,7 @@ from __future__ import annotations
 
 import shutil
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
@@ -179,6 +179,204 @@ def check_images_readable(files) -> None:
                                 path=bad[0])
 
 
+@contextmanager
+def _timed(timings: dict, step: str):
+    """Record the seconds the block takes as ``timings[step]``."""
+    t0 = time.perf_counter()
+    yield
+    timings[step] = time.perf_counter() - t0
+
+
+def _input_images(image_dir: Path) -> list[Path]:
+    """The image files of ``image_dir``, all readable, at least 2."""
+    files = list_images(image_dir)
+    check_images_readable(files)
+    if len(files) < 2:
+        raise InvalidInputError(f"structure from motion needs at least 2 images, found {len(files)}", path=image_dir)
+    return files
+
+
+def _prepare_workdir(workdir: Path, overwrite: bool) -> None:
+    """Refuse a non-empty ``workdir`` unless ``overwrite``; then clear its database and models."""
+    if workdir.exists() and any(workdir.iterdir()):
+        if not overwrite:
+            raise OutputExistsError(workdir)
+        for sub in ("database.db", "sparse"):
+            q = workdir / sub
+            if q.is_dir():
+                shutil.rmtree(q)
+            elif q.exists():
+                q.unlink()
+    workdir.mkdir(parents=True, exist_ok=True)
+
+
+def _device(pycolmap):
+    return pycolmap.Device.cpu if not pycolmap.has_cuda else pycolmap.Device.auto
+
+
+def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera | None, params: SfMParams) -> None:
+    """SIFT features of every image into the database; a given camera is applied to all."""
+    from workstation.interop.pycolmap import camera_to_colmap_params
+
+    reader = pycolmap.ImageReaderOptions()
+    if camera is not None:
+        model, cparams = camera_to_colmap_params(camera)
+        reader.camera_model = model
+        reader.camera_params = ",".join(repr(float(v)) for v in cparams)
+        _check_sizes(files, camera)
+    else:
+        reader.camera_model = params.camera_model
+    ext = pycolmap.FeatureExtractionOptions()
+    ext.max_image_size = int(params.max_image_size)
+    ext.num_threads = int(params.num_threads)
+    ext.sift.max_num_features = int(params.max_features)
+    mode = pycolmap.CameraMode.SINGLE if (params.single_camera or camera is not None) else pycolmap.CameraMode.AUTO
+    log.info("extracting features from %d images", len(files))
+    pycolmap.extract_features(
+        db, image_dir, image_names=[f.name for f in files], camera_mode=mode, reader_options=reader,
+        extraction_options=ext, device=_device(pycolmap),
+    )
+
+
+def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> str:
+    """Match the features of the database; returns the matcher used (:func:`choose_matcher`)."""
+    matcher = choose_matcher(n_images, _has_gps(db, pycolmap) if params.matcher == "auto" else False, params)
+    mopt = pycolmap.FeatureMatchingOptions()
+    mopt.num_threads = int(params.num_threads)
+    log.info("matching (%s)", matcher)
+    dev = _device(pycolmap)
+    if matcher == "exhaustive":
+        pycolmap.match_exhaustive(db, matching_options=mopt, device=dev)
+    elif matcher == "sequential":
+        pair = pycolmap.SequentialPairingOptions()
+        pair.overlap = int(params.sequential_overlap)
+        pycolmap.match_sequential(db, matching_options=mopt, pairing_options=pair, device=dev)
+    else:
+        pycolmap.match_spatial(db, matching_options=mopt, device=dev)
+    return matcher
+
+
+def _map(pycolmap, db: Path, image_dir: Path, sparse: Path, n_images: int, fixed: bool, params: SfMParams) -> dict:
+    """Incremental or global mapping into ``sparse``; fixed intrinsics stay fixed. Returns
+    pycolmap's models by index."""
+    from workstation.core.progress import progress_bar
+
+    if params.mapper == "global":
+        gopt = pycolmap.GlobalPipelineOptions()
+        gopt.random_seed = int(params.seed)
+        gopt.num_threads = int(params.num_threads)
+        log.info("global mapping")
+        return pycolmap.global_mapping(db, image_dir, sparse, gopt)
+    opt = pycolmap.IncrementalPipelineOptions()
+    opt.random_seed = int(params.seed)
+    opt.num_threads = int(params.num_threads)
+    if fixed:
+        opt.ba_refine_focal_length = False
+        opt.ba_refine_extra_params = False
+        opt.ba_refine_principal_point = False
+        opt.mapper.abs_pose_refine_focal_length = False
+        opt.mapper.abs_pose_refine_extra_params = False
+    with progress_bar("register images", n_images, unit="images") as advance:
+        return pycolmap.incremental_mapping(db, image_dir, sparse, opt, next_image_callback=lambda: advance(1))
+
+
+def _final_bundle_adjustment(pycolmap, best, fixed: bool, params: SfMParams, notes: list):
+    """One robust bundle adjustment of the largest model, the intrinsics free when
+    self-calibrated and the principal point with them; when the principal point then moves
+    beyond ``max_principal_point_shift`` the adjustment is repeated with it fixed (on a copy
+    of the model taken before). Returns the adjusted model."""
+    bopt = pycolmap.BundleAdjustmentOptions()
+    bopt.refine_focal_length = not fixed
+    bopt.refine_extra_params = not fixed
+    bopt.refine_principal_point = (not fixed) and params.refine_principal_point
+    bopt.print_summary = False
+    try:
+        bopt.ceres.loss_function_type = getattr(pycolmap.LossFunctionType, params.final_ba_loss.upper())
+    except AttributeError:
+        raise InvalidInputError(f"unknown loss {params.final_ba_loss!r}", field="final_ba_loss") from None
+    bopt.ceres.loss_function_scale = float(params.final_ba_loss_scale)
+    log.info(
+        "final bundle adjustment (%s loss, %.2g px%s)",
+        params.final_ba_loss, params.final_ba_loss_scale, ", principal point free" if bopt.refine_principal_point else "",
+    )
+    backup = pycolmap.Reconstruction(best) if bopt.refine_principal_point else None
+    pycolmap.bundle_adjustment(best, bopt)
+    if backup is not None:
+        drift = _principal_point_drift(best)
+        if drift > params.max_principal_point_shift:
+            # too few or too narrow views constrain the principal point: keep it central
+            log.warning(
+                "principal point moved %.1f %% of the image size in the final adjustment (limit %.1f %%): "
+                "weak geometry; kept at the centre instead",
+                100 * drift, 100 * params.max_principal_point_shift,
+            )
+            best = backup
+            bopt.refine_principal_point = False
+            pycolmap.bundle_adjustment(best, bopt)
+            notes.append("principal point not estimated (weakly constrained)")
+    return best
+
+
+def _write_models(ordered: list, sparse: Path) -> list[dict]:
+    """Write the models in COLMAP layout, ``sparse/0`` the largest; returns
+    ``{"index", "images"}`` of the others (disconnected models)."""
+    from workstation.interop.pycolmap import write_model
+
+    for q in list(sparse.iterdir()):
+        if q.is_dir():
+            shutil.rmtree(q)
+    other = []
+    for i, r in enumerate(ordered):
+        write_model(r, sparse / str(i))
+        if i:
+            other.append({"index": i, "images": sorted(im.name for im in r.images.values() if im.has_pose)})
+    return other
+
+
+def _registered(best, names: list, other: list) -> tuple[set, list]:
+    """Names of the images in the largest model and of those not in it (warned about, with the
+    disconnected models)."""
+    registered = {im.name for im in best.images.values() if im.has_pose}
+    unregistered = [n for n in names if n not in registered]
+    for n in unregistered:
+        log.warning("image not registered in the main model: %s", n)
+    for o in other:
+        log.warning("disconnected model sparse/%d: %s", o["index"], ", ".join(o["images"]))
+    return registered, unregistered
+
+
+def _nadir_block_note(rec: Reconstruction) -> str | None:
+    """A warning when every camera looks nearly one way (self-calibration cannot fix the scale)."""
+    spread = viewing_spread_deg(rec)
+    if not spread < NADIR_BLOCK_SPREAD_DEG:
+        return None
+    return (
+        f"every camera looks within {spread:.1f} deg of one direction (a nadir-only block): "
+        "focal length and flying height are nearly inseparable when self-calibrating, so the "
+        "scale along the view may be wrong; give --camera CAMERA.json from a calibration"
+    )
+
+
+def _summary(names, registered, rec: Reconstruction, best, matcher: str, camera, fixed: bool, params: SfMParams,
+             timings: dict, notes: list) -> dict:
+    """The ``summary`` of :class:`SfMResult`."""
+    tl = rec.meta["track_lengths"]
+    return {
+        "images": len(names),
+        "registered": len(registered),
+        "points": int(rec.points.shape[0]),
+        "observations": int(best.compute_num_observations()),
+        "mean_reprojection_error_px": float(best.compute_mean_reprojection_error()),
+        "mean_track_length": float(np.mean(tl)) if tl.size else 0.0,
+        "matcher": matcher,
+        "mapper": params.mapper,
+        "intrinsics": "fixed" if fixed else ("refined from given" if camera is not None else "self-calibrated"),
+        "cameras": {str(k): _camera_summary(c) for k, c in rec.cameras.items()},
+        "timings_s": timings,
+        "notes": notes,
+    }
+
+
 def run_sfm(
     image_dir,
     workdir,
@@ -213,103 +411,26 @@ def run_sfm(
     StageError
         No model could be built.
     """
-    from workstation.core.progress import progress_bar
-    from workstation.interop.pycolmap import (
-        camera_to_colmap_params,
-        cloud_from_reconstruction,
-        import_pycolmap,
-        reconstruction_from_pycolmap,
-        write_model,
-    )
+    from workstation.interop.pycolmap import cloud_from_reconstruction, import_pycolmap, reconstruction_from_pycolmap
 
     pycolmap = import_pycolmap()
     image_dir = Path(image_dir)
-    files = list_images(image_dir)
-    check_images_readable(files)
+    files = _input_images(image_dir)
     names = [f.name for f in files]
-    if len(files) < 2:
-        raise InvalidInputError(f"structure from motion needs at least 2 images, found {len(files)}", path=image_dir)
     workdir = Path(workdir)
-    if workdir.exists() and any(workdir.iterdir()):
-        if not overwrite:
-            raise OutputExistsError(workdir)
-        for sub in ("database.db", "sparse"):
-            q = workdir / sub
-            if q.is_dir():
-                shutil.rmtree(q)
-            elif q.exists():
-                q.unlink()
-    workdir.mkdir(parents=True, exist_ok=True)
-    db = workdir / "database.db"
+    _prepare_workdir(workdir, overwrite)
+    db, sparse = workdir / "database.db", workdir / "sparse"
     if params.seed >= 0:
         pycolmap.set_random_seed(int(params.seed))
-    timings = {}
-
-    # --- features -----------------------------------------------------------------------
-    t0 = time.perf_counter()
-    reader = pycolmap.ImageReaderOptions()
     fixed = camera is not None and not params.refine_intrinsics
-    if camera is not None:
-        model, cparams = camera_to_colmap_params(camera)
-        reader.camera_model = model
-        reader.camera_params = ",".join(repr(float(v)) for v in cparams)
-        _check_sizes(files, camera)
-    else:
-        reader.camera_model = params.camera_model
-    ext = pycolmap.FeatureExtractionOptions()
-    ext.max_image_size = int(params.max_image_size)
-    ext.num_threads = int(params.num_threads)
-    ext.sift.max_num_features = int(params.max_features)
-    mode = pycolmap.CameraMode.SINGLE if (params.single_camera or camera is not None) else pycolmap.CameraMode.AUTO
-    log.info("extracting features from %d images", len(files))
-    pycolmap.extract_features(
-        db, image_dir, image_names=names, camera_mode=mode, reader_options=reader, extraction_options=ext,
-        device=pycolmap.Device.cpu if not pycolmap.has_cuda else pycolmap.Device.auto,
-    )
-    timings["features"] = time.perf_counter() - t0
-
-    # --- matching -------------------------------------------------------------------------
-    t0 = time.perf_counter()
-    matcher = choose_matcher(len(files), _has_gps(db, pycolmap) if params.matcher == "auto" else False, params)
-    mopt = pycolmap.FeatureMatchingOptions()
-    mopt.num_threads = int(params.num_threads)
-    log.info("matching (%s)", matcher)
-    dev = pycolmap.Device.cpu if not pycolmap.has_cuda else pycolmap.Device.auto
-    if matcher == "exhaustive":
-        pycolmap.match_exhaustive(db, matching_options=mopt, device=dev)
-    elif matcher == "sequential":
-        pair = pycolmap.SequentialPairingOptions()
-        pair.overlap = int(params.sequential_overlap)
-        pycolmap.match_sequential(db, matching_options=mopt, pairing_options=pair, device=dev)
-    else:
-        pycolmap.match_spatial(db, matching_options=mopt, device=dev)
-    timings["matching"] = time.perf_counter() - t0
-
-    # --- mapping --------------------------------------------------------------------------
-    t0 = time.perf_counter()
-    sparse = workdir / "sparse"
-    sparse.mkdir(exist_ok=True)
-    if params.mapper == "global":
-        gopt = pycolmap.GlobalPipelineOptions()
-        gopt.random_seed = int(params.seed)
-        gopt.num_threads = int(params.num_threads)
-        log.info("global mapping")
-        recs = pycolmap.global_mapping(db, image_dir, sparse, gopt)
-    else:
-        opt = pycolmap.IncrementalPipelineOptions()
-        opt.random_seed = int(params.seed)
-        opt.num_threads = int(params.num_threads)
-        if fixed:
-            opt.ba_refine_focal_length = False
-            opt.ba_refine_extra_params = False
-            opt.ba_refine_principal_point = False
-            opt.mapper.abs_pose_refine_focal_length = False
-            opt.mapper.abs_pose_refine_extra_params = False
-        with progress_bar("register images", len(files), unit="images") as advance:
-            recs = pycolmap.incremental_mapping(
-                db, image_dir, sparse, opt, next_image_callback=lambda: advance(1)
-            )
-    timings["mapping"] = time.perf_counter() - t0
+    timings, notes = {}, []
+    with _timed(timings, "features"):
+        _extract_features(pycolmap, db, image_dir, files, camera, params)
+    with _timed(timings, "matching"):
+        matcher = _match(pycolmap, db, len(files), params)
+    with _timed(timings, "mapping"):
+        sparse.mkdir(exist_ok=True)
+        recs = _map(pycolmap, db, image_dir, sparse, len(files), fixed, params)
     if not recs:
         raise StageError(
             "sfm",
@@ -317,86 +438,17 @@ def run_sfm(
             "check that the images overlap (60 %+), are sharp and show texture; try --matcher exhaustive",
         )
     ordered = sorted(recs.values(), key=lambda r: (r.num_reg_images(), r.num_points3D()), reverse=True)
-    best = ordered[0]
-
-    summary_notes: list[str] = []
-    # --- final robust bundle adjustment (principal point free when self-calibrating) ---------
-    t0 = time.perf_counter()
-    if params.final_ba:
-        bopt = pycolmap.BundleAdjustmentOptions()
-        bopt.refine_focal_length = not fixed
-        bopt.refine_extra_params = not fixed
-        bopt.refine_principal_point = (not fixed) and params.refine_principal_point
-        bopt.print_summary = False
-        try:
-            bopt.ceres.loss_function_type = getattr(pycolmap.LossFunctionType, params.final_ba_loss.upper())
-        except AttributeError:
-            raise InvalidInputError(f"unknown loss {params.final_ba_loss!r}", field="final_ba_loss") from None
-        bopt.ceres.loss_function_scale = float(params.final_ba_loss_scale)
-        log.info(
-            "final bundle adjustment (%s loss, %.2g px%s)",
-            params.final_ba_loss, params.final_ba_loss_scale, ", principal point free" if bopt.refine_principal_point else "",
-        )
-        backup = pycolmap.Reconstruction(best) if bopt.refine_principal_point else None
-        pycolmap.bundle_adjustment(best, bopt)
-        if backup is not None:
-            drift = _principal_point_drift(best)
-            if drift > params.max_principal_point_shift:
-                # too few or too narrow views constrain the principal point: keep it central
-                log.warning(
-                    "principal point moved %.1f %% of the image size in the final adjustment (limit %.1f %%): "
-                    "weak geometry; kept at the centre instead",
-                    100 * drift, 100 * params.max_principal_point_shift,
-                )
-                best = backup
-                bopt.refine_principal_point = False
-                pycolmap.bundle_adjustment(best, bopt)
-                summary_notes.append("principal point not estimated (weakly constrained)")
-    timings["final_ba"] = time.perf_counter() - t0
-
-    # --- write in COLMAP layout: sparse/0 = largest ---------------------------------------
-    for q in list(sparse.iterdir()):
-        if q.is_dir():
-            shutil.rmtree(q)
-    other = []
-    for i, r in enumerate(ordered):
-        write_model(r, sparse / str(i))
-        if i:
-            other.append({"index": i, "images": sorted(im.name for im in r.images.values() if im.has_pose)})
-    registered = {im.name for im in best.images.values() if im.has_pose}
-    unregistered = [n for n in names if n not in registered]
-    for n in unregistered:
-        log.warning("image not registered in the main model: %s", n)
-    for o in other:
-        log.warning("disconnected model sparse/%d: %s", o["index"], ", ".join(o["images"]))
-
+    with _timed(timings, "final_ba"):
+        best = _final_bundle_adjustment(pycolmap, ordered[0], fixed, params, notes) if params.final_ba else ordered[0]
+    other = _write_models(ordered, sparse)
+    registered, unregistered = _registered(best, names, other)
     rec = reconstruction_from_pycolmap(best, image_dir)
-    if not fixed:
-        spread = viewing_spread_deg(rec)
-        if spread < NADIR_BLOCK_SPREAD_DEG:
-            note = (
-                f"every camera looks within {spread:.1f} deg of one direction (a nadir-only block): "
-                "focal length and flying height are nearly inseparable when self-calibrating, so the "
-                "scale along the view may be wrong; give --camera CAMERA.json from a calibration"
-            )
-            log.warning(note)
-            summary_notes.append(note)
+    note = None if fixed else _nadir_block_note(rec)
+    if note:
+        log.warning(note)
+        notes.append(note)
     cloud = cloud_from_reconstruction(rec)
-    tl = rec.meta["track_lengths"]
-    summary = {
-        "images": len(names),
-        "registered": len(registered),
-        "points": int(rec.points.shape[0]),
-        "observations": int(best.compute_num_observations()),
-        "mean_reprojection_error_px": float(best.compute_mean_reprojection_error()),
-        "mean_track_length": float(np.mean(tl)) if tl.size else 0.0,
-        "matcher": matcher,
-        "mapper": params.mapper,
-        "intrinsics": "fixed" if fixed else ("refined from given" if camera is not None else "self-calibrated"),
-        "cameras": {str(k): _camera_summary(c) for k, c in rec.cameras.items()},
-        "timings_s": timings,
-        "notes": summary_notes,
-    }
+    summary = _summary(names, registered, rec, best, matcher, camera, fixed, params, timings, notes)
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
@@ -442,6 +494,30 @@ def _principal_point_drift(rec) -> float:
 
 def _camera_summary(c: Camera) -> dict:
     return {"model": c.model, "fx": c.fx, "fy": c.fy, "cx": c.cx, "cy": c.cy, "dist": list(c.dist)}
+
+
+def read_reconstruction(path, image_dir=None) -> Reconstruction:
+    """Oriented cameras from a cameras JSON or a COLMAP workdir/model folder.
+
+    ``path`` may be the JSON file (:mod:`workstation.io.reconstruction`), a folder holding
+    ``cameras.json``, a COLMAP model folder (``cameras.bin``/``.txt``), or a workdir with
+    ``sparse/0`` or ``sparse``; ``image_dir`` is where a COLMAP model's images are.
+    """
+    from workstation.io.reconstruction import read_reconstruction_json
+
+    p = Path(path)
+    if p.is_file():
+        return read_reconstruction_json(p)
+    if not p.is_dir():
+        raise InvalidInputError("not found", "give a COLMAP workdir or a cameras JSON", path=p)
+    if (p / "cameras.json").is_file():
+        return read_reconstruction_json(p / "cameras.json")
+    from workstation.interop.pycolmap import find_model, read_model
+
+    if find_model(p) is not None:
+        return read_model(p, image_dir)
+    raise InvalidInputError("no cameras.json and no COLMAP model (cameras.bin/.txt) found",
+                            "run ws sfm first or give the model folder", path=p)
 
 
 def _check_sizes(files, camera: Camera) -> None:

@@ -27,7 +27,6 @@ Projection uses the collinearity equations of
 
 from __future__ import annotations
 
-import json
 import math
 import time
 from dataclasses import dataclass
@@ -39,8 +38,9 @@ from workstation.core.budget import check_grid
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Image, Pose, Raster, Reconstruction
-
-from workstation.io.textfile import read_text
+from workstation.photogrammetry.collinearity import pixels_to_normalized, project
+# read here by workstation/pipeline/demo_steps/mesh_render.py; the reader lives in photogrammetry.sfm
+from workstation.photogrammetry.sfm import read_reconstruction  # noqa: F401
 
 from .grid import GridSpec
 
@@ -82,28 +82,8 @@ def project_points(camera: Camera, pose: Pose, X: np.ndarray) -> tuple[np.ndarra
 
 def _project(camera: Camera, pose: Pose, X: np.ndarray):
     """:func:`project_points` plus the squared radius of the undistorted normalised point."""
-    from workstation.photogrammetry.collinearity import project
-
     uv, z, xy = project(X, camera, pose, return_depth=True, return_normalized=True)
     return uv, z, (xy * xy).sum(axis=1)
-
-
-def undistort(camera: Camera, uv: np.ndarray, iterations: int = 20) -> np.ndarray:
-    """Normalised image coordinates (n, 2) of distorted pixels (fixed-point inversion of the
-    OpenCV model, as ``cv2.undistortPoints``; converges for the moderate distortion of
-    mapping cameras)."""
-    k1, k2, p1, p2, k3 = (tuple(camera.dist) + (0.0,) * 5)[:5]
-    yd = (uv[:, 1] - camera.cy) / camera.fy
-    xd = (uv[:, 0] - camera.cx - camera.skew * yd) / camera.fx
-    x, y = xd.copy(), yd.copy()
-    for _ in range(iterations):
-        r2 = x * x + y * y
-        radial = 1 + r2 * (k1 + r2 * (k2 + r2 * k3))
-        dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x)
-        dy = p1 * (r2 + 2 * y * y) + 2 * p2 * x * y
-        x = (xd - dx) / radial
-        y = (yd - dy) / radial
-    return np.column_stack([x, y])
 
 
 def _max_radius2(camera: Camera) -> float:
@@ -113,70 +93,8 @@ def _max_radius2(camera: Camera) -> float:
     t = np.linspace(0, 1, 9)
     border = np.vstack([np.column_stack([t * w, np.zeros(9)]), np.column_stack([t * w, np.full(9, h)]),
                         np.column_stack([np.zeros(9), t * h]), np.column_stack([np.full(9, w), t * h])])
-    xy = undistort(camera, border)
+    xy = pixels_to_normalized(border, camera)
     return float((xy ** 2).sum(1).max())
-
-
-# --------------------------------------------------------------------------- reconstruction IO
-def _camera_to_dict(c: Camera) -> dict:
-    return {"width": c.width, "height": c.height, "fx": c.fx, "fy": c.fy, "cx": c.cx, "cy": c.cy,
-            "skew": c.skew, "dist": list(c.dist), "model": c.model}
-
-
-def write_reconstruction_json(rec: Reconstruction, path, overwrite: bool = False) -> Path:
-    """Write cameras and oriented images as JSON (pixel centres at integers, x_cam = R X + t)."""
-    from workstation.io import atomic_path
-
-    doc = {
-        "convention": "x_cam = R @ X_world + t; pixel centres at integer coordinates; dist = OpenCV k1 k2 p1 p2 k3",
-        "crs": rec.crs,
-        "cameras": {str(k): _camera_to_dict(c) for k, c in rec.cameras.items()},
-        "images": {str(k): {"name": im.name, "camera_id": im.camera_id, "R": np.asarray(im.pose.R).tolist(),
-                            "t": np.asarray(im.pose.t).tolist(), "path": im.path} for k, im in rec.images.items()},
-        "meta": {k: v for k, v in dict(rec.meta).items() if isinstance(v, (int, float, str, bool))},
-    }
-    with atomic_path(path, overwrite=overwrite) as tmp:
-        tmp.write_text(json.dumps(doc, indent=1))
-    return Path(path)
-
-
-def _read_json(path: Path) -> Reconstruction:
-    from workstation.io.paths import resolve_inside
-
-    try:
-        doc = json.loads(read_text(path))
-        cams = {int(k): Camera(int(c["width"]), int(c["height"]), float(c["fx"]), float(c.get("fy", c["fx"])),
-                               float(c["cx"]), float(c["cy"]), float(c.get("skew", 0.0)),
-                               tuple(float(d) for d in (list(c.get("dist", [])) + [0.0] * 5)[:5]), c.get("model", "OPENCV"))
-                for k, c in doc["cameras"].items()}
-        imgs = {}
-        for k, im in doc["images"].items():
-            p = str(resolve_inside(im.get("path") or im["name"], path.parent, source=path, field=f"images.{k}.path"))
-            imgs[int(k)] = Image(im["name"], int(im["camera_id"]), Pose(np.array(im["R"], float), np.array(im["t"], float)), p)
-    except (KeyError, TypeError, ValueError, json.JSONDecodeError) as e:
-        raise InvalidInputError(f"not a cameras JSON ({e})", "see write_reconstruction_json for the layout", path=path) from None
-    return Reconstruction(cams, imgs, crs=doc.get("crs"), meta=doc.get("meta", {}))
-
-
-def read_reconstruction(path, image_dir=None) -> Reconstruction:
-    """Oriented cameras from a cameras JSON or a COLMAP workdir/model folder.
-
-    ``path`` may be the JSON file, a folder holding ``cameras.json``, a COLMAP model folder
-    (``cameras.bin``/``.txt``), or a workdir with ``sparse/0`` or ``sparse``.
-    """
-    p = Path(path)
-    if p.is_file():
-        return _read_json(p)
-    if not p.is_dir():
-        raise InvalidInputError("not found", "give a COLMAP workdir or a cameras JSON", path=p)
-    if (p / "cameras.json").is_file():
-        return _read_json(p / "cameras.json")
-    from workstation.interop.pycolmap import find_model, read_model
-
-    if find_model(p) is not None:
-        return read_model(p, image_dir)
-    raise InvalidInputError("no cameras.json and no COLMAP model (cameras.bin/.txt) found",
-                            "run ws sfm first or give the model folder", path=p)
 
 
 # --------------------------------------------------------------------------- ortho
@@ -299,6 +217,156 @@ def _bilinear_sample(img: np.ndarray, uv: np.ndarray) -> np.ndarray:
     return out.reshape(len(uv), -1).astype(np.float32)
 
 
+def _dsm_heights(dsm: Raster) -> np.ndarray:
+    """The DSM's first band as float64 with nodata as NaN; refuses a DSM without a valid cell."""
+    dsm_a = np.asarray(dsm.array, dtype=np.float64)
+    if dsm_a.ndim == 3:
+        dsm_a = dsm_a[0]
+    if dsm.nodata is not None and not np.isnan(dsm.nodata):
+        dsm_a = np.where(dsm_a == dsm.nodata, np.nan, dsm_a)
+    if not np.isfinite(dsm_a).any():
+        raise InvalidInputError("the DSM has no valid cell", field="dsm")
+    return dsm_a
+
+
+def _ortho_grid(dgrid: GridSpec, res: float) -> GridSpec:
+    """The ortho grid over the DSM's bounds at cell size ``res`` (refused when too large)."""
+    xmin, ymin, xmax, ymax = dgrid.bounds
+    # RGBA bytes, the float64 ground coordinates and per-view weights of each cell
+    check_grid(max(1.0, round((ymax - ymin) / res)), max(1.0, round((xmax - xmin) / res)), what="the orthophoto",
+               option="--resolution", cell=res, bytes_per_cell=64)
+    return GridSpec(xmin, ymax, res, max(1, int(round((ymax - ymin) / res))), max(1, int(round((xmax - xmin) / res))))
+
+
+class _OrthoBuilder:
+    """The state of one :func:`true_ortho` run: inputs, the output arrays, the image cache.
+
+    A view of a tile is ``(image id, indices of the tile's ground points it sees, their
+    pixels, off-nadir angles in degrees, ground size of a pixel at each point)``.
+    """
+
+    def __init__(self, rec: Reconstruction, dsm: Raster, dsm_a: np.ndarray, dgrid: GridSpec, og: GridSpec,
+                 params: OrthoParams, images: dict | None):
+        self.rec, self.params, self.og, self.dgrid = rec, params, og, dgrid
+        self.zmax = float(np.nanmax(dsm_a))
+        self.dsm_occ = np.where(np.isnan(dsm_a), -np.inf, dsm_a)
+        self.dsm_r = Raster(dsm_a, dsm.transform)
+        sigma_z = params.dsm_rmse if params.dsm_rmse is not None else (dsm.meta.get("vertical_rmse") if dsm.meta else None)
+        self.sigma_z = dgrid.res if sigma_z is None else sigma_z
+        self.sigma_px = params.orientation_px if params.orientation_px is not None else float(rec.meta.get("reprojection_rmse_px", 0.5) or 0.0)
+        self.rgb = np.zeros((3, og.rows, og.cols), np.uint8)
+        self.alpha = np.zeros((og.rows, og.cols), np.uint8)
+        self.acc = np.full((og.rows, og.cols), np.nan, np.float32)
+        self.used = set()
+        self.cache: dict = dict(images or {})
+        self.centres = {k: im.pose.center for k, im in rec.images.items()}
+        self.rmax2 = {cid: _max_radius2(cam) for cid, cam in rec.cameras.items()}
+        self.cos_max = math.cos(math.radians(params.max_off_nadir))
+
+    def tile(self, r0: int, c0: int) -> None:
+        """Colour the ortho cells of the tile whose upper-left cell is (r0, c0)."""
+        from .dem import sample_bilinear
+
+        og, T, res = self.og, self.params.tile, self.og.res
+        rr = np.arange(r0, min(r0 + T, og.rows))
+        cc = np.arange(c0, min(c0 + T, og.cols))
+        CC, RR = np.meshgrid(cc, rr)
+        X = og.x0 + (CC.ravel() + 0.5) * res
+        Y = og.y1 - (RR.ravel() + 0.5) * res
+        Z = sample_bilinear(self.dsm_r, X, Y)
+        idx = np.flatnonzero(np.isfinite(Z))
+        if len(idx) == 0:
+            return
+        P = np.column_stack([X[idx], Y[idx], Z[idx]])
+        views = self.views(P)
+        if not views:
+            return
+        colour, seen, best, gsd_best = self.colours(views, len(P))
+        flat = np.zeros((len(X), 3))
+        flat[idx] = colour
+        a = np.zeros(len(X), np.uint8)
+        a[idx[seen]] = 255
+        th = np.radians(np.where(seen, best, np.nan))
+        sig = np.sqrt((self.sigma_z * np.tan(th)) ** 2 + (self.sigma_px * gsd_best) ** 2)
+        accf = np.full(len(X), np.nan)
+        accf[idx] = sig
+        sl = (slice(r0, r0 + len(rr)), slice(c0, c0 + len(cc)))
+        self.rgb[(slice(None),) + sl] = np.round(flat).clip(0, 255).astype(np.uint8).reshape(len(rr), len(cc), 3).transpose(2, 0, 1)
+        self.alpha[sl] = a.reshape(len(rr), len(cc))
+        self.acc[sl] = accf.reshape(len(rr), len(cc))
+
+    def views(self, P: np.ndarray) -> list:
+        """The views of the ground points ``P`` (n, 3) of one tile, one per image that sees any."""
+        box = np.array([[x, y, z] for x in (P[:, 0].min(), P[:, 0].max()) for y in (P[:, 1].min(), P[:, 1].max())
+                        for z in (P[:, 2].min(), P[:, 2].max())])
+        views = []
+        for k, im in self.rec.images.items():
+            cam = self.rec.cameras[im.camera_id]
+            if _misses(cam, im.pose, box):
+                continue
+            view = self._view(k, im, cam, P)
+            if view is not None:
+                views.append(view)
+        return views
+
+    def _view(self, k, im: Image, cam: Camera, P: np.ndarray):
+        """Image ``k``'s view of the points ``P``: in the frame, in front, within the off-nadir
+        limit, not folded back by distortion and (with occlusion) not hidden by the DSM."""
+        params = self.params
+        uv, depth, r2 = _project(cam, im.pose, P)
+        C = self.centres[k]
+        d = C[None, :] - P
+        cos_t = d[:, 2] / np.linalg.norm(d, axis=1)
+        vis = (depth > 0) & (uv[:, 0] >= 0) & (uv[:, 0] <= cam.width - 1) & (uv[:, 1] >= 0) & (uv[:, 1] <= cam.height - 1)
+        vis &= (cos_t >= self.cos_max) & (r2 <= 1.1 * self.rmax2[im.camera_id])
+        if not vis.any():
+            return None
+        sel = np.flatnonzero(vis)
+        if params.occlusion:
+            occ = _occluded(P[sel], C, self.dsm_occ, self.dgrid, self.zmax, params.occlusion_tolerance)
+            sel = sel[~occ]
+        if len(sel) == 0:
+            return None
+        theta = np.degrees(np.arccos(np.clip(cos_t[sel], -1, 1)))
+        return (k, sel, uv[sel], theta, depth[sel] / cam.fx)
+
+    def colours(self, views: list, n: int):
+        """Blend the views of a tile's ``n`` points (module docstring, step 4).
+
+        Returns the colours (n, 3), which points are seen, the smallest off-nadir angle and the
+        pixel ground size in the most nadir view of each point.
+        """
+        best = np.full(n, np.inf)
+        gsd_best = np.zeros(n)
+        for k, sel, uv, theta, gsd in views:
+            better = theta < best[sel]
+            best[sel[better]] = theta[better]
+            gsd_best[sel[better]] = gsd[better]
+        num = np.zeros((n, 3))
+        den = np.zeros(n)
+        blend_angle = self.params.blend_angle
+        for k, sel, uv, theta, gsd in views:
+            dth = theta - best[sel]
+            if blend_angle > 0:
+                w = np.exp(-dth / blend_angle)
+                w[dth > 3 * blend_angle] = 0.0
+            else:
+                w = (dth <= 1e-9).astype(float)
+            m = w > 0
+            if not m.any():
+                continue
+            if k not in self.cache:
+                self.cache[k] = _load_image(self.rec.images[k])
+            col = _bilinear_sample(self.cache[k], uv[m])
+            num[sel[m]] += w[m, None] * col[:, :3]
+            den[sel[m]] += w[m]
+            self.used.add(k)
+        seen = den > 0
+        colour = np.zeros((n, 3))
+        colour[seen] = num[seen] / den[seen, None]
+        return colour, seen, best, gsd_best
+
+
 def true_ortho(rec: Reconstruction, dsm: Raster, params: OrthoParams = OrthoParams(), images: dict | None = None) -> OrthoResult:
     """Build a true orthophoto from oriented images over a DSM.
 
@@ -322,126 +390,25 @@ def true_ortho(rec: Reconstruction, dsm: Raster, params: OrthoParams = OrthoPara
         When no cell is seen by any image (wrong CRS, DSM outside the block).
     """
     t0 = time.perf_counter()
-    dsm_a = np.asarray(dsm.array, dtype=np.float64)
-    if dsm_a.ndim == 3:
-        dsm_a = dsm_a[0]
-    if dsm.nodata is not None and not np.isnan(dsm.nodata):
-        dsm_a = np.where(dsm_a == dsm.nodata, np.nan, dsm_a)
-    if not np.isfinite(dsm_a).any():
-        raise InvalidInputError("the DSM has no valid cell", field="dsm")
+    dsm_a = _dsm_heights(dsm)
     dgrid = GridSpec.from_transform(dsm.transform, dsm_a.shape)
     res = params.resolution or dgrid.res
-    xmin, ymin, xmax, ymax = dgrid.bounds
-    # RGBA bytes, the float64 ground coordinates and per-view weights of each cell
-    check_grid(max(1.0, round((ymax - ymin) / res)), max(1.0, round((xmax - xmin) / res)), what="the orthophoto",
-               option="--resolution", cell=res, bytes_per_cell=64)
-    og = GridSpec(xmin, ymax, res, max(1, int(round((ymax - ymin) / res))), max(1, int(round((xmax - xmin) / res))))
-    zmax = float(np.nanmax(dsm_a))
-    dsm_occ = np.where(np.isnan(dsm_a), -np.inf, dsm_a)
-    dsm_r = Raster(dsm_a, dsm.transform)
-    from .dem import sample_bilinear
-
-    sigma_z = params.dsm_rmse if params.dsm_rmse is not None else (dsm.meta.get("vertical_rmse") if dsm.meta else None)
-    if sigma_z is None:
-        sigma_z = dgrid.res
-    sigma_px = params.orientation_px if params.orientation_px is not None else float(rec.meta.get("reprojection_rmse_px", 0.5) or 0.0)
-    rgb = np.zeros((3, og.rows, og.cols), np.uint8)
-    alpha = np.zeros((og.rows, og.cols), np.uint8)
-    acc = np.full((og.rows, og.cols), np.nan, np.float32)
-    used = set()
-    cache: dict = dict(images or {})
-    centres = {k: im.pose.center for k, im in rec.images.items()}
-    rmax2 = {cid: _max_radius2(cam) for cid, cam in rec.cameras.items()}
-    cos_max = math.cos(math.radians(params.max_off_nadir))
-    T = params.tile
-    for r0 in range(0, og.rows, T):
-        for c0 in range(0, og.cols, T):
-            rr = np.arange(r0, min(r0 + T, og.rows))
-            cc = np.arange(c0, min(c0 + T, og.cols))
-            CC, RR = np.meshgrid(cc, rr)
-            X = og.x0 + (CC.ravel() + 0.5) * res
-            Y = og.y1 - (RR.ravel() + 0.5) * res
-            Z = sample_bilinear(dsm_r, X, Y)
-            ok = np.isfinite(Z)
-            idx = np.flatnonzero(ok)
-            if len(idx) == 0:
-                continue
-            P = np.column_stack([X[idx], Y[idx], Z[idx]])
-            box = np.array([[x, y, z] for x in (P[:, 0].min(), P[:, 0].max()) for y in (P[:, 1].min(), P[:, 1].max())
-                            for z in (P[:, 2].min(), P[:, 2].max())])
-            views = []
-            for k, im in rec.images.items():
-                cam = rec.cameras[im.camera_id]
-                if _misses(cam, im.pose, box):
-                    continue
-                uv, depth, r2 = _project(cam, im.pose, P)
-                C = centres[k]
-                d = C[None, :] - P
-                cos_t = d[:, 2] / np.linalg.norm(d, axis=1)
-                vis = (depth > 0) & (uv[:, 0] >= 0) & (uv[:, 0] <= cam.width - 1) & (uv[:, 1] >= 0) & (uv[:, 1] <= cam.height - 1)
-                vis &= (cos_t >= cos_max) & (r2 <= 1.1 * rmax2[im.camera_id])
-                if not vis.any():
-                    continue
-                sel = np.flatnonzero(vis)
-                if params.occlusion:
-                    occ = _occluded(P[sel], C, dsm_occ, dgrid, zmax, params.occlusion_tolerance)
-                    sel = sel[~occ]
-                if len(sel) == 0:
-                    continue
-                theta = np.degrees(np.arccos(np.clip(cos_t[sel], -1, 1)))
-                views.append((k, sel, uv[sel], theta, depth[sel] / cam.fx))
-            if not views:
-                continue
-            best = np.full(len(P), np.inf)
-            gsd_best = np.zeros(len(P))
-            for k, sel, uv, theta, gsd in views:
-                better = theta < best[sel]
-                best[sel[better]] = theta[better]
-                gsd_best[sel[better]] = gsd[better]
-            num = np.zeros((len(P), 3))
-            den = np.zeros(len(P))
-            for k, sel, uv, theta, gsd in views:
-                dth = theta - best[sel]
-                if params.blend_angle > 0:
-                    w = np.exp(-dth / params.blend_angle)
-                    w[dth > 3 * params.blend_angle] = 0.0
-                else:
-                    w = (dth <= 1e-9).astype(float)
-                m = w > 0
-                if not m.any():
-                    continue
-                if k not in cache:
-                    cache[k] = _load_image(rec.images[k])
-                col = _bilinear_sample(cache[k], uv[m])
-                num[sel[m]] += w[m, None] * col[:, :3]
-                den[sel[m]] += w[m]
-                used.add(k)
-            seen = den > 0
-            colour = np.zeros((len(P), 3))
-            colour[seen] = num[seen] / den[seen, None]
-            flat = np.zeros((len(X), 3))
-            flat[idx] = colour
-            a = np.zeros(len(X), np.uint8)
-            a[idx[seen]] = 255
-            th = np.radians(np.where(seen, best, np.nan))
-            sig = np.sqrt((sigma_z * np.tan(th)) ** 2 + (sigma_px * gsd_best) ** 2)
-            accf = np.full(len(X), np.nan)
-            accf[idx] = sig
-            sl = (slice(r0, r0 + len(rr)), slice(c0, c0 + len(cc)))
-            rgb[(slice(None),) + sl] = np.round(flat).clip(0, 255).astype(np.uint8).reshape(len(rr), len(cc), 3).transpose(2, 0, 1)
-            alpha[sl] = a.reshape(len(rr), len(cc))
-            acc[sl] = accf.reshape(len(rr), len(cc))
-    coverage = float((alpha > 0).mean())
+    og = _ortho_grid(dgrid, res)
+    b = _OrthoBuilder(rec, dsm, dsm_a, dgrid, og, params, images)
+    for r0 in range(0, og.rows, params.tile):
+        for c0 in range(0, og.cols, params.tile):
+            b.tile(r0, c0)
+    coverage = float((b.alpha > 0).mean())
     if coverage == 0:
         raise StageError("ortho", "no DSM cell is seen by any image",
                          "check that the DSM and the reconstruction share a CRS and overlap")
-    valid_acc = acc[np.isfinite(acc)]
+    valid_acc = b.acc[np.isfinite(b.acc)]
     meta = {
-        "kind": "ortho", "resolution": res, "coverage": coverage, "images_used": len(used), "images": len(rec.images),
+        "kind": "ortho", "resolution": res, "coverage": coverage, "images_used": len(b.used), "images": len(rec.images),
         "true_ortho": params.occlusion, "blend_angle_deg": params.blend_angle,
         "accuracy_rms_m": float(np.sqrt(np.mean(valid_acc ** 2))), "accuracy_max_m": float(valid_acc.max()),
-        "dsm_rmse_m": float(sigma_z), "orientation_px": float(sigma_px), "seconds": round(time.perf_counter() - t0, 3),
+        "dsm_rmse_m": float(b.sigma_z), "orientation_px": float(b.sigma_px), "seconds": round(time.perf_counter() - t0, 3),
     }
-    ortho = Raster(np.concatenate([rgb, alpha[None]]), og.transform, dsm.crs or rec.crs, None, meta)
-    accr = Raster(acc, og.transform, dsm.crs or rec.crs, -9999.0, {"kind": "ortho_accuracy", "units": "m"})
+    ortho = Raster(np.concatenate([b.rgb, b.alpha[None]]), og.transform, dsm.crs or rec.crs, None, meta)
+    accr = Raster(b.acc, og.transform, dsm.crs or rec.crs, -9999.0, {"kind": "ortho_accuracy", "units": "m"})
     return OrthoResult(ortho, accr, meta)

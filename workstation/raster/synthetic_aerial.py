@@ -19,9 +19,10 @@ from pathlib import Path
 import numpy as np
 
 from workstation.core.products import Camera, Image, Pose, Raster, Reconstruction
+from workstation.io.reconstruction import write_reconstruction_json
+from workstation.photogrammetry.collinearity import camera_rays
 
 from .grid import GridSpec
-from .ortho import undistort
 
 
 @dataclass(frozen=True)
@@ -262,26 +263,11 @@ class AerialRig:
         return poses
 
 
-def camera_rays(camera: Camera, supersample: int = 1) -> np.ndarray:
-    """Unit ray directions in the camera frame through every (sub-)pixel, (h·s, w·s, 3).
-
-    Sub-pixel (r, c) passes through the distorted image point u = (c + 0.5)/s − 0.5,
-    v = (r + 0.5)/s − 0.5 (pixel centres at integers).
-    """
-    s = supersample
-    us = (np.arange(camera.width * s) + 0.5) / s - 0.5
-    vs = (np.arange(camera.height * s) + 0.5) / s - 0.5
-    U, V = np.meshgrid(us, vs)
-    und = undistort(camera, np.column_stack([U.ravel(), V.ravel()]))
-    d = np.column_stack([und, np.ones(len(und))])
-    d /= np.linalg.norm(d, axis=1, keepdims=True)
-    return d.reshape(camera.height * s, camera.width * s, 3)
-
-
 def render_image(scene: AerialScene, camera: Camera, pose: Pose, supersample: int = 2, caster=None, rays=None) -> np.ndarray:
     """(h, w, 3) uint8 photo of the scene by ray casting (sub-pixel rays averaged).
 
-    ``rays``: :func:`camera_rays` of the camera, to reuse across images.
+    ``rays``: :func:`workstation.photogrammetry.collinearity.camera_rays` of the camera, to
+    reuse across images.
     """
     d_cam = camera_rays(camera, supersample) if rays is None else rays
     flat = d_cam.reshape(-1, 3) @ np.asarray(pose.R)  # R^T d for each row: camera -> world
@@ -297,7 +283,7 @@ def make_dataset(outdir, scene: AerialScene = AerialScene(), rig: AerialRig = Ae
     Returns
     -------
     Path
-        The cameras JSON (readable by :func:`workstation.raster.ortho.read_reconstruction`).
+        The cameras JSON (readable by :func:`workstation.photogrammetry.sfm.read_reconstruction`).
     """
     import cv2
 
@@ -316,9 +302,7 @@ def make_dataset(outdir, scene: AerialScene = AerialScene(), rig: AerialRig = Ae
             cv2.imwrite(str(tmp), img[:, :, ::-1])
         images[k] = Image(name, 1, pose, str(Path("images") / name))
     rec = Reconstruction({1: cam}, images, crs=scene.crs, meta={"reprojection_rmse_px": 0.0, "synthetic": True})
-    from .ortho import write_reconstruction_json
-
     return write_reconstruction_json(rec, out / "cameras.json", overwrite=True)
 
 
-__all__ = ["AerialScene", "AerialRig", "render_image", "camera_rays", "undistort", "make_dataset"]
+__all__ = ["AerialScene", "AerialRig", "render_image", "make_dataset"]

@@ -27,6 +27,7 @@ from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Pose, Reconstruction
+from workstation.io.images import read_image
 
 log = get_logger(__name__)
 STAGE = "colorize"
@@ -301,22 +302,6 @@ def read_depth_maps(dense_dir, reconstruction: Reconstruction) -> dict[int, np.n
     return out
 
 
-def _load_image(img, root) -> np.ndarray:
-    p = Path(img.path) if img.path else Path(img.name)
-    if root is not None and not p.is_absolute():
-        p = Path(root) / p
-    if not p.exists():
-        raise InvalidInputError("image file not found", "give the image folder (--images)", path=p)
-    import cv2
-
-    a = cv2.imread(str(p), cv2.IMREAD_UNCHANGED)
-    if a is None:
-        raise InvalidInputError("could not read image", path=p)
-    if a.ndim == 2:
-        a = np.repeat(a[:, :, None], 3, axis=2)
-    return a[:, :, 2::-1] if a.shape[2] >= 3 else a
-
-
 def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParams = ColorizeParams(), *,
              images: Mapping[int, np.ndarray] | None = None, depth_maps: Mapping[int, np.ndarray] | None = None,
              image_root=None) -> Cloud:
@@ -361,7 +346,7 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
     local_spacing = None
     for iid, im in reconstruction.images.items():
         cam = reconstruction.cameras[im.camera_id]
-        img = images[iid] if images is not None and iid in images else _load_image(im, image_root)
+        img = images[iid] if images is not None and iid in images else read_image(im, image_root)
         if img.shape[0] != cam.height or img.shape[1] != cam.width:
             raise InvalidInputError(f"image {im.name} is {img.shape[1]}x{img.shape[0]} but its camera says "
                                     f"{cam.width}x{cam.height}", field="images")
