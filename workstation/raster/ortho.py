@@ -39,8 +39,6 @@ from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Image, Pose, Raster, Reconstruction
 from workstation.photogrammetry.collinearity import pixels_to_normalized, project
-# read here by workstation/pipeline/demo_steps/mesh_render.py; the reader lives in photogrammetry.sfm
-from workstation.photogrammetry.sfm import read_reconstruction  # noqa: F401
 
 from .grid import GridSpec
 

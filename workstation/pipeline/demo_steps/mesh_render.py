@@ -78,7 +78,7 @@ def _textured_rig_mesh(ctx) -> dict:
     from workstation.io.mesh import write_mesh
     from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams,
                                   TextureParams, mesh_cloud)
-    from workstation.raster.ortho import read_reconstruction
+    from workstation.photogrammetry.sfm import read_reconstruction
 
     dense = ctx.products.get("dense_ply")
     work = ctx.outdir / "dense_rig"
