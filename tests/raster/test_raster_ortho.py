@@ -201,3 +201,21 @@ def test_seam_blending_feathers_an_exposure_step(dataset):
 
     hard, soft = max_step(0.0), max_step(2.0)
     assert hard > 30 and soft < 0.6 * hard
+
+
+def test_bilinear_sample_takes_more_positions_than_opencv_maps_allow():
+    """cv2.remap refuses a map side of 32,767 or more; the sampler lays positions out in rows,
+    so 100,000 positions give the same values as sampling them in small pieces."""
+    import cv2
+
+    from workstation.raster.ortho import _bilinear_sample
+
+    rng = np.random.default_rng(0)
+    img = rng.integers(0, 255, (120, 160, 3), dtype=np.uint8)
+    uv = rng.uniform(-3, 163, (100_000, 2))
+    got = _bilinear_sample(img, uv)
+    m = uv.astype(np.float32)
+    ref = np.concatenate([cv2.remap(img, m[s:s + 1000, 0:1], m[s:s + 1000, 1:2], cv2.INTER_LINEAR,
+                                    borderMode=cv2.BORDER_REPLICATE).reshape(-1, 3) for s in range(0, len(m), 1000)])
+    assert got.shape == (100_000, 3)
+    np.testing.assert_array_equal(got, ref.astype(np.float32))

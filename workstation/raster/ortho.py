@@ -207,12 +207,31 @@ def _misses(cam: Camera, pose: Pose, box: np.ndarray) -> bool:
     return bool((u < 0).all() or (u > cam.width - 1).all() or (v < 0).all() or (v > cam.height - 1).all())
 
 
+#: Sample positions per cv2.remap row; OpenCV refuses maps with a side of 32,767 or more.
+_REMAP_WIDTH = 4096
+_REMAP_ROWS = 32_000
+
+
 def _bilinear_sample(img: np.ndarray, uv: np.ndarray) -> np.ndarray:
+    """``img`` sampled bilinearly at the (n, 2) pixel positions ``uv`` (edges replicated):
+    (n, channels) float32. The positions are laid out as rows of a 2-D map, in blocks, since
+    each remap result depends only on its own position."""
     import cv2
 
+    n = len(uv)
     m = uv.astype(np.float32)
-    out = cv2.remap(img, m[:, 0].reshape(-1, 1), m[:, 1].reshape(-1, 1), cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    return out.reshape(len(uv), -1).astype(np.float32)
+    out = []
+    block = _REMAP_WIDTH * _REMAP_ROWS
+    for s in range(0, max(n, 1), block):
+        part = m[s : s + block]
+        k = len(part)
+        w = min(_REMAP_WIDTH, max(k, 1))
+        rows = -(-k // w) if k else 0
+        pad = np.pad(part, ((0, rows * w - k), (0, 0)), mode="edge") if k else part
+        r = cv2.remap(img, pad[:, 0].reshape(rows, w), pad[:, 1].reshape(rows, w), cv2.INTER_LINEAR,
+                      borderMode=cv2.BORDER_REPLICATE) if k else np.empty((0, 1), img.dtype)
+        out.append(r.reshape(rows * w, -1)[:k] if k else r.reshape(0, img.shape[2] if img.ndim == 3 else 1))
+    return np.concatenate(out).astype(np.float32)
 
 
 def _dsm_heights(dsm: Raster) -> np.ndarray:
