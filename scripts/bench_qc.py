@@ -2,9 +2,10 @@
 
   python scripts/bench_qc.py real   [--data DIR]            ws qc on bcts_1 and bcts_2 (three flight lines
                                                           each): seconds, ANPD, coverage, voids, swath pairs
-  python scripts/bench_qc.py swath  [--bias 0.10]           a simulated ALS flight (ws simulate als) with and
-                                                          without line 2 raised by --bias metres (--line-bias):
-                                                          RMSDz of the pairs against the injected offset
+  python scripts/bench_qc.py swath  [--bias 0.10] [--seeds 3]  simulated ALS flights (ws simulate als, two
+                                                          lines) with and without line 2 raised by --bias metres
+                                                          (--line-bias), default errors and GNSS noise off:
+                                                          RMSDz of the pair against the injected offset
   python scripts/bench_qc.py scale  TILES... [--max-points N]   ws qc over a catalog (e.g. /work/bench/c200/tiles,
                                                           made by bench_project.py catalog): seconds, points/s,
                                                           peak memory
@@ -63,20 +64,27 @@ def real(args):
 
 
 def swath(args):
+    """Each seed flown with and without line 2 raised, with the default errors and with the GNSS
+    noise off (each line then carries no navigation offset of its own): RMSDz of each pair
+    against the injected offset."""
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        for bias in (0.0, args.bias):
-            laz = tmp / f"flight_{bias:g}.laz"
-            cmd = [WS, "-q", "simulate", "als", "-o", str(laz), "--scene", args.scene, "--seed", "1", "--lines", "3"]
-            if bias:
-                cmd += ["--line-bias", f"2:0,0,{bias}"]
-            subprocess.run(cmd, check=True, capture_output=True)
-            doc, dt, _ = ws_qc([laz], tmp / f"qc_{bias:g}")
-            for p in doc["swaths"]:
-                involved = 2 in (p["a"], p["b"])
-                emit({"bench": "qc_swath", "injected_m": bias if involved else 0.0, "a": p["a"], "b": p["b"],
-                      "rmsdz": p["rmsdz"], "mean_dz": p["mean_dz"], "cells": p["cells"],
-                      "error_m": round(abs(p["rmsdz"] - (bias if involved else 0.0)), 4), "seconds": round(dt, 2)})
+        for seed in range(args.seeds):
+            for gnss in ("default", "off"):
+                for bias in (0.0, args.bias):
+                    laz = tmp / f"flight_{seed}_{gnss}_{bias:g}.laz"
+                    cmd = [WS, "-q", "simulate", "als", "-o", str(laz), "--scene", args.scene, "--seed", str(seed),
+                           "--lines", "2", "--overwrite"]
+                    cmd += ["--gnss-noise", "0,0,0"] if gnss == "off" else []
+                    cmd += ["--line-bias", f"2:0,0,{bias}"] if bias else []
+                    subprocess.run(cmd, check=True, capture_output=True)
+                    doc, dt, _ = ws_qc([laz], tmp / f"qc_{seed}_{gnss}_{bias:g}")
+                    for p in doc["swaths"]:
+                        injected = bias if 2 in (p["a"], p["b"]) else 0.0
+                        emit({"bench": "qc_swath", "seed": seed, "gnss_noise": gnss, "injected_m": injected,
+                              "a": p["a"], "b": p["b"], "rmsdz": round(p["rmsdz"], 4), "mean_dz": round(p["mean_dz"], 4),
+                              "cells": p["cells"], "error_m": round(abs(p["rmsdz"] - injected), 4),
+                              "seconds": round(dt, 2)})
 
 
 def scale(args):
@@ -104,7 +112,8 @@ def main():
     r.add_argument("--data")
     s = sub.add_parser("swath")
     s.add_argument("--bias", type=float, default=0.10)
-    s.add_argument("--scene", default="rural")
+    s.add_argument("--scene", default="demo_small")
+    s.add_argument("--seeds", type=int, default=3)
     c = sub.add_parser("scale")
     c.add_argument("tiles", nargs="+")
     c.add_argument("--max-points", type=int, default=0)
