@@ -100,6 +100,31 @@ def test_lzf_overlapping_reference():
         pcd.lzf_decompress(bytes([0x20, 5]), 3)
 
 
+def test_lzf_c_and_python_decoders_agree(monkeypatch):
+    """liblzf's C decoder (python-lzf) and the pure-Python fallback give the same bytes, and
+    the same errors on corrupt streams."""
+    lzf = pytest.importorskip("lzf")
+    assert pcd._lzf_c is lzf
+    rng = np.random.default_rng(7)
+    fields = np.round(rng.normal(size=(3, 20000)), 2).astype(np.float32)  # column-major, compressible
+    samples = [fields.tobytes(), b"ab" * 5000 + b"a", bytes(rng.integers(0, 256, 3000, dtype=np.uint8)),
+               bytes(70000), b"x"]
+    for raw in samples:
+        comp = lzf.compress(raw, 2 * len(raw) + 16)  # room for incompressible data (literal runs)
+        assert pcd.lzf_decompress_py(comp, len(raw)) == raw
+        assert pcd.lzf_decompress(comp, len(raw)) == raw
+    comp = lzf.compress(samples[0])
+    for bad, n in [(bytes([0x20, 5]), 3), (comp[:-7], len(samples[0])), (comp, len(samples[0]) - 1),
+                   (comp, len(samples[0]) + 1), (b"", 4)]:
+        with pytest.raises(ValueError) as c_err:
+            pcd.lzf_decompress(bad, n)
+        with pytest.raises(ValueError) as py_err:
+            pcd.lzf_decompress_py(bad, n)
+        assert str(c_err.value) == str(py_err.value)
+    monkeypatch.setattr(pcd, "_lzf_c", None)  # without python-lzf: the fallback alone
+    assert pcd.lzf_decompress(comp, len(samples[0])) == samples[0]
+
+
 PCL_ASCII = """# .PCD v0.7 - Point Cloud Data file format
 VERSION 0.7
 FIELDS x y z rgb label

@@ -185,3 +185,13 @@ def test_turntable_frames_and_gif(tmp_path):
         assert im.n_frames == 4
     save_png(frames[0], tmp_path / "f.png")
     assert np.array_equal(np.asarray(Image.open(tmp_path / "f.png").convert("RGB")), frames[0])
+
+
+def test_render_leaves_pyvista_global_off_screen_alone():
+    """Rendering uses its own off-screen Plotter; pyvista.OFF_SCREEN (a notebook's setting) stays."""
+    pv = pytest.importorskip("pyvista")
+    before = pv.OFF_SCREEN
+    c = Cloud(O + np.random.default_rng(0).uniform(0, 10, (200, 3)))
+    img = render(c, RenderParams(size=(64, 48)))
+    assert img.shape == (48, 64, 3)
+    assert pv.OFF_SCREEN == before

@@ -3,7 +3,7 @@
 Canonical names are snake_case. Each row gives the numpy dtype, the per-point shape
 (``()`` for scalars, ``(3,)`` for rgb and normals), and the names the same quantity has in
 LAS (laspy), PDAL and Open3D. Translation between names happens only at the IO and interop
-boundary, through :func:`canonical_name` and the ``*_name`` lookups here.
+boundary, through :func:`canonical_name` and the rows of :data:`DIMS`.
 
 Any other attribute (an extra-byte dimension, a feature a stage computed) is allowed under
 its own name with its own dtype.
@@ -118,14 +118,6 @@ def canonical_name(name: str) -> str:
     ('intensity', 'scan_angle', 'treeID')
     """
     return _ALIASES.get(name.lower(), name)
-
-
-def pdal_name(name: str) -> str | tuple[str, ...]:
-    """PDAL name(s) of a canonical dimension; unknown names pass unchanged."""
-    d = DIMS.get(name)
-    if d is None or not d.pdal:
-        return name
-    return d.pdal[0] if len(d.pdal) == 1 else d.pdal
 
 
 def expected_dtype(name: str) -> np.dtype | None:

@@ -5,7 +5,10 @@ Open3D stores coordinates in float64 (legacy ``PointCloud``) or in a tensor of o
 northings of 5 000 000 m) lose millimetres in float32, so every conversion here subtracts an
 explicit ``origin`` (a (3,) float64 vector, returned with the Open3D object) and the reverse
 conversion adds it back. The default origin is the centre of the cloud's bounding box rounded
-to whole units, so it is reproducible and visible in logs.
+to whole units, so it is reproducible and visible in logs
+(:func:`workstation.core.geometry.default_origin`). Colours go to Open3D as floats in [0, 1]
+by :func:`workstation.core.color.rgb_to_unit` (the rule MeshLab and VTK get too) and come
+back as 16-bit ``rgb``.
 
 Open3D mutates in place (``transform``, ``estimate_normals``, ``paint_uniform_color``); the
 helpers here always work on copies so a caller's object never changes behind its back.
@@ -18,7 +21,9 @@ from __future__ import annotations
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_unit, unit_to_rgb16
 from workstation.core.errors import InvalidInputError, MissingDependencyError
+from workstation.core.geometry import default_origin
 
 
 def require_open3d():
@@ -33,14 +38,6 @@ def require_open3d():
     return o3d
 
 
-def default_origin(xyz: np.ndarray) -> np.ndarray:
-    """Reproducible local origin: the bounding-box centre rounded to whole units, (3,) float64."""
-    xyz = np.asarray(xyz, dtype=np.float64)
-    if xyz.shape[0] == 0:
-        return np.zeros(3)
-    return np.round(0.5 * (xyz.min(axis=0) + xyz.max(axis=0)))
-
-
 def _origin(cloud_xyz, origin) -> np.ndarray:
     if origin is None:
         return default_origin(cloud_xyz)
@@ -48,21 +45,6 @@ def _origin(cloud_xyz, origin) -> np.ndarray:
     if o.shape != (3,):
         raise InvalidInputError(f"origin must be 3 numbers, got {o.shape}", field="origin")
     return o
-
-
-def rgb_to_unit(rgb: np.ndarray) -> np.ndarray:
-    """Colours as float64 in [0, 1]: u16 (LAS convention) divided by 65535, u8 by 255."""
-    rgb = np.asarray(rgb)
-    if rgb.dtype == np.uint8:
-        return rgb.astype(np.float64) / 255.0
-    if rgb.dtype.kind in "iu":
-        return rgb.astype(np.float64) / 65535.0
-    return np.clip(rgb.astype(np.float64), 0.0, 1.0)
-
-
-def unit_to_rgb16(c: np.ndarray) -> np.ndarray:
-    """Colours in [0, 1] to (n, 3) uint16 (the ``rgb`` dimension)."""
-    return np.round(np.clip(np.asarray(c, dtype=np.float64), 0.0, 1.0) * 65535.0).astype(np.uint16)
 
 
 def to_legacy(cloud: Cloud, origin=None, *, normals: bool = True, colors: bool = True):

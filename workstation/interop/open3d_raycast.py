@@ -73,27 +73,3 @@ class RaycastScene:
         prim[~np.isfinite(t)] = -1
         return t, prim
 
-
-def raycast_rate(n_rays: int = 1_000_000, n_tri: int = 200_000, seed: int = 0) -> float:
-    """Rays per second Open3D casts on this machine against a random heightfield (anchor figure)."""
-    import time
-
-    rng = np.random.default_rng(seed)
-    k = int(np.sqrt(n_tri / 2)) + 1
-    x, y = np.meshgrid(np.linspace(0, 300, k), np.linspace(0, 300, k))
-    v = np.column_stack([x.ravel(), y.ravel(), rng.normal(0, 0.3, x.size)])
-    i = np.arange((k - 1) * (k - 1))
-    r, c = np.divmod(i, k - 1)
-    a = r * k + c
-    f = np.concatenate([np.stack([a, a + 1, a + k + 1], 1), np.stack([a, a + k + 1, a + k], 1)])
-    sc = RaycastScene(v, f)
-    rays = np.zeros((n_rays, 6), np.float32)
-    rays[:, 0:2] = rng.uniform(0, 300, (n_rays, 2))
-    rays[:, 2] = 1000
-    rays[:, 3:5] = rng.normal(0, 0.2, (n_rays, 2))
-    rays[:, 5] = -1
-    rays[:, 3:] /= np.linalg.norm(rays[:, 3:], axis=1, keepdims=True)
-    sc.cast_rays(rays[:1000])
-    t0 = time.perf_counter()
-    sc.cast_rays(rays)
-    return n_rays / (time.perf_counter() - t0)

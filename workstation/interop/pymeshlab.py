@@ -2,8 +2,9 @@
 
 Coordinates go to MeshLab with an explicit ``origin`` subtracted (MeshLab keeps float
 coordinates; projected coordinates of 10^6 m would lose millimetres), and come back with it
-added. Colours travel as MeshLab's RGBA floats in [0, 1]; the core types keep ``rgb`` as
-integers (u16 for clouds, u8 for meshes).
+added (:func:`workstation.core.geometry.default_origin` by default). Colours travel as
+MeshLab's RGBA floats in [0, 1] (:func:`workstation.core.color.rgb_to_unit`); the core types
+keep ``rgb`` as integers (u16 for clouds, u8 for meshes).
 
 pymeshlab is imported inside the functions, never at module import.
 """
@@ -13,7 +14,9 @@ from __future__ import annotations
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_u8, rgb_to_unit, unit_to_rgb16  # noqa: F401 - rgb_to_u8 re-exported
 from workstation.core.errors import MissingDependencyError
+from workstation.core.geometry import default_origin
 from workstation.core.products import Mesh
 
 
@@ -23,33 +26,6 @@ def _pymeshlab():
     except ImportError as e:  # pragma: no cover - pymeshlab is a declared dependency
         raise MissingDependencyError("pymeshlab", "meshing filters", "pip install pymeshlab") from e
     return pymeshlab
-
-
-def rgb_to_unit(rgb: np.ndarray) -> np.ndarray:
-    """Integer colours (n, 3) -> floats in [0, 1].
-
-    8-bit values stored in a 16-bit array (max <= 255) are read as 8-bit, the usual case for
-    LAS files written by tools that do not scale colours.
-    """
-    rgb = np.asarray(rgb)
-    if rgb.dtype.kind == "f":
-        return np.clip(rgb.astype(np.float64), 0.0, 1.0)
-    scale = 255.0 if (rgb.dtype == np.uint8 or (rgb.size and int(rgb.max()) <= 255)) else 65535.0
-    return rgb.astype(np.float64) / scale
-
-
-def rgb_to_u8(rgb: np.ndarray) -> np.ndarray:
-    """Integer or unit-float colours (n, 3) -> (n, 3) uint8."""
-    return np.round(rgb_to_unit(rgb) * 255.0).astype(np.uint8)
-
-
-def default_origin(xyz: np.ndarray) -> np.ndarray:
-    """Origin subtracted before handing coordinates to a float library: the bounding-box
-    centre, rounded to whole units so it is easy to read back."""
-    xyz = np.asarray(xyz, dtype=np.float64)
-    if xyz.size == 0:
-        return np.zeros(3)
-    return np.round(0.5 * (xyz.min(axis=0) + xyz.max(axis=0)))
 
 
 def cloud_to_pymeshlab(cloud: Cloud, origin=None):
@@ -140,5 +116,5 @@ def pymeshlab_to_cloud(m, origin, template: Cloud | None = None) -> Cloud:
     v = np.asarray(m.vertex_matrix(), dtype=np.float64) + np.asarray(origin, dtype=np.float64)
     attrs = {"normal": np.asarray(m.vertex_normal_matrix(), dtype=np.float32)}
     if m.has_vertex_color():
-        attrs["rgb"] = np.round(np.clip(m.vertex_color_matrix()[:, :3], 0, 1) * 65535).astype(np.uint16)
+        attrs["rgb"] = unit_to_rgb16(m.vertex_color_matrix()[:, :3])
     return Cloud(v, attrs, crs=None if template is None else template.crs)

@@ -15,16 +15,20 @@ import numpy as np
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import MissingDependencyError
+from workstation.core.geometry import default_origin
 from workstation.core.products import Mesh
 
 
 def pyvista_offscreen():
-    """Import pyvista configured for rendering without a display.
+    """Import pyvista, with VTK set up for rendering without a display.
 
     VTK 9.4+ wheels pick the window at run time (X, then EGL, then OSMesa). Without a
     ``DISPLAY`` the X attempt only prints a warning before falling back, so the EGL window
     (Mesa's llvmpipe on a machine without GPU, the GPU's EGL driver where there is one) is
     asked for directly unless the user chose one with ``VTK_DEFAULT_OPENGL_WINDOW``.
+
+    pyvista's global ``pyvista.OFF_SCREEN`` is left as the user set it: the render functions
+    open their own ``Plotter(off_screen=True)``, so a notebook's interactive plots still show.
     """
     if not os.environ.get("DISPLAY") and "VTK_DEFAULT_OPENGL_WINDOW" not in os.environ:
         os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = "vtkEGLRenderWindow"
@@ -32,16 +36,7 @@ def pyvista_offscreen():
         import pyvista as pv
     except ImportError as e:  # pragma: no cover - declared dependency
         raise MissingDependencyError("pyvista", "off-screen rendering", "pip install pyvista") from e
-    pv.OFF_SCREEN = True
     return pv
-
-
-def default_origin(xyz: np.ndarray) -> np.ndarray:
-    """Rounded bounding-box centre of (n, 3) coordinates (zeros when empty)."""
-    xyz = np.asarray(xyz, dtype=np.float64)
-    if xyz.size == 0:
-        return np.zeros(3)
-    return np.round(0.5 * (xyz.min(axis=0) + xyz.max(axis=0)))
 
 
 def cloud_to_polydata(cloud: Cloud, origin=None, attrs=()):

@@ -18,7 +18,9 @@ from pathlib import Path
 
 import numpy as np
 
+from workstation.core.color import rgb_to_u8
 from workstation.core.errors import InvalidInputError, MissingDependencyError, UnsupportedFormatError
+from workstation.core.geometry import default_origin
 from workstation.core.products import Mesh
 
 from .atomic import atomic_path, check_output
@@ -45,8 +47,6 @@ def check_mesh_extension(path) -> str:
 def _rgb_u8(mesh: Mesh) -> np.ndarray | None:
     if "rgb" not in mesh.vertex_attrs:
         return None
-    from workstation.interop.pymeshlab import rgb_to_u8
-
     return rgb_to_u8(np.asarray(mesh.vertex_attrs["rgb"]))
 
 
@@ -142,8 +142,6 @@ def write_mesh(mesh: Mesh, path, *, overwrite: bool = False, inputs=()) -> Path:
             tmp.write_text(text)
         return p
     if ext in (".glb", ".gltf"):
-        from workstation.interop.pymeshlab import default_origin
-
         origin = default_origin(mesh.vertices)
         tm = _to_trimesh(mesh, origin)
         T = np.eye(4)

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_unit
 from workstation.core.errors import InvalidInputError
 from workstation.core.products import Mesh
 
@@ -49,8 +50,6 @@ def transfer_colors(mesh: Mesh, cloud: Cloud, params: ColorTransferParams = Colo
         95th percentile vertex-to-nearest-point distance (CRS units).
     """
     from scipy.spatial import cKDTree
-
-    from workstation.interop.pymeshlab import rgb_to_unit
 
     if "rgb" not in cloud.attrs:
         raise InvalidInputError("the cloud has no colours to transfer", "colourise it first", field="rgb")

@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_u8
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.geometry import require_spread
 from workstation.core.log import get_logger
@@ -309,8 +310,6 @@ def delaunay25d(cloud: Cloud, params: Delaunay25dParams = Delaunay25dParams()) -
         remap = np.cumsum(used) - 1
         attrs = {}
         if "rgb" in cloud.attrs:
-            from workstation.interop.pymeshlab import rgb_to_u8
-
             attrs["rgb"] = rgb_to_u8(np.asarray(cloud.attrs["rgb"])[first][used])
         mesh = Mesh(pts[used], remap[f], attrs, crs=cloud.crs)
     rec = StepRecord("delaunay25d", {"max_edge": float(max_edge), "point_spacing_xy": spacing},

@@ -15,6 +15,7 @@ import numpy as np
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.geometry import default_origin
 from workstation.core.log import get_logger
 
 from .register import RegisterParams, register
@@ -122,7 +123,7 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     StageError
         When an odometry edge fails (the chain would break).
     """
-    from workstation.interop.open3d import default_origin, local_transform, require_open3d, world_transform
+    from workstation.interop.open3d import local_transform, require_open3d, world_transform
 
     o3d = require_open3d()
     reg = o3d.pipelines.registration

@@ -122,29 +122,6 @@ def estimate_voxel_size(xyz: np.ndarray, target_points: int = 4000) -> float:
     return float(v)
 
 
-def voxel_downsample(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
-    """Centroid of each occupied voxel.
-
-    Returns
-    -------
-    centroids : (m, 3) float64
-    inverse : (n,) int64
-        Voxel index of every input point.
-    """
-    xyz = np.asarray(xyz, dtype=np.float64)
-    if not (voxel > 0 and np.isfinite(voxel)):
-        raise InvalidInputError(f"voxel size must be > 0, got {voxel}", field="voxel_size")
-    ext = float(np.max(np.ptp(xyz, axis=0))) if len(xyz) else 0.0
-    if ext / voxel >= 2.0**62:  # int64 voxel keys would wrap around
-        raise InvalidInputError(f"voxel size {voxel:g} is too small for an extent of {ext:.4g}",
-                                f"give a voxel size of at least {ext / 2.0**61:.3g}", field="voxel_size")
-    keys = np.floor((xyz - xyz.min(axis=0)) / voxel).astype(np.int64)
-    _, inverse, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
-    inverse = inverse.reshape(-1)
-    sums = np.column_stack([np.bincount(inverse, xyz[:, k], counts.size) for k in range(3)])
-    return sums / counts[:, None], inverse
-
-
 @dataclass(frozen=True)
 class Prepared:
     """A cloud prepared for registration (local coordinates, origin subtracted).

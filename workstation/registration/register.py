@@ -25,7 +25,9 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_unit
 from workstation.core.errors import InvalidInputError, StageError
+from workstation.core.geometry import default_origin
 from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
@@ -152,8 +154,6 @@ def _check_downsampled(prep, voxel: float, name: str) -> None:
 def _colors(c: Cloud):
     if "rgb" not in c.attrs:
         return None
-    from workstation.interop.open3d import rgb_to_unit
-
     return rgb_to_unit(c.attrs["rgb"])
 
 
@@ -182,12 +182,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
         When the result does not converge, the overlap (fitness) is below
         ``params.min_fitness`` or the RMSE is above ``params.max_rmse * voxel``.
     """
-    from workstation.interop.open3d import (
-        default_origin,
-        local_transform,
-        points_to_legacy,
-        world_transform,
-    )
+    from workstation.interop.open3d import local_transform, points_to_legacy, world_transform
 
     _check_cloud(source, "source")
     _check_cloud(target, "target")
@@ -355,14 +350,3 @@ def check_result(res: RegistrationResult, voxel: float, params: RegisterParams) 
                                 f"(< {params.min_plane_inliers:.0%}): the alignment is probably wrong", hint)
     if not np.isfinite(res.inlier_rmse) or res.inlier_rmse > params.max_rmse * voxel:
         raise StageError(STAGE, f"inlier RMSE {res.inlier_rmse:.4g} above {params.max_rmse} voxel ({voxel:.4g})", hint)
-
-
-def register_pairs_then_fine(source: Cloud, target: Cloud, src_pts: np.ndarray, dst_pts: np.ndarray,
-                             params: RegisterParams = RegisterParams(method="icp"), with_scale: bool = False):
-    """Initial transform from >= 3 picked point pairs (GCPs), refined by ICP (or 7-DoF ICP)."""
-    from .transforms import register_point_pairs
-
-    fit = register_point_pairs(src_pts, dst_pts, with_scale=with_scale)
-    p = replace(params, method="similarity" if with_scale else "icp")
-    res = register(source, target, p, init=fit.result.transform)
-    return res, fit

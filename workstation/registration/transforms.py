@@ -4,7 +4,8 @@ The closed-form least-squares fit of a rotation, translation and optional scale 
 paired point sets is the textbook rigid-body transformation of Horn (1987, "Closed-form
 solution of absolute orientation using unit quaternions", JOSA A 4(4)) in the SVD form of
 Umeyama (1991, "Least-squares estimation of transformation parameters between two point
-patterns", IEEE PAMI 13(4)), with the reflection guard of the latter.
+patterns", IEEE PAMI 13(4)), with the reflection guard of the latter: :func:`umeyama`, which
+lives in :mod:`workstation.core.geometry` (so any layer can use it) and is re-exported here.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
+from workstation.core.geometry import umeyama
 from workstation.core.products import RegistrationResult
 
 
@@ -78,51 +80,6 @@ def random_rotation(rng: np.random.Generator, max_angle_deg: float = 180.0) -> n
     ang = np.radians(rng.uniform(0.0, max_angle_deg))
     K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
     return np.eye(3) + np.sin(ang) * K + (1 - np.cos(ang)) * K @ K
-
-
-def umeyama(src: np.ndarray, dst: np.ndarray, weights: np.ndarray | None = None, with_scale: bool = False):
-    """Least-squares ``dst ~ s R src + t`` from paired points (Umeyama 1991).
-
-    Parameters
-    ----------
-    src, dst : (n, 3) float
-        Paired points, n >= 3, not all collinear.
-    weights : (n,) float, optional
-        Non-negative pair weights.
-    with_scale : bool
-        Estimate the similarity scale ``s`` (7 DoF) instead of fixing it to 1 (6 DoF).
-
-    Returns
-    -------
-    R : (3, 3) float64
-    t : (3,) float64
-    s : float
-    """
-    src = np.asarray(src, dtype=np.float64)
-    dst = np.asarray(dst, dtype=np.float64)
-    if src.shape != dst.shape or src.ndim != 2 or src.shape[1] != 3:
-        raise InvalidInputError(f"paired points must both be (n, 3), got {src.shape} and {dst.shape}")
-    if src.shape[0] < 3:
-        raise InvalidInputError(f"{src.shape[0]} point pairs given", "at least 3 non-collinear pairs are needed")
-    w = np.ones(src.shape[0]) if weights is None else np.asarray(weights, dtype=np.float64)
-    ws = w.sum()
-    if ws <= 0:
-        raise InvalidInputError("all pair weights are zero")
-    w = w / ws
-    mu_s = w @ src
-    mu_d = w @ dst
-    xs = src - mu_s
-    xd = dst - mu_d
-    C = (xd * w[:, None]).T @ xs
-    U, S, Vt = np.linalg.svd(C)
-    D = np.eye(3)
-    if np.linalg.det(U) * np.linalg.det(Vt) < 0:
-        D[2, 2] = -1.0
-    R = U @ D @ Vt
-    var_s = float(w @ np.einsum("ij,ij->i", xs, xs))
-    s = float(np.trace(np.diag(S) @ D) / var_s) if with_scale and var_s > 0 else 1.0
-    t = mu_d - s * R @ mu_s
-    return R, t, s
 
 
 @dataclass(frozen=True)

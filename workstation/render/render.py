@@ -18,6 +18,7 @@ import numpy as np
 
 from workstation.core.classes import CLASS_COLORS, class_colors, class_name
 from workstation.core.cloud import Cloud
+from workstation.core.color import rgb_to_u8
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Mesh, Pose, Reconstruction
@@ -155,8 +156,6 @@ def _scalar_colors(obj, params: RenderParams):
     if c == "rgb":
         if "rgb" not in attrs:
             raise InvalidInputError("no rgb colours to render", "use --color elevation or class", field="rgb")
-        from workstation.interop.pymeshlab import rgb_to_u8
-
         return c, rgb_to_u8(np.asarray(attrs["rgb"])), None, None
     if c == "class":
         face_cls = isinstance(obj, Mesh) and "classification" in obj.face_attrs
@@ -178,8 +177,6 @@ def _scalar_colors(obj, params: RenderParams):
                                 + (", ".join(sorted(attrs)) or "none"), field="color")
     a = np.asarray(attrs[c])
     if a.ndim == 2 and a.shape[1] == 3:
-        from workstation.interop.pymeshlab import rgb_to_u8
-
         return "rgb", rgb_to_u8(a), None, None
     if a.ndim != 1:
         raise InvalidInputError(f"attribute '{c}' has shape {a.shape}: not a scalar", field=c)
