@@ -44,6 +44,14 @@ DOCUMENTED = {
     "filters.splitter": {"length", "origin_x", "origin_y", "buffer"},
     # https://pdal.io/en/stable/stages/filters.merge.html
     "filters.merge": set(),
+    # https://pdal.io/en/stable/stages/filters.elm.html, filters.smrf.html, filters.pmf.html, filters.csf.html
+    "filters.elm": {"cell", "class", "threshold", "where", "where_merge"},
+    "filters.smrf": {"cell", "classbits", "cut", "dir", "ignore", "returns", "scalar", "slope", "threshold", "window",
+                     "where", "where_merge"},
+    "filters.pmf": {"cell_size", "exponential", "ignore", "initial_distance", "max_distance", "max_window_size",
+                    "returns", "slope", "where", "where_merge"},
+    "filters.csf": {"resolution", "ignore", "returns", "threshold", "hdiff", "smooth", "step", "rigidness",
+                    "iterations", "where", "where_merge"},
     # https://pdal.io/en/stable/stages/writers.las.html
     "writers.las": {"filename", "forward", "minor_version", "software_id", "creation_doy", "creation_year",
                     "dataformat_id", "system_id", "a_srs", "global_encoding", "project_id", "compression",
@@ -256,3 +264,38 @@ def test_dem_pipeline_copc_query(tmp_path):
     assert r["bounds"] == "([480010.0, 480040.0], [5450010.0, 5450040.0])"
     assert r["resolution"] == pytest.approx(copc.read_info(path).spacing / 4)
     assert copc.level_range(r["resolution"], None, copc.read_info(path).spacing) == range(0, 3)
+
+
+
+@pytest.mark.parametrize("method,flt", [("smrf", "filters.smrf"), ("pmf", "filters.pmf"), ("csf", "filters.csf")])
+def test_ground_pipeline_carries_the_filter_and_its_parameters(tmp_path, src, method, flt):
+    out, pj = tmp_path / "g.laz", tmp_path / "p.json"
+    assert main(["ground", str(src), "-o", str(out), "--method", method, "--pipeline-out", str(pj)]) == 0
+    stages = json.loads(pj.read_text())
+    assert _check(stages) == ["readers.las", "filters.elm", flt, "writers.las"]
+    f = stages[2]
+    assert f["returns"] == "last,only" and f["ignore"] == "Classification[7:7]"
+    assert stages[1]["class"] == 7 and stages[1]["threshold"] == 1.0
+    if method == "smrf":
+        assert (f["slope"], f["window"], f["threshold"], f["scalar"]) == (0.15, 18.0, 0.5, 1.25)
+
+
+def test_ground_pipeline_in_feet_and_without_the_noise_step(tmp_path):
+    """Lengths are metres on the command line and CRS units (US feet) in the pipeline."""
+    rng = np.random.default_rng(6)
+    xyz = rng.uniform(0, 300, (3000, 3)) + [2_000_000, 600_000, 0]
+    write_cloud(Cloud(xyz, crs="EPSG:2994"), tmp_path / "ft.laz")
+    pj = tmp_path / "p.json"
+    assert main(["ground", str(tmp_path / "ft.laz"), "-o", str(tmp_path / "g.laz"), "--window", "30",
+                 "--no-noise-step", "--all-returns", "--pipeline-out", str(pj)]) == 0
+    stages = json.loads(pj.read_text())
+    assert _check(stages) == ["readers.las", "filters.smrf", "writers.las"]
+    assert stages[1]["window"] == pytest.approx(30 / 0.3048) and "returns" not in stages[1]
+
+
+@pytest.mark.parametrize("method", ["ptd", "auto"])
+def test_ground_pipeline_refused_without_a_pdal_filter(tmp_path, src, method, capsys):
+    out = tmp_path / "g.laz"
+    rc = main(["ground", str(src), "-o", str(out), "--method", method, "--pipeline-out", str(tmp_path / "p.json")])
+    assert rc == 2 and not out.exists() and not (tmp_path / "p.json").exists()
+    assert "PDAL" in capsys.readouterr().err

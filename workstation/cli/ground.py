@@ -7,6 +7,7 @@ import click
 from .options import emit_json, json_option, output_option, overwrite_option, read_options
 from .options import FiniteFloatRange, nonneg_float, positive_int
 from .options import nonneg_length, positive_length
+from .pipeline_out import pipeline_out_option
 
 
 @click.command()
@@ -56,12 +57,14 @@ from .options import nonneg_length, positive_length
 @click.option("--tile-workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Tiles filtered at once, one process each (memory grows with it).")
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
+@pipeline_out_option
 @overwrite_option
 @read_options
 @json_option
 def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, water, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
-           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, overwrite, read_opts, as_json):
+           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, pipeline_out, overwrite, read_opts,
+           as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
@@ -84,6 +87,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     format_of(src)
     format_of(output)
     check_output(output, overwrite, inputs=[src])
+    if pipeline_out:
+        _check_pipeline_out(method, output, pipeline_out, overwrite, src)
     given = {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
              "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches, "risers": risers,
              "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
@@ -135,6 +140,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
 
         out = height_above_ground(out)
     write_cloud(out, output, overwrite=overwrite, inputs=[src])
+    if pipeline_out:
+        _save_ground_pipeline(pipeline_out, src, output, method, params, out.crs, overwrite)
     dt = time.perf_counter() - t0
     cls = np.asarray(out.attrs["classification"])
     n_ground = int(np.count_nonzero(cls == ASPRSClass.GROUND))
@@ -151,3 +158,26 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
                    "params": dataclasses.asdict(params), "point_count": out.n, "ground_count": n_ground,
                    "ground_fraction": n_ground / out.n, "seconds": dt, "tiles": n_tiles,
                    "water_count": n_water, "low_noise_count": int(np.count_nonzero(cls == ASPRSClass.LOW_POINT))})
+
+
+def _check_pipeline_out(method, output, pipeline_out, overwrite, src) -> None:
+    """Refuse ``--pipeline-out`` for a method PDAL has no filter for, before any work."""
+    from workstation.io import check_outputs
+    from workstation.ops.pdal import ground_equivalent
+
+    why = ground_equivalent(method)
+    if why:
+        raise click.UsageError(f"--pipeline-out: {why}")
+    check_outputs([output, pipeline_out], overwrite, inputs=[src])
+
+
+def _save_ground_pipeline(path, src, output, method, params, crs, overwrite) -> None:
+    """The PDAL pipeline of this run (the filter's parameters in the CRS's units)."""
+    from workstation.io import format_of
+    from workstation.io.crs import crs_units
+    from workstation.ops import pdal
+
+    from .pipeline_out import save_pipeline
+
+    layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
+    save_pipeline(path, pdal.ground_stages(src, output, method, params, crs_units(crs), layout), overwrite, [src])

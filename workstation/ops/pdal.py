@@ -1,5 +1,5 @@
 """The PDAL pipeline equivalent to a run of ``ws convert``, ``crop``, ``filter``, ``thin``, ``tile``,
-``merge`` or ``dem`` (``--pipeline-out FILE.json``), so a PDAL user can check or replay what was done.
+``merge``, ``dem`` or ``ground`` (``--pipeline-out FILE.json``), so a PDAL user can check or replay what was done.
 
 A pipeline is a JSON list of stages (https://pdal.io/en/stable/pipeline.html): readers, then
 filters, then a writer, each ``{"type": "<kind>.<name>", option: value, ...}``. Only the stage
@@ -41,6 +41,11 @@ STAGE_OPTIONS: dict[str, set[str]] = {
     "filters.sample": {"radius"},
     "filters.splitter": {"length", "origin_x", "origin_y", "buffer"},
     "filters.merge": set(),
+    "filters.elm": {"cell", "class", "threshold"},
+    "filters.smrf": {"cell", "slope", "window", "threshold", "scalar", "returns", "ignore"},
+    "filters.pmf": {"cell_size", "slope", "max_window_size", "initial_distance", "max_distance", "exponential",
+                    "returns", "ignore"},
+    "filters.csf": {"resolution", "rigidness", "threshold", "iterations", "smooth", "step", "returns", "ignore"},
     "writers.las": {"filename", "minor_version", "dataformat_id", "a_srs", "compression", "extra_dims",
                     "scale_x", "scale_y", "scale_z", "offset_x", "offset_y", "offset_z"},
     "writers.ply": {"filename"},
@@ -269,3 +274,43 @@ def write_pipeline(stages: list[dict], path, overwrite: bool = False, inputs=())
     with atomic_path(path, overwrite, inputs) as tmp:
         tmp.write_text(json.dumps(stages, indent=2) + "\n")
     return Path(path)
+
+
+#: ``ws ground`` methods with a PDAL filter of the same method.
+GROUND_FILTERS = ("smrf", "pmf", "csf")
+
+
+def ground_equivalent(method: str) -> str | None:
+    """Why a ``ws ground`` method has no PDAL pipeline (None when it has one)."""
+    if method in GROUND_FILTERS:
+        return None
+    return f"--method {method} has no PDAL filter (PDAL has filters.smrf, filters.pmf and filters.csf)"
+
+
+def ground_stages(src, output, method: str, params, units, layout: dict | None = None) -> list[dict]:
+    """The PDAL pipeline of a ``ws ground`` run: the reader, ``filters.elm`` for the low-noise
+    step (low points to class 7, as ``params.noise`` does), the method's PDAL filter with the
+    same parameters in CRS units (``returns`` "last,only" unless every return may be ground),
+    and the writer. Only ``smrf``, ``pmf`` and ``csf`` (see :func:`ground_equivalent`)."""
+    h = units.h_from_m
+    stages = [reader(src)]
+    if getattr(params, "noise", False):
+        n = params.noise_params
+        stages.append({"type": "filters.elm", "cell": float(h(n.cell)), "threshold": float(units.v_from_m(n.depth)),
+                       "class": 7})
+    common = {"returns": "last,only"} if getattr(params, "last_returns_only", True) else {}
+    common["ignore"] = "Classification[7:7]"
+    if method == "smrf":
+        f = {"type": "filters.smrf", "cell": float(h(params.cell)), "slope": float(params.slope),
+             "window": float(h(params.window)), "threshold": float(units.v_from_m(params.threshold)),
+             "scalar": float(params.scalar)}
+    elif method == "pmf":
+        f = {"type": "filters.pmf", "cell_size": float(h(params.cell)), "slope": float(params.slope),
+             "max_window_size": float(h(params.max_window)),
+             "initial_distance": float(units.v_from_m(params.initial_distance)),
+             "max_distance": float(units.v_from_m(params.max_distance)), "exponential": bool(params.exponential)}
+    else:
+        f = {"type": "filters.csf", "resolution": float(h(params.cloth_resolution)), "rigidness": int(params.rigidness),
+             "threshold": float(units.v_from_m(params.class_threshold)), "iterations": int(params.iterations),
+             "smooth": bool(params.slope_smooth), "step": float(params.time_step)}
+    return stages + [{**f, **common}, writer(output, layout)]
