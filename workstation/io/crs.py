@@ -64,8 +64,12 @@ def parse_crs(crs: str, what: str = "crs"):
 
 
 @lru_cache(maxsize=128)
-def crs_info(crs: str | None) -> CRSInfo | None:
+def crs_info(crs: str | None, identify: bool = True) -> CRSInfo | None:
     """Name, EPSG code and units of a CRS string; None when ``crs`` is None.
+
+    ``identify``: a WKT without an EPSG identifier is matched against PROJ's database (about
+    0.5 s); with False only an identifier the CRS states is reported (the header summary's
+    "milliseconds" promise).
 
     Examples
     --------
@@ -76,7 +80,7 @@ def crs_info(crs: str | None) -> CRSInfo | None:
     if not crs:
         return None
     c = parse_crs(crs)
-    epsg = c.to_epsg(min_confidence=70)
+    epsg = c.to_epsg(min_confidence=70) if identify else _stated_epsg(c)
     horiz = c.sub_crs_list[0] if c.is_compound else c
     axis = horiz.axis_info[0] if horiz.axis_info else None
     if horiz.is_geographic:
@@ -91,6 +95,17 @@ def crs_info(crs: str | None) -> CRSInfo | None:
     else:  # no height axis: LAS practice is heights in the horizontal unit (metres for lon/lat)
         vunit, vfactor = ("metre", 1.0) if horiz.is_geographic else (unit, factor)
     return CRSInfo(c.name, epsg, bool(horiz.is_geographic), unit, factor, vfactor, vunit, bool(c.is_geocentric))
+
+
+def _stated_epsg(c) -> int | None:
+    """The EPSG code a CRS carries as its own identifier (no database search)."""
+    ident = c.to_json_dict().get("id") or {}
+    if ident.get("authority") == "EPSG":
+        try:
+            return int(ident.get("code"))
+        except (TypeError, ValueError):
+            return None
+    return None
 
 
 def _vertical_axis(c):

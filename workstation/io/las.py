@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
+from functools import lru_cache
 from pathlib import Path
 from typing import Iterator
 
@@ -287,7 +288,11 @@ def _vlr_records(vlrs) -> list[dict]:
     return out
 
 
-def _crs_string(header, path) -> str | None:
+def _crs_string(header, path, identify: bool = True) -> str | None:
+    """The file's CRS as "EPSG:code" when it is one, else WKT; None without one.
+
+    ``identify``: a WKT without an EPSG identifier is searched for in PROJ's database (about
+    0.5 s, cached per WKT); with False only a stated identifier counts (header summaries)."""
     try:
         crs = header.parse_crs()
     except Exception as exc:  # malformed CRS records: keep the points, say so
@@ -300,8 +305,19 @@ def _crs_string(header, path) -> str | None:
     fixed = apply_unit_geokeys(crs, header.vlrs)  # ProjLinearUnits/VerticalUnits GeoKeys (laspy ignores them)
     if fixed is not crs:  # units overridden: no EPSG code says that (skip PROJ's slow search)
         return fixed.to_wkt()
-    epsg = crs.to_epsg(min_confidence=100)
-    return f"EPSG:{epsg}" if epsg else crs.to_wkt()
+    wkt = crs.to_wkt()
+    from workstation.io.crs import _stated_epsg
+
+    epsg = _stated_epsg(crs) or (_exact_epsg(wkt) if identify else None)
+    return f"EPSG:{epsg}" if epsg else wkt
+
+
+@lru_cache(maxsize=64)
+def _exact_epsg(wkt: str) -> int | None:
+    """The EPSG code PROJ finds equal to ``wkt`` (confidence 100), once per WKT."""
+    import pyproj
+
+    return pyproj.CRS.from_wkt(wkt).to_epsg(min_confidence=100)
 
 
 def _extra_defs(header) -> list[dict]:

@@ -68,8 +68,8 @@ def _copc_info_bytes(v) -> bytes:
 def _crs(h, path):
     from workstation.io.las import _crs_string
 
-    crs = _crs_string(h, path)
-    info = crs_info(crs)
+    crs = _crs_string(h, path, identify=False)
+    info = crs_info(crs, identify=False)  # the code the file states: a database search takes 0.5 s
     if info is None:
         return crs, None
     return crs, {"name": info.name, "epsg": info.epsg, "unit": info.unit, "vertical_unit": info.vertical_unit,
