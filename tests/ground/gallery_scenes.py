@@ -117,3 +117,166 @@ def low_outliers(seed: int = 0, size: float = 80.0, pulses: float = 6.0, rate: f
     out = np.zeros(len(xyz), bool)
     out[n:] = True
     return _cloud(xyz, ones, ones), terrain_fn(), out
+
+
+# -- bridges, overpasses and the earthworks that must not be taken for them (issue 29) --------
+#
+# * :func:`bridges`: a road deck over a canalised river (vertical walls 4 m high, water that
+#   answers for ``water_return`` of the pulses) and an overpass carrying a road on an
+#   embankment (side slopes 1:1.5, ramps) over a road at grade between vertical abutments;
+#   parapets 1 m high; a flat-roofed building and a few trees. Truth: the points on the decks
+#   and parapets (ASPRS class 17) and the bare earth under them.
+# * :func:`earthworks`: the same kind of terrain without a bridge: a dam across a valley with
+#   its reservoir (1:2 faces), a road embankment across a second valley (1:1 sides, the
+#   steepest earthwork face) and a flight of terraces with steep risers.
+#
+# Both return (cloud, terrain, is_deck, decks): ``decks`` the plan rectangles (x0, x1, y0, y1)
+# of the decks in cloud coordinates (empty for earthworks).
+
+
+def _pulses(rng, size, pulses):
+    n = int(size[0] * size[1] * pulses)
+    return np.column_stack([rng.uniform(0, size[0], n), rng.uniform(0, size[1], n)])
+
+
+def _box(xy, x0, x1, y0, y1):
+    return (xy[:, 0] >= x0) & (xy[:, 0] <= x1) & (xy[:, 1] >= y0) & (xy[:, 1] <= y1)
+
+
+def _trees(rng, xy, z, centres, radius=3.5):
+    """Crowns 8-14 m tall over ``centres``: a pulse in a crown gives a first echo in it and,
+    for half of them, a last echo on the ground. Returns xyz, return numbers, echo counts."""
+    from scipy.spatial import cKDTree
+
+    d, j = cKDTree(centres).query(xy)
+    crown = d < radius
+    top = rng.uniform(8.0, 14.0, len(centres))[j] - 1.5 * d
+    through = crown & (rng.uniform(size=len(xy)) < 0.5)
+    nr = np.where(through, 2, 1)
+    first = np.column_stack([xy, np.where(crown, z + np.maximum(top, 3.0), z)])
+    last = np.column_stack([xy[through], z[through]])
+    xyz = np.vstack([first, last])
+    rn = np.concatenate([np.ones(len(xy)), np.full(through.sum(), 2)])
+    return xyz, rn, np.concatenate([nr, np.full(through.sum(), 2)]), crown
+
+
+def bridges(seed: int = 0, pulses: float = 4.0, water_return: float = 0.5, noise: float = 0.03,
+            abutment_slope: float = 0.0):
+    """A river bridge and an overpass over a road on gentle hills, 120 x 100 m (see above).
+    ``abutment_slope`` (run over rise): 0 puts the decks' ends on vertical walls, 1.5 on
+    spill-through slopes (the river's banks and the embankment's ends slope down under the
+    decks).
+
+    Returns
+    -------
+    cloud : Cloud (return numbers set)
+    terrain : callable (k, 2) -> (k,), the bare earth (the water surface in the river, the
+        ground under the decks)
+    is_deck : (n,) bool, the points on the decks and parapets (class 17)
+    decks : list of (x0, x1, y0, y1), the decks' plan rectangles in cloud coordinates
+    """
+    size = (120.0, 100.0)
+    rng = np.random.default_rng(seed)
+    base = lambda xy: hills(xy, relief=1.5, slope=0.02)  # noqa: E731
+    river = (16.6, 43.4)  # the walls of the river (x); water 4 m under the banks
+    road = (40.3, 50.3)  # the road over the river (y)
+    gap = (60.4, 82.4)  # the overpass's span between its abutments (y)
+    crest = (95.2, 105.2)  # the embankment's crest and the overpass deck (x)
+    mid = (0.5 * sum(road), 0.5 * sum(crest))
+
+    def emb_height(y):
+        return np.clip((y - 10.0) / 36.0, 0.0, 1.0) * 6.0  # a 17 % ramp up to 6 m
+
+    def ground(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        z = base(xy)
+        inside = np.minimum(x - river[0], river[1] - x)  # metres inside the river's edges
+        depth = np.where(inside > 0, np.minimum(4.0, inside / abutment_slope if abutment_slope else 4.0), 0.0)
+        wet = depth >= 4.0
+        z = np.where(wet, base(np.column_stack([np.full(len(x), 0.5 * sum(river)), y])) - 4.0, z - depth)
+        side = np.maximum(np.abs(x - mid[1]) - 5.0, 0.0)
+        into = np.minimum(y - gap[0], gap[1] - y)  # metres into the overpass's span
+        emb = np.maximum(emb_height(y) - side / 1.5, 0.0)
+        cut = np.where(into > 0, np.maximum(emb - into / abutment_slope, 0.0) if abutment_slope else 0.0, emb)
+        return z + cut, wet
+
+    def deck_z(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        ends = [base(np.array([[river[0], mid[0]]]))[0], base(np.array([[river[1], mid[0]]]))[0]]
+        river_deck = ends[0] + (x - river[0]) / (river[1] - river[0]) * (ends[1] - ends[0]) + 0.15
+        a = base(np.array([[mid[1], gap[0]]]))[0] + 6.0
+        b = base(np.array([[mid[1], gap[1]]]))[0] + 6.0
+        over = a + (y - gap[0]) / (gap[1] - gap[0]) * (b - a)
+        return np.where(x < 70.0, river_deck, over)
+
+    xy = _pulses(rng, size, pulses)
+    z, wet = ground(xy)
+    decks_local = [(river[0], river[1], road[0], road[1]), (crest[0], crest[1], gap[0], gap[1])]
+    on_deck = np.zeros(len(xy), bool)
+    for x0, x1, y0, y1 in decks_local:
+        on_deck |= _box(xy, x0, x1, y0, y1)
+    zd = deck_z(xy)
+    z = np.where(on_deck, zd, z)
+    west = xy[:, 0] < 70.0
+    parapet = on_deck & np.where(west, np.abs(xy[:, 1] - mid[0]) > 4.7, np.abs(xy[:, 0] - mid[1]) > 4.7)
+    z = np.where(parapet, z + 1.0, z)
+    # a flat-roofed building 8 m tall
+    roof = _box(xy, 55.0, 75.0, 5.0, 20.0)
+    z = np.where(roof, base(np.array([[55.0, 5.0]]))[0] + 8.0, z)
+    keep = ~(wet & ~on_deck) | (rng.uniform(size=len(xy)) < water_return)
+    xy, z, on_deck = xy[keep], z[keep], on_deck[keep]
+    xyz, rn, nr, crown = _trees(rng, xy, z, np.array([[8.0, 15.0], [8.0, 85.0], [55.0, 60.0], [115.0, 20.0],
+                                                      [80.0, 95.0], [60.0, 90.0]]))
+    is_deck = np.concatenate([on_deck & ~crown, np.zeros(len(xyz) - len(xy), bool)])
+    xyz[:, 2] += rng.normal(0, noise, len(xyz))
+
+    def terrain(q):
+        q = np.asarray(q, float) - ORIGIN[:2]
+        return ground(q)[0] + ORIGIN[2]
+
+    decks = [(x0 + ORIGIN[0], x1 + ORIGIN[0], y0 + ORIGIN[1], y1 + ORIGIN[1]) for x0, x1, y0, y1 in decks_local]
+    return _cloud(xyz, rn, nr), terrain, is_deck, decks
+
+
+def earthworks(seed: int = 0, pulses: float = 4.0, water_return: float = 0.5, noise: float = 0.03):
+    """A dam with its reservoir, a road embankment across a valley and terraces, 160 x 120 m,
+    on gentle hills; no bridge (see above). Returns as :func:`bridges` (``is_deck`` all False,
+    ``decks`` empty)."""
+    size = (160.0, 120.0)
+    rng = np.random.default_rng(seed)
+
+    def ground(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        z = hills(xy, relief=1.5, slope=0.02)
+        # two valleys along y, 8 m and 6 m deep, side slopes 0.3
+        v1 = np.maximum(8.0 - 0.3 * np.abs(x - 40.2), 0.0)
+        v2 = np.maximum(6.0 - 0.3 * np.abs(x - 120.2), 0.0)
+        floor = z - v1 - v2
+        # the dam across the first valley: crest 6 m wide at y 60-66, faces 1:2, reservoir north
+        dam = np.maximum(8.0 - np.maximum(np.abs(y - 63.1) - 3.0, 0.0) / 2.0, 0.0)
+        z1 = np.where(np.abs(x - 40.2) < 30.0, np.maximum(floor, np.minimum(z, floor + dam)), floor)
+        level = hills(np.array([[40.2, 63.1]]), relief=1.5, slope=0.02)[0] - 2.0
+        wet = (y > 63.1) & (z1 < level) & (np.abs(x - 40.2) < 30.0)
+        z1 = np.where(wet, level, z1)
+        # the road embankment across the second valley: crest 10 m wide at y 35-45, sides 1:1
+        emb = np.maximum(6.0 - np.maximum(np.abs(y - 40.3) - 5.0, 0.0), 0.0)
+        z1 = np.where(np.abs(x - 120.2) < 25.0, np.maximum(z1, np.minimum(z, z1 + emb)), z1)
+        # terraces: steps 2 m high every 10 m along x over y 95-120, risers 1:0.5 (63°), cut into
+        # the hill behind a cliff at y 95 (up to 12 m, one-sided)
+        t = np.clip(x - 70.0, 0.0, 60.0)
+        step = 2.0 * np.floor(t / 10.0) + 2.0 * np.clip((t % 10.0 - 9.0) / 1.0, 0.0, 1.0)
+        z1 = np.where(y > 95.0, z1 - step, z1)
+        return z1, wet
+
+    xy = _pulses(rng, size, pulses)
+    z, wet = ground(xy)
+    keep = ~wet | (rng.uniform(size=len(xy)) < water_return)
+    xy, z = xy[keep], z[keep]
+    xyz, rn, nr, _ = _trees(rng, xy, z, np.array([[10.0, 20.0], [90.0, 80.0], [150.0, 10.0]]))
+    xyz[:, 2] += rng.normal(0, noise, len(xyz))
+
+    def terrain(q):
+        q = np.asarray(q, float) - ORIGIN[:2]
+        return ground(q)[0] + ORIGIN[2]
+
+    return _cloud(xyz, rn, nr), terrain, np.zeros(len(xyz), bool), []

@@ -29,6 +29,7 @@ from workstation.core.cloud import Cloud
 
 from . import common
 from .csf import CSFParams, csf_ground
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 from .patches import PatchParams, raised_patches
 from .pmf import PMFParams, pmf_ground
@@ -69,7 +70,7 @@ class AutoParams:
     understorey : bool
         Take the understorey out of the ground under canopy (True; needs return numbers).
     understorey_params : UnderstoreyParams
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -89,6 +90,8 @@ class AutoParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "urban", "forest", "steep")}

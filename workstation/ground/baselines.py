@@ -21,6 +21,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 
 STAGE_LOWEST = "ground.lowest"
@@ -37,7 +38,7 @@ class LowestParams:
         Cell size, metres (5.0).
     threshold : float
         Height above the cell's lowest point still counted as ground, metres (0.3).
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -47,6 +48,8 @@ class LowestParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 @dataclass(frozen=True)
@@ -63,7 +66,7 @@ class LocalMinParams:
         Largest terrain slope, rise over run (0.3).
     threshold : float
         Height tolerance added to the slope term, metres (0.5).
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -75,6 +78,8 @@ class LocalMinParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:

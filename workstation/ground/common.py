@@ -7,9 +7,11 @@ large eastings/northings. Results (classes, heights) go back in the CRS's units.
 
 Classes written: :attr:`ASPRSClass.GROUND` (2) for ground, :attr:`ASPRSClass.UNCLASSIFIED` (1)
 for the rest, :attr:`ASPRSClass.LOW_POINT` (7) for the isolated low points of the low-noise
-step every filter runs first (:func:`workstation.ground.noise.low_noise`, ``noise=True``). Points already in another class (anything but 0, 1 and 2) keep it unless
-``reclassify`` is set; noise (7, 18) also stays out of the filter so one bad point cannot pull
-the ground down.
+step every filter runs first (:func:`workstation.ground.noise.low_noise`, ``noise=True``),
+:attr:`ASPRSClass.BRIDGE_DECK` (17) for the bridge decks every filter takes out of its ground
+last (:func:`workstation.ground.bridges.bridge_decks`, ``bridges=True``). Points already in
+another class (anything but 0, 1 and 2) keep it unless ``reclassify`` is set; noise (7, 18)
+also stays out of the filter so one bad point cannot pull the ground down.
 """
 
 from __future__ import annotations
@@ -131,7 +133,8 @@ def prepare(cloud: Cloud, stage: str, reclassify: bool = False, last_returns_onl
 
 def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage: str, params, t0: float,
                   reclassify: bool = False, extra_attrs: dict | None = None) -> Cloud:
-    """A new cloud with class 2 on ground points and 1 on the rest (existing classes kept).
+    """A new cloud with class 2 on ground points and 1 on the rest (existing classes kept);
+    with ``params.bridges``, the bridge decks among them are class 17 and not ground.
 
     Parameters
     ----------
@@ -141,6 +144,15 @@ def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage:
     g = np.asarray(ground_local, dtype=bool)
     if g.shape != prep.index.shape:
         raise StageError(stage, "internal: ground mask does not match the prepared points")
+    deck = np.zeros(0, np.int64)
+    if getattr(params, "bridges", False) and g.any():  # every method's last step: decks out (class 17)
+        from .bridges import bridge_decks
+
+        on = bridge_decks(prep.xyz, params.bridge_params, ground=g)
+        g = g & ~on
+        deck = prep.index[on]
+        if deck.size:
+            log.info("%s: bridges: %d deck point(s) -> class 17", stage, deck.size)
     if not g.any():
         raise StageError(stage, "no ground point found",
                          "check the units and the parameters (a larger window, a larger threshold), or the noise classes")
@@ -148,6 +160,7 @@ def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage:
     ground[prep.index[g]] = True
     new = np.where(ground, np.uint8(ASPRSClass.GROUND), np.uint8(ASPRSClass.UNCLASSIFIED)).astype(np.uint8)
     new[prep.noise] = np.uint8(ASPRSClass.LOW_POINT)
+    new[deck] = np.uint8(ASPRSClass.BRIDGE_DECK)
     old = cloud.attrs.get("classification")
     if old is not None and not reclassify:
         keep = ~np.isin(old, OVERWRITABLE)

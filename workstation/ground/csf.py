@@ -64,6 +64,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 
 STAGE = "ground.csf"
@@ -105,7 +106,7 @@ class CSFParams:
         Set isolated low points among the particles' lowest points aside before simulating
         (False: the low-noise step, ``noise``, does it for every filter; this k-neighbour test
         also takes out sparse ground under a closed canopy).
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -123,6 +124,8 @@ class CSFParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 PRESETS: dict[str, CSFParams] = {

@@ -24,6 +24,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 
 STAGE = "ground.pmf"
@@ -47,7 +48,7 @@ class PMFParams:
         Largest height threshold, metres (2.5).
     exponential : bool
         Window sizes 2·2^k + 1 cells (True) or 2k + 1 (False).
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -61,6 +62,8 @@ class PMFParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 PRESETS: dict[str, PMFParams] = {

@@ -40,6 +40,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 
 STAGE = "ground.ptd"
@@ -77,7 +78,7 @@ class PTDParams:
         Stop when fewer than this fraction of the candidates joined in an iteration (0.0005).
     max_iterations : int
         (100).
-    reclassify, last_returns_only, noise, noise_params
+    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
         See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
@@ -97,6 +98,8 @@ class PTDParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 PRESETS: dict[str, PTDParams] = {

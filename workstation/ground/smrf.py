@@ -48,6 +48,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 
 from . import common
+from .bridges import BridgeParams
 from .noise import LowNoiseParams
 
 STAGE = "ground.smrf"
@@ -87,6 +88,11 @@ class SMRFParams:
         ``filters.smrf``). Off: every point takes part, as in PDAL without it.
     noise_params : LowNoiseParams
         Its parameters (metres).
+    bridges : bool
+        Take bridge decks out of the ground as class 17 (True;
+        :func:`workstation.ground.bridges.bridge_decks`), so a DTM runs under them.
+    bridge_params : BridgeParams
+        Its parameters (metres).
     """
 
     cell: float = 1.0
@@ -100,6 +106,8 @@ class SMRFParams:
     last_returns_only: bool = True
     noise: bool = True
     noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
+    bridges: bool = True
+    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 PRESETS: dict[str, SMRFParams] = {

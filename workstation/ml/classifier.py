@@ -6,8 +6,9 @@ model), and ``model="rf"`` a scikit-learn random forest baseline (Breiman 2001).
 
 Model classes are :data:`workstation.ml.dataset.MODEL_CLASSES` (ground, vegetation, building,
 water, other, noise); outputs are ASPRS codes: ground 2, vegetation 3/4/5 by height above the
-provisional ground (< 0.5 m, < 2 m, above), building 6, water 9, other 1 (cars, bridges,
-wires, towers), noise 7 below the ground and 18 above it.
+provisional ground (< 0.5 m, < 2 m, above), building 6, water 9, other 1 (cars, wires,
+towers), noise 7 below the ground and 18 above it; bridge decks 17 by a geometric test after
+the network (:func:`workstation.ground.bridges.bridge_decks`).
 
 Large clouds are classified tile by tile in metric coordinates with an overlap that covers
 the largest feature radius, each point taking the prediction of the tile whose core holds it.
@@ -203,6 +204,12 @@ class PointClassifier:
         learned: the network alone finds almost no water (F1 0.0 on Topography's lake, 0.22 on
         the simulated validation tiles with water), having neither trustworthy intensity nor
         density inputs. Models saved before load with it on.
+    bridges : bool
+        Last, the points of bridge decks (ground-like surfaces dropping abruptly on both sides
+        to the gap they span and running on into the terrain at both ends; their parapets)
+        become class 17, whatever the network said (:func:`workstation.ground.bridges.bridge_decks`,
+        judged on the lowest echoes of every class but noise). The network, trained with decks
+        as "other", calls most of a deck ground or building. Models saved before load with it on.
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
@@ -214,7 +221,7 @@ class PointClassifier:
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
                  gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True,
                  roof_test: bool = True, roof_tolerance: float = 0.08, raised_patches: bool = False,
-                 water: bool = True):
+                 water: bool = True, bridges: bool = True):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -250,6 +257,7 @@ class PointClassifier:
         self.roof_tolerance = float(roof_tolerance)
         self.raised_patches = bool(raised_patches)
         self.water = bool(water)
+        self.bridges = bool(bridges)
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -601,6 +609,11 @@ class PointClassifier:
         codes = table[k]
         codes = np.where(k == 1, veg, codes)
         codes = np.where(k == 5, noise, codes).astype(np.uint8)
+        if self.bridges and cloud is not None:
+            from workstation.ground.bridges import bridge_decks
+
+            deck = bridge_decks(metric_xyz(cloud)[0] if xyz is None else xyz, surface=k != 5, ground=k == 0)
+            codes[deck] = C.BRIDGE_DECK
         return codes, conf
 
     def predict(self, cloud: Cloud) -> np.ndarray:
@@ -634,7 +647,7 @@ class PointClassifier:
                 "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
                 "segment_weight": self.segment_weight, "understorey": self.understorey,
                 "roof_test": self.roof_test, "roof_tolerance": self.roof_tolerance,
-                "raised_patches": self.raised_patches, "water": self.water}
+                "raised_patches": self.raised_patches, "water": self.water, "bridges": self.bridges}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""
