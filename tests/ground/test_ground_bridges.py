@@ -222,3 +222,18 @@ def test_ml_ground_keeps_the_decks_out(scene):
     cloud, _, is_deck, _ = scene
     cls = np.asarray(ml_ground(cloud, MLGroundParams(device="cpu")).attrs["classification"])
     assert np.sum((cls == ASPRSClass.GROUND) & is_deck) <= 0.01 * is_deck.sum()
+
+
+@pytest.mark.parametrize("method", ["smrf", "csf", "lowest"])
+def test_cli_bridges_switch_reaches_the_parameters(tmp_path, capsys, method):
+    import json
+
+    from workstation.cli.main import main
+    from workstation.core.cloud import Cloud
+    from workstation.io import write_cloud
+
+    rng = np.random.default_rng(0)
+    write_cloud(Cloud(rng.uniform(0, 50, (2000, 3)) * [1, 1, 0.02], crs="EPSG:32633"), tmp_path / "c.laz")
+    assert main(["ground", str(tmp_path / "c.laz"), "-o", str(tmp_path / "g.laz"), "--method", method,
+                 "--no-bridges", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["params"]["bridges"] is False

@@ -558,9 +558,16 @@ def test_interrupted_run_leaves_nothing_half_written_and_resumes(survey, baselin
         pytest.skip("the run finished before the signal arrived")
     assert p.returncode == code, err[-2000:]
     assert "Traceback" not in err
-    hidden = [q for q in out.rglob(".*") if q.is_file() and ".ws-cache" not in q.parts]
-    hidden += [q for q in (out / ".ws-cache").rglob(".*")] if (out / ".ws-cache").exists() else []
-    assert not hidden, hidden
+    def hidden():
+        h = [q for q in out.rglob(".*") if q.is_file() and ".ws-cache" not in q.parts]
+        return h + ([q for q in (out / ".ws-cache").rglob(".*")] if (out / ".ws-cache").exists() else [])
+
+    # A task already running on the external workers when the run stopped goes on to its end (Dask
+    # cannot stop a running thread) and publishes or removes its temporary output then.
+    t1 = time.monotonic()
+    while hidden() and time.monotonic() - t1 < 30:
+        time.sleep(0.1)
+    assert not hidden(), hidden()
     done = [t for t, rec in run_json(out)["tasks"].items() if rec["status"] == "done"]
     assert done  # the chunks finished before the signal are recorded
     r = ws("run", survey / "project.toml", "--out", out, "--scheduler", cluster.address, "--json")

@@ -28,11 +28,14 @@ from .options import positive_float
 @click.option("--no-water", is_flag=True,
               help="Leave still water as ground (by default, level single-echo surfaces of 150 m2 or more whose "
                    "banks rise from them become water, class 9).")
+@click.option("--no-bridges", is_flag=True,
+              help="Leave bridge decks to the network (by default, surfaces spanning a gap at least 2 m below them, "
+                   "with the road continuing beyond both ends, become class 17).")
 @overwrite_option
 @read_options
 @json_option
 def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, no_water,
-             overwrite, read_opts, as_json):
+             no_bridges, overwrite, read_opts, as_json):
     """Classify IN into ground, vegetation (3/4/5), building, water, other (1) and noise (7/18);
     writes `classification` and a `confidence` (0-1) to OUT, keeping every other attribute."""
     import time
@@ -58,6 +61,8 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
         clf.raised_patches = True
     if no_water:
         clf.water = False
+    if no_bridges:
+        clf.bridges = False
     cloud = read_cloud(src, **read_opts)
     t1 = time.perf_counter()
     out = clf.classify(cloud)

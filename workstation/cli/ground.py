@@ -24,6 +24,9 @@ from .pipeline_out import pipeline_out_option
 @click.option("--noise-step/--no-noise-step", default=None,
               help="[all but ml] the low-noise step before the filter: points over 1 m under the lowest points "
                    "around them -> class 7, never ground (default on; as PDAL's filters.elm before filters.smrf).")
+@click.option("--bridges/--no-bridges", default=None,
+              help="[all but ml] take bridge decks out of the ground as class 17 (surfaces spanning a gap at least "
+                   "2 m below them, the road continuing beyond both ends); default on.")
 @click.option("--water", is_flag=True,
               help="Then make the ground on still water class 9 (level single-echo surfaces of 150 m2 or more "
                    "whose banks rise from them), as ws classify does.")
@@ -61,7 +64,7 @@ from .pipeline_out import pipeline_out_option
 @overwrite_option
 @read_options
 @json_option
-def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, water, hag, cell, slope, window, threshold, scalar,
+def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, bridges, water, hag, cell, slope, window, threshold, scalar,
            trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
            max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, pipeline_out, overwrite, read_opts,
            as_json):
@@ -101,6 +104,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
         given["last_returns_only"] = False
     if noise_step is not None:
         given["noise"] = noise_step
+    if bridges is not None:
+        given["bridges"] = bridges
     if method == "ml":  # the shipped point classifier (workstation.ml.ground)
         from workstation.ml.ground import MLGroundParams, ml_ground
 
