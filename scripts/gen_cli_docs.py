@@ -157,7 +157,7 @@ def command_reference(name: str, cmd, short: str) -> str:
 
     from workstation.cli.main import cli
 
-    root = click.Context(cli, info_name="ws")
+    root = click.Context(cli, info_name="ws", **cli.context_settings)
     ctx = click.Context(cmd, info_name=name, parent=root)
     parts = [f"# ws {name}\n", f"{_escape(short)}\n"]
     if isinstance(cmd, click.Group):
@@ -421,7 +421,7 @@ def example_option_errors() -> list[str]:
                 args = words[1:]
                 while args and args[0].startswith("-"):  # the group's own -v / -q
                     args.pop(0)
-                ctx = click.Context(cli, info_name="ws")
+                ctx = click.Context(cli, info_name="ws", **cli.context_settings)
                 try:
                     cmd_obj = cli
                     while args and isinstance(cmd_obj, click.Group):
