@@ -9,13 +9,8 @@ Then the patches of voted ground that drop by 1 m or more on all sides (roofs, d
 are taken out (:mod:`workstation.ground.patches`), the rejected points on terrain steps that the
 vote's TIN spans are put back (:mod:`workstation.ground.risers`), and, where the echoes show a
 canopy, the understorey the vote let in (:mod:`workstation.ground.understorey`; a no-op without
-return numbers). Measured on the six ISPRS samples (docs/benchmarks.md): 2.94 % mean total
-error (3.04 % without the riser step, 3.36 % without the patch step either), better than each
-member's, but not the 2.7 % of per-sample tuned SMRF. No rule over the five members' flags
-does better with one setting for all six, even one picked with the reference labels (2.95 %;
-``scripts/bench_ground.py bounds``). Tried and not better there
-(one parameter set): unanimous members refined by a slope-scaled TIN test, unanimous members
-as PTD seeds, a slope-adaptive switch between a 3-of-5 and a 5-of-5 vote.
+return numbers). Its figures against each member's are in docs/benchmarks.md ("Ground
+filtering").
 """
 
 from __future__ import annotations

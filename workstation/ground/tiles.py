@@ -1,7 +1,7 @@
 """Ground filtering tile by tile, for clouds too large to filter at once.
 
 A filter holds several arrays per point and per grid cell on top of the cloud it is given
-(72–350 bytes per point, ``auto`` the most: docs/benchmarks.md, "Memory"), so a 100 M-point
+(72–350 bytes per point, ``auto`` the most), so a 100 M-point
 file through ``auto`` would need some 35 GB at once. As lidR processes a LAScatalog in chunks
 with a buffer, and PDAL pipelines run ``filters.splitter`` before a filter, the cloud is cut
 into equal rectangles of about ``tile_points`` points; each tile is filtered together with the

@@ -21,9 +21,7 @@ points are tested twice against the ground around them:
    envelope_scalar · slope · cell`` above it is dropped (the slope term covers a cell's lowest
    point lying downhill of the cell's centre).
 
-Without return numbers (the ISPRS samples) the share is 0 and nothing changes; on the
-simulated scenes, whose ground is every return from the terrain, total error changes by
-≤ 0.01 points (docs/benchmarks.md).
+Without return numbers (the ISPRS samples) the share is 0 and nothing changes.
 """
 
 from __future__ import annotations
