@@ -80,7 +80,7 @@ def crs_info(crs: str | None, identify: bool = True) -> CRSInfo | None:
     if not crs:
         return None
     c = parse_crs(crs)
-    epsg = c.to_epsg(min_confidence=70) if identify else _stated_epsg(c)
+    epsg = c.to_epsg(min_confidence=70) if identify else stated_epsg(c)
     horiz = c.sub_crs_list[0] if c.is_compound else c
     axis = horiz.axis_info[0] if horiz.axis_info else None
     if horiz.is_geographic:
@@ -97,7 +97,7 @@ def crs_info(crs: str | None, identify: bool = True) -> CRSInfo | None:
     return CRSInfo(c.name, epsg, bool(horiz.is_geographic), unit, factor, vfactor, vunit, bool(c.is_geocentric))
 
 
-def _stated_epsg(c) -> int | None:
+def stated_epsg(c) -> int | None:
     """The EPSG code a CRS carries as its own identifier (no database search)."""
     ident = c.to_json_dict().get("id") or {}
     if ident.get("authority") == "EPSG":

@@ -306,9 +306,9 @@ def _crs_string(header, path, identify: bool = True) -> str | None:
     if fixed is not crs:  # units overridden: no EPSG code says that (skip PROJ's slow search)
         return fixed.to_wkt()
     wkt = crs.to_wkt()
-    from workstation.io.crs import _stated_epsg
+    from workstation.io.crs import stated_epsg
 
-    epsg = _stated_epsg(crs) or (_exact_epsg(wkt) if identify else None)
+    epsg = stated_epsg(crs) or (_exact_epsg(wkt) if identify else None)
     return f"EPSG:{epsg}" if epsg else wkt
 
 

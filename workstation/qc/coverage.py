@@ -40,7 +40,7 @@ from workstation.core.errors import InvalidInputError
 from workstation.core.units import Units
 
 from .context import Finding, QCGrid
-from .density import _hull_area, _hull_candidates, _hull_points
+from .density import hull_area, hull_candidates, hull_points
 
 CHECK = "coverage"
 
@@ -91,7 +91,7 @@ class _Piece:
 def _grown_hull_area(hull: np.ndarray, n: int) -> float:
     """Area (CRS units²) of the hull of ``n`` points grown by half their spacing d = sqrt(A/n):
     A = A_h + P·d/2 + π·d²/4, solved by fixed-point iteration (0 for a degenerate hull)."""
-    a_h = _hull_area(hull)
+    a_h = hull_area(hull)
     if n < 3 or a_h <= 0:
         return 0.0
     perimeter = float(np.sum(np.hypot(*(np.roll(hull, -1, axis=0) - hull).T)))
@@ -147,7 +147,7 @@ class DensityPass:
         for s, e in zip(starts, np.r_[starts[1:], len(ids)]):  # one swath at a time
             key = (source, int(ids[s]))
             piece = self._pieces.get(key) or _Piece(0, np.empty((0, 2)))
-            hull = _hull_points(np.vstack([piece.hull, _hull_candidates(xy[s:e])]))
+            hull = hull_points(np.vstack([piece.hull, hull_candidates(xy[s:e])]))
             self._pieces[key] = _Piece(piece.n + int(e - s), hull)
 
     def _swaths(self) -> dict[int, dict]:
@@ -306,7 +306,7 @@ class CoveragePass:
         xy = chunk.xyz[keep, :2]
         source = str(source)
         old = self._hulls.get(source, np.empty((0, 2)))
-        self._hulls[source] = _hull_points(np.vstack([old, _hull_candidates(xy)]))
+        self._hulls[source] = hull_points(np.vstack([old, hull_candidates(xy)]))
         flat, inside = self.grid.flat(xy)
         first = first_returns(chunk)[keep]
         self._outside += int(np.count_nonzero(~inside))
@@ -323,7 +323,7 @@ class CoveragePass:
         from scipy import ndimage
 
         polys = [({"type": "Polygon", "coordinates": [np.vstack([h, h[:1]]).tolist()]}, 1)
-                 for h in self._hulls.values() if len(h) >= 3 and _hull_area(h) > 0]
+                 for h in self._hulls.values() if len(h) >= 3 and hull_area(h) > 0]
         hulls = rasterize(polys, out_shape=self.grid.shape, transform=self.grid.transform(), fill=0,
                           dtype="uint8").astype(bool) if polys else np.zeros(self.grid.shape, bool)
         return ndimage.binary_fill_holes(hulls | filled)

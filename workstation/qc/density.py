@@ -53,7 +53,7 @@ class DensityAccumulator:
             self.origin = np.floor(xy.min(axis=0) / self.cell) * self.cell - 2**20 * self.cell
         span = float(np.max(xy.max(axis=0) - self.origin)) / self.cell
         self._too_fine |= not span < _MAX_INDEX  # the packed 64-bit cell keys would wrap around
-        self._hull = _hull_points(np.vstack([self._hull, _hull_candidates(xy)]))
+        self._hull = hull_points(np.vstack([self._hull, hull_candidates(xy)]))
         if self._too_fine and not self.strict:
             self.n += len(xy)
             return
@@ -76,16 +76,16 @@ class DensityAccumulator:
         CRS units."""
         m2 = self.metres_per_unit**2
         occ_area = float("nan") if self._too_fine else self._keys.size * self.cell**2 * m2
-        hull_area = _hull_area(self._hull) * m2
+        fp_area = hull_area(self._hull) * m2
         d_occ = self.n / occ_area if occ_area > 0 else float("nan")
-        d_fp = self.n / hull_area if hull_area > 0 else float("nan")
+        d_fp = self.n / fp_area if fp_area > 0 else float("nan")
         nps_m = float(np.sqrt(1.0 / d_occ)) if d_occ > 0 else float("nan")
         return {
             "points": int(self.n),
             "cell_size": float(self.cell),
             "occupied_cells": int(self._keys.size),
             "occupied_area_m2": float(occ_area),
-            "footprint_area_m2": float(hull_area),
+            "footprint_area_m2": float(fp_area),
             "density_occupied": float(d_occ),
             "density_footprint": float(d_fp),
             "nps_m": nps_m,
@@ -100,7 +100,7 @@ def sorted_unique(a: np.ndarray, kind: str = "quicksort") -> np.ndarray:
     return s[np.r_[True, s[1:] != s[:-1]]] if len(s) else s
 
 
-def _hull_candidates(xy: np.ndarray) -> np.ndarray:
+def hull_candidates(xy: np.ndarray) -> np.ndarray:
     """The points that may be vertices of the convex hull of ``xy`` (Akl-Toussaint): those not
     strictly inside the octagon of the extreme points along x, y, x+y and x-y. Exact; removes
     nearly every point of a survey, so Qhull sees thousands of points instead of millions."""
@@ -120,7 +120,9 @@ def _hull_candidates(xy: np.ndarray) -> np.ndarray:
     return xy[~inside]
 
 
-def _hull_points(xy: np.ndarray) -> np.ndarray:
+def hull_points(xy: np.ndarray) -> np.ndarray:
+    """The vertices of the 2-D convex hull of (n, 2) ``xy`` (Qhull; the extreme points of a
+    degenerate set)."""
     if len(xy) < 3:
         return xy
     from scipy.spatial import ConvexHull, QhullError
@@ -132,7 +134,8 @@ def _hull_points(xy: np.ndarray) -> np.ndarray:
     return xy[h.vertices]
 
 
-def _hull_area(hull: np.ndarray) -> float:
+def hull_area(hull: np.ndarray) -> float:
+    """Area of the polygon ``hull`` (vertices in order; the shoelace formula)."""
     if len(hull) < 3:
         return 0.0
     x, y = hull[:, 0], hull[:, 1]

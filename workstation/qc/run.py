@@ -22,6 +22,7 @@ from workstation.core.log import get_logger
 from workstation.io.registry import format_of, iter_chunks
 
 from .context import QCGrid
+from .specs import dig
 
 log = get_logger(__name__)
 
@@ -72,13 +73,15 @@ def _units(crs):
     return crs_units(crs)
 
 
-def _grid(cat, cell_m: float, units, what: str) -> QCGrid:
-    """A grid of ``cell_m`` metres over the catalog, refused when it would not fit in memory
-    (the delivery's extent is then too large for its spacing: check it in pieces)."""
+def _coverage_grid(cat, anps_m: float, units) -> QCGrid:
+    """The 2×ANPS grid over the catalog (:func:`workstation.qc.coverage.coverage_grid`), refused
+    when it would not fit in memory (the extent is then too large for its spacing: check it in pieces)."""
     from workstation.core.budget import check_grid
 
-    g = QCGrid.over(cat.bounds, cell_m / units.h, units)
-    check_grid(g.rows, g.cols, what=what, option="INPUT extent", bytes_per_cell=64.0,
+    from .coverage import coverage_grid
+
+    g = coverage_grid(cat.bounds, anps_m, units)
+    check_grid(g.rows, g.cols, what="2×ANPS coverage grid", option="INPUT extent", bytes_per_cell=64.0,
                path=", ".join(t.path.name for t in cat.tiles[:3]))
     return g
 
@@ -150,7 +153,7 @@ def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
     if not anps or not np.isfinite(anps):
         raise InvalidInputError("no first returns to measure the point spacing", "check the return numbers",
                                 path=paths[0], field="return_number")
-    grid2 = _grid(cat, 2.0 * anps, units, "2×ANPS coverage grid")
+    grid2 = _coverage_grid(cat, anps, units)
     cov, sw, cls2, cpp = _pass2_checks(grid2, anps, cls1, cps, units, spec)
     with progress_bar("qc pass 2 of 2", cat.point_count, "points") as advance:
         _stream(cat, [c for c in (cov, sw, cls2, cpp) if c is not None], params.chunk_size, advance,
@@ -215,19 +218,11 @@ def _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, par
         "units": units.to_dict(), "anpd": density.get("anpd"), "anps": density.get("anps"),
         "coverage": coverage.get("coverage"), "voids": coverage.get("voids"),
         "swaths": swath.get("swaths", []),
-        "nva": _pick(accuracy, "asprs2014", "nva"), "vva": _pick(accuracy, "asprs2014", "vva"),
+        "nva": dig(accuracy, "asprs2014", "nva"), "vva": dig(accuracy, "asprs2014", "vva"),
         "format": {k: c.result() for k, c in fmt.items()},
         "density": density, "coverage_detail": coverage, "swath": swath, "classes": classes,
         "accuracy": accuracy, "dem_accuracy": dem, "findings": findings,
     }
-
-
-def _pick(d, *keys):
-    for k in keys:
-        if not isinstance(d, dict) or d.get(k) is None:
-            return None
-        d = d[k]
-    return d
 
 
 def _accuracy(cpp, params: QCParams) -> dict:
@@ -253,7 +248,7 @@ def _dem_accuracy(params: QCParams, cps, density) -> dict:
         r = read_raster(params.dem, band=1)
         cell_m = abs(r.transform[0]) * raster_units(r).h
         d = {**d, "cell_m": cell_m}
-    d["rules"] = three_x_rule(cell_m, _pick(d, "rmsez"), density.get("anps"),
+    d["rules"] = three_x_rule(cell_m, dig(d, "rmsez"), density.get("anps"),
                               checkpoint_rmse_m=params.checkpoint_rmse_m or None)
     return d
 

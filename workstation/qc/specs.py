@@ -110,7 +110,8 @@ def criterion(name: str, value, threshold, op: str, unit: str = "") -> dict:
     return {"name": name, "value": value, "threshold": threshold, "op": op, "unit": unit, "pass": ok}
 
 
-def _get(d: dict | None, *keys):
+def dig(d: dict | None, *keys):
+    """``d[k1][k2]...``, or None where a level is missing or None."""
     for k in keys:
         if not isinstance(d, dict) or d.get(k) is None:
             return None
@@ -122,13 +123,13 @@ def verdict(spec: Spec, results: dict) -> dict:
     """The specification's table measured on ``results`` (the QC result document, lengths in m)."""
     density, coverage, swath = results.get("density"), results.get("coverage_detail"), results.get("swath")
     acc, dem = results.get("accuracy"), results.get("dem_accuracy")
-    pairs = [p for p in (_get(swath, "swaths") or []) if p.get("cells", 0) > 0]
-    intra = [s["precision_m"] for s in (_get(swath, "intraswath") or []) if s.get("precision_m") is not None]
+    pairs = [p for p in (dig(swath, "swaths") or []) if p.get("cells", 0) > 0]
+    intra = [s["precision_m"] for s in (dig(swath, "intraswath") or []) if s.get("precision_m") is not None]
     rows = []
     if spec.anpd_min is not None:
-        rows.append(criterion("ANPD, first returns of single swaths", _get(density, "anpd"), spec.anpd_min, ">=", "pts/m²"))
-        rows.append(criterion("ANPS", _get(density, "anps"), spec.anps_max, "<=", "m"))
-    rows.append(criterion("cells of 2×ANPS holding a first return", _get(coverage, "coverage"), spec.coverage_min, ">=", ""))
+        rows.append(criterion("ANPD, first returns of single swaths", dig(density, "anpd"), spec.anpd_min, ">=", "pts/m²"))
+        rows.append(criterion("ANPS", dig(density, "anps"), spec.anps_max, "<=", "m"))
+    rows.append(criterion("cells of 2×ANPS holding a first return", dig(coverage, "coverage"), spec.coverage_min, ">=", ""))
     rows.append(criterion("intraswath smooth-surface precision (worst swath)", max(intra) if intra else None,
                           spec.intraswath_max, "<=", "m"))
     rows.append(criterion("interswath RMSDz (worst pair)", max(p["rmsdz"] for p in pairs) if pairs else None,
@@ -137,7 +138,7 @@ def verdict(spec: Spec, results: dict) -> dict:
                           spec.max_dz, "<=", "m"))
     rows += _accuracy_rows(spec, acc)
     if dem is not None and spec.dem_cell_min is not None:
-        rows.append(criterion("DEM cell size", _get(dem, "cell_m"), spec.dem_cell_min, ">=", "m"))
+        rows.append(criterion("DEM cell size", dig(dem, "cell_m"), spec.dem_cell_min, ">=", "m"))
     measured = [r for r in rows if r["pass"] is not None]
     return {"spec": spec.name, "source": spec.source, "pass": all(r["pass"] for r in measured),
             "complete": len(measured) == len(rows), "criteria": rows}
@@ -146,13 +147,13 @@ def verdict(spec: Spec, results: dict) -> dict:
 def _accuracy_rows(spec: Spec, acc: dict | None) -> list[dict]:
     """Absolute vertical accuracy rows: RMSEz (Edition 2 combines the checkpoints' own accuracy),
     NVA/VVA (2014 forms) where the specification tests them, and the checkpoint count."""
-    n_nva = _get(acc, "n_nonvegetated")
-    rmse = _get(acc, "edition2", "rmsev") if spec.name.startswith("asprs") else _get(acc, "asprs2014", "rmsez")
+    n_nva = dig(acc, "n_nonvegetated")
+    rmse = dig(acc, "edition2", "rmsev") if spec.name.startswith("asprs") else dig(acc, "asprs2014", "rmsez")
     rows = [criterion("non-vegetated checkpoints", n_nva, spec.min_checkpoints, ">=", ""),
             criterion("RMSEz, non-vegetated" + (" (checkpoint accuracy included)" if spec.name.startswith("asprs") else ""),
                       rmse, spec.rmsez_max, "<=", "m")]
     if spec.nva_max is not None:
-        rows.append(criterion("NVA = 1.96·RMSEz", _get(acc, "asprs2014", "nva"), spec.nva_max, "<=", "m"))
+        rows.append(criterion("NVA = 1.96·RMSEz", dig(acc, "asprs2014", "nva"), spec.nva_max, "<=", "m"))
     if spec.vva_max is not None:
-        rows.append(criterion("VVA, 95th percentile", _get(acc, "asprs2014", "vva"), spec.vva_max, "<=", "m"))
+        rows.append(criterion("VVA, 95th percentile", dig(acc, "asprs2014", "vva"), spec.vva_max, "<=", "m"))
     return rows
