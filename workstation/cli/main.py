@@ -13,6 +13,8 @@ import sys
 
 import click
 
+from workstation.core.signals import Terminated
+
 # command name -> (module:attribute, one-line help shown by `ws --help` without importing it)
 COMMANDS: dict[str, tuple[str, str]] = {
     "info": ("workstation.cli.info:info", "Header, counts, bounds, dimensions, classes, density and CRS of a cloud."),
@@ -82,15 +84,6 @@ def cli(ctx, verbose, quiet):
     ctx.ensure_object(dict)
     ctx.obj["verbose"] = verbose
     configure(verbose, quiet)
-
-
-class Terminated(KeyboardInterrupt):
-    """SIGTERM or SIGHUP, raised where the program is so it unwinds as on Ctrl-C: temporary
-    files are removed by the writers' ``finally`` blocks, and the exit code is 128 + signal."""
-
-    def __init__(self, signum: int):
-        super().__init__(signum)
-        self.signum = signum
 
 
 def _on_signal(signum, frame):

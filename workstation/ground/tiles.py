@@ -153,25 +153,28 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
     only when a worker is free for it."""
     import logging
 
-    from distributed import Client, LocalCluster, wait
+    from distributed import Client, LocalCluster
 
-    from workstation.core.signals import workers_starting
+    from workstation.core.signals import caught_signals, workers_starting
 
     with workers_starting():
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
-    with cluster, Client(cluster) as client:
+    with cluster, Client(cluster) as client, caught_signals() as latch:
         running: dict = {}
-        for core, sel in layout:
-            if len(running) >= workers:
-                done, _ = wait(list(running), return_when="FIRST_COMPLETED")
-                for f in done:
+
+        def collect_done(at_most: int) -> None:  # wait until no more than at_most tiles run
+            while len(running) > at_most:
+                for f in [f for f in running if f.done()]:
                     collect(running.pop(f), f.result())
                     advance(1)
+                if len(running) > at_most:
+                    latch.sleep(0.05)
+
+        for core, sel in layout:
+            collect_done(workers - 1)
             running[client.submit(_filter_tile, *task(core, sel), pure=False)] = core
-        for f in list(running):
-            collect(running.pop(f), f.result())
-            advance(1)
+        collect_done(0)
 
 
 def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TileParams()) -> Cloud:

@@ -23,7 +23,7 @@ from pathlib import Path
 
 from workstation.core.errors import InvalidInputError, WorkstationError
 from workstation.core.log import get_logger
-from workstation.core.signals import workers_starting
+from workstation.core.signals import caught_signals, workers_starting
 
 from . import plan as P
 from workstation.io.catalog import build_catalog
@@ -219,7 +219,7 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
     finished: set[str] = set()
     broken: set[str] = set()
     try:
-        with RunProgress(todo, dashboard, on_progress) as progress:
+        with caught_signals() as latch, RunProgress(todo, dashboard, on_progress) as progress:
             ac = as_completed()
             for t in todo:
                 if not t.barrier and not any(d in by_id and by_id[d].barrier for d in t.deps):
@@ -233,6 +233,8 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
                             ac.add(_submit(client, d, futures, manifest, options))
                 if ac.is_empty():
                     break
+                while not ac.has_ready():
+                    latch.sleep(0.1)
                 fut = next(ac)
                 t = by_id[fut.key.split("|")[0]]
                 finished.add(t.id)
@@ -240,6 +242,7 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
                 if rec["status"] == "failed":
                     failures.append({"task": t.id, "error": rec["error"]})
                 progress.advance(t.phase, rec.get("points", 0))
+                latch.check()
     except KeyboardInterrupt:
         _quiet_event_loop_logs()
         client.cancel(list(futures.values()), force=True)
