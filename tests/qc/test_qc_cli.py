@@ -182,3 +182,13 @@ def test_ws_run_qc_stage_checks_the_delivery_and_its_dtm_then_skips_on_rerun(del
     stamp = (out / "qc" / "qc.json").stat().st_mtime_ns
     assert main(["run", str(tmp_path / "project.toml"), "--out", str(out), "--workers", "1"]) == 0
     assert (out / "qc" / "qc.json").stat().st_mtime_ns == stamp  # unchanged: skipped
+
+
+@pytest.mark.realdata
+def test_reserved_class_codes_are_one_finding(shared_data, tmp_path, capsys):
+    """sample_c.las carries class 31 (reserved): qc.validate reports it once, with the file."""
+    rc = main(["qc", str(shared_data / "lidar" / "sample_c.las"), "-o", str(tmp_path / "r"), "--json"])
+    assert rc == 0
+    doc = json.loads(capsys.readouterr().out)
+    hits = [f for f in doc["findings"] if "reserved" in f["message"]]
+    assert len(hits) == 1 and "class 31" in hits[0]["found"] and hits[0]["file"].endswith("sample_c.las")

@@ -4,7 +4,8 @@ What is checked, and after which rule:
 
 * **Class histogram** over all 256 codes, with the withheld, synthetic, key-point and overlap
   flags (LAS 1.4 R15, Table 17). Codes 8 and 12 (reserved since LAS 1.4; model key-point and
-  overlap before) and 23-63 (reserved) are reported.
+  overlap before) and 23-63 (reserved) are listed in the result; the finding is
+  :mod:`workstation.qc.validate`'s, which knows the file's LAS version.
 * **Noise share**: the shares of low (7) and high (18) noise. USGS Lidar Base Specification
   2024 (LBS, §"Point classification") asks for noise to be classified (7, 18) or withheld; a
   large flagged share points at fog, rain, or a noise filter that removes real returns.
@@ -508,10 +509,7 @@ def class_findings(res: dict) -> list[Finding]:
         return [Finding("classes", "info", None, "classification", "ASPRS classes other than 0/1",
                         "only codes " + ", ".join(res["histogram"]) if res["histogram"] else "no points",
                         "the delivery is not classified: the classification checks were not run")]
-    out = []
-    if res["reserved_codes"]:
-        out.append(Finding("classes", "warning", None, "classification", "no reserved codes (LAS 1.4 R15 Table 17)",
-                           ", ".join(map(str, res["reserved_codes"])), "points carry class codes that LAS 1.4 reserves"))
+    out = []  # reserved codes: a finding of qc.validate, which knows the file's LAS version
     for c in res["criteria"]:
         if not c["pass"] and not c["name"].startswith("unflagged"):  # those: per file, below
             out.append(_criterion_finding(res, c))
