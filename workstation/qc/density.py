@@ -49,9 +49,10 @@ class DensityAccumulator:
         """Add (m, 2) plan coordinates."""
         if len(xy) == 0:
             return
+        x, y = xy[:, 0], xy[:, 1]  # column by column: numpy reduces (n, 2) along axis 0 much slower
         if self.origin is None:
-            self.origin = np.floor(xy.min(axis=0) / self.cell) * self.cell - 2**20 * self.cell
-        span = float(np.max(xy.max(axis=0) - self.origin)) / self.cell
+            self.origin = np.floor(np.array([x.min(), y.min()]) / self.cell) * self.cell - 2**20 * self.cell
+        span = float(np.max(np.array([x.max(), y.max()]) - self.origin)) / self.cell
         self._too_fine |= not span < _MAX_INDEX  # the packed 64-bit cell keys would wrap around
         self._hull = hull_points(np.vstack([self._hull, hull_candidates(xy)]))
         if self._too_fine and not self.strict:
