@@ -14,7 +14,7 @@ from workstation.cli.options import FiniteFloatRange, SentinelIntRange, nonneg_f
 
 @click.command()
 @click.argument("workdir", type=click.Path(file_okay=False, exists=True))
-@click.option("--images", "image_dir", type=click.Path(file_okay=False, exists=True), help="Folder of the original images (default WORKDIR/images).")
+@click.option("--images", "image_dir", type=click.Path(file_okay=False, exists=True), help="Folder of the original images [default: the folder `ws sfm` recorded in WORKDIR/summary.json, else WORKDIR/images].")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), help="Also write the cloud here (.las, .laz, .ply).")
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU plane sweep.")
 @click.option("--max-image-size", type=SentinelIntRange(-1, min=1), default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
@@ -31,10 +31,13 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
 
     Undistorts the images into WORKDIR/dense (COLMAP layout), computes depth and normal maps
     (stereo/depth_maps, stereo/normal_maps) and fuses them into WORKDIR/dense/fused.ply
-    (points in the model frame with colours and normals). --overwrite replaces WORKDIR/dense
-    and the -o file.
+    (points in the model frame with colours and normals). The photos are found without
+    --images from the record of `ws sfm`; the model, the image folder and every image the
+    model names are checked before any work. Writes the stage record WORKDIR/dense/summary.json
+    (shown by `ws report WORKDIR`). --overwrite replaces WORKDIR/dense and the -o file.
     """
-    from workstation.photogrammetry.dense import DenseParams, run_dense
+    from workstation.io.reconstruction import check_image_files, resolve_image_dir
+    from workstation.photogrammetry.dense import DenseParams, resolve_device, run_dense
 
     if output is not None and Path(output).suffix.lower() not in (".las", ".laz", ".ply"):
         from workstation.core.errors import InvalidInputError
@@ -43,6 +46,11 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
     from workstation.io import check_outputs, work_folder
 
     check_outputs([output], overwrite, inputs=[])
+    _check_dense_folder(Path(workdir) / "dense", overwrite)
+    resolve_device(device)  # every input checked before the long run
+    names = _model_image_names(workdir)
+    image_dir = resolve_image_dir(workdir, image_dir) or Path(workdir) / "images"
+    check_image_files(names, image_dir, workdir)
     params = DenseParams(device=device, max_image_size=max_image_size, num_sources=num_sources,
                          top_k=min(2, num_sources), min_ncc=min_ncc, min_consistent=min_consistent,
                          fusion_cache_gb=fusion_cache_gb,
@@ -56,6 +64,38 @@ def dense(workdir, image_dir, output, device, max_image_size, num_sources, min_n
         summary["output"] = str(output)
     from workstation.cli.summary import count, emit_summary
 
+    write_dense_record(workdir, image_dir, params, summary, output)
     emit_summary("dense", count(summary["points"], "points"), [summary["fused"], output], details=summary["device"])
     if as_json:
         emit_json(summary)
+
+
+def _check_dense_folder(dense_dir: Path, overwrite: bool) -> None:
+    """Refuse an existing, non-empty WORKDIR/dense without --overwrite (before any work)."""
+    if dense_dir.is_dir() and any(dense_dir.iterdir()) and not overwrite:
+        from workstation.core.errors import OutputExistsError
+
+        raise OutputExistsError(dense_dir)
+
+
+def _model_image_names(workdir) -> list[str]:
+    """Names of the registered images of the workdir's COLMAP model (read by pycolmap, no
+    per-point conversion, so the check is quick on large models)."""
+    from workstation.interop.pycolmap import import_pycolmap
+    from workstation.photogrammetry.dense import find_model
+
+    rec = import_pycolmap().Reconstruction(str(find_model(workdir)))
+    return [im.name for im in rec.images.values() if im.has_pose]
+
+
+def write_dense_record(workdir, image_dir, params, summary: dict, output=None) -> Path:
+    """The dense stage record WORKDIR/dense/summary.json: the run's summary (device, points,
+    timings), the image folder, the DenseParams and the outputs (shown by `ws report`)."""
+    import dataclasses
+
+    from workstation.cli.summary import elapsed
+    from workstation.io.reconstruction import stage_record, write_stage_record
+
+    rec = stage_record("dense", summary, inputs={"workdir": workdir, "image_dir": image_dir},
+                       params=dataclasses.asdict(params), outputs=[summary["fused"], output], seconds=elapsed())
+    return write_stage_record(rec, Path(workdir) / "dense" / "summary.json")

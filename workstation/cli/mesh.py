@@ -54,7 +54,7 @@ from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, p
               help="Oriented photos (COLMAP work folder or cameras.json) in the cloud's frame: texture the mesh "
                    "from them (OUT must be .obj, .glb or .gltf) and orient normals toward the cameras.")
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
-              help="Folder of the photos (default WORKDIR/images).")
+              help="Folder of the photos [default: the folder `ws sfm` recorded in WORKDIR, else WORKDIR/images].")
 @click.option("--texel-size", type=positive_float, default=None,
               help="Texture: surface size of one texel in CRS units [default: the photos' ground sample distance].")
 @click.option("--texture-size", type=click.IntRange(16, 32768), default=4096, show_default=True,
@@ -72,13 +72,16 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary.
 
     With --reconstruction the mesh is textured from the oriented photos: OUT.obj comes with
-    OUT.mtl and a PNG texture, OUT.glb embeds the texture.
+    OUT.mtl and the texture OUT.png (material and texture named after the mesh, so meshes in
+    one folder never collide; --overwrite covers them too), OUT.glb embeds the texture. The
+    photos, the model and every image it names are checked before any work, and the stage
+    record WORKDIR/mesh_OUT.json (shown by `ws report WORKDIR`) is written.
     """
     import numpy as np
 
     from workstation.core.errors import InvalidInputError
     from workstation.core.log import get_logger
-    from workstation.io import check_output, read_cloud
+    from workstation.io import check_outputs, read_cloud
     from workstation.io.mesh import check_mesh_extension, write_mesh
     from workstation.mesh import (BallPivotingParams, CleanParams, ColorTransferParams, DecimateParams,
                                   Delaunay25dParams, MeshChainParams, NormalParams, PoissonParams, QualityParams,
@@ -89,12 +92,10 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     if workdir is not None and ext not in (".obj", ".glb", ".gltf"):
         raise InvalidInputError(f"a textured mesh cannot be written as {ext}", "write .obj, .glb or .gltf",
                                 path=output)
-    check_output(output, overwrite, inputs=[src])
     rec = None
     if workdir is not None:
-        from workstation.photogrammetry.sfm import read_reconstruction
-
-        rec = read_reconstruction(workdir, image_dir)
+        rec, image_dir = _checked_reconstruction(workdir, image_dir)
+    check_outputs(textured_mesh_files(output) if workdir is not None else [output], overwrite, inputs=[src])
     cloud = read_cloud(src, **read_opts)
     params = MeshChainParams(
         method=method,
@@ -118,5 +119,44 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
 
     emit_summary("mesh", f"{count(res.mesh.n_faces, 'faces')}, {count(res.mesh.n_vertices, 'vertices')}", output,
                  details=[method, f"from {count(cloud.n, 'points')}"])
+    doc = {"input": src, "output": output, "method": method, **res.to_dict()}
+    if workdir is not None:
+        _write_record(doc, src, output, workdir, image_dir, params)
     if as_json:
-        emit_json({"input": src, "output": output, "method": method, **res.to_dict()})
+        emit_json(doc)
+
+
+def textured_mesh_files(output) -> list:
+    """The files a textured mesh OUT makes: OUT.obj with OUT.mtl and OUT.png; OUT.glb/.gltf alone
+    (texture embedded)."""
+    from pathlib import Path
+
+    from workstation.io.mesh import textured_obj_files
+
+    return textured_obj_files(output) if Path(output).suffix.lower() == ".obj" else [Path(output)]
+
+
+def _checked_reconstruction(workdir, image_dir):
+    """The oriented photos of WORKDIR, with the image folder from the `ws sfm` record unless
+    --images is given, and every image on disk (checked before the cloud is read)."""
+    from workstation.io.reconstruction import check_image_files, resolve_image_dir
+    from workstation.photogrammetry.sfm import read_reconstruction
+
+    image_dir = resolve_image_dir(workdir, image_dir)
+    rec = read_reconstruction(workdir, image_dir)
+    check_image_files(rec, image_dir, workdir)
+    return rec, image_dir
+
+
+def _write_record(doc: dict, src, output, workdir, image_dir, params) -> None:
+    """The mesh stage record WORKDIR/mesh_<OUT stem>.json (the --json document, inputs, params)."""
+    import dataclasses
+    from pathlib import Path
+
+    from workstation.cli.summary import elapsed
+    from workstation.io.reconstruction import stage_record, work_folder_of, write_stage_record
+
+    rec = stage_record("mesh", doc, inputs={"cloud": src, "reconstruction": workdir, "image_dir": image_dir},
+                       params=dataclasses.asdict(params),
+                       outputs=[f for f in textured_mesh_files(output) if Path(f).exists()], seconds=elapsed())
+    write_stage_record(rec, work_folder_of(workdir) / f"mesh_{Path(output).stem}.json", required=False)

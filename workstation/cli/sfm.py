@@ -41,14 +41,18 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
     reconstruction; sparse/1... other models), WORKDIR/sparse.ply (coloured sparse cloud) and
-    WORKDIR/summary.json. With --gcp also WORKDIR/georef/0 (the
-    model in the survey frame; bundle-adjusted with the control points when their image
-    observations allow, intrinsics kept) and WORKDIR/georef_report.json (control and check
-    residuals, RMSE before/after the adjustment, CE90/LE90, DEM cell size and contour
-    interval supported).
+    WORKDIR/summary.json (the stage record: the absolute image folder in inputs.image_dir and
+    the camera settings in params, so `ws dense WORKDIR`, `ws mesh --reconstruction WORKDIR`,
+    `ws colorize` and `ws ortho` find the photos without --images). With --gcp also
+    WORKDIR/georef/0 (the model in the survey frame; bundle-adjusted with the control points
+    when their image observations allow, intrinsics kept) and WORKDIR/georef_report.json
+    (control and check residuals, RMSE before/after the adjustment, CE90/LE90, DEM cell size
+    and contour interval supported). With --dense also WORKDIR/dense and its record
+    WORKDIR/dense/summary.json, as `ws dense` writes them.
     """
     from workstation.core.errors import InvalidInputError
-    from workstation.io.atomic import atomic_path, work_folder
+    from workstation.io.atomic import work_folder
+    from workstation.io.reconstruction import SFM_RECORD, write_stage_record
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
 
     camera = None
@@ -100,13 +104,16 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
         if gcps is not None:
             out["georef"] = _georeference(wd, images, gcps, sigma_px, crs, gcp_adjustment)
         if do_dense:
+            from workstation.cli.dense import write_dense_record
             from workstation.photogrammetry.dense import DenseParams, run_dense
 
-            _, dense_summary = run_dense(wd, images, DenseParams(device=device), overwrite=overwrite)
+            dense_params = DenseParams(device=device)
+            _, dense_summary = run_dense(wd, images, dense_params, overwrite=overwrite)
+            write_dense_record(wd, images, dense_params, dense_summary)
             click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
             out["dense"] = dense_summary
-        with atomic_path(wd / "summary.json", overwrite=True) as tmp:
-            Path(tmp).write_text(json.dumps(json_clean(out), indent=2, default=str) + "\n")
+        out = _record(out, images, camera_file, gcp_file, params, gcp_adjustment, crs, sigma_px, wd)
+        write_stage_record(out, wd / SFM_RECORD)
         from workstation.cli.summary import count, emit_summary
 
         emit_summary("sfm", f"{s['registered']}/{count(s['images'], 'images')} registered, {count(s['points'], 'points')}",
@@ -115,6 +122,24 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
                               "georeferenced" if gcps is not None else "", "dense" if do_dense else ""])
         if as_json:
             emit_json(out)
+
+
+def _record(out: dict, images, camera_file, gcp_file, params, gcp_adjustment: str, crs, sigma_px: float, wd: Path) -> dict:
+    """The sfm stage record (WORKDIR/summary.json): the --json document plus the absolute image
+    folder and the camera settings (model, shared or per-image intrinsics, image size, matcher)."""
+    import dataclasses
+
+    from workstation.cli.summary import elapsed
+    from workstation.io.reconstruction import stage_record
+
+    settings = dataclasses.asdict(params)
+    settings["intrinsics"] = "shared" if params.single_camera else "per-image"
+    if gcp_file:
+        settings.update(gcp_adjustment=gcp_adjustment, crs=crs, sigma_px=sigma_px)
+    outputs = [wd / "sparse" / "0", wd / "sparse.ply", wd / "georef" / "0" if gcp_file else None,
+               (out.get("dense") or {}).get("fused")]
+    return stage_record("sfm", out, inputs={"image_dir": images, "camera": camera_file, "gcp": gcp_file, "workdir": wd},
+                        params=settings, outputs=outputs, seconds=elapsed())
 
 
 def _georeference(wd: Path, images, gcps, sigma_px: float, crs, gcp_adjustment: str) -> dict:

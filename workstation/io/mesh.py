@@ -7,7 +7,10 @@
   is written relative to its rounded bounding-box centre and that origin goes in the node's
   translation (float64 JSON): readers that apply node transforms get the true coordinates.
 - A textured mesh carries per-vertex ``uv`` (n, 2) float32 in ``vertex_attrs`` and the image
-  (h, w, 3|4) uint8 in ``meta["texture"]``; OBJ writes it as a PNG beside an MTL file.
+  (h, w, 3|4) uint8 in ``meta["texture"]``; OBJ writes it as a PNG beside an MTL file. The
+  material and its texture are named after the mesh file (``facade.obj`` -> ``facade.mtl``,
+  material ``facade``, ``facade.png``; in GLB/glTF the material ``facade``), so two meshes in
+  one folder never share a texture file, and ``overwrite`` applies to all three files.
 
 Every file is written through :func:`workstation.io.atomic_path` (temporary file, rename).
 """
@@ -82,7 +85,17 @@ def _write_ply(mesh: Mesh, path: Path) -> None:
         fh.write(f.tobytes())
 
 
-def _to_trimesh(mesh: Mesh, origin=None):
+def textured_obj_files(path) -> list[Path]:
+    """The files a textured ``OUT.obj`` is written as: ``OUT.obj``, ``OUT.mtl``, ``OUT.png``."""
+    p = Path(path)
+    return [p, p.with_suffix(".mtl"), p.with_suffix(".png")]
+
+
+def _to_trimesh(mesh: Mesh, origin=None, name: str = "material", pbr: bool = False):
+    """A trimesh of ``mesh``; a texture becomes the material ``name`` (OBJ names its image
+    ``name.png``), white so that viewers, which multiply the texture by the material colour
+    (MTL ``Kd``, glTF ``baseColorFactor``), show the photo colours; ``pbr`` for glTF (a
+    metallic-roughness material: not metallic, fully rough)."""
     trimesh = _trimesh()
     v = mesh.vertices if origin is None else mesh.vertices - origin
     tm = trimesh.Trimesh(v, mesh.faces, process=False)
@@ -91,7 +104,12 @@ def _to_trimesh(mesh: Mesh, origin=None):
         from PIL import Image as PILImage
 
         img = PILImage.fromarray(np.asarray(tex, dtype=np.uint8))
-        material = trimesh.visual.material.SimpleMaterial(image=img)
+        white = [255, 255, 255, 255]
+        if pbr:
+            material = trimesh.visual.material.PBRMaterial(name=name, baseColorTexture=img, baseColorFactor=white,
+                                                            metallicFactor=0.0, roughnessFactor=1.0)
+        else:
+            material = trimesh.visual.material.SimpleMaterial(image=img, name=name, diffuse=white)
         tm.visual = trimesh.visual.TextureVisuals(uv=np.asarray(mesh.vertex_attrs["uv"], dtype=np.float64),
                                                   material=material)
     else:
@@ -128,9 +146,11 @@ def write_mesh(mesh: Mesh, path, *, overwrite: bool = False, inputs=()) -> Path:
         return p
     trimesh = _trimesh()
     if ext == ".obj":
-        tm = _to_trimesh(mesh)
+        tm = _to_trimesh(mesh, name=p.stem)
         textured = isinstance(tm.visual, trimesh.visual.TextureVisuals)
-        check_output(p, overwrite, inputs)
+        from .atomic import check_outputs
+
+        check_outputs(textured_obj_files(p) if textured else [p], overwrite, inputs)
         mtl_name = p.stem + ".mtl"
         text, files = trimesh.exchange.obj.export_obj(
             tm, include_normals="normal" in mesh.vertex_attrs, include_color=not textured,
@@ -143,7 +163,7 @@ def write_mesh(mesh: Mesh, path, *, overwrite: bool = False, inputs=()) -> Path:
         return p
     if ext in (".glb", ".gltf"):
         origin = default_origin(mesh.vertices)
-        tm = _to_trimesh(mesh, origin)
+        tm = _to_trimesh(mesh, origin, name=p.stem, pbr=True)
         T = np.eye(4)
         T[:3, 3] = origin
         scene = trimesh.Scene()

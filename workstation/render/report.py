@@ -2,7 +2,8 @@
 
 Everything is inlined (images as base64 PNG, no scripts, no external files), so the page can
 be mailed or archived. Sections, in order: products found (clouds, meshes, rasters, JSON),
-stages (from ``run.json``, other ``*.json`` records, the clouds' ``history`` and the rasters'
+steps (the work folder's stage records of ``ws sfm``, ``dense``, ``mesh``, ``colorize``,
+``ortho``, in the order they ran, with their inputs and outputs), stages (from ``run.json``, other ``*.json`` records, the clouds' ``history`` and the rasters'
 own metadata, so a folder of plain ``ws`` outputs without any JSON still has its stages), ground
 results (ground share of each ground-classified cloud, and the points a filter changed against
 the cloud it came from), renders of clouds (top view, with a legend of the classes present
@@ -113,6 +114,41 @@ def _stage_rows(doc) -> list[tuple]:
         summary = s.get("summary", s.get("outputs", s.get("result", {})))
         rows.append((name, secs if secs is not None else "", params, summary))
     return rows
+
+
+def work_steps(docs: dict, root: Path) -> list[tuple]:
+    """Rows (stage, finished, seconds, record, inputs, outputs) of the stage records among
+    ``docs`` (path -> parsed JSON; a record has a ``stage`` name and ``finished`` time, as
+    :func:`workstation.io.reconstruction.stage_record` writes), in the order they finished.
+    Paths inside ``root`` are shown relative to it.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> docs = {Path("/w/dense/summary.json"): {"stage": "dense", "finished": "2026-01-02T10:00:00+00:00",
+    ...          "seconds": 5.0, "inputs": {"image_dir": "/photos"}, "outputs": ["/w/dense/fused.ply"]},
+    ...         Path("/w/summary.json"): {"stage": "sfm", "finished": "2026-01-02T09:00:00+00:00", "seconds": 2.0,
+    ...          "inputs": {"image_dir": "/photos", "camera": None}, "outputs": []},
+    ...         Path("/w/other.json"): {"points": 3}}
+    >>> [(r[0], r[3], r[5]) for r in work_steps(docs, Path("/w"))]
+    [('sfm', 'summary.json', ''), ('dense', 'dense/summary.json', 'dense/fused.ply')]
+    """
+    def rel(v) -> str:
+        try:
+            return str(Path(v).relative_to(root.absolute()))
+        except (TypeError, ValueError):
+            return str(v)
+
+    rows = []
+    for p, doc in docs.items():
+        if not (isinstance(doc, dict) and isinstance(doc.get("stage"), str) and doc.get("finished")):
+            continue
+        ins = doc.get("inputs") if isinstance(doc.get("inputs"), dict) else {}
+        outs = doc.get("outputs") if isinstance(doc.get("outputs"), list) else []
+        rows.append((doc["stage"], str(doc["finished"]), doc.get("seconds", ""), rel(p.absolute()),
+                     "; ".join(f"{k} {rel(v)}" for k, v in ins.items() if v is not None),
+                     ", ".join(rel(o) for o in outs)))
+    return sorted(rows, key=lambda r: r[1])
 
 
 def _confusion(doc):
@@ -390,14 +426,17 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
             for kind, lst in (("cloud", clouds), ("mesh", meshes), ("raster", rasters), ("record", jsons)) for p in lst]
     parts.append("<h2>Products</h2>" + (_table(rows, ("file", "kind", "size")) if rows else "<p>No products found.</p>"))
 
-    # stages from run.json and other records
-    stage_html = []
+    # the work folder's steps (stage records), then run.json and other records
+    docs, stage_html = {}, []
     for p in jsons:
         try:
-            doc = json.loads(read_text(p))
+            docs[p] = json.loads(read_text(p))
         except (OSError, ValueError) as e:
             stage_html.append(f'<p class="note">{html.escape(p.name)}: unreadable ({html.escape(str(e))})</p>')
-            continue
+    steps = work_steps(docs, root)
+    if steps:
+        parts.append("<h2>Steps</h2>" + _table(steps, ("stage", "finished", "seconds", "record", "inputs", "outputs")))
+    for p, doc in docs.items():
         srows = _stage_rows(doc)
         title = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>"
         if srows:
