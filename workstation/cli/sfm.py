@@ -31,12 +31,15 @@ from workstation.core.jsonutil import json_clean
 @click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
 @click.option("--sigma-px", type=positive_float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
 @click.option("--seed", type=SentinelIntRange(-1, min=0), default=0, show_default=True, help="Random seed (-1 = random).")
+@click.option("--upright/--no-upright", default=True, show_default=True, help="Turn the model upright: z up (from the photos' up direction and horizontal image rows, as COLMAP's model_orientation_aligner) and the main façade facing -y; a rotation about the cameras' centroid, no scale change.")
+@click.option("--scale-bar", "scale_bars", multiple=True, metavar="'END ; END = LENGTH [UNIT]'", help="A known length between two points seen in the photos; each END is two or more IMAGE:x,y pixels (column, row), e.g. 'A.JPG:1520,1006 B.JPG:1498,1010 ; A.JPG:2210,1003 B.JPG:2187,1009 = 1.000 m'. Units m (default), cm, mm, km, in, ft, us-ft, yd. Repeatable (weighted mean; each bar's residual is reported).")
+@click.option("--scale-distance", "scale_distances", multiple=True, metavar="'X,Y,Z ; X,Y,Z = LENGTH [UNIT]'", help="A known distance between two model points (e.g. picked in sparse.ply), e.g. '0.12,-1.5,3.2 ; 2.9,-1.4,3.3 = 4.25 m'.")
 @click.option("--dense", "do_dense", is_flag=True, help="Then densify: depth maps and fusion into WORKDIR/dense/fused.ply (as `ws dense`).")
 @click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU plane sweep.")
 @overwrite_option
 @allow_outside_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustment, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, do_dense, device, overwrite, as_json):
+def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustment, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, upright, scale_bars, scale_distances, do_dense, device, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
@@ -49,6 +52,10 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     (control and check residuals, RMSE before/after the adjustment, CE90/LE90, DEM cell size
     and contour interval supported). With --dense also WORKDIR/dense and its record
     WORKDIR/dense/summary.json, as `ws dense` writes them.
+
+    The model is turned upright (z up, main façade facing -y) unless --no-upright, and scaled
+    to metres by --scale-bar / --scale-distance; without them (or GCPs) its lengths are in
+    arbitrary units and the record says "scaled": false.
     """
     from workstation.core.errors import InvalidInputError
     from workstation.io.atomic import work_folder
@@ -74,6 +81,11 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
             )
     if not Path(images).is_dir():
         raise InvalidInputError("image folder not found", path=images)
+    from workstation.photogrammetry.scale import parse_scale_bar, parse_scale_distance
+
+    bars = [parse_scale_bar(t) for t in scale_bars] + [parse_scale_distance(t) for t in scale_distances]
+    if bars and gcps is not None:
+        raise click.UsageError("--scale-bar/--scale-distance with --gcp: the control points already fix the scale")
     if do_dense:
         from workstation.photogrammetry.dense import resolve_device
 
@@ -89,7 +101,9 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
         out = result.to_dict()
         from workstation.io import write_cloud
 
-        write_cloud(result.cloud, wd / "sparse.ply", overwrite=True)
+        cloud, frame = _upright_and_scale(result, wd, upright, bars, sigma_px)
+        out.update(frame)
+        write_cloud(cloud, wd / "sparse.ply", overwrite=True)
         out["sparse_cloud"] = str(wd / "sparse.ply")
         s = result.summary
         click.echo(
@@ -122,6 +136,24 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
                               "georeferenced" if gcps is not None else "", "dense" if do_dense else ""])
         if as_json:
             emit_json(out)
+
+
+def _upright_and_scale(result, wd: Path, upright: bool, bars: list, sigma_px: float):
+    """Level and scale the model (:func:`workstation.photogrammetry.scale.upright_and_scale`)
+    before anything reads it: sparse/0 is rewritten in the new frame, so georef, dense and mesh
+    all start from it. Returns the sparse cloud in that frame and the record's "upright",
+    "scale" (and "similarity") entries."""
+    from workstation.photogrammetry.scale import upright_and_scale
+
+    frame = upright_and_scale(result.reconstruction, upright=upright, bars=bars, sigma_px=sigma_px)
+    if frame.similarity is None:
+        return result.cloud, frame.summary
+    from workstation.interop.pycolmap import apply_similarity, import_pycolmap, write_model
+
+    model = import_pycolmap().Reconstruction(str(wd / "sparse" / "0"))
+    apply_similarity(model, frame.similarity)
+    write_model(model, wd / "sparse" / "0")
+    return frame.apply_cloud(result.cloud), frame.summary
 
 
 def _record(out: dict, images, camera_file, gcp_file, params, gcp_adjustment: str, crs, sigma_px: float, wd: Path) -> dict:

@@ -3,10 +3,15 @@
 Colour by RGB, ASPRS classification (standard palette and a legend), elevation, intensity,
 height above ground or any attribute; eye-dome lighting for clouds (Boucheny, "Interactive
 scientific visualization of large datasets", PhD thesis 2009); views ``top`` (orthographic,
-north up, scale bar), ``front`` (looking north), ``iso`` (from the south-east, above), or an
+north up, scale bar), ``front`` (looking north), ``iso`` (30° above the horizon, from the
+south-east, facing the longer vertical side of the bounding box: 30° off its normal), or an
 exact pinhole camera (:class:`~workstation.core.products.Camera` + ``Pose``), the projection
 matrix being built from the intrinsics so a world point lands on the pixel ``K [R|t]`` gives.
 Renders are deterministic for a given input, view and size.
+
+The fitted views frame the model's bounding box, stray points left out
+(:func:`framing_bounds`): floating outliers of a photogrammetric cloud, far from the model,
+would otherwise shrink it to a small blob in the middle of the frame.
 """
 
 from __future__ import annotations
@@ -64,6 +69,10 @@ class RenderParams:
         Clouds above this are drawn from a seeded random subset (count; 0 = all).
     margin : float
         Space around the object in ``top``/``front``/``iso`` views (fraction of its size).
+    stray_share : float
+        Framing (``top``/``front``/``iso`` and turntables) leaves out groups of points holding
+        less than this share of the points (fraction) that an empty gap separates from the
+        rest (:func:`framing_bounds`); 0 frames every point.
     """
 
     size: tuple[int, int] = (1024, 768)
@@ -78,6 +87,7 @@ class RenderParams:
     clip_percent: float = 2.0
     max_points: int = 0
     margin: float = 0.05
+    stray_share: float = 0.005
 
     def __post_init__(self):
         w, h = self.size
@@ -87,6 +97,8 @@ class RenderParams:
             raise InvalidInputError(f"unknown view '{self.view}'", "use " + ", ".join(VIEWS), field="view")
         if not 0 <= self.clip_percent < 50:
             raise InvalidInputError("clip_percent must be in [0, 50)", field="clip_percent")
+        if not 0 <= self.stray_share < 0.5:
+            raise InvalidInputError("stray_share must be in [0, 0.5)", field="stray_share")
 
 
 def _nice_length(x: float) -> float:
@@ -254,6 +266,77 @@ def _set_pinhole(pl, camera: Camera, pose: Pose, origin: np.ndarray, lo: np.ndar
     vcam.SetUseExplicitProjectionTransformMatrix(True)
 
 
+def _stray_mask(P: np.ndarray, share: float, cell: float) -> np.ndarray:
+    """Points of the 26-connected voxel components (voxels of ``cell``) holding at least
+    ``share`` of ``P`` (all True when none does)."""
+    from scipy import ndimage
+
+    idx = np.floor((P - P.min(axis=0)) / cell).astype(np.int64)
+    grid = np.zeros(tuple(idx.max(axis=0) + 1), dtype=bool)
+    grid[tuple(idx.T)] = True
+    labels, _ = ndimage.label(grid, structure=np.ones((3, 3, 3), dtype=bool))
+    lab = labels[tuple(idx.T)]
+    good = np.bincount(lab)[lab] >= share * P.shape[0]
+    return good if good.any() else np.ones(P.shape[0], dtype=bool)
+
+
+def framing_bounds(xyz: np.ndarray, stray_share: float = 0.005, max_points: int = 200_000,
+                   cells: int = 64) -> tuple[np.ndarray, np.ndarray]:
+    """Bounding box (lo (3,), hi (3,)) of a cloud for framing a view, stray points left out.
+
+    The points are binned in voxels of ``max(diagonal / cells, 3 × median nearest-neighbour
+    distance)`` (the second keeps a surface sampled at the typical spacing connected); a
+    26-connected component of voxels holding less than ``stray_share`` of the points is left
+    out: a floating outlier is isolated from the model by empty space, while a spire joins the
+    roof below it. Rounds repeat on what is left (finer voxels: strays nested at smaller
+    scales) until one drops nothing. Larger clouds are thinned to ``max_points`` by taking
+    every k-th point.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> model = rng.uniform(0, 10, (10000, 3))
+    >>> strays = np.array([[500.0, 5, 5], [5, -300.0, 5], [5, 5, 90.0]])
+    >>> lo, hi = framing_bounds(np.vstack([model, strays]))
+    >>> bool(np.all(lo > -0.01) and np.all(hi < 10.01)), np.round(hi - lo).tolist()
+    (True, [10.0, 10.0, 10.0])
+    """
+    from scipy.spatial import cKDTree
+
+    P = np.asarray(xyz, dtype=np.float64)
+    if stray_share <= 0 or P.shape[0] < 3:
+        return P.min(axis=0), P.max(axis=0)
+    if P.shape[0] > max_points:
+        P = P[:: -(-P.shape[0] // max_points)]
+    q = P[:: max(1, P.shape[0] // 10_000)]
+    spacing = float(np.median(cKDTree(P).query(q, k=2)[0][:, 1]))
+    for _ in range(4):
+        diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
+        if not diag > 0:
+            break
+        keep = _stray_mask(P, stray_share, max(diag / cells, 3.0 * spacing))
+        if keep.all():
+            break
+        P = P[keep]
+    return P.min(axis=0), P.max(axis=0)
+
+
+def iso_direction(lo: np.ndarray, hi: np.ndarray, elevation_deg: float = 30.0,
+                  off_normal_deg: float = 30.0) -> np.ndarray:
+    """Unit direction from the model's centre to the ``iso`` camera.
+
+    The camera stands ``elevation_deg`` above the horizon, on the side of the longer vertical
+    face of the bounding box (the south side, normal -y, when x is the longer extent, else
+    the east side, normal +x), turned ``off_normal_deg`` towards the south-east corner so that
+    the other side shows too.
+    """
+    ext = np.asarray(hi, float) - np.asarray(lo, float)
+    normal_az = -90.0 if ext[0] >= ext[1] else 0.0
+    az = math.radians(normal_az + (off_normal_deg if normal_az < 0 else -off_normal_deg))
+    el = math.radians(elevation_deg)
+    return np.array([math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)])
+
+
 def _fit_view(pl, view: str, bounds_min: np.ndarray, bounds_max: np.ndarray, size, margin: float) -> float | None:
     """Place the camera; returns world units per pixel for the top view."""
     w, h = size
@@ -270,8 +353,7 @@ def _fit_view(pl, view: str, bounds_min: np.ndarray, bounds_max: np.ndarray, siz
         cam.parallel_scale = float(half_h)
         pl.renderer.ResetCameraClippingRange()
         return 2 * half_h / h
-    direction = np.array([0.0, -1.0, 0.0]) if view == "front" else np.array([1.0, -1.0, 0.8])
-    direction /= np.linalg.norm(direction)
+    direction = np.array([0.0, -1.0, 0.0]) if view == "front" else iso_direction(bounds_min, bounds_max)
     view_angle = 30.0
     tan_h = math.tan(math.radians(view_angle / 2))
     tan_w = tan_h * w / h
@@ -345,6 +427,11 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     lo, hi = xyz.min(axis=0), xyz.max(axis=0)  # once, in float64
     origin = np.round(0.5 * (lo + hi))
     lo, hi = lo - origin, hi - origin
+    if camera is None:  # fitted views frame the model without its stray points
+        flo, fhi = framing_bounds(xyz, params.stray_share)
+        flo, fhi = flo - origin, fhi - origin
+    else:
+        flo, fhi = lo, hi
     poly, _ = cloud_to_polydata(obj, origin) if is_cloud else mesh_to_polydata(obj, origin)
     n_points = obj.n if is_cloud else obj.n_vertices
     pl = pv.Plotter(off_screen=True, window_size=list(size), lighting=None if is_cloud else "light kit")
@@ -353,7 +440,7 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
         bg = np.asarray(pv.Color(params.background).float_rgb)
         kw = dict(lighting=not is_cloud, show_scalar_bar=False)
         if is_cloud:
-            kw.update(style="points", point_size=_point_size(params, lo, hi, n_points, size), render_points_as_spheres=False)
+            kw.update(style="points", point_size=_point_size(params, flo, fhi, n_points, size), render_points_as_spheres=False)
         else:
             kw.update(smooth_shading=True)
         if kind == "texture":
@@ -394,9 +481,9 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
         if camera is not None:
             _set_pinhole(pl, camera[0], camera[1], origin, lo, hi)
         else:
-            upp = _fit_view(pl, params.view, lo, hi, size, params.margin)
+            upp = _fit_view(pl, params.view, flo, fhi, size, params.margin)
             if params.view == "top" and params.scale_bar and upp:
-                _draw_scale_bar(pl, pv, upp, size, 0.5 * (lo + hi), float(hi[2]), _units(obj.crs),
+                _draw_scale_bar(pl, pv, upp, size, 0.5 * (flo + fhi), float(hi[2]), _units(obj.crs),
                                 bg.mean() < 0.5)
         if is_cloud and params.edl:
             pl.enable_eye_dome_lighting()
@@ -449,7 +536,7 @@ def turntable(obj, params: RenderParams = RenderParams(), frames: int = 36, elev
     if frames < 1:
         raise InvalidInputError("frames must be >= 1", field="frames")
     xyz = obj.xyz if isinstance(obj, Cloud) else obj.vertices
-    lo, hi = xyz.min(axis=0), xyz.max(axis=0)
+    lo, hi = framing_bounds(xyz, params.stray_share)
     centre = 0.5 * (lo + hi)
     r = 0.5 * float(np.linalg.norm(hi - lo)) * (1 + 2 * params.margin)
     w, h = params.size
