@@ -16,7 +16,24 @@ $(STAMP): pyproject.toml
 	$(PIP) install -q -e ".[test,docs]"
 	@touch $(STAMP)
 
-install: $(STAMP)
+install: $(STAMP) viewer
+
+# The web viewer of `ws publish`: web/ (npm: three, copc, laz-perf; esbuild) bundled into
+# workstation/publish/viewer/ with the licences of what it vendors. The bundle is committed, so
+# a machine without Node.js uses it as is; it is rebuilt only when web/ changed and npm exists.
+VIEWER_BUNDLE := workstation/publish/viewer/viewer.js
+.PHONY: viewer
+viewer: $(VIEWER_BUNDLE)
+$(VIEWER_BUNDLE): web/package.json web/package-lock.json web/build.mjs $(wildcard web/src/*) $(wildcard web/licenses/*)
+	@if command -v npm >/dev/null; then \
+	  echo "Building the web viewer (npm ci + esbuild)..."; \
+	  (cd web && npm ci --no-audit --no-fund --loglevel=error && node build.mjs) \
+	    || { [ -f $@ ] && echo "viewer build failed: keeping the committed bundle $@"; } || exit 1; \
+	elif [ -f $@ ]; then \
+	  echo "npm not found: keeping the committed viewer bundle $@ (install Node.js and npm to rebuild it)"; \
+	else \
+	  echo "npm not found and $@ is missing: install Node.js and npm, then run make viewer"; exit 1; \
+	fi
 
 # System libraries from Debian: libusb for open3d; EGL/Mesa for VTK's off-screen rendering
 # with no display; chromium only for the HTML-report test (best effort: that test skips
@@ -39,10 +56,11 @@ sysdeps:
 	    || echo "chromium not installed: the report rendering test will be skipped"; \
 	fi
 
-demo: $(STAMP)
+demo: $(STAMP) viewer
 	$(VENV)/bin/ws demo -o demo_output --overwrite
+	$(VENV)/bin/ws publish demo_output/classified.laz demo_output/raster_hillshade.tif -o demo_output/site --overwrite
 
-test: $(STAMP)
+test: $(STAMP) viewer
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 
 # The user guide (MkDocs, in docs/guide; the tools are the `docs` extra, installed with the rest

@@ -87,12 +87,20 @@ def test_convert_bounds_and_level(copc_file, tmp_path):
     assert s["point_count"] == n and s["format"] == "laz" and s["copc"] is None
 
 
-def test_copc_output_refused(copc_file, tmp_path, capsys):
+def test_convert_writes_copc(copc_file, tmp_path):
+    from workstation.cli.main import main
+    from workstation.io import copc
+
+    out = tmp_path / "b.copc.laz"
+    assert main(["convert", str(copc_file), str(out)]) == 0
+    assert copc.summary(out)["points"] == copc.summary(copc_file)["points"]
+
+
+def test_plain_writers_refuse_copc_names(copc_file, tmp_path, capsys):
     from workstation.cli.main import main
 
-    rc = main(["convert", str(copc_file), str(tmp_path / "b.copc.laz")])
-    err = capsys.readouterr().err
-    assert rc == 1 and "cannot write COPC" in err and not (tmp_path / "b.copc.laz").exists()
+    rc = main(["thin", str(copc_file), "-o", str(tmp_path / "b.copc.laz"), "--voxel", "1"])
+    assert rc == 1 and "cannot write COPC" in capsys.readouterr().err and not (tmp_path / "b.copc.laz").exists()
 
 
 def test_level_refused_on_plain_file(copc_file, tmp_path, capsys):

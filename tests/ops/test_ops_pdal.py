@@ -53,6 +53,9 @@ DOCUMENTED = {
     "filters.csf": {"resolution", "ignore", "returns", "threshold", "hdiff", "smooth", "step", "rigidness",
                     "iterations", "where", "where_merge"},
     # https://pdal.io/en/stable/stages/writers.las.html
+    # https://pdal.io/en/stable/stages/writers.copc.html
+    "writers.copc": {"filename", "forward", "vlrs", "a_srs", "pipeline", "scale_x", "scale_y", "scale_z", "offset_x",
+                     "offset_y", "offset_z", "extra_dims", "threads", "fixed_seed"},
     "writers.las": {"filename", "forward", "minor_version", "software_id", "creation_doy", "creation_year",
                     "dataformat_id", "system_id", "a_srs", "global_encoding", "project_id", "compression",
                     "scale_x", "scale_y", "scale_z", "offset_x", "offset_y", "offset_z", "filesource_id",

@@ -7,6 +7,9 @@ octree cube (centre, half size), the point spacing at the root and where the hie
 -1 points to a child page. Every node is one LAZ chunk, so a reader decompresses only the
 nodes that a bounding box or a level of detail needs.
 
+Writing is :mod:`workstation.publish.copc`; every other writer refuses a ``.copc.laz`` name
+(:func:`refuse_copc_output`).
+
 Queries go through ``laspy.CopcReader.query`` (its bounds are inclusive on the integer
 coordinates; 2-D bounds take z from the header), so ``read(path, bounds=...)`` returns exactly
 the points laspy returns. Detection and the hierarchy summary read a few KB of raw bytes.
@@ -14,6 +17,8 @@ the points laspy returns. Detection and the hierarchy summary read a few KB of r
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 from dataclasses import dataclass
 from pathlib import Path
 import numpy as np
@@ -27,10 +32,11 @@ COPC_HIERARCHY = ("copc", 1000)
 #: The only COPC version (the info VLR carries no version number).
 COPC_VERSION = "1.0"
 
-_INFO = np.dtype([("center", "<f8", 3), ("halfsize", "<f8"), ("spacing", "<f8"), ("root_offset", "<u8"),
-                  ("root_size", "<u8"), ("gps_min", "<f8"), ("gps_max", "<f8")])
-_ENTRY = np.dtype([("level", "<i4"), ("x", "<i4"), ("y", "<i4"), ("z", "<i4"), ("offset", "<u8"),
-                   ("byte_size", "<i4"), ("point_count", "<i4")])
+#: The info VLR's fields (72 bytes; 88 reserved bytes follow) and a hierarchy entry (32 bytes).
+INFO_DTYPE = np.dtype([("center", "<f8", 3), ("halfsize", "<f8"), ("spacing", "<f8"), ("root_offset", "<u8"),
+                       ("root_size", "<u8"), ("gps_min", "<f8"), ("gps_max", "<f8")])
+ENTRY_DTYPE = np.dtype([("level", "<i4"), ("x", "<i4"), ("y", "<i4"), ("z", "<i4"), ("offset", "<u8"),
+                        ("byte_size", "<i4"), ("point_count", "<i4")])
 _VLR_HEADER = 54  # bytes: reserved u16, user_id char[16], record_id u16, length u16, description char[32]
 
 
@@ -71,13 +77,13 @@ def read_info(path) -> CopcInfo | None:
         if n_vlrs == 0:
             return None
         f.seek(header_size)
-        vlr = f.read(_VLR_HEADER + _INFO.itemsize)
-    if len(vlr) < _VLR_HEADER + _INFO.itemsize:
+        vlr = f.read(_VLR_HEADER + INFO_DTYPE.itemsize)
+    if len(vlr) < _VLR_HEADER + INFO_DTYPE.itemsize:
         return None
     user_id = vlr[2:18].split(b"\0", 1)[0].decode("ascii", "replace")
     if (user_id, int.from_bytes(vlr[18:20], "little")) != COPC_INFO:
         return None
-    r = np.frombuffer(vlr, _INFO, count=1, offset=_VLR_HEADER)[0]
+    r = np.frombuffer(vlr, INFO_DTYPE, count=1, offset=_VLR_HEADER)[0]
     return CopcInfo(tuple(float(c) for c in r["center"]), float(r["halfsize"]), float(r["spacing"]),
                     int(r["root_offset"]), int(r["root_size"]), float(r["gps_min"]), float(r["gps_max"]))
 
@@ -91,23 +97,23 @@ def is_copc(path) -> bool:
 
 
 def hierarchy(path, info: CopcInfo) -> np.ndarray:
-    """Every node entry of the octree (structured array of ``_ENTRY``: level, x, y, z, offset,
-    byte_size, point_count), following the child pages from the root page."""
+    """Every node entry of the octree (structured array of ``ENTRY_DTYPE``: level, x, y, z,
+    offset, byte_size, point_count), following the child pages from the root page."""
     size = Path(path).stat().st_size
     pages, found = [(info.root_offset, info.root_size)], []
     with open(path, "rb") as f:
         while pages:
             offset, nbytes = pages.pop()
-            if offset + nbytes > size or nbytes % _ENTRY.itemsize:
+            if offset + nbytes > size or nbytes % ENTRY_DTYPE.itemsize:
                 raise InvalidInputError(f"COPC hierarchy page at byte {offset:,} ({nbytes:,} bytes) is outside the file "
                                         "or not a whole number of entries", "the file is truncated or not valid COPC",
                                         path=path, field="copc")
             f.seek(offset)
-            page = np.frombuffer(f.read(nbytes), _ENTRY)
+            page = np.frombuffer(f.read(nbytes), ENTRY_DTYPE)
             child = page["point_count"] == -1
             pages.extend(zip(page["offset"][child].tolist(), page["byte_size"][child].tolist()))
             found.append(page[~child])
-    return np.concatenate(found) if found else np.empty(0, _ENTRY)
+    return np.concatenate(found) if found else np.empty(0, ENTRY_DTYPE)
 
 
 def summary(path) -> dict | None:
@@ -198,11 +204,32 @@ def read(path, bounds=None, resolution=None, level=None) -> Cloud:
 
 
 
-def refuse_copc_output(path) -> None:
-    """Refuse to write a ``.copc.laz`` file: no COPC writer exists here, and a plain LAZ under
-    that name would claim an octree it does not have."""
+#: True while the COPC writer (:mod:`workstation.publish.copc`) writes an output.
+_COPC_WRITER = contextvars.ContextVar("copc_writer", default=False)
+
+
+def is_copc_name(path) -> bool:
+    """Whether ``path`` is named as a COPC file (``.copc.laz``, any case)."""
     name = Path(path).name.lower()
-    if name.endswith(".copc.laz") or name.endswith(".copc.las"):
-        raise InvalidInputError("cannot write COPC: this tool writes plain LAS/LAZ, which a .copc.laz name would "
-                                "misrepresent", f"write {name[: -len('.copc.laz')]}.laz (then make COPC with PDAL "
-                                "writers.copc or untwine)", path=path, field="output")
+    return name.endswith(".copc.laz") or name.endswith(".copc.las")
+
+
+@contextlib.contextmanager
+def copc_output():
+    """Accept ``.copc.laz`` outputs inside the block: the COPC writer is the one writing them
+    (:func:`workstation.publish.copc.save_copc`, ``ws convert``)."""
+    token = _COPC_WRITER.set(True)
+    try:
+        yield
+    finally:
+        _COPC_WRITER.reset(token)
+
+
+def refuse_copc_output(path) -> None:
+    """Refuse a ``.copc.laz`` output outside the COPC writer: the other writers make plain
+    LAS/LAZ, which that name would misrepresent (a COPC reader would find no octree)."""
+    if is_copc_name(path) and not _COPC_WRITER.get():
+        name = Path(path).name
+        raise InvalidInputError("cannot write COPC here: this writes plain LAS/LAZ, which a .copc.laz name would "
+                                "misrepresent", f"write {name[: -len('.copc.laz')]}.laz, then make COPC with "
+                                f"`ws convert {name[: -len('.copc.laz')]}.laz {name}`", path=path, field="output")

@@ -99,7 +99,7 @@ def check_selection(path, bounds=None, resolution=None, level=None) -> dict | No
     if (resolution is not None or level is not None) and not copc_file:
         flag = "--resolution" if resolution is not None else "--level"
         raise InvalidInputError(f"{flag} reads a level of detail of a COPC file; this file is not COPC (it has no octree)",
-                                "use --bounds alone (any file), or read a .copc.laz made by PDAL writers.copc or untwine",
+                                "use --bounds alone (any file), or read a .copc.laz (`ws convert IN OUT.copc.laz`, PDAL writers.copc, untwine)",
                                 path=path, field=flag)
     if resolution is not None and not (math.isfinite(resolution) and resolution > 0):
         raise InvalidInputError(f"resolution {resolution!r} must be a positive length", field="--resolution")
@@ -238,8 +238,8 @@ def _guarded(path: Path, func, *args, **opts):
 
 def write_cloud(cloud: Cloud, path, *, overwrite: bool = False, inputs=(), **opts) -> Path:
     """Write a cloud atomically; refuses to replace an existing file unless ``overwrite``, and
-    refuses ``.copc.laz`` names (no COPC writer: plain LAZ would claim an octree; checked by
-    :func:`~workstation.io.atomic.check_output`)."""
+    refuses ``.copc.laz`` names (a plain LAZ would claim an octree; COPC is written by
+    :func:`workstation.publish.copc.save_copc`; checked by :func:`~workstation.io.atomic.check_output`)."""
     mod = _module(path)
     with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
         mod.write(cloud, tmp, **opts)

@@ -48,6 +48,8 @@ STAGE_OPTIONS: dict[str, set[str]] = {
     "filters.csf": {"resolution", "rigidness", "threshold", "iterations", "smooth", "step", "returns", "ignore"},
     "writers.las": {"filename", "minor_version", "dataformat_id", "a_srs", "compression", "extra_dims",
                     "scale_x", "scale_y", "scale_z", "offset_x", "offset_y", "offset_z"},
+    "writers.copc": {"filename", "a_srs", "extra_dims", "scale_x", "scale_y", "scale_z", "offset_x", "offset_y",
+                     "offset_z"},
     "writers.ply": {"filename"},
     "writers.pcd": {"filename"},
     "writers.text": {"filename"},
