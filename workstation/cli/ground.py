@@ -77,27 +77,36 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     """
     import time
 
-    import numpy as np
-
-    from workstation.core.classes import ASPRSClass
-    from workstation.core.errors import InvalidInputError
-    from workstation.core.log import get_logger
-    from workstation.ground.methods import make_params, methods
     from workstation.io import check_output, format_of, read_cloud, write_cloud
 
-    log = get_logger(__name__)
     t0 = time.perf_counter()
     format_of(src)
     format_of(output)
     check_output(output, overwrite, inputs=[src])
     if pipeline_out:
         _check_pipeline_out(method, output, pipeline_out, overwrite, src)
-    given = {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
-             "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches, "risers": risers,
-             "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
-             "class_threshold": class_threshold, "iterations": iterations, "slope_smooth": slope_smooth,
-             "max_angle": max_angle, "max_distance": max_distance, "seed_cell": seed_cell}
-    given = {k: v for k, v in given.items() if v is not None}
+    given = _given_params(
+        {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
+         "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches, "risers": risers,
+         "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
+         "class_threshold": class_threshold, "iterations": iterations, "slope_smooth": slope_smooth,
+         "max_angle": max_angle, "max_distance": max_distance, "seed_cell": seed_cell},
+        reclassify, all_returns, noise_step, bridges)
+    params = _method_params(method, preset, given, reclassify, raised_patches)
+    cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
+    out, params = _filter(cloud, method, params, given, noise, tile_points, tile_buffer, tile_workers)
+    n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
+    out, n_water = _after_filter(out, water, hag)
+    write_cloud(out, output, overwrite=overwrite, inputs=[src])
+    if pipeline_out:
+        _save_ground_pipeline(pipeline_out, src, output, method, params, out.crs, overwrite)
+    _report(src, output, method, preset, params, out, time.perf_counter() - t0, n_tiles, n_water, water, as_json)
+
+
+def _given_params(options: dict, reclassify: bool, all_returns: bool, noise_step, bridges) -> dict:
+    """The filter parameters the user gave (options left at None are the method's or preset's
+    to decide), with the flags translated to parameter names."""
+    given = {k: v for k, v in options.items() if v is not None}
     if reclassify:
         given["reclassify"] = True
     if all_returns:
@@ -106,17 +115,33 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
         given["noise"] = noise_step
     if bridges is not None:
         given["bridges"] = bridges
-    if method == "ml":  # the shipped point classifier (workstation.ml.ground)
-        from workstation.ml.ground import MLGroundParams, ml_ground
+    return given
 
-        params = MLGroundParams(reclassify=reclassify,
-                                **({} if raised_patches is None else {"raised_patches": raised_patches}))
-    else:
-        try:
-            params = make_params(method, preset, **given)
-        except InvalidInputError as e:
-            raise click.UsageError(e.message) from None
-    cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
+
+def _method_params(method: str, preset: str, given: dict, reclassify: bool, raised_patches):
+    """The parameter dataclass of the method: the point classifier's for ``ml``, else the
+    preset's with the given options applied (an invalid combination is a usage error)."""
+    from workstation.core.errors import InvalidInputError
+    from workstation.ground.methods import make_params
+
+    if method == "ml":  # the shipped point classifier (workstation.ml.ground)
+        from workstation.ml.ground import MLGroundParams
+
+        return MLGroundParams(reclassify=reclassify,
+                              **({} if raised_patches is None else {"raised_patches": raised_patches}))
+    try:
+        return make_params(method, preset, **given)
+    except InvalidInputError as e:
+        raise click.UsageError(e.message) from None
+
+
+def _filter(cloud, method: str, params, given: dict, noise: bool, tile_points: int, tile_buffer: float,
+            tile_workers: int):
+    """Classify noise first if asked, size the default cells by the points, then run the filter:
+    the point classifier, tile by tile above ``tile_points`` points, or on the whole cloud.
+    Returns ``(classified cloud, the parameters used)``."""
+    from workstation.ground.methods import methods
+
     if noise:
         from workstation.ground.noise import classify_noise
 
@@ -126,14 +151,19 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
 
         params = fit_to_points(params, cloud, set(given))  # default cells sized by the points
     if method == "ml":
-        out = ml_ground(cloud, params)
-    elif tile_points and cloud.n > tile_points:
+        from workstation.ml.ground import ml_ground
+
+        return ml_ground(cloud, params), params
+    if tile_points and cloud.n > tile_points:
         from workstation.ground.tiles import TileParams, ground_tiled
 
-        out = ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer, tile_workers))
-    else:
-        out = methods()[method].func(cloud, params)
-    n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
+        return ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer, tile_workers)), params
+    return methods()[method].func(cloud, params), params
+
+
+def _after_filter(out, water: bool, hag: bool):
+    """The optional steps after the filter: still water on the ground (class 9) and the height
+    above ground. Returns ``(cloud, water point count)``."""
     n_water = 0
     if water:
         from workstation.ground.water import classify_water
@@ -144,15 +174,23 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
         from workstation.ground.hag import height_above_ground
 
         out = height_above_ground(out)
-    write_cloud(out, output, overwrite=overwrite, inputs=[src])
-    if pipeline_out:
-        _save_ground_pipeline(pipeline_out, src, output, method, params, out.crs, overwrite)
-    dt = time.perf_counter() - t0
+    return out, n_water
+
+
+def _report(src, output, method, preset, params, out, dt: float, n_tiles: int, n_water: int, water: bool,
+            as_json: bool) -> None:
+    """Log the ground share, print the one-line summary and, with ``--json``, the run record
+    (counts, fractions, seconds)."""
+    import numpy as np
+
+    from workstation.cli.summary import count, emit_summary, percent
+    from workstation.core.classes import ASPRSClass
+    from workstation.core.log import get_logger
+
     cls = np.asarray(out.attrs["classification"])
     n_ground = int(np.count_nonzero(cls == ASPRSClass.GROUND))
-    log.info("%s: %d of %d points ground (%.1f %%) in %.2f s", method, n_ground, out.n, 100.0 * n_ground / out.n, dt)
-    from workstation.cli.summary import count, emit_summary, percent
-
+    get_logger(__name__).info("%s: %d of %d points ground (%.1f %%) in %.2f s", method, n_ground, out.n,
+                              100.0 * n_ground / out.n, dt)
     emit_summary("ground", count(out.n, "points"), output, dt,
                  [f"ground {percent(n_ground, out.n)}", method, f"{n_tiles} tiles" if n_tiles > 1 else "",
                   f"water {count(n_water, 'points')}" if water else ""])

@@ -317,24 +317,16 @@ def low_noise(xyz: np.ndarray, p: LowNoiseParams | None = None) -> np.ndarray:
     >>> np.flatnonzero(low_noise(xyz)).tolist()
     [7]
     """
-    from scipy.spatial import cKDTree
-
     p = p or LowNoiseParams()
     m = xyz.shape[0]
     noise = np.zeros(m, dtype=bool)
     if m < 3 or p.depth <= 0:
         return noise
-    z = xyz[:, 2]
-    # an internal grid: coarsened on a cloud spread far wider than its points; a grid that
-    # still does not fit is left to the filter, whose own check refuses it naming its option
-    cell = common.auto_cell(xyz[:, :2], p.cell)
-    try:
-        r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
-    except InvalidInputError:
-        log.warning("%s: the points are spread too wide for the low-noise step's grid; step skipped", STAGE)
+    grid = _noise_grid(xyz, p)
+    if grid is None:
         return noise
-    flat = r * shape[1] + c
-    size = shape[0] * shape[1]
+    flat, size, cell = grid
+    z = xyz[:, 2]
     judge_cells = None  # first pass: every cell
     for _ in range(max(1, int(p.iterations))):
         first, second = _envelope(z, flat, size, noise)
@@ -342,30 +334,61 @@ def low_noise(xyz: np.ndarray, p: LowNoiseParams | None = None) -> np.ndarray:
         cand = first if judge_cells is None else first[np.isin(flat[first], judge_cells)]
         if cand.size == 0 or env.size <= _SUPPORT:
             break
-        kk = min(int(p.k) + 1, env.size)
-        d, j = cKDTree(xyz[env, :2]).query(xyz[cand, :2], k=kk, distance_upper_bound=p.radius, workers=-1)
-        valid = np.isfinite(d)
-        nb = env[np.where(valid, j, 0)]
-        valid &= nb != cand[:, None]
-        dxy = xyz[nb, :2] - xyz[cand, None, :2]
-        nz = np.where(valid, z[nb], np.inf)
-        coef, ok = _local_planes(dxy, nz, valid, p.depth, p.max_slope)
-        g = coef[:, 1:]
-        s = np.hypot(g[:, 0], g[:, 1])
-        g *= np.minimum(1.0, p.max_slope / np.maximum(s, 1e-12))[:, None]
-        g[~ok] = 0.0
-        zc = z[cand, None]
-        level = np.abs(nz - np.einsum("nkd,nd->nk", dxy, g) - zc)
-        # as they are too within a cell of the point, where a wrong plane slope counts most
-        close = np.einsum("nkd,nkd->nk", dxy, dxy) <= cell * cell
-        level = np.where(close, np.minimum(level, np.abs(nz - zc)), level)
-        support = ((level <= p.depth) & valid).sum(axis=1)
-        # without a plane (an edge, a corner): under the second-lowest envelope point, as ELM
-        second_low = np.partition(nz, 1, axis=1)[:, 1] if nz.shape[1] > 1 else nz[:, 0]
-        below = np.where(ok, z[cand] < coef[:, 0] - p.depth, z[cand] < second_low - p.depth)
-        new = cand[below & (support < _SUPPORT) & (valid.sum(axis=1) >= _SUPPORT)]
+        new = cand[_low_minima(xyz, cand, env, p, cell)]
         if new.size == 0:
             break
         noise[new] = True
         judge_cells = np.unique(flat[new])
     return noise
+
+
+def _noise_grid(xyz: np.ndarray, p: LowNoiseParams):
+    """The internal grid of :func:`low_noise` as ``(flat cell index per point, cell count, cell
+    size in metres)``: ``p.cell``, coarsened on a cloud spread far wider than its points; None
+    (step skipped) when even that grid does not fit, leaving the refusal, naming its option, to
+    the ground filter's own check."""
+    cell = common.auto_cell(xyz[:, :2], p.cell)
+    try:
+        r, c, shape, _ = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
+    except InvalidInputError:
+        log.warning("%s: the points are spread too wide for the low-noise step's grid; step skipped", STAGE)
+        return None
+    return r * shape[1] + c, shape[0] * shape[1], cell
+
+
+def _low_minima(xyz: np.ndarray, cand: np.ndarray, env: np.ndarray, p: LowNoiseParams, cell: float) -> np.ndarray:
+    """Steps 2-3 of :func:`low_noise` for the cell minima ``cand`` against the envelope points
+    ``env``: (len(cand),) bool, True where the minimum lies more than ``p.depth`` under its local
+    plane (or, without a plane, under the second-lowest neighbour, as ELM) and fewer than
+    ``_SUPPORT`` envelope points lie at its level, among at least ``_SUPPORT`` neighbours."""
+    from scipy.spatial import cKDTree
+
+    z = xyz[:, 2]
+    kk = min(int(p.k) + 1, env.size)
+    d, j = cKDTree(xyz[env, :2]).query(xyz[cand, :2], k=kk, distance_upper_bound=p.radius, workers=-1)
+    valid = np.isfinite(d)
+    nb = env[np.where(valid, j, 0)]
+    valid &= nb != cand[:, None]
+    dxy = xyz[nb, :2] - xyz[cand, None, :2]
+    nz = np.where(valid, z[nb], np.inf)
+    coef, ok = _local_planes(dxy, nz, valid, p.depth, p.max_slope)
+    support = _level_support(dxy, nz, valid, coef, ok, z[cand, None], p, cell)
+    # without a plane (an edge, a corner): under the second-lowest envelope point, as ELM
+    second_low = np.partition(nz, 1, axis=1)[:, 1] if nz.shape[1] > 1 else nz[:, 0]
+    below = np.where(ok, z[cand] < coef[:, 0] - p.depth, z[cand] < second_low - p.depth)
+    return below & (support < _SUPPORT) & (valid.sum(axis=1) >= _SUPPORT)
+
+
+def _level_support(dxy, nz, valid, coef, ok, zc, p: LowNoiseParams, cell: float) -> np.ndarray:
+    """(n,) int: the neighbours within ``p.depth`` of each candidate's height ``zc`` once the
+    local plane's slope (capped at ``p.max_slope``, 0 without a plane) is taken out; neighbours
+    within one ``cell`` may also match without the slope, where a wrong slope counts most."""
+    g = coef[:, 1:]
+    s = np.hypot(g[:, 0], g[:, 1])
+    g *= np.minimum(1.0, p.max_slope / np.maximum(s, 1e-12))[:, None]
+    g[~ok] = 0.0
+    level = np.abs(nz - np.einsum("nkd,nd->nk", dxy, g) - zc)
+    # as they are too within a cell of the point, where a wrong plane slope counts most
+    close = np.einsum("nkd,nkd->nk", dxy, dxy) <= cell * cell
+    level = np.where(close, np.minimum(level, np.abs(nz - zc)), level)
+    return ((level <= p.depth) & valid).sum(axis=1)

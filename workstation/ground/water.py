@@ -136,50 +136,18 @@ def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
         return water, offset
     r, c, shape, _ = common.grid_index(xyz[:, :2], common.auto_cell(xyz[:, :2], p.cell))
     flat = r * shape[1] + c
-    size = shape[0] * shape[1]
-
-    def cell_mean(sel):
-        n = np.bincount(flat[sel], minlength=size)
-        s = np.bincount(flat[sel], xyz[sel, 2], minlength=size)
-        return np.where(n > 0, s / np.maximum(n, 1), np.nan).reshape(shape)
-
-    mean = cell_mean(cand)
+    mean = _cell_mean(xyz[:, 2], flat, shape, cand)
     occ = np.isfinite(mean)
-    box = np.ones((p.window, p.window), bool)
-    hi = ndimage.maximum_filter(np.where(occ, mean, -np.inf), footprint=box, mode="constant", cval=-np.inf)
-    lo = ndimage.minimum_filter(np.where(occ, mean, np.inf), footprint=box, mode="constant", cval=np.inf)
-    near = ndimage.convolve(occ.astype(np.int32), box.astype(np.int32), mode="constant")
-    seed = occ & (hi - lo <= p.level_tolerance) & (near >= p.min_neighbours)
-    eight = np.ones((3, 3), bool)
-    lab, k = ndimage.label(seed, structure=eight)
+    seed = _level_seeds(mean, occ, p)
+    lab, k = ndimage.label(seed, structure=np.ones((3, 3), bool))
     if k == 0:
         return water, offset
     ids = np.arange(1, k + 1)
     level = np.r_[np.nan, ndimage.median(mean, lab, ids)]
     spread = np.r_[np.nan, np.asarray(ndimage.maximum(mean, lab, ids)) - np.asarray(ndimage.minimum(mean, lab, ids))]
     seed_area = np.bincount(lab.ravel(), minlength=k + 1) * p.cell * p.cell
-
-    # grow each surface into the connected cells within grow_tolerance of its nearest seed's
-    # level; a grown region takes the label of a seed inside it
-    _, (ir, ic) = ndimage.distance_transform_edt(lab == 0, return_indices=True)
-    grow = occ & (np.abs(mean - level[lab[ir, ic]]) <= p.grow_tolerance)
-    glab, gk = ndimage.label(grow, structure=eight)
-    owner = np.zeros(gk + 1, np.int64)
-    owner[glab[seed]] = lab[seed]
-    region = owner[glab]
-
-    # the banks: ground cells (any echo) within rim_cells around the region
-    gmean = cell_mean(ground)
-    dist, (jr, jc) = ndimage.distance_transform_edt(region == 0, return_indices=True)
-    of = region[jr, jc]
-    ring = (region == 0) & (dist <= p.rim_cells) & np.isfinite(gmean) & (of > 0)
-    rl = of[ring]
-    rise = gmean[ring] - level[rl]
-    rise_median = np.full(k + 1, np.nan)
-    if len(rl):
-        rise_median[1:] = ndimage.median(rise, rl, ids)  # NaN for a surface without banks
-    below = np.bincount(rl[rise < -p.grow_tolerance], minlength=k + 1) / np.maximum(np.bincount(rl, minlength=k + 1), 1)
-
+    region = _grow_surfaces(mean, occ, lab, seed, level, p)
+    rise_median, below = _banks(region, _cell_mean(xyz[:, 2], flat, shape, ground), level, k, p)
     ok = ((seed_area >= p.min_area) & (spread <= p.max_spread) & (rise_median >= p.rim_rise)
           & (below <= p.rim_below_share))
     ok[0] = False
@@ -190,6 +158,62 @@ def water_surfaces(xyz: np.ndarray, ground: np.ndarray, number_of_returns=None,
     water = cand & ok[reg] & (np.abs(dz) <= p.point_tolerance)
     offset[water] = dz[water]
     return water, offset
+
+
+def _cell_mean(z: np.ndarray, flat: np.ndarray, shape: tuple[int, int], sel: np.ndarray) -> np.ndarray:
+    """(rows, cols) mean height of the selected points in each cell (``flat`` cell index per
+    point), NaN where a cell holds none."""
+    size = shape[0] * shape[1]
+    n = np.bincount(flat[sel], minlength=size)
+    s = np.bincount(flat[sel], z[sel], minlength=size)
+    return np.where(n > 0, s / np.maximum(n, 1), np.nan).reshape(shape)
+
+
+def _level_seeds(mean: np.ndarray, occ: np.ndarray, p: WaterParams) -> np.ndarray:
+    """(rows, cols) bool: occupied cells whose ``p.window`` x ``p.window`` neighbourhood is level
+    (cell means within ``p.level_tolerance``) and holds at least ``p.min_neighbours`` occupied
+    cells: the seeds of still-water surfaces."""
+    from scipy import ndimage
+
+    box = np.ones((p.window, p.window), bool)
+    hi = ndimage.maximum_filter(np.where(occ, mean, -np.inf), footprint=box, mode="constant", cval=-np.inf)
+    lo = ndimage.minimum_filter(np.where(occ, mean, np.inf), footprint=box, mode="constant", cval=np.inf)
+    near = ndimage.convolve(occ.astype(np.int32), box.astype(np.int32), mode="constant")
+    return occ & (hi - lo <= p.level_tolerance) & (near >= p.min_neighbours)
+
+
+def _grow_surfaces(mean: np.ndarray, occ: np.ndarray, lab: np.ndarray, seed: np.ndarray, level: np.ndarray,
+                   p: WaterParams) -> np.ndarray:
+    """(rows, cols) surface label of each cell (0: none): each seed surface grows into the
+    connected cells within ``p.grow_tolerance`` of its nearest seed's ``level``; a grown region
+    takes the label of a seed inside it."""
+    from scipy import ndimage
+
+    _, (ir, ic) = ndimage.distance_transform_edt(lab == 0, return_indices=True)
+    grow = occ & (np.abs(mean - level[lab[ir, ic]]) <= p.grow_tolerance)
+    glab, gk = ndimage.label(grow, structure=np.ones((3, 3), bool))
+    owner = np.zeros(gk + 1, np.int64)
+    owner[glab[seed]] = lab[seed]
+    return owner[glab]
+
+
+def _banks(region: np.ndarray, gmean: np.ndarray, level: np.ndarray, k: int, p: WaterParams):
+    """The banks of each of the ``k`` surfaces: the ground cells (any echo; mean heights
+    ``gmean``) within ``p.rim_cells`` around it. Returns, per label 0..k, the median rise of
+    the banks above the surface's level (NaN without banks) and the share of bank cells more
+    than ``p.grow_tolerance`` below it."""
+    from scipy import ndimage
+
+    dist, (jr, jc) = ndimage.distance_transform_edt(region == 0, return_indices=True)
+    of = region[jr, jc]
+    ring = (region == 0) & (dist <= p.rim_cells) & np.isfinite(gmean) & (of > 0)
+    rl = of[ring]
+    rise = gmean[ring] - level[rl]
+    rise_median = np.full(k + 1, np.nan)
+    if len(rl):
+        rise_median[1:] = ndimage.median(rise, rl, np.arange(1, k + 1))  # NaN for a surface without banks
+    below = np.bincount(rl[rise < -p.grow_tolerance], minlength=k + 1) / np.maximum(np.bincount(rl, minlength=k + 1), 1)
+    return rise_median, below
 
 
 def classify_water(cloud: Cloud, params: WaterParams = WaterParams()) -> Cloud:

@@ -130,36 +130,15 @@ def _check_count(n: int, index: int, path) -> None:
 
 
 def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
+    """Scan ``index`` of an open E57 file as a cloud in the file's frame (the scan's pose
+    applied), with invalid points dropped, and the facts of the scan for ``meta["e57"]``."""
     header = e.get_header(index)
     node = header.node
     n = int(header.point_count)
     fields = list(header.point_fields)
     _check_count(n, index, path)
-    data = {}
-    if n:
-        buffers = libe57.VectorSourceDestBuffer()
-        for f in fields:
-            data[f] = np.empty(n, dtype=np.float64)
-            buffers.append(libe57.SourceDestBuffer(e.image_file, f, data[f], n, True, True))
-        reader = header.points.reader(buffers)
-        got = reader.read()
-        reader.close()
-        if got != n:
-            raise InvalidInputError(f"scan {index} declares {n} points but {got} were read", path=path, field="points")
-    else:
-        data = {f: np.empty(0) for f in fields}
-    if all(f"cartesian{c}" in data for c in "XYZ"):
-        state = data.get("cartesianInvalidState")
-        xyz = np.column_stack([data[f"cartesian{c}"] for c in "XYZ"])
-    elif all(f in data for f in ("sphericalRange", "sphericalAzimuth", "sphericalElevation")):
-        state = data.get("sphericalInvalidState")
-        r, az, el = data["sphericalRange"], data["sphericalAzimuth"], data["sphericalElevation"]
-        xyz = np.column_stack([r * np.cos(el) * np.cos(az), r * np.cos(el) * np.sin(az), r * np.sin(el)])
-    else:
-        raise InvalidInputError(
-            f"scan {index} has neither cartesianX/Y/Z nor spherical coordinates (fields: {', '.join(fields)})",
-            path=path, field="points",
-        )
+    data = _read_fields(e, libe57, header, fields, n, index, path)
+    xyz, state = _scan_xyz(data, fields, index, path)
     valid = np.ones(n, dtype=bool) if state is None else state == 0
     all_valid = bool(valid.all())
     rot, trans = _pose(node)
@@ -169,6 +148,61 @@ def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
     if not (np.array_equal(rot, [1.0, 0.0, 0.0, 0.0]) and not trans.any()):
         xyz = xyz @ quaternion_matrix(*rot).T + trans
     m = xyz.shape[0]
+    attrs, ilim, clim = _scan_attrs(data, node, index, m, path)
+    name = _child(node, "name")
+    guid = _child(node, "guid")
+    info = {
+        "index": index,
+        "name": name.value() if name is not None else None,
+        "guid": guid.value() if guid is not None else None,
+        "point_count": n,
+        "valid_count": m,
+        "rotation_wxyz": rot.tolist(),
+        "translation": trans.tolist(),
+        "intensity_limits": list(ilim) if ilim else None,
+        "color_limits": [list(c) if c else None for c in clim] if clim else None,
+        "fields": fields,
+    }
+    return build_cloud(path, xyz, attrs, {}), info
+
+
+def _read_fields(e, libe57, header, fields: list[str], n: int, index: int, path) -> dict[str, np.ndarray]:
+    """Every point field of the scan as a float64 array of ``n`` values, read in one pass of
+    libE57's compressed-vector reader (empty arrays for an empty scan)."""
+    if not n:
+        return {f: np.empty(0) for f in fields}
+    data = {}
+    buffers = libe57.VectorSourceDestBuffer()
+    for f in fields:
+        data[f] = np.empty(n, dtype=np.float64)
+        buffers.append(libe57.SourceDestBuffer(e.image_file, f, data[f], n, True, True))
+    reader = header.points.reader(buffers)
+    got = reader.read()
+    reader.close()
+    if got != n:
+        raise InvalidInputError(f"scan {index} declares {n} points but {got} were read", path=path, field="points")
+    return data
+
+
+def _scan_xyz(data: dict, fields: list[str], index: int, path):
+    """``(xyz, invalid state or None)`` in the scan's own frame: the cartesian fields, else the
+    spherical ones converted (range, azimuth and elevation in radians, E57 convention)."""
+    if all(f"cartesian{c}" in data for c in "XYZ"):
+        return np.column_stack([data[f"cartesian{c}"] for c in "XYZ"]), data.get("cartesianInvalidState")
+    if all(f in data for f in ("sphericalRange", "sphericalAzimuth", "sphericalElevation")):
+        r, az, el = data["sphericalRange"], data["sphericalAzimuth"], data["sphericalElevation"]
+        xyz = np.column_stack([r * np.cos(el) * np.cos(az), r * np.cos(el) * np.sin(az), r * np.sin(el)])
+        return xyz, data.get("sphericalInvalidState")
+    raise InvalidInputError(
+        f"scan {index} has neither cartesianX/Y/Z nor spherical coordinates (fields: {', '.join(fields)})",
+        path=path, field="points",
+    )
+
+
+def _scan_attrs(data: dict, node, index: int, m: int, path):
+    """The attributes of the ``m`` valid points: ``point_source_id`` (the scan index),
+    ``intensity`` and ``rgb`` scaled by the scan's limits (0 where flagged invalid), returns,
+    row/column indices and time stamps. Returns ``(attrs, intensity limits, colour limits)``."""
     attrs: dict[str, np.ndarray] = {"point_source_id": np.full(m, index, dtype=np.uint16)}
     ilim = _limits(node, "intensityLimits", "intensityMinimum", "intensityMaximum")
     if "intensity" in data:
@@ -195,21 +229,7 @@ def _read_scan(e, libe57, index: int, path) -> tuple[Cloud, dict]:
     for src, dst, dt in (("rowIndex", "row_index", np.int64), ("columnIndex", "column_index", np.int64), ("timeStamp", "time_stamp", np.float64)):
         if src in data:
             attrs[dst] = data[src].astype(dt)
-    name = _child(node, "name")
-    guid = _child(node, "guid")
-    info = {
-        "index": index,
-        "name": name.value() if name is not None else None,
-        "guid": guid.value() if guid is not None else None,
-        "point_count": n,
-        "valid_count": m,
-        "rotation_wxyz": rot.tolist(),
-        "translation": trans.tolist(),
-        "intensity_limits": list(ilim) if ilim else None,
-        "color_limits": [list(c) if c else None for c in clim] if clim else None,
-        "fields": fields,
-    }
-    return build_cloud(path, xyz, attrs, {}), info
+    return attrs, ilim, clim
 
 
 def read(path, *, scans=None) -> Cloud:

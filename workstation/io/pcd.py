@@ -376,21 +376,7 @@ def read(path) -> Cloud:
                 f"no '{c}' field (fields: {' '.join(names)})", "a point cloud PCD needs x, y and z", path=path, field=c
             )
     mode = (h["DATA"] or [""])[0].lower()
-    with open(path, "rb") as f:
-        f.seek(body_off)
-        data = f.read()
-    if points == 0 and (mode != "ascii" or not data.strip()) and (mode != "binary" or len(data) < _dtype(layout).itemsize):
-        cols = {n: np.empty((0, c) if c > 1 else 0, dtype=code) for n, code, c in layout}
-    elif mode == "ascii":
-        cols = _read_ascii(path, data, layout, points, nlines + 1)
-    elif mode == "binary":
-        cols = _read_binary(path, data, layout, points)
-    elif mode == "binary_compressed":
-        cols = _read_compressed(path, data, layout, points)
-    else:
-        raise UnsupportedFormatError(
-            f"unknown DATA type '{mode}'", "PCD DATA is ascii, binary or binary_compressed", path=path, field="DATA"
-        )
+    cols = _read_body(path, mode, body_off, nlines, layout, points)
     ftype = {n: ({"i": "I", "u": "U", "f": "F"}[code[0]] + str(np.dtype(code).itemsize)) for n, code, _ in layout}
     xyz = np.column_stack([cols[c].astype(np.float64) for c in "xyz"]) if points else np.empty((0, 3))
     valid = np.isfinite(xyz).all(axis=1)
@@ -398,49 +384,7 @@ def read(path) -> Cloud:
     if dropped:
         log.warning("%s: %d of %d points have NaN coordinates (invalid, PCL convention) and are dropped", path, dropped, points)
         xyz = xyz[valid]
-    attrs: dict[str, np.ndarray] = {}
-    types: dict[str, list] = {"xyz": [["x", "y", "z"], ftype["x"]]}
-    used = {"x", "y", "z", "_"}
-
-    def sel(v):
-        v = np.asarray(v)
-        return v[valid] if dropped else v
-
-    if all(f"{ch}16" in cols for ch in "rgb"):
-        attrs["rgb"] = np.column_stack([sel(cols[f"{ch}16"]).astype(np.uint16) for ch in "rgb"])
-        types["rgb"] = [["r16", "g16", "b16"], "U2"]
-        used.update(("r16", "g16", "b16", "rgb"))
-        if "rgba" in cols:
-            attrs["alpha"] = ((sel(cols["rgba"]).astype(np.uint32) >> 24) & 0xFF).astype(np.uint8)
-            used.add("rgba")
-    for packed in ("rgb", "rgba"):
-        if packed in cols and "rgb" not in attrs:
-            p = sel(cols[packed])
-            p = p.view(np.uint32) if p.dtype.itemsize == 4 else p.astype(np.uint32)
-            attrs["rgb"] = np.column_stack([rgb_to_u16(((p >> s) & 0xFF).astype(np.uint8), np.uint8) for s in (16, 8, 0)])
-            types["rgb"] = [packed, ftype[packed]]
-            if packed == "rgba":
-                attrs["alpha"] = ((p >> 24) & 0xFF).astype(np.uint8)
-            used.add(packed)
-    if all(c in cols for c in _NORMALS):
-        attrs["normal"] = np.column_stack([sel(cols[c]) for c in _NORMALS]).astype(np.float32)
-        types["normal"] = [list(_NORMALS), ftype["normal_x"]]
-        used.update(_NORMALS)
-    for src, canonical in (("intensity", "intensity"), ("label", "classification")):
-        if src in cols and np.ndim(cols[src]) == 1:
-            mapped_attr(attrs, types, canonical, src, sel(cols[src]), ftype[src])
-            used.add(src)
-    for name in names:
-        if name in used:
-            continue
-        v = sel(cols[name])
-        canonical = scalar_canonical(name)
-        if canonical is not None and canonical not in attrs and v.ndim == 1:
-            mapped_attr(attrs, types, canonical, name, v, ftype[name])
-        else:
-            key = name if name not in attrs else f"{name}_pcd"
-            attrs[key] = np.ascontiguousarray(v)
-            types[key] = [name, ftype[name]]
+    attrs, types = _attributes(cols, names, ftype, valid if dropped else None)
     meta = {
         "format": "pcd",
         "pcd": {
@@ -454,6 +398,84 @@ def read(path) -> Cloud:
         },
     }
     return build_cloud(path, xyz, attrs, meta, crs=(h.get("#crs") or [None])[0])
+
+
+def _read_body(path: Path, mode: str, body_off: int, nlines: int, layout, points: int) -> dict[str, np.ndarray]:
+    """The fields of the body after the header (``body_off`` bytes, ``nlines`` lines), by its
+    DATA ``mode``: ascii, binary or binary_compressed; an empty cloud gives empty fields."""
+    with open(path, "rb") as f:
+        f.seek(body_off)
+        data = f.read()
+    if points == 0 and (mode != "ascii" or not data.strip()) and (mode != "binary" or len(data) < _dtype(layout).itemsize):
+        return {n: np.empty((0, c) if c > 1 else 0, dtype=code) for n, code, c in layout}
+    if mode == "ascii":
+        return _read_ascii(path, data, layout, points, nlines + 1)
+    if mode == "binary":
+        return _read_binary(path, data, layout, points)
+    if mode == "binary_compressed":
+        return _read_compressed(path, data, layout, points)
+    raise UnsupportedFormatError(
+        f"unknown DATA type '{mode}'", "PCD DATA is ascii, binary or binary_compressed", path=path, field="DATA"
+    )
+
+
+def _sel(v, keep: np.ndarray | None) -> np.ndarray:
+    """``v`` as an array, restricted to the points with valid coordinates when some were dropped."""
+    v = np.asarray(v)
+    return v if keep is None else v[keep]
+
+
+def _attributes(cols: dict, names: list[str], ftype: dict, keep: np.ndarray | None) -> tuple[dict, dict]:
+    """Map the PCD fields other than x, y, z onto cloud attributes: colour (:func:`_colour`),
+    normals, ``intensity`` and ``label`` (-> ``classification``), other fields under their
+    canonical name when they have one, else their own (``_pcd`` added on a clash). Returns
+    ``(attrs, types)``; ``types`` maps each attribute to its PCD field(s) and TYPE+SIZE."""
+    attrs: dict[str, np.ndarray] = {}
+    types: dict[str, list] = {"xyz": [["x", "y", "z"], ftype["x"]]}
+    used = {"x", "y", "z", "_"}
+    _colour(cols, ftype, keep, attrs, types, used)
+    if all(c in cols for c in _NORMALS):
+        attrs["normal"] = np.column_stack([_sel(cols[c], keep) for c in _NORMALS]).astype(np.float32)
+        types["normal"] = [list(_NORMALS), ftype["normal_x"]]
+        used.update(_NORMALS)
+    for src, canonical in (("intensity", "intensity"), ("label", "classification")):
+        if src in cols and np.ndim(cols[src]) == 1:
+            mapped_attr(attrs, types, canonical, src, _sel(cols[src], keep), ftype[src])
+            used.add(src)
+    for name in names:
+        if name in used:
+            continue
+        v = _sel(cols[name], keep)
+        canonical = scalar_canonical(name)
+        if canonical is not None and canonical not in attrs and v.ndim == 1:
+            mapped_attr(attrs, types, canonical, name, v, ftype[name])
+        else:
+            key = name if name not in attrs else f"{name}_pcd"
+            attrs[key] = np.ascontiguousarray(v)
+            types[key] = [name, ftype[name]]
+    return attrs, types
+
+
+def _colour(cols: dict, ftype: dict, keep: np.ndarray | None, attrs: dict, types: dict, used: set) -> None:
+    """Fill ``rgb`` (uint16) and ``alpha`` from 16-bit ``r16 g16 b16`` fields (this writer's, for
+    colour that is not 8-bit) or from PCL's packed ``rgb``/``rgba`` (one 32-bit value: alpha,
+    red, green, blue bytes; float or integer typed), recording the fields in ``types``/``used``."""
+    if all(f"{ch}16" in cols for ch in "rgb"):
+        attrs["rgb"] = np.column_stack([_sel(cols[f"{ch}16"], keep).astype(np.uint16) for ch in "rgb"])
+        types["rgb"] = [["r16", "g16", "b16"], "U2"]
+        used.update(("r16", "g16", "b16", "rgb"))
+        if "rgba" in cols:
+            attrs["alpha"] = ((_sel(cols["rgba"], keep).astype(np.uint32) >> 24) & 0xFF).astype(np.uint8)
+            used.add("rgba")
+    for packed in ("rgb", "rgba"):
+        if packed in cols and "rgb" not in attrs:
+            p = _sel(cols[packed], keep)
+            p = p.view(np.uint32) if p.dtype.itemsize == 4 else p.astype(np.uint32)
+            attrs["rgb"] = np.column_stack([rgb_to_u16(((p >> s) & 0xFF).astype(np.uint8), np.uint8) for s in (16, 8, 0)])
+            types["rgb"] = [packed, ftype[packed]]
+            if packed == "rgba":
+                attrs["alpha"] = ((p >> 24) & 0xFF).astype(np.uint8)
+            used.add(packed)
 
 
 def _field_type(dtype) -> tuple[str, int]:

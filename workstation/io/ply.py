@@ -403,10 +403,32 @@ def read(path, *, keep_unknown: bool = True) -> Cloud:
             )
     arr = _read_binary(path, header, vi, vel) if header.format != "ascii" else _read_ascii(path, header, vi, vel)
     ptype = {p.name: p.type for p in vel.props}
-    lower = {n.lower(): n for n in names}
     xyz = np.empty((vel.count, 3), dtype=np.float64)
     for i, c in enumerate("xyz"):
         xyz[:, i] = arr[c]
+    attrs, types = _attributes(arr, names, ptype, keep_unknown)
+    meta = {
+        "format": "ply",
+        "ply": {
+            "format": header.format,
+            "comments": header.comments,
+            "obj_info": header.obj_info,
+            "elements": {el.name: el.count for el in header.elements},
+            "types": types,
+        },
+    }
+    crs = next((c for c in map(crs_from_comment, header.comments) if c), None)
+    return build_cloud(path, xyz, attrs, meta, crs=crs)
+
+
+def _attributes(arr: np.ndarray, names: list[str], ptype: dict, keep_unknown: bool) -> tuple[dict, dict]:
+    """Map the vertex properties other than x, y, z onto cloud attributes: the first complete
+    colour and normal triples (names matched case-insensitively, :data:`_RGB_NAMES`,
+    :data:`_NORMAL_NAMES`), intensity and classification by their aliases, other properties
+    under their canonical name when they have one, else (``keep_unknown``) their own (``_ply``
+    added on a clash). Returns ``(attrs, types)``; ``types`` maps each attribute to its source
+    properties and PLY type."""
+    lower = {n.lower(): n for n in names}
     used = {"x", "y", "z"}
     attrs: dict[str, np.ndarray] = {}
     types: dict[str, list] = {"xyz": [["x", "y", "z"], ptype["x"]]}
@@ -439,18 +461,7 @@ def read(path, *, keep_unknown: bool = True) -> Cloud:
             key = name if name not in attrs else f"{name}_ply"
             attrs[key] = np.ascontiguousarray(arr[name])
             types[key] = [name, ptype[name]]
-    meta = {
-        "format": "ply",
-        "ply": {
-            "format": header.format,
-            "comments": header.comments,
-            "obj_info": header.obj_info,
-            "elements": {el.name: el.count for el in header.elements},
-            "types": types,
-        },
-    }
-    crs = next((c for c in map(crs_from_comment, header.comments) if c), None)
-    return build_cloud(path, xyz, attrs, meta, crs=crs)
+    return attrs, types
 
 
 def _ply_type(dtype) -> str:

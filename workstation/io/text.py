@@ -181,6 +181,25 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
     check_utf8(data, path)
     head = data[:_SNIFF_BYTES].decode("utf-8", errors="replace")
     first, header, delim, ncols, pts_count = _sniff(head, path, delimiter)
+    names, strict = _column_names(columns, header, ncols, path)
+    kinds = _resolve_columns(names, strict, path)
+    use = [i for i, (k, _) in enumerate(kinds) if k != "skip"]
+    arr = _load_numbers(data, delim, first, use, ncols, path)
+    n = arr.shape[0]
+    if pts_count is not None and pts_count != n:
+        log.warning("%s: the count line says %d points but %d were read", path, pts_count, n)
+    xyz, attrs, bits = _columns_to_fields(kinds, names, {i: arr[:, j] for j, i in enumerate(use)}, n, rgb_bits, path)
+    meta = {
+        "format": path.suffix.lower().lstrip(".") or "txt",
+        "text": {"columns": names, "delimiter": delim, "header": header is not None, "rgb_bits": bits},
+    }
+    return build_cloud(path, xyz, attrs, meta)
+
+
+def _column_names(columns, header: list[str] | None, ncols: int, path: Path) -> tuple[list[str], bool]:
+    """The column names and whether unknown names are errors: a given spec (strict), else the
+    file's header, else :data:`DEFAULT_COLUMNS` by column count. A spec or header naming more
+    columns than the file has is an error."""
     if columns is not None:
         names = [c.strip() for c in columns.split(",")] if isinstance(columns, str) else [str(c).strip() for c in columns]
         strict = True
@@ -200,6 +219,11 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
             f"the spec names {len(names)} columns: {','.join(names)}",
             path=path, field=names[ncols],
         )
+    return names, strict
+
+
+def _resolve_columns(names: list[str], strict: bool, path: Path) -> list[tuple[str, object]]:
+    """``(kind, target)`` of every column (:func:`_resolve`); x, y and z must all be present."""
     kinds = [_resolve(n, strict=strict, path=path) for n in names]
     for axis, c in enumerate("xyz"):
         if not any(k == "xyz" and t == axis for k, t in kinds):
@@ -207,9 +231,14 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
                 f"no '{c}' column (columns: {','.join(names)})", "name the coordinate columns x, y and z",
                 path=path, field=c,
             )
-    use = [i for i, (k, _) in enumerate(kinds) if k != "skip"]
+    return kinds
+
+
+def _load_numbers(data: bytes, delim: str | None, first: int, use: list[int], ncols: int, path: Path) -> np.ndarray:
+    """The used columns of the body as an (n, len(use)) float64 array, parsed by one call of
+    ``np.loadtxt`` (C); a parse error names the file's line number."""
     try:
-        arr = np.loadtxt(
+        return np.loadtxt(
             io.BytesIO(data), delimiter=delim, skiprows=first, usecols=use, dtype=np.float64, ndmin=2, comments="#",
             encoding="utf-8",
         )
@@ -221,10 +250,13 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
             f"every line needs {ncols} numeric columns separated by {delim or 'whitespace'!r}",
             path=path, field="columns",
         ) from None
-    cols = {i: arr[:, j] for j, i in enumerate(use)}
-    n = arr.shape[0]
-    if pts_count is not None and pts_count != n:
-        log.warning("%s: the count line says %d points but %d were read", path, pts_count, n)
+
+
+def _columns_to_fields(kinds, names: list[str], cols: dict[int, np.ndarray], n: int, rgb_bits: int | None,
+                       path: Path) -> tuple[np.ndarray, dict[str, np.ndarray], int | None]:
+    """Route each parsed column to its field: ``xyz``, the ``rgb`` and ``normal`` triples,
+    canonical attributes (:func:`mapped_attr`), ``label`` (int32 when integral) and free
+    attributes. Returns ``(xyz, attrs, rgb_bits)``; ``rgb_bits`` is None without colour."""
     xyz = np.empty((n, 3))
     rgb = np.zeros((n, 3))
     normal = np.zeros((n, 3), dtype=np.float32)
@@ -253,24 +285,26 @@ def read(path, *, columns=None, delimiter: str | None = None, rgb_bits: int | No
             attrs[target] = v
     bits = None
     if have_rgb:
-        if have_rgb != {0, 1, 2}:
-            raise InvalidInputError("colour needs all of r, g and b columns", path=path, field="rgb")
-        bits = rgb_bits or (16 if rgb.size and rgb.max() > 255 else 8)
-        if rgb.size and (rgb.min() < 0 or rgb.max() > (255 if bits == 8 else 65535) or not np.array_equal(rgb, np.trunc(rgb))):
-            raise InvalidInputError(
-                f"colour values {rgb.min()}..{rgb.max()} are not {bits}-bit integers", "check the column spec",
-                path=path, field="rgb",
-            )
-        attrs["rgb"] = rgb.astype(np.uint16) * np.uint16(257 if bits == 8 else 1)
+        attrs["rgb"], bits = _rgb_attr(rgb, have_rgb, rgb_bits, path)
     if have_normal:
         if have_normal != {0, 1, 2}:
             raise InvalidInputError("normals need all of nx, ny and nz columns", path=path, field="normal")
         attrs["normal"] = normal
-    meta = {
-        "format": path.suffix.lower().lstrip(".") or "txt",
-        "text": {"columns": names, "delimiter": delim, "header": header is not None, "rgb_bits": bits},
-    }
-    return build_cloud(path, xyz, attrs, meta)
+    return xyz, attrs, bits
+
+
+def _rgb_attr(rgb: np.ndarray, have_rgb: set, rgb_bits: int | None, path: Path) -> tuple[np.ndarray, int]:
+    """The uint16 ``rgb`` attribute from the r, g, b columns: 8-bit values (x 257) unless
+    ``rgb_bits`` is 16 or a value exceeds 255; values must be integers within the bit depth."""
+    if have_rgb != {0, 1, 2}:
+        raise InvalidInputError("colour needs all of r, g and b columns", path=path, field="rgb")
+    bits = rgb_bits or (16 if rgb.size and rgb.max() > 255 else 8)
+    if rgb.size and (rgb.min() < 0 or rgb.max() > (255 if bits == 8 else 65535) or not np.array_equal(rgb, np.trunc(rgb))):
+        raise InvalidInputError(
+            f"colour values {rgb.min()}..{rgb.max()} are not {bits}-bit integers", "check the column spec",
+            path=path, field="rgb",
+        )
+    return rgb.astype(np.uint16) * np.uint16(257 if bits == 8 else 1), bits
 
 
 def _precision_from_meta(cloud: Cloud) -> int | None:
@@ -351,18 +385,39 @@ def write(
         header = ext in (".csv", ".txt")
     if delimiter is None:
         delimiter = "," if ext == ".csv" else " "
+    coord_fmt = _coord_format(cloud, precision)
+    names = _default_columns(cloud, header) if columns is None else (
+        [c.strip() for c in columns.split(",")] if isinstance(columns, str) else [str(c) for c in columns]
+    )
+    arrays, formats, head = _write_columns(cloud, names, coord_fmt, header, path)
+    if cloud.crs:
+        log.warning("%s: text point files have no place for a CRS; %s is not stored", path.name, cloud.crs[:60])
+    with open(path, "w", encoding="utf-8", newline="\n") as f:
+        if ext == ".pts" and not header:
+            f.write(f"{cloud.n}\n")
+        if header:
+            f.write(delimiter.join(head) + "\n")
+        f.write(format_rows(arrays, formats, delimiter))
+
+
+def _coord_format(cloud: Cloud, precision: int | str | None) -> str:
+    """The printf format of the coordinates: ``%.{precision}f`` (default from the LAS scales in
+    ``meta["las"]``, else 4 decimals) or ``%r`` for ``"exact"`` (shortest round-trip text)."""
     if precision is None:
         precision = _precision_from_meta(cloud)
         precision = 4 if precision is None else precision
     if precision == "exact":
-        coord_fmt = "%r"
-    elif isinstance(precision, int) and not isinstance(precision, bool) and 0 <= precision <= 17:
-        coord_fmt = f"%.{precision}f"
-    else:
-        raise InvalidInputError(f"precision must be 0..17 or 'exact', got {precision!r}", field="precision")
-    names = _default_columns(cloud, header) if columns is None else (
-        [c.strip() for c in columns.split(",")] if isinstance(columns, str) else [str(c) for c in columns]
-    )
+        return "%r"
+    if isinstance(precision, int) and not isinstance(precision, bool) and 0 <= precision <= 17:
+        return f"%.{precision}f"
+    raise InvalidInputError(f"precision must be 0..17 or 'exact', got {precision!r}", field="precision")
+
+
+def _write_columns(cloud: Cloud, names: list[str], coord_fmt: str, header: bool,
+                   path: Path) -> tuple[list[np.ndarray], list[str], list[str]]:
+    """``(arrays, formats, header names)`` of the columns to write, one per name: coordinates in
+    ``coord_fmt``, colour and normal components (:func:`_vector_column`) and scalar attributes
+    (:func:`_attr_column`) in their dtype's exact format."""
     rgb = cloud.attrs.get("rgb")
     rgb8 = rgb is not None and not np.any(rgb % 257)
     arrays: list[np.ndarray] = []
@@ -374,39 +429,46 @@ def write(
             arrays.append(cloud.xyz[:, target])
             formats.append(coord_fmt)
         elif kind in ("rgb", "rgb16", "normal"):
-            src = cloud.attrs.get("rgb" if kind == "rgb16" else kind)
-            if src is None:
-                raise InvalidInputError(f"column '{name}' asked for but the cloud has no {kind}", field=name)
-            v = src[:, target]
-            if kind != "normal":
-                if rgb8 and kind == "rgb":
-                    v = v // 257
-                else:
-                    name = "rgb"[target] + "16"  # 16-bit colour says so in the header
-                    if not header and v.size and v.max() <= 255:
-                        log.warning("16-bit colours below 256 in a text file without header read back as 8-bit")
+            v, name = _vector_column(cloud, kind, target, name, rgb8, header)
             arrays.append(v)
             formats.append(number_format(v.dtype))
         elif kind == "skip":
             raise InvalidInputError("'skip' is for reading; leave the column out", field=name)
         else:
-            attr = target if kind != "label" else "label"
-            if attr not in cloud.attrs:
-                raise InvalidInputError(
-                    f"column '{name}' asked for but the cloud has no such attribute (it has {', '.join(cloud.attrs) or 'none'})",
-                    field=name,
-                )
-            v = cloud.attrs[attr]
-            if v.ndim != 1:
-                raise InvalidInputError(f"attribute has per-point shape {v.shape[1:]}; text holds scalars", field=name)
+            v = _attr_column(cloud, kind, target, name)
             arrays.append(v)
             formats.append(number_format(v.dtype))
         head.append(name)
-    if cloud.crs:
-        log.warning("%s: text point files have no place for a CRS; %s is not stored", path.name, cloud.crs[:60])
-    with open(path, "w", encoding="utf-8", newline="\n") as f:
-        if ext == ".pts" and not header:
-            f.write(f"{cloud.n}\n")
-        if header:
-            f.write(delimiter.join(head) + "\n")
-        f.write(format_rows(arrays, formats, delimiter))
+    return arrays, formats, head
+
+
+def _vector_column(cloud: Cloud, kind: str, target: int, name: str, rgb8: bool, header: bool) -> tuple[np.ndarray, str]:
+    """One component of ``rgb`` or ``normal`` and its header name: colour as 8-bit values when
+    every value is a multiple of 257 (``rgb8``), else as 16-bit values named ``r16``/``g16``/``b16``."""
+    src = cloud.attrs.get("rgb" if kind == "rgb16" else kind)
+    if src is None:
+        raise InvalidInputError(f"column '{name}' asked for but the cloud has no {kind}", field=name)
+    v = src[:, target]
+    if kind != "normal":
+        if rgb8 and kind == "rgb":
+            v = v // 257
+        else:
+            name = "rgb"[target] + "16"  # 16-bit colour says so in the header
+            if not header and v.size and v.max() <= 255:
+                log.warning("16-bit colours below 256 in a text file without header read back as 8-bit")
+    return v, name
+
+
+def _attr_column(cloud: Cloud, kind: str, target, name: str) -> np.ndarray:
+    """The scalar attribute a column names (canonical, ``label`` or free); it must exist and hold
+    one value per point."""
+    attr = target if kind != "label" else "label"
+    if attr not in cloud.attrs:
+        raise InvalidInputError(
+            f"column '{name}' asked for but the cloud has no such attribute (it has {', '.join(cloud.attrs) or 'none'})",
+            field=name,
+        )
+    v = cloud.attrs[attr]
+    if v.ndim != 1:
+        raise InvalidInputError(f"attribute has per-point shape {v.shape[1:]}; text holds scalars", field=name)
+    return v

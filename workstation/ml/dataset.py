@@ -197,6 +197,48 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
     from workstation.interop.open3d_raycast import RaycastScene
 
     rc = raycaster or RaycastScene(scene.vertices, scene.faces)
+    fl = _draw_flight(scene, rng, rnd)
+    origin, d, strip_dz = _fire_pulses(fl, rng, rnd)
+    xyz, cls, ret, pid, inten = _trace_returns(rc, scene, rng, fl, origin, d, strip_dz)
+    if len(xyz) < 50:
+        raise InvalidInputError("simulated tile has too few points", "enlarge the tile or density")
+    order, rn, nr = _renumber_returns(ret, pid)
+    xyz, cls, pid, inten = xyz[order], cls[order], pid[order], inten[order]
+    scan_angle = np.degrees(np.arctan2(d[pid, 0], -d[pid, 2])).astype(np.float32)
+    return _finish_tile(xyz + scene.origin, cls, rn, nr, inten, scan_angle, rng, rnd, scene.crs,
+                        {"simulator": "compact", "density": fl.density, "size": fl.size, "altitude": fl.altitude,
+                         "half_fov_deg": float(np.degrees(fl.fov)), "max_returns": fl.max_returns,
+                         "range_sigma": fl.range_sigma})
+
+
+@dataclass(frozen=True)
+class _Flight:
+    """The randomised survey of one tile (scene-local coordinates, metres).
+
+    ``density`` pulses per m², tile ``size`` (m) with south-west corner ``x0, y0``, flying
+    ``altitude`` above the scene's median height ``zref``, half field of view ``fov``
+    (radians), ``max_returns`` recorded per pulse, range noise ``range_sigma`` (m), and the
+    x positions of the flight lines (along y) ``lines``, ``spacing`` apart.
+    """
+
+    density: float
+    size: float
+    x0: float
+    y0: float
+    altitude: float
+    fov: float
+    max_returns: int
+    range_sigma: float
+    zref: float
+    spacing: float
+    lines: np.ndarray
+
+
+def _draw_flight(scene, rng: np.random.Generator, rnd: Randomisation) -> _Flight:
+    """Draw the tile and the scanner settings from the recipe's ranges (in this order, so a seed
+    gives the same tile): density (log-uniform), tile size (capped by ``max_points`` and the
+    scene), tile corner, altitude, FOV, returns, range noise, then flight lines spaced for
+    20-50 % side overlap."""
     lo, hi = scene.bounds_local()
     density = _loguniform(rng, *rnd.density)
     size = float(rng.uniform(*rnd.tile_size))
@@ -212,30 +254,45 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
     swath = 2 * H * np.tan(fov)
     spacing = swath * rng.uniform(0.5, 0.8)
     lines = np.arange(x0 - rng.uniform(0, spacing), x0 + size + spacing, spacing)
-    n_p = max(int(density * size * size), 100)
-    tx = rng.uniform(x0, x0 + size, n_p)
-    ty = rng.uniform(y0, y0 + size, n_p)
-    # each pulse is fired from a line that sees it within the FOV (random among those)
+    return _Flight(density, size, x0, y0, H, fov, max_ret, sigma, zref, spacing, lines)
+
+
+def _fire_pulses(fl: _Flight, rng: np.random.Generator, rnd: Randomisation):
+    """Pulse targets uniform over the tile, each fired from a flight line that sees it within the
+    FOV (random among those). Returns the beam origins (n, 3), unit directions (n, 3) and the
+    height offset of each pulse's strip (n,)."""
+    H, fov, lines, spacing = fl.altitude, fl.fov, fl.lines, fl.spacing
+    n_p = max(int(fl.density * fl.size * fl.size), 100)
+    tx = rng.uniform(fl.x0, fl.x0 + fl.size, n_p)
+    ty = rng.uniform(fl.y0, fl.y0 + fl.size, n_p)
     li = np.clip(np.round((tx - lines[0]) / spacing + rng.uniform(-0.5, 0.5, n_p)).astype(np.int64), 0, len(lines) - 1)
     lx = lines[li]
     off = np.clip(tx - lx, -H * np.tan(fov), H * np.tan(fov))
     lx = tx - off
-    origin = np.column_stack([lx, ty, np.full(n_p, zref + H)])
+    origin = np.column_stack([lx, ty, np.full(n_p, fl.zref + H)])
     d = np.column_stack([tx - lx, np.zeros(n_p), np.full(n_p, -H)])
     d /= np.linalg.norm(d, axis=1, keepdims=True)
     strip_dz = rng.uniform(-rnd.strip_offset, rnd.strip_offset, len(lines))[li]
-    normals = _face_normals(scene.vertices, scene.faces)
+    return origin, d, strip_dz
+
+
+def _trace_returns(rc, scene, rng: np.random.Generator, fl: _Flight, origin, d, strip_dz):
+    """Cast every pulse, return by return: each hit is recorded (water only near nadir, a
+    Gaussian in incidence), with Lambertian intensity falling with range², range noise along
+    the beam and the strip offset; a pulse continues through porous targets with part of its
+    energy. Returns ``(xyz, classification, return index, pulse id, intensity)`` per echo."""
     from workstation.lidar.materials import material_arrays
 
-    mat = material_arrays(1064.0)
-    refl = mat["reflectance"]
-    pulse = np.arange(n_p)
-    energy = np.ones(n_p)
+    normals = _face_normals(scene.vertices, scene.faces)
+    refl = material_arrays(1064.0)["reflectance"]
+    H = fl.altitude
+    pulse = np.arange(len(d))
+    energy = np.ones(len(d))
     o = origin.copy()
     out_xyz, out_cls, out_ret, out_pulse, out_int = [], [], [], [], []
     p_through = rng.uniform(0.4, 0.8)
     water_w = np.radians(rng.uniform(1.5, 6.0))
-    for ret in range(1, max_ret + 1):
+    for ret in range(1, fl.max_returns + 1):
         if len(pulse) == 0:
             break
         t, prim = rc.cast(o, d[pulse])
@@ -252,7 +309,7 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
             keep[water] = rng.uniform(size=water.sum()) < 0.03 + 0.97 * np.exp(-0.5 * (inc / water_w) ** 2)
         rng_m = np.linalg.norm(p - origin[pulse], axis=1)
         inten = refl[scene.material[prim]] * np.maximum(cos_i, 0.05) * energy[pulse] * (H / rng_m) ** 2
-        pn = p + dirs * rng.normal(0, sigma, len(p))[:, None]
+        pn = p + dirs * rng.normal(0, fl.range_sigma, len(p))[:, None]
         pn[:, 2] += strip_dz[pulse]
         out_xyz.append(pn[keep])
         out_cls.append(cls[keep])
@@ -265,26 +322,22 @@ def simulate_tile(scene, rng: np.random.Generator, rnd: Randomisation, raycaster
         sep = rng.uniform(0.8, 1.6)
         o = p[go] + dirs[go] * sep
         pulse = pulse[go]
-    xyz = np.concatenate(out_xyz)
-    cls = np.concatenate(out_cls).astype(np.uint8)
-    ret = np.concatenate(out_ret)
-    pid = np.concatenate(out_pulse)
-    inten = np.concatenate(out_int)
-    if len(xyz) < 50:
-        raise InvalidInputError("simulated tile has too few points", "enlarge the tile or density")
-    # number of returns per pulse and renumbering after dropped (water) returns
+    return (np.concatenate(out_xyz), np.concatenate(out_cls).astype(np.uint8), np.concatenate(out_ret),
+            np.concatenate(out_pulse), np.concatenate(out_int))
+
+
+def _renumber_returns(ret: np.ndarray, pid: np.ndarray):
+    """Order echoes by pulse then return, and number them again after dropped (water) returns.
+    Returns ``(order, return_number, number_of_returns)``, the last two in that order (uint8)."""
     order = np.lexsort((ret, pid))
-    xyz, cls, ret, pid, inten = xyz[order], cls[order], ret[order], pid[order], inten[order]
+    pid = pid[order]
     start = np.r_[True, pid[1:] != pid[:-1]]
     grp = np.cumsum(start) - 1
     counts = np.bincount(grp)
     first_idx = np.flatnonzero(start)
     rn = (np.arange(len(pid)) - first_idx[grp] + 1).astype(np.uint8)
     nr = counts[grp].astype(np.uint8)
-    scan_angle = np.degrees(np.arctan2(d[pid, 0], -d[pid, 2])).astype(np.float32)
-    return _finish_tile(xyz + scene.origin, cls, rn, nr, inten, scan_angle, rng, rnd, scene.crs,
-                        {"simulator": "compact", "density": density, "size": size, "altitude": H,
-                         "half_fov_deg": float(np.degrees(fov)), "max_returns": max_ret, "range_sigma": sigma})
+    return order, rn, nr
 
 
 def simulate_tile_physical(scene, rng: np.random.Generator, rnd: Randomisation) -> Cloud:

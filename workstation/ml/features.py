@@ -573,8 +573,6 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     segments : (n,) int64
         Planar raised component of each point, 0 for none.
     """
-    from scipy import ndimage
-
     if cloud.n < 3:
         raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
     xyz, _, _ = metric_xyz(cloud)
@@ -592,9 +590,30 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     r, c, shape = _grid(xyz[:, :2], cell)
     zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
     zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
-    z = xyz[:, 2]
     zmin_f = _fill_nearest(zmin, ~np.isfinite(zmin))  # despiked cells take their neighbours' value
     flat = r * shape[1] + c  # each point's cell in the raveled grids
+    _relief_features(F, xyz[:, 2], zmin_f, zmax, flat, cell, p)
+    _ground_features(F, xyz, zmin, zmin_f, (r, c, shape), cell, p)
+    # while the kNN threads finish
+    F[:, 24:29] = _echo_features(cloud)
+    F[:, 29:31] = _intensity_features(cloud)
+    if with_hag is not None:
+        with_hag(F[:, 7])
+    fine, coarse = [f.result() for f in futures]
+    pool.shutdown()
+    _eigen_features(F, xyz[:, 2], fine, coarse)
+    F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
+    if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
+        np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
+    return F, segments
+
+
+def _relief_features(F: np.ndarray, z: np.ndarray, zmin_f: np.ndarray, zmax: np.ndarray, flat: np.ndarray,
+                     cell: float, p: FeatureParams) -> None:
+    """Columns 0-6 of ``F``: height above the lowest cell minimum within each of ``p.min_radii``,
+    then the relief (highest minus lowest) within the smallest radius and the depth below its
+    highest point; metres, capped at 60."""
+    from scipy import ndimage
 
     def at(grid):
         return np.take(grid.ravel(), flat)
@@ -608,8 +627,17 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     m0 = at(ndimage.minimum_filter(zmin_f, size=size, mode="nearest"))
     F[:, 5] = np.minimum(mx - m0, 60.0)
     F[:, 6] = np.minimum(mx - z, 60.0)
-    # provisional ground at two tolerances
-    # (one opening sequence serves both: the openings do not depend on the tolerance)
+
+
+def _ground_features(F: np.ndarray, xyz: np.ndarray, zmin: np.ndarray, zmin_f: np.ndarray, rc, cell: float,
+                     p: FeatureParams) -> None:
+    """Columns 7-9 of ``F``: heights above a provisional ground at two tolerances (the second
+    with a smaller window and twice the slope; one opening sequence serves both, as the
+    openings do not depend on the tolerance), and the slope of the first ground, capped at 3."""
+    from workstation.ground.common import gradient
+
+    r, c, shape = rc
+    z = xyz[:, 2]
     windows = (p.ground_window, p.ground_window * 0.4)
     steps = opening_steps(zmin_f, cell, windows)
     g = provisional_ground(xyz, cell, windows[0], p.ground_slope, zmin=zmin, rc=(r, c, shape),
@@ -618,18 +646,16 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     g2 = provisional_ground(xyz, cell, windows[1], p.ground_slope * 2, zmin=zmin, rc=(r, c, shape),
                             steps=steps[1])
     F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
-    from workstation.ground.common import gradient
-
     gy, gx = gradient(g, cell)  # 0 across a grid of one cell
-    F[:, 9] = np.minimum(at(np.hypot(gx, gy)), 3.0)
-    # while the kNN threads finish
-    F[:, 24:29] = _echo_features(cloud)
-    F[:, 29:31] = _intensity_features(cloud)
-    if with_hag is not None:
-        with_hag(F[:, 7])
-    # both eigen scales: one query per voxel among the voxel representatives, broadcast
-    (ef, zr, dh, finv), (ec, _, _, inv) = [f.result() for f in futures]
-    pool.shutdown()
+    F[:, 9] = np.minimum(np.take(np.hypot(gx, gy).ravel(), r * shape[1] + c), 3.0)
+
+
+def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
+    """Columns 10-23 and 31 of ``F`` from the two :func:`_voxel_eigen` scales (one query per
+    voxel representative, broadcast to its points): six eigen features per scale (10-15 fine,
+    18-23 coarse), the fine neighbourhood's extremes relative to each point's own height (16-17,
+    metres, capped at 30) and the log of the local spacing relative to its median (31)."""
+    (ef, zr, dh, finv), (ec, _, _, inv) = fine, coarse
     # broadcast: one ``take`` per column straight into F's (Fortran-order) columns, no (n, 8) temporaries
     for a in range(6):
         np.take(ef[:, a], finv, out=F[:, 10 + a])
@@ -639,9 +665,5 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     F[:, 16] = np.clip(z - (zf - ef[:, 6].take(finv)), 0, 30)
     F[:, 17] = np.clip((zf + ef[:, 7].take(finv)) - z, 0, 30)
     dh = dh.take(finv)
-    med = float(np.median(dh)) if n else 1.0
+    med = float(np.median(dh)) if len(z) else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
-    F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
-    if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
-        np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
-    return F, segments

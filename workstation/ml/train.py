@@ -71,6 +71,33 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
         import pickle
 
         Path(cache).write_bytes(pickle.dumps(ts))
+    vm, use = _split_rows(ts, recipe)
+    kw = {k: recipe.train[k] for k in _TRAIN_KEYS if k in recipe.train}
+    kw.setdefault("seed", recipe.seed)
+    clf = PointClassifier(**kw)
+    clf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm], progress=progress)
+    card = _card(recipe_path, recipe, ts, vm, use, clf, t_data, t0, c0)
+    if baseline:
+        rf = PointClassifier(model="rf", seed=recipe.seed, ignore_features=clf.ignore_features)
+        rf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm])
+        card["baseline_rf"] = {"train_seconds": rf.report_.seconds, "validation": split_scores(rf, ts.X[vm], ts.y[vm])}
+    clf.meta_ = {"summary": {"recipe": Path(recipe_path).name, "seed": recipe.seed}, "card": {
+        k: card[k] for k in ("recipe", "seed", "tiles", "train_rows", "epochs", "best_epoch", "total_seconds")}}
+    clf.save(out, overwrite=overwrite)
+    with atomic_path(card_path, overwrite=overwrite) as tmp:
+        Path(tmp).write_text(json.dumps(card, indent=1, default=float))
+    log.info("wrote %s and %s (%.1f s)", out, card_path, card["total_seconds"])
+    card["model_path"] = str(out)
+    card["card_path"] = str(card_path)
+    return card
+
+
+def _split_rows(ts, recipe) -> tuple[np.ndarray, np.ndarray]:
+    """``(validation, use)`` row masks: validation rows are those of the recipe's validation
+    tiles (every fifth tile when the recipe gives none or only those); ``use`` drops from
+    training the simulated ground rows more than ``train.drop_ground_above_m`` metres from the
+    provisional surface (where that surface failed: ridges, embankments), which would teach
+    the network to distrust its main cue; validation rows are never dropped."""
     vm = ts.val[ts.tile]
     if not vm.any() or vm.all():
         vm = np.zeros(len(ts.y), bool)
@@ -78,18 +105,18 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
     use = np.ones(len(ts.y), bool)
     drop_above = recipe.train.get("drop_ground_above_m")
     if drop_above is not None:
-        # simulated ground rows far above the provisional surface (where that surface failed:
-        # ridges, embankments) teach the network to distrust its main cue; leave them out of
-        # training (never out of validation)
         from .features import FEATURE_NAMES
 
         use = ~(~vm & (ts.y == 0) & (np.abs(ts.X[:, FEATURE_NAMES.index("hag_prov")]) > float(drop_above)))
-    kw = {k: recipe.train[k] for k in _TRAIN_KEYS if k in recipe.train}
-    kw.setdefault("seed", recipe.seed)
-    clf = PointClassifier(**kw)
-    clf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm], progress=progress)
+    return vm, use
+
+
+def _card(recipe_path, recipe, ts, vm: np.ndarray, use: np.ndarray, clf: PointClassifier, t_data: float,
+          t0: float, c0: float) -> dict:
+    """The model card: recipe and seed, dataset and split sizes, timings (seconds, wall since
+    ``t0`` and CPU since ``c0``), training curve, validation scores, hardware, tile draws."""
     rep = clf.report_
-    card = {
+    return {
         "recipe": str(recipe_path),
         "seed": recipe.seed,
         "classes": list(MODEL_CLASSES),
@@ -112,16 +139,3 @@ def train_from_recipe(recipe_path, out, overwrite: bool = False, baseline: bool 
                      "cpu_count": __import__("os").cpu_count()},
         "tile_draws": ts.info,
     }
-    if baseline:
-        rf = PointClassifier(model="rf", seed=recipe.seed, ignore_features=clf.ignore_features)
-        rf.fit_arrays(ts.X[~vm & use], ts.y[~vm & use], ts.X[vm], ts.y[vm])
-        card["baseline_rf"] = {"train_seconds": rf.report_.seconds, "validation": split_scores(rf, ts.X[vm], ts.y[vm])}
-    clf.meta_ = {"summary": {"recipe": Path(recipe_path).name, "seed": recipe.seed}, "card": {
-        k: card[k] for k in ("recipe", "seed", "tiles", "train_rows", "epochs", "best_epoch", "total_seconds")}}
-    clf.save(out, overwrite=overwrite)
-    with atomic_path(card_path, overwrite=overwrite) as tmp:
-        Path(tmp).write_text(json.dumps(card, indent=1, default=float))
-    log.info("wrote %s and %s (%.1f s)", out, card_path, card["total_seconds"])
-    card["model_path"] = str(out)
-    card["card_path"] = str(card_path)
-    return card

@@ -59,12 +59,7 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
     """
     path = Path(path)
     fmt, _ = format_of(path)
-    count = 0
-    lo = hi = None
-    ranges: dict[str, _Range] = {}
-    dtypes: dict[str, str] = {}
-    classes = np.zeros(256, dtype=np.int64)
-    returns: dict[str, int] = {}
+    stats = _ChunkStats()
     acc = None
     crs = info = None
     meta = {}
@@ -77,61 +72,86 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
             acc = DensityAccumulator(density_cell_m / mpu, mpu, strict=density_strict)
         if chunk.n == 0:
             continue
-        count += chunk.n
-        clo, chi = _col_min_max(chunk.xyz)
-        lo = clo if lo is None else np.minimum(lo, clo)
-        hi = chi if hi is None else np.maximum(hi, chi)
+        stats.add(chunk)
         acc.add(chunk.xyz[:, :2])
-        for name, arr in chunk.attrs.items():
-            ranges.setdefault(name, _Range()).add(arr)
-            dtypes[name] = str(arr.dtype) + ("" if arr.ndim == 1 else f"x{arr.shape[1]}")
-        if "classification" in chunk.attrs:
-            classes += np.bincount(chunk.attrs["classification"], minlength=256)
-        if "return_number" in chunk.attrs and "number_of_returns" in chunk.attrs:
-            key = chunk.attrs["return_number"].astype(np.int32) * 256 + chunk.attrs["number_of_returns"]
-            c = np.bincount(key, minlength=65536)  # both are u8: one histogram, no sort
-            for kk in np.flatnonzero(c).tolist():
-                s = f"{kk // 256}/{kk % 256}"
-                returns[s] = returns.get(s, 0) + int(c[kk])
-    dens = acc.result() if acc is not None and count else None
+    dens = acc.result() if acc is not None and stats.count else None
+    lo, hi = stats.lo, stats.hi
     out = {
         "file": str(path),
         "format": fmt,
-        "point_count": int(count),
+        "point_count": int(stats.count),
         "bounds": None if lo is None else {"min": lo.tolist(), "max": hi.tolist()},
         "crs": None if info is None else {"name": info.name, "epsg": info.epsg, "unit": info.unit,
                                           "vertical_unit": info.vertical_unit},
         "units": crs_units(crs).to_dict(),
         "crs_warnings": [] if lo is None else crs_warnings(crs, (lo, hi)),
         "dimensions": {
-            k: {"dtype": dtypes[k], "min": _py(r.lo), "max": _py(r.hi)} for k, r in ranges.items()
+            k: {"dtype": stats.dtypes[k], "min": _py(r.lo), "max": _py(r.hi)} for k, r in stats.ranges.items()
         },
-        "classification": {str(i): int(c) for i, c in enumerate(classes) if c},
-        "classification_names": {str(i): class_name(i) for i, c in enumerate(classes) if c},
-        "returns": dict(sorted(returns.items())),
+        "classification": {str(i): int(c) for i, c in enumerate(stats.classes) if c},
+        "classification_names": {str(i): class_name(i) for i, c in enumerate(stats.classes) if c},
+        "returns": dict(sorted(stats.returns.items())),
         "density": dens,
         "nps": None if dens is None else dens["nps"],
     }
     las = meta.get("las")
     if las:
-        out["las"] = {
-            "version": las.get("version"),
-            "point_format": las.get("point_format"),
-            "scales": las.get("scales"),
-            "offsets": las.get("offsets"),
-            "compressed": las.get("compressed"),
-            "generating_software": las.get("generating_software"),
-            "vlrs": [f"{v['user_id']}/{v['record_id']}" for v in las.get("vlrs", [])],
-            "extra_dims": [d["name"] for d in las.get("extra_dims", [])],
-        }
-        out["format_version"] = f"{'LAZ' if las.get('compressed') else 'LAS'} {las.get('version')} PDRF {las.get('point_format')}"
-        out["copc"] = copc.summary(path) if fmt == "laz" else None
-        if out["copc"]:
-            out["format"] = "copc"
-            out["format_version"] = f"COPC {out['copc']['version']} ({out['format_version']})"
+        _add_las_facts(out, las, path, fmt)
     else:
         out["format_version"] = fmt.upper()
     return out
+
+
+class _ChunkStats:
+    """Running statistics over the chunks of a file: point ``count``, coordinate bounds ``lo``,
+    ``hi`` (CRS units), per-attribute value ``ranges`` and ``dtypes``, the histogram of
+    ``classes`` (256 codes) and the ``returns`` counts by ``"return/number"``."""
+
+    def __init__(self):
+        self.count = 0
+        self.lo = self.hi = None
+        self.ranges: dict[str, _Range] = {}
+        self.dtypes: dict[str, str] = {}
+        self.classes = np.zeros(256, dtype=np.int64)
+        self.returns: dict[str, int] = {}
+
+    def add(self, chunk) -> None:
+        """Fold one non-empty chunk in."""
+        self.count += chunk.n
+        clo, chi = _col_min_max(chunk.xyz)
+        self.lo = clo if self.lo is None else np.minimum(self.lo, clo)
+        self.hi = chi if self.hi is None else np.maximum(self.hi, chi)
+        for name, arr in chunk.attrs.items():
+            self.ranges.setdefault(name, _Range()).add(arr)
+            self.dtypes[name] = str(arr.dtype) + ("" if arr.ndim == 1 else f"x{arr.shape[1]}")
+        if "classification" in chunk.attrs:
+            self.classes += np.bincount(chunk.attrs["classification"], minlength=256)
+        if "return_number" in chunk.attrs and "number_of_returns" in chunk.attrs:
+            key = chunk.attrs["return_number"].astype(np.int32) * 256 + chunk.attrs["number_of_returns"]
+            c = np.bincount(key, minlength=65536)  # both are u8: one histogram, no sort
+            for kk in np.flatnonzero(c).tolist():
+                s = f"{kk // 256}/{kk % 256}"
+                self.returns[s] = self.returns.get(s, 0) + int(c[kk])
+
+
+def _add_las_facts(out: dict, las: dict, path: Path, fmt: str) -> None:
+    """Add a LAS/LAZ file's header facts (``las``), its ``format_version`` line and, for LAZ,
+    its COPC facts (``copc``; a COPC file's ``format`` becomes ``"copc"``)."""
+    out["las"] = {
+        "version": las.get("version"),
+        "point_format": las.get("point_format"),
+        "scales": las.get("scales"),
+        "offsets": las.get("offsets"),
+        "compressed": las.get("compressed"),
+        "generating_software": las.get("generating_software"),
+        "vlrs": [f"{v['user_id']}/{v['record_id']}" for v in las.get("vlrs", [])],
+        "extra_dims": [d["name"] for d in las.get("extra_dims", [])],
+    }
+    out["format_version"] = f"{'LAZ' if las.get('compressed') else 'LAS'} {las.get('version')} PDRF {las.get('point_format')}"
+    out["copc"] = copc.summary(path) if fmt == "laz" else None
+    if out["copc"]:
+        out["format"] = "copc"
+        out["format_version"] = f"COPC {out['copc']['version']} ({out['format_version']})"
 
 
 def _py(a):

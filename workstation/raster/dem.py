@@ -706,6 +706,90 @@ def _unit_meta(res: float, res_m: float, units) -> dict:
             "z_unit": units.v_name, "units": units.to_dict()}
 
 
+def _resolution(grid: GridSpec | None, params: DemParams, survey: _Survey | None, units,
+                vrmse) -> tuple[float, float, str]:
+    """The cell size as ``(res, res_m, reason)``: in CRS units, in metres, and why it was chosen.
+
+    A given grid fixes the cell; otherwise a given ``params.resolution`` (metres) is used;
+    otherwise :func:`auto_resolution` derives it from the point density of the points the
+    product uses (ground points for a DTM, first returns for a DSM/CHM) and the vertical RMSE.
+    """
+    if grid is not None:
+        return grid.res, units.h_to_m(grid.res), "given grid"
+    if params.resolution is None:
+        n = survey.n_ground if params.kind == "dtm" else (survey.n_first or survey.n_all)
+        if n == 0:
+            raise InvalidInputError("no ground points to choose a cell size from", "classify ground first or give --resolution")
+        res_m, reason = auto_resolution(n, units.area_to_m2(survey.area), vrmse)
+        log.info("resolution %s: %s", units.describe_h(res_m), reason)
+        return units.h_from_m(res_m), res_m, reason
+    res_m = float(params.resolution)
+    return units.h_from_m(res_m), res_m, "given"
+
+
+def _accumulate(source, params: DemParams, grid: GridSpec, method: str, chunk_size: int, crs):
+    """One streaming pass reducing every chunk into per-cell accumulators.
+
+    Ground points (DTM, CHM) go into a :class:`_MeanAcc` (cell centroids); the top surface
+    (DSM, CHM unless pit-free) into a :class:`_MaxAcc` of first returns (``method="tin"``) or of
+    all non-noise returns (``"highest"``). Returns ``(ground_acc, top_acc, n_used, crs)``; an
+    accumulator is ``None`` when the product does not need it, ``n_used`` counts the ground
+    points, or the top points when there is no ground, and ``crs`` falls back to the chunks'.
+    """
+    kind = params.kind
+    need_ground = kind in ("dtm", "chm")
+    need_top = kind in ("dsm", "chm") and not (kind == "chm" and params.pit_free)
+    top_first = method == "tin"
+    gacc = _MeanAcc(grid) if need_ground else None
+    tacc = _MaxAcc(grid) if need_top else None
+    n_used = 0
+    for c in _iter_clouds(source, chunk_size):
+        if c.n == 0:
+            continue
+        crs = crs or c.crs
+        if gacc is not None:
+            g = _ground(c, params.ground_classes)
+            gacc.add(c.xyz[g, 0], c.xyz[g, 1], c.xyz[g, 2])
+            n_used += int(g.sum())
+        if tacc is not None:
+            m = _first_returns(c) if top_first else _noise_free(c)
+            tacc.add(c.xyz[m, 0], c.xyz[m, 1], c.xyz[m, 2])
+            if gacc is None:
+                n_used += int(m.sum())
+    return gacc, tacc, n_used, crs
+
+
+def _kind_surface(source, params: DemParams, grid: GridSpec, method: str, res: float, gacc, tacc,
+                  chunk_size: int) -> np.ndarray:
+    """The product's float64 surface from the accumulators: the DTM interpolated from ground
+    centroids, the DSM as cell maxima (``highest``) or a TIN of them, and the CHM as DSM − DTM
+    clipped at 0, or the pit-free CHM (a second pass over ``source``)."""
+    kind = params.kind
+    if kind == "dtm":
+        return _surface(gacc, method, params, res)
+    if kind == "dsm":
+        return _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
+    dtm = _surface(gacc, "tin", params, res)
+    if params.pit_free:
+        return _pit_free(source, grid, dtm, params, chunk_size)
+    dsm = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
+    return np.maximum(dsm - dtm, 0.0)
+
+
+def _build_in_memory(source, params: DemParams, grid: GridSpec, method: str, res: float, chunk_size: int,
+                     box, crs) -> tuple[np.ndarray, int, object]:
+    """In-memory gridding: accumulate the whole input (:func:`_accumulate`), check that there is
+    something to grid (points inside ``box``, ground points for a DTM/CHM), then interpolate the
+    product (:func:`_kind_surface`). Returns ``(float64 surface, points used, crs)``."""
+    gacc, tacc, n_used, crs = _accumulate(source, params, grid, method, chunk_size, crs)
+    if box is not None and n_used == 0:
+        raise InvalidInputError(f"no points to grid inside --bounds {','.join(f'{v:g}' for v in box)}",
+                                "compare the box with the files' bounds (ws info --summary FILE)", field="--bounds")
+    if gacc is not None and not (gacc.count > 0).any():
+        raise StageError("dem", "no ground points in the input", "classify ground first (ws ground) or check --ground-classes")
+    return _kind_surface(source, params, grid, method, res, gacc, tacc, chunk_size), n_used, crs
+
+
 def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_000_000, grid: GridSpec | None = None,
               tile_cells: int = 4096, buffer_cells: int = 128, read_opts: dict | None = None) -> Raster:
     """Grid a DSM, DTM or CHM from a cloud, a file or several files (one mosaic).
@@ -754,20 +838,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     vrmse = params.vertical_rmse or (survey.vertical_rmse if survey else None)
     crs = survey.crs if survey else (source.crs if isinstance(source, Cloud) else None)
     units = crs_units(crs)
-    if grid is not None:
-        res, res_m = grid.res, units.h_to_m(grid.res)
-        reason = "given grid"
-    elif params.resolution is None:
-        n = survey.n_ground if kind == "dtm" else (survey.n_first or survey.n_all)
-        if n == 0:
-            raise InvalidInputError("no ground points to choose a cell size from", "classify ground first or give --resolution")
-        res_m, reason = auto_resolution(n, units.area_to_m2(survey.area), vrmse)
-        res = units.h_from_m(res_m)
-        log.info("resolution %s: %s", units.describe_h(res_m), reason)
-    else:
-        res_m = float(params.resolution)
-        res = units.h_from_m(res_m)
-        reason = "given"
+    res, res_m, reason = _resolution(grid, params, survey, units, vrmse)
     if grid is None:
         grid = _box_grid(box, res) if box is not None else GridSpec.from_bounds(*survey.bounds, res)
     tiled = bool(tile_cells) and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells
@@ -779,66 +850,22 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     user_params, params = params, _in_crs_units(params, units)
     if tiled:
         arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
-        if not np.isfinite(arr).any():
-            raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
-        meta = {
-            "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
-            **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used,
-            "tiles": f"{tile_cells} cells + {buffer_cells} overlap",
-            "seconds": round(time.perf_counter() - t0, 3),
-            "params": {k: v for k, v in asdict(user_params).items() if v is not None},
-            **_read_meta(source),
-        }
-        if vrmse:
-            meta["vertical_rmse"] = float(vrmse)
-        return Raster(arr, grid.transform, crs, -9999.0, meta)
-    need_ground = kind in ("dtm", "chm")
-    need_top = kind in ("dsm", "chm") and not (kind == "chm" and params.pit_free)
-    top_first = method == "tin"
-    gacc = _MeanAcc(grid) if need_ground else None
-    tacc = _MaxAcc(grid) if need_top else None
-    n_used = 0
-    for c in _iter_clouds(source, chunk_size):
-        if c.n == 0:
-            continue
-        crs = crs or c.crs
-        if gacc is not None:
-            g = _ground(c, params.ground_classes)
-            gacc.add(c.xyz[g, 0], c.xyz[g, 1], c.xyz[g, 2])
-            n_used += int(g.sum())
-        if tacc is not None:
-            m = _first_returns(c) if top_first else _noise_free(c)
-            tacc.add(c.xyz[m, 0], c.xyz[m, 1], c.xyz[m, 2])
-            if gacc is None:
-                n_used += int(m.sum())
-    if box is not None and n_used == 0:
-        raise InvalidInputError(f"no points to grid inside --bounds {','.join(f'{v:g}' for v in box)}",
-                                "compare the box with the files' bounds (ws info --summary FILE)", field="--bounds")
-    if gacc is not None and not (gacc.count > 0).any():
-        raise StageError("dem", "no ground points in the input", "classify ground first (ws ground) or check --ground-classes")
-    if kind == "dtm":
-        arr = _surface(gacc, method, params, res)
-    elif kind == "dsm":
-        arr = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
+        extra = {"tiles": f"{tile_cells} cells + {buffer_cells} overlap"}
     else:
-        dtm = _surface(gacc, "tin", params, res)
-        if params.pit_free:
-            arr = _pit_free(source, grid, dtm, params, chunk_size)
-        else:
-            dsm = _highest(tacc, params, res) if method == "highest" else _surface(tacc, "tin", params, res)
-            arr = np.maximum(dsm - dtm, 0.0)
+        arr, n_used, crs = _build_in_memory(source, params, grid, method, res, chunk_size, box, crs)
+        extra = {}
     if not np.isfinite(arr).any():
         raise StageError("dem", f"{_names(source)}: the {kind} has no valid cell", "check the input extent and resolution")
     meta = {
         "kind": kind, "method": "pit_free" if (kind == "chm" and params.pit_free) else method,
-        **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used,
+        **_unit_meta(res, res_m, units), "resolution_reason": reason, "points": n_used, **extra,
         "seconds": round(time.perf_counter() - t0, 3),
         "params": {k: v for k, v in asdict(user_params).items() if v is not None},
         **_read_meta(source),
     }
     if vrmse:
         meta["vertical_rmse"] = float(vrmse)
-    return Raster(arr.astype(np.float32), grid.transform, crs, -9999.0, meta)
+    return Raster(arr if tiled else arr.astype(np.float32), grid.transform, crs, -9999.0, meta)
 
 
 def dem_from_arrays(xyz: np.ndarray, classification: np.ndarray | None = None, **kw) -> Raster:

@@ -250,15 +250,7 @@ def rasterize_triangles(tri_u, tri_v, tri_z, out, target=None, chunk: int = 2_00
     R, C = out.shape
     if len(tri_u) == 0:
         return 0
-    # corner-wise min/max: the same values as .min(1)/.max(1), much faster on (m, 3)
-    umin = np.ceil(np.minimum(np.minimum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) - _EPS).astype(np.int64)
-    umax = np.floor(np.maximum(np.maximum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) + _EPS).astype(np.int64)
-    vmin = np.ceil(np.minimum(np.minimum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) - _EPS).astype(np.int64)
-    vmax = np.floor(np.maximum(np.maximum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) + _EPS).astype(np.int64)
-    umin = np.maximum(umin, 0)
-    vmin = np.maximum(vmin, 0)
-    umax = np.minimum(umax, C - 1)
-    vmax = np.minimum(vmax, R - 1)
+    umin, umax, vmin, vmax = _cell_boxes(tri_u, tri_v, R, C)
     w = umax - umin + 1
     h = vmax - vmin + 1
     keep = np.flatnonzero((w > 0) & (h > 0))
@@ -268,68 +260,132 @@ def rasterize_triangles(tri_u, tri_v, tri_z, out, target=None, chunk: int = 2_00
             keep = keep[_box_has_any(target, vmin[keep], vmax[keep], umin[keep], umax[keep])]
     if len(keep) == 0:
         return 0
-    umin, umax, vmin, vmax, w, h = umin[keep], umax[keep], vmin[keep], vmax[keep], w[keep], h[keep]
-    tu, tv, tz = tri_u[keep], tri_v[keep], tri_z[keep]
-    # write order of a cell covered by several triangles: size class, then input index
+    tris = _triangle_terms(tri_u[keep], tri_v[keep], tri_z[keep], umin[keep], umax[keep], vmin[keep], vmax[keep],
+                           w[keep], h[keep])
+    return _rasterize_groups(tris, w[keep], h[keep], out, None if target is None else target.ravel(), chunk)
+
+
+def _cell_boxes(tri_u, tri_v, R: int, C: int):
+    """Integer bounding boxes ``(umin, umax, vmin, vmax)`` of the cell centres each triangle may
+    cover (``_EPS`` tolerance), clipped to the grid; empty boxes have ``max < min``."""
+    # corner-wise min/max: the same values as .min(1)/.max(1), much faster on (m, 3)
+    umin = np.ceil(np.minimum(np.minimum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) - _EPS).astype(np.int64)
+    umax = np.floor(np.maximum(np.maximum(tri_u[:, 0], tri_u[:, 1]), tri_u[:, 2]) + _EPS).astype(np.int64)
+    vmin = np.ceil(np.minimum(np.minimum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) - _EPS).astype(np.int64)
+    vmax = np.floor(np.maximum(np.maximum(tri_v[:, 0], tri_v[:, 1]), tri_v[:, 2]) + _EPS).astype(np.int64)
+    umin = np.maximum(umin, 0)
+    vmin = np.maximum(vmin, 0)
+    umax = np.minimum(umax, C - 1)
+    vmax = np.minimum(vmax, R - 1)
+    return umin, umax, vmin, vmax
+
+
+@dataclass(frozen=True)
+class _TriTerms:
+    """Per-triangle arrays of :func:`rasterize_triangles` (all of length m): the box corners as
+    floats (cell units), the query-independent terms of :func:`_bary` (``a0 .. den``, and the
+    third corner ``p2u, p2v``), the corner values ``tz`` (m, 3) and the write ``rank``."""
+
+    umin: np.ndarray
+    umax: np.ndarray
+    vmin: np.ndarray
+    vmax: np.ndarray
+    a0: np.ndarray
+    b0: np.ndarray
+    a1: np.ndarray
+    b1: np.ndarray
+    den: np.ndarray
+    p2u: np.ndarray
+    p2v: np.ndarray
+    tz: np.ndarray
+    rank: np.ndarray
+
+
+def _triangle_terms(tu, tv, tz, umin, umax, vmin, vmax, w, h) -> _TriTerms:
+    """The triangle-only terms of the barycentric formula, evaluated as :func:`_bary` does, and
+    the write order of a cell covered by several triangles: the rank of each triangle in the
+    order (size class ``ceil(log2(max(w, h)))``, input index)."""
     size_class = np.ceil(np.log2(np.maximum(np.maximum(w, h), 1))).astype(np.int64)
-    rdt = np.int32 if len(keep) < 2**31 - 1 else np.int64
-    rank = np.empty(len(keep), rdt)
-    rank[np.argsort(size_class, kind="stable")] = np.arange(len(keep), dtype=rdt)
-    # the terms of _bary that depend on the triangle only, evaluated as _bary does
+    rdt = np.int32 if len(tu) < 2**31 - 1 else np.int64
+    rank = np.empty(len(tu), rdt)
+    rank[np.argsort(size_class, kind="stable")] = np.arange(len(tu), dtype=rdt)
     p0u, p1u, p2u = tu[:, 0], tu[:, 1], tu[:, 2]
     p0v, p1v, p2v = tv[:, 0], tv[:, 1], tv[:, 2]
     a0, b0 = p1v - p2v, p2u - p1u
     a1, b1 = p2v - p0v, p0u - p2u
     den = a0 * b1 + b0 * (p0v - p2v)
-    last = np.full(R * C, -1, rdt)  # rank of the triangle that wrote each cell
-    tflat = None if target is None else target.ravel()
+    return _TriTerms(umin.astype(np.float64), umax.astype(np.float64), vmin.astype(np.float64), vmax.astype(np.float64),
+                     a0, b0, a1, b1, den, p2u, p2v, tz, rank)
+
+
+def _rasterize_groups(tris: _TriTerms, w, h, out, tflat, chunk: int) -> int:
+    """Evaluate the triangles in groups of equal stencil (box rounded up to 1, 2, 3, 4, 6, ...
+    cells per direction), at most ``chunk`` cells per array operation, and write each covered
+    cell once (:func:`_write_last`). Returns the number of (triangle, cell) hits."""
+    R, C = out.shape
+    last = np.full(R * C, -1, tris.rank.dtype)  # rank of the triangle that wrote each cell
+    oflat = out.reshape(-1) if out.flags.c_contiguous else None
     written = 0
     sizes = _STENCIL_SIZES
     kw = np.searchsorted(sizes, w)
     kh = np.searchsorted(sizes, h)
     group = kh * len(sizes) + kw
-    order = np.lexsort((rank, group))
-    umin_f, umax_f = umin.astype(np.float64), umax.astype(np.float64)
-    vmin_f, vmax_f = vmin.astype(np.float64), vmax.astype(np.float64)
-    oflat = out.reshape(-1) if out.flags.c_contiguous else None
+    order = np.lexsort((tris.rank, group))
     for g in np.split(order, np.flatnonzero(np.diff(group[order])) + 1):
         sw, sh = int(sizes[kw[g[0]]]), int(sizes[kh[g[0]]])
         ov, ou = np.divmod(np.arange(sw * sh, dtype=np.float64), sw)
         step = max(1, chunk // (sw * sh))
         for start in range(0, len(g), step):
-            I = g[start : start + step]
-            # cell centres as floats (exact integers): the same differences as int - float
-            cu = umin_f[I, None] + ou
-            cv = vmin_f[I, None] + ov
-            m = (cu <= umax_f[I, None]) & (cv <= vmax_f[I, None])
-            qu = cu - p2u[I, None]
-            qv = cv - p2v[I, None]
-            d = den[I, None]
-            with np.errstate(divide="ignore", invalid="ignore"):  # zero-area triangles: nan/inf
-                l0 = (a0[I, None] * qu + b0[I, None] * qv) / d
-                l1 = (a1[I, None] * qu + b1[I, None] * qv) / d
-                l2 = 1.0 - l0 - l1
-            m &= (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS)
-            k = np.flatnonzero(m)
-            f = (cv.ravel()[k] * C + cu.ravel()[k]).astype(np.int64)
-            if tflat is not None:
-                hit = tflat.take(f)
-                k, f = k[hit], f[hit]
-            if len(k) == 0:
+            f, val, rk = _covered_cells(tris, g[start : start + step], ou, ov, C, tflat)
+            if len(f) == 0:
                 continue
-            written += len(k)
-            t = I[k // (sw * sh)]
-            with np.errstate(invalid="ignore"):
-                val = l0.ravel()[k] * tz[t, 0] + l1.ravel()[k] * tz[t, 1] + l2.ravel()[k] * tz[t, 2]
-            rk = rank[t]
-            np.maximum.at(last, f, rk)  # well defined for repeated cells, unlike last[f] = rk
-            win = last.take(f) == rk  # one write per cell: its highest-ranked triangle
-            f, val = f[win], val[win]
-            if oflat is not None:
-                oflat[f] = val
-            else:
-                out[f // C, f % C] = val
+            written += len(f)
+            _write_last(out, oflat, last, f, val, rk)
     return written
+
+
+def _covered_cells(tris: _TriTerms, I, ou, ov, C: int, tflat):
+    """The cells of the stencil ``(ou, ov)`` placed at the boxes of triangles ``I`` whose centres
+    lie inside the triangle (barycentric ≥ −``_EPS``, the arithmetic of :func:`_bary`) and in
+    the target. Returns ``(flat cell index, interpolated value, triangle rank)`` per hit."""
+    # cell centres as floats (exact integers): the same differences as int - float
+    cu = tris.umin[I, None] + ou
+    cv = tris.vmin[I, None] + ov
+    m = (cu <= tris.umax[I, None]) & (cv <= tris.vmax[I, None])
+    qu = cu - tris.p2u[I, None]
+    qv = cv - tris.p2v[I, None]
+    d = tris.den[I, None]
+    with np.errstate(divide="ignore", invalid="ignore"):  # zero-area triangles: nan/inf
+        l0 = (tris.a0[I, None] * qu + tris.b0[I, None] * qv) / d
+        l1 = (tris.a1[I, None] * qu + tris.b1[I, None] * qv) / d
+        l2 = 1.0 - l0 - l1
+    m &= (l0 >= -_EPS) & (l1 >= -_EPS) & (l2 >= -_EPS)
+    k = np.flatnonzero(m)
+    f = (cv.ravel()[k] * C + cu.ravel()[k]).astype(np.int64)
+    if tflat is not None:
+        hit = tflat.take(f)
+        k, f = k[hit], f[hit]
+    if len(k) == 0:
+        return f, None, None
+    t = I[k // len(ou)]
+    tz = tris.tz
+    with np.errstate(invalid="ignore"):
+        val = l0.ravel()[k] * tz[t, 0] + l1.ravel()[k] * tz[t, 1] + l2.ravel()[k] * tz[t, 2]
+    return f, val, tris.rank[t]
+
+
+def _write_last(out, oflat, last, f, val, rk) -> None:
+    """Write ``val`` into the cells ``f`` of ``out``, keeping for each cell the value of its
+    highest-ranked triangle so far (``last`` holds the rank that wrote each cell), so repeated
+    cells get a defined winner whatever the grouping."""
+    np.maximum.at(last, f, rk)  # well defined for repeated cells, unlike last[f] = rk
+    win = last.take(f) == rk  # one write per cell: its highest-ranked triangle
+    f, val = f[win], val[win]
+    if oflat is not None:
+        oflat[f] = val
+    else:
+        C = out.shape[1]
+        out[f // C, f % C] = val
 
 
 def _dilate(mask: np.ndarray, iterations: int) -> np.ndarray:

@@ -194,16 +194,9 @@ def depth_map_visible(depth: np.ndarray, u: np.ndarray, v: np.ndarray, z: np.nda
     h, w = D.shape
     with np.errstate(divide="ignore", invalid="ignore"):
         W = np.where(np.isnan(D) | (D <= 0), np.nan, 1.0 / D)  # inverse depth; sky = 0
-    Wp = np.pad(W, 1, mode="constant", constant_values=np.nan)
     x0, y0, wts = _corners(u, v, w, h)
-    # 4 x 4 block (rows y0-1..y0+2, cols x0-1..x0+2) from the padded array
-    P = np.stack([Wp[y0 + dy, x0 + dx] for dy in range(4) for dx in range(4)], axis=1).reshape(-1, 4, 4)
-    c = P[:, 1:3, 1:3].reshape(-1, 4)  # corners (x0,y0), (x0+1,y0), (x0,y0+1), (x0+1,y0+1)
-    known = np.isfinite(c).all(axis=1)
-    c = np.where(np.isfinite(c), c, 0.0)
-    a = 0.5 * (c[:, 1] - c[:, 0] + c[:, 3] - c[:, 2])  # dw / dx per pixel
-    b = 0.5 * (c[:, 2] - c[:, 0] + c[:, 3] - c[:, 1])  # dw / dy per pixel
-    w0 = c.mean(axis=1)  # plane value at the cell centre (x0 + 0.5, y0 + 0.5)
+    P = _blocks(W, x0, y0)
+    c, known, a, b, w0 = _cell_plane(P)
     tol_w = tol / z**2  # a depth step of tol at depth z, in inverse depth
     slack = tol_w + CREASE_SLACK * (np.abs(a) + np.abs(b))
     planar = np.abs(c[:, 0] + c[:, 3] - c[:, 1] - c[:, 2]) <= slack
@@ -213,21 +206,51 @@ def depth_map_visible(depth: np.ndarray, u: np.ndarray, v: np.ndarray, z: np.nda
     with np.errstate(divide="ignore"):
         z_s = np.where(w_pt > 0, 1.0 / np.maximum(w_pt, 1e-300), np.inf)
     vis = known & planar & (np.abs(z - z_s) <= tol)
-    # no pixel of the 4 x 4 block nearer than the cell's plane by more than tol
+    vis &= ~_nearer_in_block(P, w0, a, b, slack)
+    if min_cos > 0:
+        vis &= _facing_cos(u, v, w_pt, a, b, camera) >= min_cos
+    return vis, x0, y0, wts
+
+
+def _blocks(W: np.ndarray, x0: np.ndarray, y0: np.ndarray) -> np.ndarray:
+    """(n, 4, 4) inverse depths of the block of rows ``y0-1 .. y0+2``, columns ``x0-1 .. x0+2``
+    around each cell (NaN outside the image)."""
+    Wp = np.pad(W, 1, mode="constant", constant_values=np.nan)
+    return np.stack([Wp[y0 + dy, x0 + dx] for dy in range(4) for dx in range(4)], axis=1).reshape(-1, 4, 4)
+
+
+def _cell_plane(P: np.ndarray):
+    """The plane through each 2 x 2 cell of the blocks ``P``: ``(c, known, a, b, w0)`` with the
+    corners ``c`` (n, 4) in the order (x0, y0), (x0+1, y0), (x0, y0+1), (x0+1, y0+1) (unknown
+    ones set to 0), ``known`` where all four are known, the slopes ``a = dw/dx`` and
+    ``b = dw/dy`` per pixel, and ``w0`` the plane's value at the cell centre."""
+    c = P[:, 1:3, 1:3].reshape(-1, 4)
+    known = np.isfinite(c).all(axis=1)
+    c = np.where(np.isfinite(c), c, 0.0)
+    a = 0.5 * (c[:, 1] - c[:, 0] + c[:, 3] - c[:, 2])  # dw / dx per pixel
+    b = 0.5 * (c[:, 2] - c[:, 0] + c[:, 3] - c[:, 1])  # dw / dy per pixel
+    w0 = c.mean(axis=1)  # plane value at the cell centre (x0 + 0.5, y0 + 0.5)
+    return c, known, a, b, w0
+
+
+def _nearer_in_block(P: np.ndarray, w0, a, b, slack) -> np.ndarray:
+    """(n,) bool: a pixel of the 4 x 4 block is nearer than the cell's plane extrapolated to it
+    by more than ``slack`` (inverse depth); unknown pixels are ignored."""
     off = np.arange(4) - 1.5
     pred = w0[:, None, None] + a[:, None, None] * off[None, None, :] + b[:, None, None] * off[None, :, None]
     with np.errstate(invalid="ignore"):
-        nearer = np.nan_to_num(P - pred, nan=-np.inf).reshape(-1, 16).max(axis=1) > slack
-    vis &= ~nearer
-    if min_cos > 0:
-        xn = (u - camera.cx) / camera.fx
-        yn = (v - camera.cy) / camera.fy
-        ga, gb = a * camera.fx, b * camera.fy  # gradient of w in normalised image coordinates
-        cc = w_pt - ga * xn - gb * yn
-        with np.errstate(invalid="ignore", divide="ignore"):
-            cos = np.abs(w_pt) / (np.sqrt(ga * ga + gb * gb + cc * cc) * np.sqrt(xn * xn + yn * yn + 1.0))
-        vis &= cos >= min_cos
-    return vis, x0, y0, wts
+        return np.nan_to_num(P - pred, nan=-np.inf).reshape(-1, 16).max(axis=1) > slack
+
+
+def _facing_cos(u, v, w_pt, a, b, camera: Camera) -> np.ndarray:
+    """(n,) cosine between the viewing ray and the normal of the plane ``w = 1 / depth`` with
+    value ``w_pt`` at the point and per-pixel gradient ``(a, b)``."""
+    xn = (u - camera.cx) / camera.fx
+    yn = (v - camera.cy) / camera.fy
+    ga, gb = a * camera.fx, b * camera.fy  # gradient of w in normalised image coordinates
+    cc = w_pt - ga * xn - gb * yn
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.abs(w_pt) / (np.sqrt(ga * ga + gb * gb + cc * cc) * np.sqrt(xn * xn + yn * yn + 1.0))
 
 
 def _zbuffer_visible(u, v, z, footprint_px, w, h, tol: np.ndarray, fill_holes: bool = True,
@@ -333,6 +356,8 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
         raise InvalidInputError("the reconstruction has no oriented images", field="reconstruction")
     if cloud.n == 0:
         raise InvalidInputError("the cloud is empty", field="xyz")
+    from functools import cache
+
     from .preprocess import estimate_spacing
 
     spacing = params.point_spacing or (estimate_spacing(cloud.xyz) if cloud.n > 1 else 0.01)
@@ -342,47 +367,20 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
     k = max(1, int(params.max_views))
     W = np.zeros((cloud.n, k))
     C = np.zeros((cloud.n, k, 3))
-    scale16 = None
-    local_spacing = None
+    local_spacing = cache(lambda: _local_spacing(xyz, params.point_spacing))  # only for the z-buffer test
     for iid, im in reconstruction.images.items():
         cam = reconstruction.cameras[im.camera_id]
         img = images[iid] if images is not None and iid in images else read_image(im, image_root)
         if img.shape[0] != cam.height or img.shape[1] != cam.width:
             raise InvalidInputError(f"image {im.name} is {img.shape[1]}x{img.shape[0]} but its camera says "
                                     f"{cam.width}x{cam.height}", field="images")
-        s = 257.0 if img.dtype == np.uint8 else 1.0
-        scale16 = s if scale16 is None else scale16
-        u, v, z = project(xyz, cam, im.pose)
-        b = params.border_px
-        inside = (z > 0) & (u >= b) & (u <= cam.width - 1 - b) & (v >= b) & (v <= cam.height - 1 - b)
-        idx = np.flatnonzero(inside)
-        if idx.size == 0:
+        dm = depth_maps[iid] if depth_maps is not None and iid in depth_maps else None
+        seen_here = _visible_in_image(xyz, cam, im.pose, params, tol_abs, dm, local_spacing)
+        if seen_here is None:
             continue
-        ui, vi, zi = u[idx], v[idx], z[idx]
-        tol = tol_abs + params.depth_tolerance_rel * zi
-        if depth_maps is not None and iid in depth_maps:
-            vis, x0, y0, cw = depth_map_visible(depth_maps[iid], ui, vi, zi, tol, cam, params.min_cos,
-                                                params.depth_footprint_px)
-        else:
-            if local_spacing is None:
-                local_spacing = _local_spacing(xyz, params.point_spacing)
-            fp = 2.0 * 0.5 * (cam.fx + cam.fy) * local_spacing[idx] / zi
-            vis = _zbuffer_visible(ui, vi, zi, fp, cam.width, cam.height, tol, params.fill_holes, 0.5 * (cam.fx + cam.fy))
-            x0, y0, cw = _corners(ui, vi, cam.width, cam.height)
-        idx, x0, y0, cw = idx[vis], x0[vis], y0[vis], cw[vis]
-        ray = xyz[idx] - im.pose.center
-        dist2 = np.einsum("ij,ij->i", ray, ray)
-        wgt = 1.0 / np.maximum(dist2, 1e-12)
-        if normals is not None:
-            cosang = np.abs(np.einsum("ij,ij->i", normals[idx], ray)) / np.sqrt(np.maximum(dist2, 1e-24))
-            good = cosang >= params.min_cos
-            idx, x0, y0, cw, wgt = idx[good], x0[good], y0[good], cw[good], (wgt * cosang)[good]
-        col = sample_corners(img, x0, y0, cw)[:, :3] * s
-        # keep the k best views per point: replace the weakest slot when the new view is better
-        slot = np.argmin(W[idx], axis=1)
-        better = wgt > W[idx, slot]
-        W[idx[better], slot[better]] = wgt[better]
-        C[idx[better], slot[better]] = col[better]
+        idx, x0, y0, cw, wgt = _view_weights(xyz, normals, *seen_here, im.pose.center, params.min_cos)
+        col = sample_corners(img, x0, y0, cw)[:, :3] * (257.0 if img.dtype == np.uint8 else 1.0)
+        _keep_best_views(W, C, idx, wgt, col)
     seen = W.sum(axis=1) > 0
     rgb = (np.array(cloud.attrs["rgb"], dtype=np.float64) if "rgb" in cloud.attrs else np.zeros((cloud.n, 3)))
     blend = np.einsum("nk,nkc->nc", W[seen], C[seen]) / W[seen].sum(axis=1)[:, None]
@@ -396,3 +394,51 @@ def colorize(cloud: Cloud, reconstruction: Reconstruction, params: ColorizeParam
                            colorized=seen.astype(np.uint8), color_views=n_views.astype(np.uint8))
     return out.with_history(STAGE, {"images": len(reconstruction.images), "max_views": k, "spacing": spacing,
                                     "depth_tolerance": tol_abs})
+
+
+def _visible_in_image(xyz: np.ndarray, cam: Camera, pose: Pose, params: ColorizeParams, tol_abs: float,
+                      depth_map: np.ndarray | None, local_spacing):
+    """The points one image sees: projected inside the image (``params.border_px`` from its
+    edges) in front of the camera, then visible by the depth-map test
+    (:func:`depth_map_visible`) or, without a depth map, the cloud's own z-buffer
+    (:func:`_zbuffer_visible`, splats sized by ``local_spacing()``, metres). The depth tolerance
+    is ``tol_abs`` plus ``params.depth_tolerance_rel`` of the depth. Returns ``(idx, x0, y0,
+    corner weights)`` of the visible points, or None when no point projects inside."""
+    u, v, z = project(xyz, cam, pose)
+    b = params.border_px
+    inside = (z > 0) & (u >= b) & (u <= cam.width - 1 - b) & (v >= b) & (v <= cam.height - 1 - b)
+    idx = np.flatnonzero(inside)
+    if idx.size == 0:
+        return None
+    ui, vi, zi = u[idx], v[idx], z[idx]
+    tol = tol_abs + params.depth_tolerance_rel * zi
+    if depth_map is not None:
+        vis, x0, y0, cw = depth_map_visible(depth_map, ui, vi, zi, tol, cam, params.min_cos, params.depth_footprint_px)
+    else:
+        fp = 2.0 * 0.5 * (cam.fx + cam.fy) * local_spacing()[idx] / zi
+        vis = _zbuffer_visible(ui, vi, zi, fp, cam.width, cam.height, tol, params.fill_holes, 0.5 * (cam.fx + cam.fy))
+        x0, y0, cw = _corners(ui, vi, cam.width, cam.height)
+    return idx[vis], x0[vis], y0[vis], cw[vis]
+
+
+def _view_weights(xyz: np.ndarray, normals, idx, x0, y0, cw, center: np.ndarray, min_cos: float):
+    """Weight of each view: 1 / squared distance to the camera ``center``, times the cosine of
+    the viewing angle when the cloud has normals (views below ``min_cos`` dropped). Returns
+    ``(idx, x0, y0, corner weights, weight)`` of the views kept."""
+    ray = xyz[idx] - center
+    dist2 = np.einsum("ij,ij->i", ray, ray)
+    wgt = 1.0 / np.maximum(dist2, 1e-12)
+    if normals is not None:
+        cosang = np.abs(np.einsum("ij,ij->i", normals[idx], ray)) / np.sqrt(np.maximum(dist2, 1e-24))
+        good = cosang >= min_cos
+        idx, x0, y0, cw, wgt = idx[good], x0[good], y0[good], cw[good], (wgt * cosang)[good]
+    return idx, x0, y0, cw, wgt
+
+
+def _keep_best_views(W: np.ndarray, C: np.ndarray, idx, wgt, col) -> None:
+    """Keep the ``k`` best views per point in the slots of ``W`` (n, k) weights and ``C``
+    (n, k, 3) colours: a new view replaces the weakest slot when it weighs more."""
+    slot = np.argmin(W[idx], axis=1)
+    better = wgt > W[idx, slot]
+    W[idx[better], slot[better]] = wgt[better]
+    C[idx[better], slot[better]] = col[better]

@@ -216,40 +216,13 @@ def similarity_plane_icp(source_xyz: np.ndarray, target_xyz: np.ndarray, target_
     H = np.zeros((7, 7))
     fit = rmse = 0.0
     n_corr = 0
+    r = None
     it_total = 0
     for d in distances:
         d = float(d)
-        for _ in range(int(max_iterations)):
-            it_total += 1
-            p = src @ T[:3, :3].T + T[:3, 3]
-            dist, j = tree.query(p, distance_upper_bound=d, workers=-1)
-            ok = np.isfinite(dist)
-            n_corr = int(ok.sum())
-            if n_corr < 7:
-                break
-            pp, q, n = p[ok], tgt[j[ok]], nrm[j[ok]]
-            r = np.einsum("ij,ij->i", n, pp - q)
-            k = kernel_scale * d
-            w = np.where(np.abs(r) < k, (1 - (r / k) ** 2) ** 2, 0.0)
-            c = pp.mean(axis=0)
-            x = pp - c
-            J = np.column_stack([np.cross(x, n), n, np.einsum("ij,ij->i", n, x)])
-            H = J.T @ (J * w[:, None])
-            g = J.T @ (w * r)
-            try:
-                delta = -np.linalg.solve(H + 1e-12 * np.eye(7), g)
-            except np.linalg.LinAlgError:
-                break
-            R = _rodrigues(delta[:3])
-            s = 1.0 + delta[6]
-            D = np.eye(4)
-            D[:3, :3] = s * R
-            D[:3, 3] = c + delta[3:6] - s * R @ c
-            T = D @ T
-            move = np.linalg.norm(delta[:3]) * np.sqrt((x**2).sum(1).mean()) + np.linalg.norm(delta[3:6]) \
-                + abs(delta[6]) * np.sqrt((x**2).sum(1).mean())
-            if move < tolerance * d:
-                break
+        T, H, n_corr, r, its = _similarity_level(src, tgt, nrm, tree, T, (H, n_corr, r), d, int(max_iterations),
+                                                 kernel_scale, tolerance)
+        it_total += its
         inl = np.abs(r) < kernel_scale * d if n_corr >= 7 else np.zeros(0, bool)
         fit = float(n_corr / max(len(src), 1))
         rmse = float(np.sqrt(np.mean(r[inl] ** 2))) if inl.any() else float("nan")
@@ -260,3 +233,63 @@ def similarity_plane_icp(source_xyz: np.ndarray, target_xyz: np.ndarray, target_
                               correspondences=n_corr, information=H,
                               meta={"method": "similarity_point_to_plane", "kernel": "tukey", "levels": levels,
                                     "iterations": it_total})
+
+
+def _similarity_level(src, tgt, nrm, tree, T: np.ndarray, state, d: float, max_iterations: int, kernel_scale: float,
+                      tolerance: float):
+    """The iterations of :func:`similarity_plane_icp` at one correspondence distance ``d``:
+    nearest target point within ``d`` of each moved source point, one reweighted Gauss-Newton
+    step on the plane distances, until the update moves the points by less than
+    ``tolerance * d``, fewer than 7 correspondences remain or the system is singular.
+
+    ``state`` is ``(H, n_corr, r)`` of the previous level (normal matrix, correspondence count,
+    plane residuals), returned updated as ``(T, H, n_corr, r, iterations)``.
+    """
+    H, n_corr, r = state
+    its = 0
+    for _ in range(max_iterations):
+        its += 1
+        p = src @ T[:3, :3].T + T[:3, 3]
+        dist, j = tree.query(p, distance_upper_bound=d, workers=-1)
+        ok = np.isfinite(dist)
+        n_corr = int(ok.sum())
+        if n_corr < 7:
+            break
+        pp, q, n = p[ok], tgt[j[ok]], nrm[j[ok]]
+        r = np.einsum("ij,ij->i", n, pp - q)
+        H, g, c, x = _tukey_normal_equations(pp, n, r, kernel_scale * d)
+        try:
+            delta = -np.linalg.solve(H + 1e-12 * np.eye(7), g)
+        except np.linalg.LinAlgError:
+            break
+        T = _similarity_update(delta, c) @ T
+        spread = np.sqrt((x**2).sum(1).mean())
+        move = np.linalg.norm(delta[:3]) * spread + np.linalg.norm(delta[3:6]) + abs(delta[6]) * spread
+        if move < tolerance * d:
+            break
+    return T, H, n_corr, r, its
+
+
+def _tukey_normal_equations(pp: np.ndarray, n: np.ndarray, r: np.ndarray, k: float):
+    """The weighted normal equations ``H delta = -g`` of the linearised plane residuals ``r`` of
+    the points ``pp`` with target normals ``n``: Jacobian columns ``(x × n, n, n . x)`` for
+    (omega, tau, sigma), ``x = pp - c`` about the centroid ``c``, Tukey weights of width ``k``.
+    Returns ``(H (7, 7), g (7,), c, x)``."""
+    w = np.where(np.abs(r) < k, (1 - (r / k) ** 2) ** 2, 0.0)
+    c = pp.mean(axis=0)
+    x = pp - c
+    J = np.column_stack([np.cross(x, n), n, np.einsum("ij,ij->i", n, x)])
+    H = J.T @ (J * w[:, None])
+    g = J.T @ (w * r)
+    return H, g, c, x
+
+
+def _similarity_update(delta: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """(4, 4) similarity of the step ``delta = (omega, tau, sigma)`` about the centroid ``c``:
+    ``p' = c + (1 + sigma) R(omega) (p - c) + tau``."""
+    R = _rodrigues(delta[:3])
+    s = 1.0 + delta[6]
+    D = np.eye(4)
+    D[:3, :3] = s * R
+    D[:3, 3] = c + delta[3:6] - s * R @ c
+    return D

@@ -125,8 +125,7 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     """
     from workstation.interop.open3d import local_transform, require_open3d, world_transform
 
-    o3d = require_open3d()
-    reg = o3d.pipelines.registration
+    require_open3d()
     n = len(clouds)
     if n < 2:
         raise InvalidInputError(f"{n} scan(s) given; multi-scan registration needs 2 or more")
@@ -134,6 +133,27 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
         raise InvalidInputError(f"{len(params.initial_poses)} initial poses for {n} scans", field="initial_poses")
     if not 0 <= params.reference < n:
         raise InvalidInputError(f"reference {params.reference} out of range", field="reference")
+    edges, infos = _pair_edges(clouds, params)
+    origin = default_origin(clouds[params.reference].xyz)
+    voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
+    if voxel is None:
+        from .preprocess import estimate_voxel_size
+
+        voxel = estimate_voxel_size(clouds[params.reference].xyz - origin)
+    L = {(e.source, e.target): local_transform(e.transform, origin, origin) for e in edges}
+    P, kept_pairs = _optimise_pose_graph(n, edges, L, infos, voxel, params)
+    out_edges = [_edge_residuals(e, L[(e.source, e.target)], P, clouds[e.source].xyz.mean(axis=0) - origin, kept_pairs)
+                 for e in edges]
+    poses = [world_transform(p, origin, origin) for p in P]
+    return MultiwayResult(poses, out_edges, params.reference, {"voxel_size": voxel, "n_scans": n})
+
+
+def _pair_edges(clouds: list[Cloud], params: MultiwayParams) -> tuple[list[EdgeRecord], dict]:
+    """Register each consecutive pair (odometry edges, which must succeed) and, with
+    ``params.loop_closure``, every other pair (loop edges, kept only when they pass
+    ``params.loop_min_fitness``); from the initial poses when given (ICP only). Returns the
+    edges and their 6 x 6 information matrices by ``(i, j)``."""
+    n = len(clouds)
     edges: list[EdgeRecord] = []
     infos: dict = {}
     for i in range(n):
@@ -156,14 +176,20 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
             edges.append(EdgeRecord(i, j, "odometry" if odo else "loop", r.transform, r.fitness, r.inlier_rmse))
             infos[(i, j)] = r.information if r.information is not None else np.eye(6)
             log.info("edge %d->%d (%s): fitness %.3f", i, j, edges[-1].kind, r.fitness)
-    origin = default_origin(clouds[params.reference].xyz)
-    voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
-    if voxel is None:
-        from .preprocess import estimate_voxel_size
+    return edges, infos
 
-        voxel = estimate_voxel_size(clouds[params.reference].xyz - origin)
+
+def _optimise_pose_graph(n: int, edges: list[EdgeRecord], L: dict, infos: dict, voxel: float,
+                         params: MultiwayParams) -> tuple[list[np.ndarray], set]:
+    """Global pose-graph optimisation (Choi, Zhou & Koltun 2015; Open3D's Levenberg-Marquardt
+    with line processes): nodes start at the chained odometry (scan -> scan 0), loop edges are
+    uncertain and may be pruned. ``L`` holds the edges' local-frame transforms. Returns the
+    poses (local frame) relative to the reference scan and the ``(i, j)`` of the edges kept."""
+    from workstation.interop.open3d import require_open3d
+
+    o3d = require_open3d()
+    reg = o3d.pipelines.registration
     # chain odometry for initial poses (scan -> scan 0), local frame
-    L = {(e.source, e.target): local_transform(e.transform, origin, origin) for e in edges}
     pose0 = [np.eye(4)]
     for i in range(1, n):
         pose0.append(pose0[-1] @ invert(L[(i - 1, i)]))
@@ -183,16 +209,15 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     kept_pairs = {(e.source_node_id, e.target_node_id) for e in g.edges}
     P = [np.asarray(nd.pose) for nd in g.nodes]
     ref_inv = invert(P[params.reference])
-    P = [ref_inv @ p for p in P]
-    out_edges = []
-    for e in edges:
-        Tij = L[(e.source, e.target)]
-        # edge predicts x_j = Tij x_i; poses give x_j = inv(P_j) P_i x_i
-        D = invert(Tij) @ invert(P[e.target]) @ P[e.source]
-        c = clouds[e.source].xyz.mean(axis=0) - origin
-        moved = D[:3, :3] @ c + D[:3, 3] - c
-        out_edges.append(replace(e, rotation_residual_deg=rotation_angle_deg(D[:3, :3]),
-                                 translation_residual=float(np.linalg.norm(moved)),
-                                 kept=(e.source, e.target) in kept_pairs))
-    poses = [world_transform(p, origin, origin) for p in P]
-    return MultiwayResult(poses, out_edges, params.reference, {"voxel_size": voxel, "n_scans": n})
+    return [ref_inv @ p for p in P], kept_pairs
+
+
+def _edge_residuals(e: EdgeRecord, Tij: np.ndarray, P: list[np.ndarray], c: np.ndarray, kept_pairs: set) -> EdgeRecord:
+    """The edge with its disagreement with the optimised poses: the rotation (degrees) and the
+    displacement of the source scan's centroid ``c`` (local frame) of ``inv(Tij) inv(P_j) P_i``,
+    and whether the optimisation kept it."""
+    # edge predicts x_j = Tij x_i; poses give x_j = inv(P_j) P_i x_i
+    D = invert(Tij) @ invert(P[e.target]) @ P[e.source]
+    moved = D[:3, :3] @ c + D[:3, 3] - c
+    return replace(e, rotation_residual_deg=rotation_angle_deg(D[:3, :3]),
+                   translation_residual=float(np.linalg.norm(moved)), kept=(e.source, e.target) in kept_pairs)

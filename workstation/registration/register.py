@@ -182,23 +182,16 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
         When the result does not converge, the overlap (fitness) is below
         ``params.min_fitness`` or the RMSE is above ``params.max_rmse * voxel``.
     """
-    from workstation.interop.open3d import local_transform, points_to_legacy, world_transform
+    from workstation.interop.open3d import local_transform, world_transform
 
-    _check_cloud(source, "source")
-    _check_cloud(target, "target")
-    if source.crs and target.crs and source.crs != target.crs:
-        raise InvalidInputError("source and target have different CRSs",
-                                "reproject one of them first (ws convert --to-crs)", field="crs")
+    _check_pair(source, target)
     t_start = time.perf_counter()
     origin = default_origin(target.xyz)
     xs = source.xyz - origin
     xt = target.xyz - origin
     voxel = float(params.voxel_size) if params.voxel_size else estimate_voxel_size(xt)
     radii = Radii(voxel)
-    vps = params.viewpoint_source if params.viewpoint_source is not None else source.meta.get("scanner_position")
-    vpt = params.viewpoint_target if params.viewpoint_target is not None else target.meta.get("scanner_position")
-    vs = None if vps is None else np.asarray(vps, float) - origin
-    vt = None if vpt is None else np.asarray(vpt, float) - origin
+    vs, vt = _viewpoints(params, source, target, origin)
     fine_voxel = params.fine_voxel
     if fine_voxel is None and max(source.n, target.n) > params.fine_max_points:
         fine_voxel = voxel / (9.0 if params.method == "similarity" else 3.0)
@@ -209,39 +202,85 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     method = params.method
     need_coarse = method in ("fpfh_ransac", "fgr", "clique") or (method == "auto" and T0 is None)
     scale_coarse = method == "similarity" and T0 is None
-    fine_method = params.fine.method
     timings = {}
 
     t0 = time.perf_counter()
-    if fine_method == "voxel_plane" and not need_coarse and method != "similarity":
-        ps = pt = None
-    else:
-        # a source of unknown scale is prepared per scale hypothesis (coarse) or not at all (fine)
-        ps = None if method == "similarity" else prepare(
-            xs, radii, features=need_coarse, colors=_colors(source), fine_voxel=fine_voxel,
-            remove_outliers=params.remove_outliers, viewpoint=vs)
-        pt = prepare(xt, radii, features=need_coarse or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
-                     remove_outliers=params.remove_outliers, viewpoint=vt)
-        if need_coarse:
-            _check_downsampled(ps, voxel, "source")
-            _check_downsampled(pt, voxel, "target")
+    ps, pt = _prepare_pair(source, target, xs, xt, radii, params, need_coarse, scale_coarse, fine_voxel, vs, vt)
     timings["prepare"] = time.perf_counter() - t0
-
-    if need_coarse:
+    if need_coarse or scale_coarse:
         t0 = time.perf_counter()
-        T0, coarse_meta = _coarse(ps, pt, method, params)
-        meta.update(coarse_meta)
-        timings["coarse"] = time.perf_counter() - t0
-    elif scale_coarse:
-        t0 = time.perf_counter()
-        T0, coarse_meta = scale_search(xs, pt, params.coarse, viewpoint=vs, remove_outliers=params.remove_outliers)
+        if need_coarse:
+            T0, coarse_meta = _coarse(ps, pt, method, params)
+        else:
+            T0, coarse_meta = scale_search(xs, pt, params.coarse, viewpoint=vs, remove_outliers=params.remove_outliers)
         meta.update(coarse_meta)
         timings["coarse"] = time.perf_counter() - t0
     if T0 is None:
         T0 = np.eye(4)
 
     t0 = time.perf_counter()
-    if method == "similarity":
+    res = _fine(xs, xt, ps, pt, voxel, T0, params)
+    timings["fine"] = time.perf_counter() - t0
+    timings["total"] = time.perf_counter() - t_start
+
+    T = world_transform(res.transform, origin, origin)
+    fine_method = "similarity_point_to_plane" if method == "similarity" else params.fine.method
+    meta.update({"method": method, "fine_method": fine_method, "seconds": timings,
+                 **{k: v for k, v in res.meta.items() if k != "method"}})
+    out = RegistrationResult(transform=T, scale=res.scale, fitness=res.fitness, inlier_rmse=res.inlier_rmse,
+                             converged=res.converged, correspondences=res.correspondences,
+                             information=res.information, meta=meta)
+    check_result(out, voxel, params)
+    log.info("registered: fitness %.3f, rmse %.4g, %.1f s", out.fitness, out.inlier_rmse, timings["total"])
+    return out
+
+
+def _check_pair(source: Cloud, target: Cloud) -> None:
+    """Refuse a pair registration cannot use: either cloud unusable (:func:`_check_cloud`), or
+    both with a CRS and the CRSs different."""
+    _check_cloud(source, "source")
+    _check_cloud(target, "target")
+    if source.crs and target.crs and source.crs != target.crs:
+        raise InvalidInputError("source and target have different CRSs",
+                                "reproject one of them first (ws convert --to-crs)", field="crs")
+
+
+def _viewpoints(params: RegisterParams, source: Cloud, target: Cloud, origin: np.ndarray):
+    """The scanner positions of source and target relative to ``origin`` (or None): the given
+    ``params.viewpoint_*``, else the clouds' ``meta["scanner_position"]``. They orient normals."""
+    vps = params.viewpoint_source if params.viewpoint_source is not None else source.meta.get("scanner_position")
+    vpt = params.viewpoint_target if params.viewpoint_target is not None else target.meta.get("scanner_position")
+    vs = None if vps is None else np.asarray(vps, float) - origin
+    vt = None if vpt is None else np.asarray(vpt, float) - origin
+    return vs, vt
+
+
+def _prepare_pair(source: Cloud, target: Cloud, xs, xt, radii: Radii, params: RegisterParams, need_coarse: bool,
+                  scale_coarse: bool, fine_voxel, vs, vt):
+    """Downsample, clean and give normals (and FPFH features when a coarse stage runs) to both
+    clouds (:func:`prepare`); ``(None, None)`` when the voxel-plane fine stage alone runs, as it
+    works on the raw points. A source of unknown scale (``similarity``) is not prepared here:
+    the scale search prepares it per scale hypothesis."""
+    if params.fine.method == "voxel_plane" and not need_coarse and params.method != "similarity":
+        return None, None
+    ps = None if params.method == "similarity" else prepare(
+        xs, radii, features=need_coarse, colors=_colors(source), fine_voxel=fine_voxel,
+        remove_outliers=params.remove_outliers, viewpoint=vs)
+    pt = prepare(xt, radii, features=need_coarse or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
+                 remove_outliers=params.remove_outliers, viewpoint=vt)
+    if need_coarse:
+        _check_downsampled(ps, radii.voxel, "source")
+        _check_downsampled(pt, radii.voxel, "target")
+    return ps, pt
+
+
+def _fine(xs, xt, ps, pt, voxel: float, T0: np.ndarray, params: RegisterParams) -> RegistrationResult:
+    """The fine stage from ``T0``: similarity point-to-plane ICP (source of unknown scale, thinned
+    by count), voxel-plane ICP on the raw points, or multi-scale ICP (:func:`refine`) on the
+    prepared clouds; fitness is then the overlap at the widest ICP distance (:func:`_overlap`)."""
+    from workstation.interop.open3d import points_to_legacy
+
+    if params.method == "similarity":
         src_pts = xs
         if src_pts.shape[0] > params.fine_max_points:  # the source's scale is unknown: thin it by count
             src_pts = src_pts[np.random.default_rng(0).choice(src_pts.shape[0], params.fine_max_points, replace=False)]
@@ -249,7 +288,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
                                    [f * voxel for f in params.similarity_schedule], T0, params.fine.max_iterations,
                                    params.fine.kernel_scale)
         res = _overlap(res, points_to_legacy(src_pts), pt.full, params.similarity_schedule[0] * voxel)
-    elif fine_method == "voxel_plane":
+    elif params.fine.method == "voxel_plane":
         src_pts = xs if ps is None else np.asarray(ps.full.points)
         tgt_pts = xt if pt is None else np.asarray(pt.full.points)
         plane_voxel = max(voxel / 2.0, 4.0 * estimate_spacing(tgt_pts))
@@ -261,18 +300,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
         res = refine(ps.full, pt.full, voxel, T0, params.fine)
     if ps is not None:
         res = _overlap(res, ps.full, pt.full, params.fine.schedule[0] * voxel)
-    timings["fine"] = time.perf_counter() - t0
-    timings["total"] = time.perf_counter() - t_start
-
-    T = world_transform(res.transform, origin, origin)
-    meta.update({"method": method, "fine_method": "similarity_point_to_plane" if method == "similarity" else fine_method,
-                 "seconds": timings, **{k: v for k, v in res.meta.items() if k != "method"}})
-    out = RegistrationResult(transform=T, scale=res.scale, fitness=res.fitness, inlier_rmse=res.inlier_rmse,
-                             converged=res.converged, correspondences=res.correspondences,
-                             information=res.information, meta=meta)
-    check_result(out, voxel, params)
-    log.info("registered: fitness %.3f, rmse %.4g, %.1f s", out.fitness, out.inlier_rmse, timings["total"])
-    return out
+    return res
 
 
 def _overlap(res: RegistrationResult, src, tgt, d: float) -> RegistrationResult:

@@ -297,51 +297,72 @@ def point_to_plane_voxel(source: np.ndarray, target: np.ndarray, voxel: float, i
         limiter = threadpool_limits(1)
     except ImportError:  # pragma: no cover
         limiter = None
-    src32 = np.ascontiguousarray(src.T, dtype=np.float32)
-    n_src = src.shape[0]
-    n_chunks = max(1, min(int(threads), n_src // 50_000))
-    bounds = np.linspace(0, n_src, n_chunks + 1).astype(int)
-    chunks = [src32[:, a:b] for a, b in zip(bounds[:-1], bounds[1:])]
+    chunks = _source_chunks(src, threads)
     pool = None
-    if n_chunks > 1:
+    if len(chunks) > 1:
         from concurrent.futures import ThreadPoolExecutor
 
-        pool = ThreadPoolExecutor(n_chunks)
-    per = max(1, iterations // len(planes))
-    it_total = 0
-    conv = False
-    fit = rmse = 0.0
+        pool = ThreadPoolExecutor(len(chunks))
     try:
-        for li, vp in enumerate(planes):
-            n_it = per if li < len(planes) - 1 else iterations - it_total
-            c = vp.voxel
-            for _ in range(n_it):
-                it_total += 1
-                T32 = T.astype(np.float32)
-                if pool is None:
-                    parts = [_normal_equations(ch, T32, vp) for ch in chunks]
-                else:
-                    parts = list(pool.map(lambda ch: _normal_equations(ch, T32, vp), chunks))
-                H = sum(p[0] for p in parts)
-                g = sum(p[1] for p in parts)
-                n_inl = sum(p[2] for p in parts)
-                sse = sum(p[3] for p in parts)
-                fit = n_inl / max(n_src, 1)
-                if n_inl < 6:
-                    return FastICPResult(T, fit, float("nan"), it_total, False)
-                rmse = float(np.sqrt(sse / n_inl))
-                try:
-                    x = -np.linalg.solve(H, g)
-                except np.linalg.LinAlgError:
-                    return FastICPResult(T, fit, rmse, it_total, False)
-                T = _small_motion(x) @ T
-                step_small = np.abs(x[:3]).max() < 1e-4 and np.abs(x[3:]).max() < 1e-3 * c
-                conv = li == len(planes) - 1 and step_small
-                if np.abs(x[:3]).max() < tolerance and np.abs(x[3:]).max() < tolerance * c:
-                    break
+        return _iterate_levels(planes, chunks, pool, T, src.shape[0], iterations, tolerance)
     finally:
         if pool is not None:
             pool.shutdown()
         if limiter is not None:
             limiter.unregister() if hasattr(limiter, "unregister") else limiter.restore_original_limits()
+
+
+def _source_chunks(src: np.ndarray, threads: int) -> list[np.ndarray]:
+    """The source as float32 (3, n) column blocks, one per thread (at most ``threads``, and at
+    least 50,000 points each)."""
+    src32 = np.ascontiguousarray(src.T, dtype=np.float32)
+    n_src = src.shape[0]
+    n_chunks = max(1, min(int(threads), n_src // 50_000))
+    bounds = np.linspace(0, n_src, n_chunks + 1).astype(int)
+    return [src32[:, a:b] for a, b in zip(bounds[:-1], bounds[1:])]
+
+
+def _iterate_levels(planes: list[VoxelPlanes], chunks, pool, T: np.ndarray, n_src: int, iterations: int,
+                    tolerance: float) -> FastICPResult:
+    """The Gauss-Newton iterations over the plane maps, coarse to fine: ``iterations`` split
+    evenly over the levels (the last takes the rest); a level stops early when the update falls
+    below ``tolerance``; the run fails with fewer than 6 inliers or a singular system.
+    Converged: the last level's last step was small (1e-4 rad and 1e-3 of its voxel)."""
+    per = max(1, iterations // len(planes))
+    it_total = 0
+    conv = False
+    fit = rmse = 0.0
+    for li, vp in enumerate(planes):
+        n_it = per if li < len(planes) - 1 else iterations - it_total
+        c = vp.voxel
+        for _ in range(n_it):
+            it_total += 1
+            H, g, n_inl, sse = _summed_equations(chunks, T.astype(np.float32), vp, pool)
+            fit = n_inl / max(n_src, 1)
+            if n_inl < 6:
+                return FastICPResult(T, fit, float("nan"), it_total, False)
+            rmse = float(np.sqrt(sse / n_inl))
+            try:
+                x = -np.linalg.solve(H, g)
+            except np.linalg.LinAlgError:
+                return FastICPResult(T, fit, rmse, it_total, False)
+            T = _small_motion(x) @ T
+            step_small = np.abs(x[:3]).max() < 1e-4 and np.abs(x[3:]).max() < 1e-3 * c
+            conv = li == len(planes) - 1 and step_small
+            if np.abs(x[:3]).max() < tolerance and np.abs(x[3:]).max() < tolerance * c:
+                break
     return FastICPResult(T, fit, rmse, it_total, bool(conv))
+
+
+def _summed_equations(chunks, T32: np.ndarray, vp: VoxelPlanes, pool):
+    """:func:`_normal_equations` of every source chunk (in ``pool``'s threads when given), summed:
+    ``(H, g, inliers, sum of squared residuals)``."""
+    if pool is None:
+        parts = [_normal_equations(ch, T32, vp) for ch in chunks]
+    else:
+        parts = list(pool.map(lambda ch: _normal_equations(ch, T32, vp), chunks))
+    H = sum(p[0] for p in parts)
+    g = sum(p[1] for p in parts)
+    n_inl = sum(p[2] for p in parts)
+    sse = sum(p[3] for p in parts)
+    return H, g, n_inl, sse
