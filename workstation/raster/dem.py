@@ -608,7 +608,8 @@ def _pit_free(source, grid: GridSpec, dtm: np.ndarray, params: DemParams, chunk_
 _REC = np.dtype([("x", "f8"), ("y", "f8"), ("z", "f8"), ("cls", "u1"), ("rn", "u1")])
 
 
-def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, tile: int, buffer: int) -> tuple[np.ndarray, int]:
+def _build_tiled(source, params: DemParams, grid: GridSpec, method: str, chunk_size: int, tile: int,
+                 buffer: int) -> tuple[np.ndarray, int]:
     """Out-of-core gridding: points are spilled to one temporary file per tile (with a
     ``buffer``-cell overlap) in a single streaming pass, then each tile is gridded on its own
     and its core written into the output. Memory: one tile's points and grids, plus the
@@ -637,6 +638,7 @@ def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, til
             rec["cls"] = cls_a[keep] if cls_a is not None else 0
             rec["rn"] = rn_a[keep] if rn_a is not None else 1
             row, col, inside = grid.cell_index(rec["x"], rec["y"])
+            n_used += int((_used(c, params, method)[keep] & inside).sum())  # each point once, not per tile
             for k, (r0, r1, c0, c1) in enumerate(tiles):
                 m = inside & (row >= r0 - buffer) & (row < r1 + buffer) & (col >= c0 - buffer) & (col < c1 + buffer)
                 if m.any():
@@ -661,7 +663,6 @@ def _build_tiled(source, params: DemParams, grid: GridSpec, chunk_size: int, til
             except StageError:
                 continue  # no ground or no valid cell in this tile: it stays nodata
             out[r0:r1, c0:c1] = r.array[r0 - ra : r1 - ra, c0 - ca : c1 - ca]
-            n_used += int(r.meta["points"])
     if (params.kind in ("dtm", "chm")) and not has_cls:
         raise InvalidInputError(
             "the cloud has no classification, so ground points are unknown",
@@ -750,13 +751,19 @@ def _accumulate(source, params: DemParams, grid: GridSpec, method: str, chunk_si
         if gacc is not None:
             g = _ground(c, params.ground_classes)
             gacc.add(c.xyz[g, 0], c.xyz[g, 1], c.xyz[g, 2])
-            n_used += int(g.sum())
         if tacc is not None:
             m = _first_returns(c) if top_first else _noise_free(c)
             tacc.add(c.xyz[m, 0], c.xyz[m, 1], c.xyz[m, 2])
-            if gacc is None:
-                n_used += int(m.sum())
+        n_used += int(_used(c, params, method).sum())
     return gacc, tacc, n_used, crs
+
+
+def _used(c: Cloud, params: DemParams, method: str) -> np.ndarray:
+    """The points a DEM counts as used (``meta["points"]``): the ground points of a DTM or CHM,
+    else the top surface's (first returns for ``method="tin"``, all non-noise returns else)."""
+    if params.kind in ("dtm", "chm"):
+        return _ground(c, params.ground_classes)
+    return _first_returns(c) if method == "tin" else _noise_free(c)
 
 
 def _kind_surface(source, params: DemParams, grid: GridSpec, method: str, res: float, gacc, tacc,
@@ -849,7 +856,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
                n_points=survey.n_all if survey else None)
     user_params, params = params, _in_crs_units(params, units)
     if tiled:
-        arr, n_used = _build_tiled(source, params, grid, chunk_size, tile_cells, buffer_cells)
+        arr, n_used = _build_tiled(source, params, grid, method, chunk_size, tile_cells, buffer_cells)
         extra = {"tiles": f"{tile_cells} cells + {buffer_cells} overlap"}
     else:
         arr, n_used, crs = _build_in_memory(source, params, grid, method, res, chunk_size, box, crs)
