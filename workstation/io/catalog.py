@@ -113,13 +113,13 @@ def _is_copc(header) -> bool:
 
 def read_tile_info(path) -> TileInfo:
     """A file's :class:`TileInfo` from its header (no point is read)."""
-    from workstation.io.las import _crs_string, _open
+    from workstation.io.las import crs_string, open_las
 
     path = Path(path)
-    with _open(path) as reader:
+    with open_las(path) as reader:
         h = reader.header
         return TileInfo(path, tuple(float(v) for v in (*h.mins, *h.maxs)), int(h.point_count), int(h.point_format.id),
-                        _crs_string(h, path), _is_copc(h))
+                        crs_string(h, path), _is_copc(h))
 
 
 def _same_crs(a: str, b: str) -> bool:

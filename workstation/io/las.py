@@ -132,7 +132,7 @@ def _version_for(fmt: int, wanted) -> str:
 # reading
 
 
-def _wrap_open_error(path, exc) -> InvalidInputError:
+def wrap_open_error(path, exc) -> InvalidInputError:
     text = str(exc) or type(exc).__name__
     if "signature" in text.lower() or "LASF" in text:
         return InvalidInputError(
@@ -149,7 +149,7 @@ _READ_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4")
 _WRITE_VERSIONS = ("1.1", "1.2", "1.3", "1.4")
 
 
-def _check_raw_header(path: Path) -> None:
+def check_raw_header(path: Path) -> None:
     """Check the header fields laspy trusts blindly, from the raw bytes, before laspy opens the file.
 
     The point data record format (byte 104, its two high bits are LAZ compression flags)
@@ -162,7 +162,7 @@ def _check_raw_header(path: Path) -> None:
     except OSError as exc:
         raise InvalidInputError(f"cannot open: {exc.strerror or exc}", "check the path and its permissions", path=path) from None
     if head[:4] != b"LASF":
-        raise _wrap_open_error(path, ValueError("signature"))
+        raise wrap_open_error(path, ValueError("signature"))
     if len(head) < _HEADER_MIN:
         raise InvalidInputError(f"file of {len(head)} bytes is too small to hold a LAS header ({_HEADER_MIN}+ bytes)",
                                 "the file is truncated; get a complete copy", path=path, field="header")
@@ -222,7 +222,7 @@ def _count_error(path: Path, n: int, lo: int, hi: int) -> None:
         )
 
 
-def _laz_chunk_counts(path: Path, header):
+def laz_chunk_counts(path: Path, header):
     """(chunk point counts, whether the last count is exact) from the LAZ chunk table, or None.
 
     Variable-size chunk tables store every count. Fixed-size tables store the chunk size
@@ -260,7 +260,7 @@ def _laz_chunk_counts(path: Path, header):
 def _check_laz_count(path: Path, header) -> None:
     """Compare the header's point count with the LAZ chunk table (exact for formats 6-10 and
     variable-size chunks; within the last chunk's size for fixed-size chunks of formats 0-5)."""
-    found = _laz_chunk_counts(path, header)
+    found = laz_chunk_counts(path, header)
     if found is None:
         return
     counts, exact = found
@@ -288,7 +288,7 @@ def _vlr_records(vlrs) -> list[dict]:
     return out
 
 
-def _crs_string(header, path, identify: bool = True) -> str | None:
+def crs_string(header, path, identify: bool = True) -> str | None:
     """The file's CRS as "EPSG:code" when it is one, else WKT; None without one.
 
     ``identify``: a WKT without an EPSG identifier is searched for in PROJ's database (about
@@ -444,19 +444,19 @@ def _fill_pool():
         yield pool
 
 
-def _open(path):
+def open_las(path):
     """Open a LAS/LAZ reader; every header problem becomes an InvalidInputError naming the file."""
     laspy = _laspy()
-    _check_raw_header(path)
+    check_raw_header(path)
     try:
         return laspy.open(str(path))
     except Exception as exc:  # noqa: BLE001 - laspy raises many types (KeyError, struct.error ...) on corrupt headers
-        raise _wrap_open_error(path, exc) from None
+        raise wrap_open_error(path, exc) from None
 
 
 def _meta_and_crs(header, path):
     meta = {"las": _header_meta(header, path), "format": "laz" if header.are_points_compressed else "las"}
-    return meta, _crs_string(header, path)
+    return meta, crs_string(header, path)
 
 
 def _records(reader, path, n: int, chunk_size: int):
@@ -524,7 +524,7 @@ def _read_inside(path: Path, bounds, chunk_size: int | None) -> Cloud:
     """The points inside ``bounds``: the file streamed chunk by chunk, each chunk's raw records
     filtered, only the kept records held (compact) until one final fill."""
     laspy = _laspy()
-    with _open(path) as reader:
+    with open_las(path) as reader:
         header = reader.header
         _check_point_bytes(path, header)
         n = int(header.point_count)
@@ -561,7 +561,7 @@ def read(path, *, chunk_size: int | None = None, bounds=None) -> Cloud:
     path = Path(path)
     if bounds is not None:
         return _read_inside(path, bounds, chunk_size)
-    with _open(path) as reader:
+    with open_las(path) as reader:
         header = reader.header
         _check_point_bytes(path, header)
         n = int(header.point_count)
@@ -594,7 +594,7 @@ def read(path, *, chunk_size: int | None = None, bounds=None) -> Cloud:
 def read_header(path) -> dict:
     """Header facts without reading points: version, format, count, bounds, CRS, dims."""
     path = Path(path)
-    with _open(path) as reader:
+    with open_las(path) as reader:
         h = reader.header
         return {
             "version": str(h.version),
@@ -605,7 +605,7 @@ def read_header(path) -> dict:
             "scales": [float(v) for v in h.scales],
             "offsets": [float(v) for v in h.offsets],
             "compressed": bool(h.are_points_compressed),
-            "crs": _crs_string(h, path),
+            "crs": crs_string(h, path),
             "dimensions": list(h.point_format.dimension_names),
             "generating_software": h.generating_software,
             "system_identifier": h.system_identifier,
@@ -619,7 +619,7 @@ def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | N
     compressed chunk that holds ``start``); with ``bounds``, only the points of each chunk
     inside them (:func:`bounds_mask`; a chunk may then be empty)."""
     path = Path(path)
-    with _open(path) as reader:
+    with open_las(path) as reader:
         header = reader.header
         _check_point_bytes(path, header)
         meta, crs = _meta_and_crs(header, path)

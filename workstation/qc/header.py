@@ -20,17 +20,17 @@ def _read_header(path: Path):
     """The laspy header of ``path`` (VLRs and EVLRs included), after the raw-byte checks."""
     import laspy
 
-    from workstation.io.las import _check_raw_header, _wrap_open_error
+    from workstation.io.las import check_raw_header, wrap_open_error
 
     if format_of(path)[0] not in ("las", "laz"):
         raise InvalidInputError("--summary and --metadata read LAS/LAZ headers; this format has no point-free summary",
                                 "run ws info without --summary/--metadata", path=path, field="--summary")
-    _check_raw_header(path)
+    check_raw_header(path)
     try:
         with open(path, "rb") as f:
             return laspy.LasHeader.read_from(f, read_evlrs=True)
     except Exception as exc:  # noqa: BLE001 - laspy raises many types on corrupt headers
-        raise _wrap_open_error(path, exc) from None
+        raise wrap_open_error(path, exc) from None
 
 
 def _vlr_rows(vlrs) -> list[dict]:
@@ -66,9 +66,9 @@ def _copc_info_bytes(v) -> bytes:
 
 
 def _crs(h, path):
-    from workstation.io.las import _crs_string
+    from workstation.io.las import crs_string
 
-    crs = _crs_string(h, path, identify=False)
+    crs = crs_string(h, path, identify=False)
     info = crs_info(crs, identify=False)  # the code the file states: a database search takes 0.5 s
     if info is None:
         return crs, None
@@ -153,7 +153,7 @@ def pdal_metadata(path) -> dict:
     ``vlr_0``...), plus ``vlrs``/``evlrs`` lists and ``points_by_return``."""
     p = _check_readable(path)
     h = _read_header(p)
-    from workstation.io.las import _crs_string
+    from workstation.io.las import crs_string
 
     c = copc.summary(p)
     md = {
@@ -173,7 +173,7 @@ def pdal_metadata(path) -> dict:
         "software_id": h.generating_software,
         "system_id": h.system_identifier,
         "points_by_return": [int(v) for v in h.number_of_points_by_return],
-        "srs": _srs(_crs_string(h, p)),
+        "srs": _srs(crs_string(h, p)),
     }
     for i, axis in enumerate("xyz"):
         md[f"min{axis}"], md[f"max{axis}"] = float(h.mins[i]), float(h.maxs[i])

@@ -270,7 +270,7 @@ def _check_crs(h: _Header, vlrs: list[_Record], evlrs: list[_Record], crs_text, 
 def _check_point_data(h: _Header, size: int, laz_counts) -> list:
     """The header's point count against the points the file holds: its bytes for LAS (up to the
     first EVLR or internal waveform data), the chunk table for LAZ (``laz_counts`` from
-    :func:`workstation.io.las._laz_chunk_counts`: per-chunk counts, the last one exact or an
+    :func:`workstation.io.las.laz_chunk_counts`: per-chunk counts, the last one exact or an
     upper bound)."""
     if h.compressed:
         if laz_counts is None:
@@ -302,13 +302,13 @@ def _laspy_header(path: Path):
     """laspy's header (VLRs and EVLRs parsed), or an InvalidInputError."""
     import laspy
 
-    from workstation.io.las import _wrap_open_error
+    from workstation.io.las import wrap_open_error
 
     try:
         with open(path, "rb") as f:
             return laspy.LasHeader.read_from(f, read_evlrs=True)
     except Exception as exc:  # noqa: BLE001 - laspy raises many types on corrupt headers
-        raise _wrap_open_error(path, exc) from None
+        raise wrap_open_error(path, exc) from None
 
 
 def _check_raw(head: bytes) -> tuple | None:
@@ -675,9 +675,9 @@ class FormatCheck:
         found += _check_crs(h, vlrs, evlrs, crs, lh is not None)
         laz = None
         if h.compressed and lh is not None:
-            from workstation.io.las import _laz_chunk_counts
+            from workstation.io.las import laz_chunk_counts
 
-            laz = _laz_chunk_counts(self.path, lh)
+            laz = laz_chunk_counts(self.path, lh)
         found += _check_point_data(h, size, laz)
         self._head_findings += found
         if not any(x[0] == "error" and x[1] in _FATAL for x in found):
@@ -686,7 +686,7 @@ class FormatCheck:
 
     def _laspy(self, found: list):
         """laspy's header and the CRS string it parses ((None, None) when laspy cannot read it)."""
-        from workstation.io.las import _crs_string
+        from workstation.io.las import crs_string
 
         try:
             lh = _laspy_header(self.path)
@@ -695,7 +695,7 @@ class FormatCheck:
                 found.append(("error", "header", "a header LAS readers can parse", exc.message,
                               "laspy cannot read the header"))
             return None, None
-        return lh, _crs_string(lh, self.path)
+        return lh, crs_string(lh, self.path)
 
     def add(self, chunk: Cloud, source=None) -> None:
         """Accumulate the point checks over ``chunk``, the next points of this file (``source``,
