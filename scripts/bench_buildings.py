@@ -1,0 +1,138 @@
+"""Benchmark of `ws buildings`: speed, accuracy on analytic buildings, solar figures, real tiles.
+
+Prints one JSON line per result. Usage::
+
+    PYTHONPATH=. python scripts/bench_buildings.py speed [--buildings 500]   # buildings/min, LoD2 from classified points
+    PYTHONPATH=. python scripts/bench_buildings.py accuracy [--buildings 60] # IoU, tilt, azimuth, roof RMS per roof kind
+    PYTHONPATH=. python scripts/bench_buildings.py solar                     # clear-sky kWh/m2/year at 48 N
+    PYTHONPATH=. python scripts/bench_buildings.py real                      # ../shared/data/lidar urban tiles
+
+Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+DATA = Path(os.environ.get("WS_SHARED_DATA", REPO.parent / "shared" / "data"))
+
+
+def emit(**kw):
+    print(json.dumps(kw, default=float), flush=True)
+
+
+def speed(n: int, seed: int = 0, solar: bool = False):
+    """Footprints + planes + LoD1.2/LoD2.2 (no solar unless asked) on a simulated district."""
+    from workstation.buildings import synth
+    from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+
+    xyz, cls, _ = synth.district(n, seed=seed, density=8.0)
+    reconstruct_buildings(*synth.district(4, seed=1, density=8.0)[:2], BuildingsParams(solar=None))  # imports
+    t, c = time.perf_counter(), time.process_time()
+    r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None) if not solar else BuildingsParams())
+    dt, dc = time.perf_counter() - t, time.process_time() - c
+    emit(bench="speed", buildings=len(r.models), points=len(xyz), building_points=int((cls == 6).sum()), seconds=dt,
+         cpu_seconds=dc, buildings_per_min=len(r.models) / dt * 60, buildings_per_cpu_min=len(r.models) / dc * 60,
+         timings=r.timings, solar=solar, load=os.getloadavg()[0])
+
+
+def accuracy(n: int, seed: int = 5):
+    """Goals of issue 26 per roof kind on a district of analytic buildings (10 points/m2, 3 cm noise)."""
+    from workstation.buildings import synth
+    from workstation.buildings.export import cityjson_document, validate_cityjson
+    from workstation.buildings.models import is_watertight
+    from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+
+    xyz, cls, blds = synth.district(n, seed=seed, density=10.0, noise=0.03)
+    r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None))
+    rows = synth.evaluate(r.models, blds)
+    for kind in synth.KINDS:
+        k = [x for x in rows if x["kind"] == kind]
+        emit(bench="accuracy", kind=kind, buildings=len(k), found=sum(x["found"] for x in k),
+             iou_min=min(x["iou"] for x in k), iou_median=float(np.median([x["iou"] for x in k])),
+             iou_ge_0_9=float(np.mean([x["iou"] >= 0.9 for x in k])),
+             tilt_err_max_deg=max(x.get("tilt_err_deg", np.nan) for x in k),
+             azimuth_err_max_deg=max(x.get("azimuth_err_deg", np.nan) for x in k),
+             roof_rms_median_m=float(np.median([x.get("roof_rms_m", np.nan) for x in k])),
+             roof_rms_max_m=max(x.get("roof_rms_m", np.nan) for x in k),
+             roof_type_correct=float(np.mean([x.get("roof_type") == {"lshape": "flat"}.get(kind, kind) for x in k])))
+    doc = cityjson_document(r.models, r.solar_kwh_m2_year)
+    emit(bench="validity", watertight=float(np.mean([is_watertight(s) for m in r.models for s in m.lod2])),
+         cityjson_errors=len(validate_cityjson(doc)), buildings=len(r.models), truth=len(blds))
+
+
+def solar():
+    """Clear-sky annual irradiation (ESRA, hourly) on unshaded planes at 48 N 11 E."""
+    from workstation.buildings.solar import SolarParams, plane_irradiation
+
+    def n(t, a):
+        t, a = np.radians(t), np.radians(a)
+        return [np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)]
+
+    planes = {"horizontal": n(0, 0), "south_35": n(35, 180), "east_35": n(35, 90), "north_35": n(35, 0), "south_90": n(90, 180)}
+    for tl in (3.0, 3.5, 4.0):
+        for step in (60.0, 10.0):
+            v = plane_irradiation(np.array(list(planes.values())), None, SolarParams(latitude=48.0, longitude=11.0,
+                                                                                      linke_turbidity=tl, step_minutes=step))
+            emit(bench="solar", linke_turbidity=tl, step_minutes=step, **{k: round(float(x), 1) for k, x in zip(planes, v)})
+
+
+def real():
+    """`reconstruct_buildings` on the urban tiles (their own classes); counts and what happens."""
+    from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+    from workstation.buildings.export import cityjson_document, validate_cityjson
+    from workstation.buildings.models import is_watertight
+    from workstation.io import read_cloud
+
+    for name in ("sample_c.las", "lidarhd_extra_bytes.laz", "autzen_trim.las"):
+        path = DATA / "lidar" / name
+        if not path.exists():
+            emit(bench="real", file=name, skipped="absent")
+            continue
+        cloud = read_cloud(path)
+        cls = np.asarray(cloud.attrs.get("classification", np.zeros(cloud.n, np.uint8)))
+        t = time.perf_counter()
+        try:
+            r = reconstruct_buildings(cloud.xyz, cls, BuildingsParams(solar=None))
+        except Exception as exc:  # report what happens
+            emit(bench="real", file=name, points=cloud.n, building_points=int((cls == 6).sum()), error=str(exc))
+            continue
+        kinds = {}
+        for m in r.models:
+            kinds[m.roof_type] = kinds.get(m.roof_type, 0) + 1
+        emit(bench="real", file=name, points=cloud.n, building_points=int((cls == 6).sum()), buildings=len(r.models),
+             seconds=time.perf_counter() - t, roof_types=kinds, spacing_m=r.spacing,
+             watertight=float(np.mean([is_watertight(s) for m in r.models for s in m.lod2])),
+             cityjson_errors=len(validate_cityjson(cityjson_document(r.models, r.solar_kwh_m2_year))))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    s = sub.add_parser("speed")
+    s.add_argument("--buildings", type=int, default=500)
+    s.add_argument("--solar", action="store_true")
+    a = sub.add_parser("accuracy")
+    a.add_argument("--buildings", type=int, default=60)
+    sub.add_parser("solar")
+    sub.add_parser("real")
+    args = ap.parse_args()
+    if args.cmd == "speed":
+        speed(args.buildings, solar=args.solar)
+    elif args.cmd == "accuracy":
+        accuracy(args.buildings)
+    elif args.cmd == "solar":
+        solar()
+    else:
+        real()
+
+
+if __name__ == "__main__":
+    main()

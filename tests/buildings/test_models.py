@@ -1,0 +1,117 @@
+"""LoD1.2 / LoD2.2 models: watertight solids, roofs against the analytic roofs, roof types,
+CityJSON 2.0 structure and the validator's own checks."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from workstation.buildings import synth
+from workstation.buildings.export import cityjson_document, validate_cityjson
+from workstation.buildings.footprints import extract_footprints
+from workstation.buildings.models import (build_building, is_watertight, lower_envelope, prism, triangulate,
+                                          weld)
+from workstation.buildings.planes import segment_planes
+
+
+def _model(kind, seed=5, yaw=0.5):
+    rng = np.random.default_rng(seed)
+    b = synth.SynthBuilding(kind, (500.0, 800.0), 15.0, 9.5, yaw, 6.0, 3.5, 100.0)
+    pts = synth.sample_building(b, 10.0, 0.03, rng)
+    fps, _ = extract_footprints(pts[:, :2])
+    planes = segment_planes(pts)
+    return b, build_building(0, fps[0].polygon, pts, planes.labels, planes, 100.0, cell=0.3)
+
+
+def _roof_rms(b, m):
+    import shapely
+
+    g = np.stack(np.meshgrid(np.arange(-9, 9, 0.25), np.arange(-6, 6, 0.25)), -1).reshape(-1, 2)
+    xy = b.to_world(g)
+    inside = shapely.contains_xy(shapely.Polygon(m.footprint), xy[:, 0], xy[:, 1])
+    dz = synth.model_roof_z(m, xy[inside]) - b.roof_z(xy[inside])
+    return float(np.sqrt(np.nanmean(dz ** 2)))
+
+
+def test_prism_is_a_closed_solid():
+    s = prism(np.array([[0, 0], [4, 0], [4, 3], [0, 3]], float), 10.0, 16.0)
+    assert is_watertight(s)
+    tris, _ = triangulate(s)
+    import trimesh
+
+    assert trimesh.Trimesh(s.vertices, tris).volume == pytest.approx(72.0)
+
+
+@pytest.mark.parametrize("kind,rtype,faces", [("flat", "flat", 1), ("shed", "shed", 1), ("gabled", "gabled", 2),
+                                              ("hipped", "hipped", 4), ("lshape", "flat", 1)])
+def test_lod2_single_part_roofs(kind, rtype, faces):
+    b, m = _model(kind)
+    assert m.roof_type == rtype
+    assert len(m.roofs) == faces
+    assert len(m.lod2) == 1 and is_watertight(m.lod2[0]) and is_watertight(m.lod1)
+    assert _roof_rms(b, m) < 0.05
+    assert m.height == pytest.approx(np.nanpercentile(b.roof_z(b.to_world(
+        np.random.default_rng(0).uniform([-7.5, -4.75], [7.5, 4.75], (20000, 2)))), 70), abs=0.1)
+
+
+def test_lod2_multilevel_has_two_closed_parts():
+    b, m = _model("multilevel")
+    assert m.roof_type == "multilevel"
+    assert len(m.lod2) == 2 and all(is_watertight(s) for s in m.lod2)
+    tops = sorted(f.point[2] for f in m.roofs)
+    assert tops[1] - tops[0] == pytest.approx(3.0, abs=0.05)
+    assert _roof_rms(b, m) < 0.5  # the step edge is placed to about a third of the spacing
+
+
+def test_lower_envelope_of_a_hip_roof():
+    import shapely
+
+    sq = shapely.Polygon([(-5, -3), (5, -3), (5, 3), (-5, 3)])
+    s = 1.0  # slope
+    n = np.array([[0, -s, 1], [0, s, 1], [-s, 0, 1], [s, 0, 1]], float)  # rising from each edge
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    pts = np.array([[0, -3, 0], [0, 3, 0], [-5, 0, 0], [5, 0, 0]], float)
+    faces = lower_envelope(sq, n, pts)
+    area = {k: f.area for k, f in faces}
+    assert sum(area.values()) == pytest.approx(60.0)
+    assert area[2] == pytest.approx(9.0) and area[3] == pytest.approx(9.0)  # hip triangles 6 x 3 / 2
+    assert area[0] == pytest.approx(21.0) and area[1] == pytest.approx(21.0)  # trapezoids (10 + 4) x 3 / 2
+
+
+def test_weld_splits_t_junctions():
+    """A box whose top is split into two faces: the long walls must get the middle vertex."""
+    top1 = np.array([[0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
+    top2 = np.array([[1, 0, 1], [2, 0, 1], [2, 1, 1], [1, 1, 1]], float)
+    bottom = np.array([[0, 0, 0], [0, 1, 0], [2, 1, 0], [2, 0, 0]], float)
+    walls = [np.array([[0, 0, 0], [2, 0, 0], [2, 0, 1], [0, 0, 1]], float),
+             np.array([[2, 0, 0], [2, 1, 0], [2, 1, 1], [2, 0, 1]], float),
+             np.array([[2, 1, 0], [0, 1, 0], [0, 1, 1], [2, 1, 1]], float),
+             np.array([[0, 1, 0], [0, 0, 0], [0, 0, 1], [0, 1, 1]], float)]
+    s = weld([[top1], [top2], [bottom], *[[w] for w in walls]], ["RoofSurface"] * 2 + ["GroundSurface"] + ["WallSurface"] * 4)
+    assert len(s.vertices) == 10
+    assert len(s.faces[3][0]) == 5 and len(s.faces[5][0]) == 5  # front and back walls got the T vertex
+    assert is_watertight(s)
+
+
+def test_cityjson_document_is_valid_and_the_validator_catches_errors():
+    models = [_model(k, seed=i)[1] for i, k in enumerate(["gabled", "multilevel"])]
+    for i, m in enumerate(models):
+        object.__setattr__(m, "id", i)
+    doc = cityjson_document(models, [np.full(len(m.roofs), 1000.0) for m in models], "EPSG:25832")
+    assert validate_cityjson(doc) == []
+    assert doc["type"] == "CityJSON" and doc["version"] == "2.0"
+    assert doc["metadata"]["referenceSystem"] == "https://www.opengis.net/def/crs/EPSG/0/25832"
+    b1 = doc["CityObjects"]["building_1"]["geometry"]
+    assert [g["lod"] for g in b1] == ["1.2", "2.2"] and b1[1]["type"] == "CompositeSolid"
+    sem = doc["CityObjects"]["building_0"]["geometry"][1]["semantics"]
+    kinds = {s["type"] for s in sem["surfaces"]}
+    assert kinds == {"RoofSurface", "WallSurface", "GroundSurface"}
+    # decoded vertices reproduce the model coordinates to the millimetre
+    v = np.array(doc["vertices"]) * doc["transform"]["scale"] + doc["transform"]["translate"]
+    assert np.abs(v.min(axis=0) - np.vstack([m.lod1.vertices for m in models]).min(axis=0)).max() < 1e-3
+    broken = __import__("copy").deepcopy(doc)
+    broken["CityObjects"]["building_0"]["geometry"][1]["boundaries"][0].pop()  # drop a face: shell opens
+    assert any("not closed" in e for e in validate_cityjson(broken))
+    broken = __import__("copy").deepcopy(doc)
+    broken["vertices"][0] = [0.5, 1, 2]
+    assert any("integers" in e for e in validate_cityjson(broken))

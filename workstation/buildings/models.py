@@ -1,0 +1,577 @@
+"""LoD1.2 and LoD2.2 building models from footprints and roof planes.
+
+Levels of detail follow Biljecki, Ledoux & Stoter (2016), "An improved LOD specification for 3D
+building models" (the LoD x.y refinement used by CityJSON and 3DBAG):
+
+* **LoD1.2**: the footprint extruded from the ground height to a percentile of the roof point
+  heights (70th by default, as 3DBAG's ``b3_h_70p``), one closed solid.
+* **LoD2.2**: the roof planes intersected into roof faces, vertical walls down to the ground and
+  a ground face: one closed, watertight solid per building part.
+
+The roof is built as in geoflow / 3DBAG (Peters et al. 2022, "Automated 3D reconstruction of LoD2
+and LoD1 models for all 10 million buildings of the Netherlands") in a reduced form: every roof
+plane claims the raster cells where its points dominate; neighbouring planes whose heights
+differ at their shared border by more than the step tolerance start a new *part* (a step edge
+with a wall), planes meeting continuously stay in one part. Inside a part the roof is the lower
+envelope of its planes clipped to the part outline: exact for flat, shed, gabled, hipped and
+pyramid roofs and for any convex roof; planes whose envelope face disagrees with their own
+points are dropped. Faces are welded and T-junctions split so each part is a closed 2-manifold.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: Coordinate grid (m) to which part polygons are snapped, so that overlays leave no slivers.
+GRID = 1e-5
+
+#: Tilt (degrees) below which a roof plane counts as flat (drainage slopes are a few degrees).
+FLAT_TILT_DEG = 5.0
+
+
+@dataclass(frozen=True)
+class ModelParams:
+    """Parameters of :func:`build_models`.
+
+    Attributes
+    ----------
+    lod1_percentile : float
+        Percentile of the roof point heights used as the LoD1.2 block height (%).
+    max_roof_tilt_deg : float
+        Planes steeper than this are walls and not used for the roof (degrees).
+    min_plane_share : float
+        Smallest roof plane modelled, as a share of the building's roof-plane points (0-1):
+        LoD2.2 here models the main roof planes; pieces, dormers and chimneys below it are
+        left to their neighbours.
+    cell : float or None
+        Cell of the plane ownership raster (m); None uses the nominal point spacing.
+    """
+
+    lod1_percentile: float = 70.0
+    max_roof_tilt_deg: float = 70.0
+    min_plane_share: float = 0.05
+    cell: float | None = None
+
+
+@dataclass(frozen=True)
+class RoofFace:
+    """One roof face of the LoD2.2 model.
+
+    Attributes
+    ----------
+    polygon : (k, 2) float64
+        Exterior ring in plan (m, absolute), counter-clockwise.
+    normal : (3,) float64
+        Unit upward normal of its plane.
+    point : (3,) float64
+        A point of its plane (m).
+    part : int
+        Index of the building part it belongs to.
+    """
+
+    polygon: np.ndarray
+    normal: np.ndarray
+    point: np.ndarray
+    part: int
+
+    def z(self, xy: np.ndarray) -> np.ndarray:
+        n, p = self.normal, self.point
+        return p[2] - (n[0] * (xy[:, 0] - p[0]) + n[1] * (xy[:, 1] - p[1])) / n[2]
+
+    @property
+    def tilt_deg(self) -> float:
+        return float(np.degrees(np.arccos(min(1.0, abs(self.normal[2])))))
+
+    @property
+    def azimuth_deg(self) -> float:
+        return float(np.degrees(np.arctan2(self.normal[0], self.normal[1])) % 360.0)
+
+    @property
+    def area_m2(self) -> float:
+        """Sloped (true) area (m^2)."""
+        x, y = self.polygon[:, 0], self.polygon[:, 1]
+        plan = 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+        return float(plan / max(abs(self.normal[2]), 1e-9))
+
+
+@dataclass(frozen=True)
+class Solid:
+    """A closed polyhedron: vertices (v, 3) (m) and faces as lists of vertex index rings
+    (first ring outer, further rings holes), each with a semantic type (``RoofSurface``,
+    ``WallSurface``, ``GroundSurface``)."""
+
+    vertices: np.ndarray
+    faces: list
+    semantics: list
+
+
+@dataclass(frozen=True)
+class BuildingModel:
+    """LoD1.2 and LoD2.2 of one building.
+
+    Attributes
+    ----------
+    id : int
+    footprint : (k, 2) float64 (m)
+    ground : float
+        Ground height (m), the lowest DTM height along the footprint.
+    height : float
+        LoD1.2 roof height (m, absolute).
+    roof_type : str
+        ``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` or ``complex``.
+    lod1 : Solid
+    lod2 : list of Solid
+        One solid per part.
+    roofs : list of RoofFace
+    """
+
+    id: int
+    footprint: np.ndarray
+    ground: float
+    height: float
+    roof_type: str
+    lod1: Solid
+    lod2: list
+    roofs: list = field(default_factory=list)
+
+
+def prism(polygon: np.ndarray, z0: float, z1: float) -> Solid:
+    """Closed extruded block of a counter-clockwise polygon (k, 2) from z0 to z1 (m)."""
+    k = len(polygon)
+    v = np.vstack([np.column_stack([polygon, np.full(k, z0)]), np.column_stack([polygon, np.full(k, z1)])])
+    i = np.arange(k)
+    faces = [[list(i[::-1])], [list(i + k)]] + [[[j, (j + 1) % k, (j + 1) % k + k, j + k]] for j in range(k)]
+    return Solid(v, faces, ["GroundSurface", "RoofSurface"] + ["WallSurface"] * k)
+
+
+def halfplane_clip(poly: np.ndarray, a: float, b: float, c: float) -> np.ndarray:
+    """Sutherland-Hodgman clip of a convex polygon (k, 2) to a x + b y + c <= 0."""
+    if len(poly) == 0:
+        return poly
+    s = poly @ np.array([a, b]) + c
+    nxt = np.roll(np.arange(len(poly)), -1)
+    out = []
+    for i in range(len(poly)):
+        j = nxt[i]
+        if s[i] <= 0:
+            out.append(poly[i])
+        if (s[i] < 0 < s[j]) or (s[j] < 0 < s[i]):
+            t = s[i] / (s[i] - s[j])
+            out.append(poly[i] + t * (poly[j] - poly[i]))
+    return np.array(out).reshape(-1, 2)
+
+
+def lower_envelope(part, normals: np.ndarray, points: np.ndarray) -> list:
+    """Faces of the lower envelope of planes (normals (p, 3) up, points (p, 3)) over a shapely
+    polygon ``part``: [(plane index, shapely polygon)], each the part clipped to where that
+    plane is the lowest."""
+    import shapely
+
+    # z_i(x, y) = g_i . (x, y) + h_i
+    g = -normals[:, :2] / normals[:, 2:3]
+    h = points[:, 2] - np.einsum("ij,ij->i", g, points[:, :2])
+    x0, y0, x1, y1 = part.bounds
+    box = np.array([[x0 - 1, y0 - 1], [x1 + 1, y0 - 1], [x1 + 1, y1 + 1], [x0 - 1, y1 + 1]])
+    out = []
+    for i in range(len(normals)):
+        cell = box
+        for j in range(len(normals)):
+            if j != i:
+                cell = halfplane_clip(cell, *(g[i] - g[j]), h[i] - h[j])
+        if len(cell) < 3:
+            continue
+        piece = part.intersection(shapely.Polygon(cell))
+        for geom in getattr(piece, "geoms", [piece]):
+            if geom.geom_type == "Polygon" and geom.area > 1e-9:
+                out.append((i, shapely.orient_polygons(geom)))
+    return out
+
+
+def ownership_raster(polygon, xyz: np.ndarray, labels: np.ndarray, n_planes: int, cell: float):
+    """Plane owning each raster cell inside a shapely ``polygon``: the majority label of the
+    cell's points, and for cells without labelled points the label of the nearest such cell.
+
+    Returns (label grid (rows, cols) int64, -1 outside; origin (2,); cell centres (rows, cols, 2)).
+    """
+    import shapely
+    from scipy import ndimage
+
+    x0, y0, x1, y1 = polygon.bounds
+    origin = np.array([x0, y0])
+    cols, rows = max(1, int(math.ceil((x1 - x0) / cell))), max(1, int(math.ceil((y1 - y0) / cell)))
+    cx, cy = np.meshgrid(x0 + (np.arange(cols) + 0.5) * cell, y0 + (np.arange(rows) + 0.5) * cell)
+    inside = shapely.contains_xy(polygon, cx, cy)
+    grid = np.full((rows, cols), -1, np.int64)
+    ok = labels >= 0
+    ij = np.floor((xyz[ok, :2] - origin) / cell).astype(np.int64)
+    good = (ij[:, 0] >= 0) & (ij[:, 0] < cols) & (ij[:, 1] >= 0) & (ij[:, 1] < rows)
+    if good.any() and n_planes:
+        flat = ij[good, 1] * cols + ij[good, 0]
+        votes = np.bincount(flat * n_planes + labels[ok][good], minlength=rows * cols * n_planes).reshape(rows * cols, n_planes)
+        has = votes.sum(axis=1) > 0
+        grid.ravel()[has] = np.argmax(votes[has], axis=1)
+    if (grid >= 0).any():
+        _, (ii, jj) = ndimage.distance_transform_edt(grid < 0, return_indices=True)
+        grid = grid[ii, jj]
+    grid[~inside] = -1
+    return grid, origin, np.stack([cx, cy], axis=-1)
+
+
+def _plane_z(normals, points, idx, xy):
+    n, p = normals[idx], points[idx]
+    return p[:, 2] - (n[:, 0] * (xy[:, 0] - p[:, 0]) + n[:, 1] * (xy[:, 1] - p[:, 1])) / n[:, 2]
+
+
+def split_parts(grid, origin, cell, normals, points, eps):
+    """Part index per plane: planes meeting continuously (a ridge, a valley) share a part;
+    planes whose heights at their common cell borders differ by more than
+    ``3 eps + (tan a + tan b) cell`` (the plane threshold plus the height change over one cell
+    of border uncertainty) are separated by a step."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    p = len(normals)
+    pa, pb, mids = [], [], []
+    for a, b, off in ((grid[:, :-1], grid[:, 1:], (1.0, 0.5)), (grid[:-1, :], grid[1:, :], (0.5, 1.0))):
+        m = (a >= 0) & (b >= 0) & (a != b)
+        r, c = np.nonzero(m)
+        pa.append(a[m]), pb.append(b[m])
+        mids.append(origin + np.column_stack([c + off[0], r + off[1]]) * cell)
+    pa, pb, mids = np.concatenate(pa), np.concatenate(pb), np.concatenate(mids)
+    if not len(pa):
+        return np.arange(p) if p else np.zeros(0, int)
+    dz = np.abs(_plane_z(normals, points, pa, mids) - _plane_z(normals, points, pb, mids))
+    slope = np.hypot(normals[:, 0], normals[:, 1]) / normals[:, 2]
+    step = dz > 3 * eps + (slope[pa] + slope[pb]) * cell
+    key = np.minimum(pa, pb) * p + np.maximum(pa, pb)
+    tot = np.bincount(key, minlength=p * p)
+    stp = np.bincount(key, weights=step, minlength=p * p)
+    joined = np.flatnonzero((tot > 0) & (stp < 0.5 * tot))
+    g = coo_matrix((np.ones(len(joined)), (joined // p, joined % p)), shape=(p, p))
+    return connected_components(g, directed=False)[1]
+
+
+def part_polygons(footprint, grid, origin, cell, part_of_plane):
+    """Shapely polygons tiling the footprint, one list per part: each smaller part is its
+    traced raster region, regularised and clipped to the footprint, the largest part the rest."""
+    import shapely
+
+    from .footprints import regularize, trace_outline
+
+    parts = np.unique(part_of_plane)
+    if len(parts) == 1:
+        return {int(parts[0]): [footprint]}
+    from scipy import ndimage
+
+    cells = {int(q): int(np.isin(grid, np.flatnonzero(part_of_plane == q)).sum()) for q in parts}
+    order = sorted(cells, key=cells.get)
+    # parts tile the padded box: every cell (also outside the footprint) takes the nearest label,
+    # so neighbouring parts' outlines run through the same cell borders
+    full = np.pad(grid, 2, constant_values=-1)
+    _, (ii, jj) = ndimage.distance_transform_edt(full < 0, return_indices=True)
+    full = part_of_plane[np.maximum(full[ii, jj], 0)]
+    o2 = origin - 2 * cell
+    out, taken = {}, shapely.Polygon()
+    for q in order[:-1]:
+        mask = full == q
+        if cells[q] < 4:
+            continue
+        ring = trace_outline(mask.astype(float), o2, cell)
+        ring = regularize(ring, cell)
+        if len(ring) < 3:
+            continue
+        geom = shapely.set_precision(shapely.make_valid(shapely.Polygon(ring)).intersection(footprint).difference(taken), GRID)
+        polys = [g for g in getattr(geom, "geoms", [geom]) if g.geom_type == "Polygon" and g.area > 4 * cell * cell]
+        if polys:
+            out[q] = polys
+            taken = taken.union(shapely.MultiPolygon(polys))
+    rest = shapely.set_precision(footprint.difference(taken), GRID)
+    out[order[-1]] = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > cell * cell]
+    return out
+
+
+def _envelope_faces(poly, normals, points, grid, centres):
+    """Lower-envelope faces of a part; planes whose face covers under four raster cells, or
+    holds under half cells of their own label (an envelope the points contradict), are dropped
+    one at a time (smallest first) and the envelope recomputed."""
+    import shapely
+
+    use = np.arange(len(normals))
+    for _ in range(len(normals)):
+        faces = lower_envelope(poly, normals[use], points[use])
+        if len(use) == 1:
+            break
+        bad = []
+        area = np.bincount([k for k, _ in faces], [f.area for _, f in faces], minlength=len(use))
+        for k, face in faces:
+            inside = shapely.contains_xy(face, centres[..., 0], centres[..., 1]) & (grid != -1)
+            if inside.sum() < 4 or np.mean(grid[inside] == use[k]) < 0.5:  # under 4 cells, or contradicted
+                bad.append(k)
+        if not bad:
+            break
+        worst = min(bad, key=lambda k: area[k])
+        use = np.delete(use, worst)
+    return [(use[k], f) for k, f in faces]
+
+
+def _wall_rings(ring2d: np.ndarray, roof_xy: np.ndarray, roof_z: np.ndarray, ground: float, tol: float):
+    """Walls under the closed ring (k, 2) (counter-clockwise for outward normals): each edge
+    a -> b becomes [a_ground, b_ground, b_roof, (roof vertices on the edge, from b to a), a_roof]."""
+    out = []
+    k = len(ring2d)
+    for i in range(k):
+        a, b = ring2d[i], ring2d[(i + 1) % k]
+        d = b - a
+        L2 = float(d @ d)
+        if L2 < 1e-12:
+            continue
+        t = (roof_xy - a) @ d / L2
+        off = np.abs((roof_xy[:, 0] - a[0]) * d[1] - (roof_xy[:, 1] - a[1]) * d[0]) / math.sqrt(L2)
+        on = (off < tol) & (t > -1e-9) & (t < 1 + 1e-9)
+        ts, zs = t[on], roof_z[on]
+        za = zs[np.argmin(np.abs(ts))] if on.any() and np.min(np.abs(ts)) < 1e-6 else np.nan
+        zb = zs[np.argmin(np.abs(ts - 1))] if on.any() and np.min(np.abs(ts - 1)) < 1e-6 else np.nan
+        mid = (ts > 1e-9) & (ts < 1 - 1e-9)
+        order = np.argsort(-ts[mid])
+        top = [np.r_[b, zb]] + [np.r_[a + tt * d, zz] for tt, zz in zip(ts[mid][order], zs[mid][order])] + [np.r_[a, za]]
+        out.append(np.vstack([np.r_[a, ground], np.r_[b, ground], *top]))
+    return out
+
+
+def part_solid(poly, normals, points, ground, grid, centres, part_index):
+    """Closed LoD2.2 solid of one part polygon and its roof faces."""
+    faces = _envelope_faces(poly, normals, points, grid, centres) if len(normals) else []
+    if not faces:  # no usable plane over this part: a flat roof at its planes' mean height
+        c = poly.representative_point()
+        z = float(points[:, 2].mean()) if len(points) else ground + 3.0
+        normals, points = np.array([[0.0, 0.0, 1.0]]), np.array([[c.x, c.y, z]])
+        faces = lower_envelope(poly, normals, points)
+    roofs, rings, sem = [], [], []
+    for k, face in faces:
+        ext = np.asarray(face.exterior.coords)[:-1]
+        holes = [np.asarray(h.coords)[:-1] for h in face.interiors]
+        z = lambda xy: _plane_z(normals, points, np.full(len(xy), k), xy)
+        rings.append([np.column_stack([r, z(r)]) for r in [ext, *holes]])
+        sem.append("RoofSurface")
+        roofs.append(RoofFace(ext, normals[k], points[k], part_index))
+    roof3 = np.vstack([r for f in rings for r in f])
+    tol = 10 * GRID
+    import shapely
+
+    poly = shapely.orient_polygons(poly)
+    for ring in [np.asarray(poly.exterior.coords)[:-1]] + [np.asarray(h.coords)[:-1] for h in poly.interiors]:
+        for w in _wall_rings(ring, roof3[:, :2], roof3[:, 2], ground, tol):
+            rings.append([w])
+            sem.append("WallSurface")
+    base = [np.column_stack([r[::-1], np.full(len(r), ground)])
+            for r in [np.asarray(poly.exterior.coords)[:-1]] + [np.asarray(h.coords)[:-1] for h in poly.interiors]]
+    rings.append(base)
+    sem.append("GroundSurface")
+    return weld(rings, sem), roofs
+
+
+def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
+    """Solid from faces given as lists of (m, 3) rings: vertices closer than ``tol`` (m) are
+    merged, repeated vertices dropped, and every vertex lying on another face's edge is
+    inserted into that edge (no T-junctions), so shared edges match exactly."""
+    allv = np.vstack([r for f in faces for r in f])
+    key = np.round(allv / tol).astype(np.int64)
+    uniq, first, inv = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    V = allv[first]
+    out, pos = [], 0
+    for f in faces:
+        rings = []
+        for r in f:
+            idx = inv[pos:pos + len(r)].ravel()
+            pos += len(r)
+            idx = idx[np.r_[True, idx[1:] != idx[:-1]]]
+            if len(idx) > 1 and idx[0] == idx[-1]:
+                idx = idx[:-1]
+            rings.append(_split_edges(idx, V, tol))
+        out.append(rings)
+    return Solid(V, out, list(semantics))
+
+
+def _split_edges(idx: np.ndarray, V: np.ndarray, tol: float) -> list:
+    """Insert into each edge of the ring ``idx`` the vertices of V lying strictly inside it."""
+    a, b = V[idx], V[np.roll(idx, -1)]
+    d = b - a
+    L2 = np.einsum("ij,ij->i", d, d)
+    rel = V[None, :, :] - a[:, None, :]
+    t = np.einsum("evj,ej->ev", rel, d) / np.maximum(L2, 1e-18)[:, None]
+    perp = rel - t[..., None] * d[:, None, :]
+    on = (np.einsum("evj,evj->ev", perp, perp) < tol * tol) & (t > 1e-9) & (t < 1 - 1e-9)
+    ring = []
+    for e in range(len(idx)):
+        ring.append(int(idx[e]))
+        ins = np.flatnonzero(on[e])
+        ring += [int(v) for v in ins[np.argsort(t[e, ins])]]
+    return ring
+
+
+def triangulate(solid: Solid) -> tuple[np.ndarray, np.ndarray]:
+    """Triangles (t, 3) of a solid's faces (constrained Delaunay of each face projected on its
+    dominant plane, holes respected) and the face index of each triangle (t,)."""
+    import shapely
+
+    tris, owner = [], []
+    V = solid.vertices
+    for fi, rings in enumerate(solid.faces):
+        outer = V[rings[0]]
+        nrm = np.sum(np.cross(outer, np.roll(outer, -1, axis=0)), axis=0)  # Newell
+        drop = int(np.argmax(np.abs(nrm)))
+        ax = [i for i in range(3) if i != drop]
+        lookup = {}
+        for r in rings:
+            for v in r:
+                lookup[tuple(np.round(V[v, ax], 7))] = v
+        poly = shapely.Polygon(V[rings[0]][:, ax], [V[r][:, ax] for r in rings[1:]])
+        if len(rings[0]) == 3:
+            t = [list(rings[0])]
+        else:
+            t = []
+            try:
+                geoms = shapely.constrained_delaunay_triangles(poly).geoms
+            except shapely.errors.GEOSException:  # degenerate (collinear) ring: a fan
+                geoms = []
+                t = [[rings[0][0], rings[0][i], rings[0][i + 1]] for i in range(1, len(rings[0]) - 1)]
+            for g in geoms:
+                c = np.asarray(g.exterior.coords)[:3]
+                try:
+                    t.append([lookup[tuple(np.round(p, 7))] for p in c])
+                except KeyError:
+                    continue
+        t = np.array(t, np.int64).reshape(-1, 3)
+        if len(t):  # orient every triangle like the face (Newell normal)
+            tn = np.cross(V[t[:, 1]] - V[t[:, 0]], V[t[:, 2]] - V[t[:, 0]])
+            flip = tn @ nrm < 0
+            t[flip] = t[flip][:, ::-1]
+        tris.append(t)
+        owner.append(np.full(len(t), fi))
+    return np.vstack(tris), np.concatenate(owner)
+
+
+def is_watertight(solid: Solid) -> bool:
+    """Whether the triangulated solid is a closed, consistently oriented 2-manifold with a
+    positive volume (trimesh's checks)."""
+    import trimesh
+
+    tris, _ = triangulate(solid)
+    m = trimesh.Trimesh(solid.vertices, tris, process=False)
+    return bool(m.is_watertight and m.is_winding_consistent and m.volume > 0)
+
+
+def roof_type(faces: list, n_parts: int) -> str:
+    """``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` (several flat parts) or
+    ``complex``, from the faces that hold at least 5 % of the roof area."""
+    area = np.array([f.area_m2 for f in faces])
+    faces = [f for f, a in zip(faces, area) if a >= 0.05 * area.sum()]
+    n_parts = len({f.part for f in faces})
+    tilt = np.array([f.tilt_deg for f in faces])
+    sloped = tilt >= FLAT_TILT_DEG
+    if not sloped.any():
+        return "flat" if n_parts == 1 else "multilevel"
+    if n_parts > 1 or (~sloped).any():
+        return "complex"
+    az = np.array([f.azimuth_deg for f in faces])
+    planes = np.unique(np.round(np.column_stack([tilt, az]), 1), axis=0)
+    if len(planes) == 1:
+        return "shed"
+    if len(planes) == 2 and abs(((planes[0, 1] - planes[1, 1]) % 360) - 180) < 10:
+        return "gabled"
+    if len(planes) >= 3:
+        return "hipped"
+    return "complex"
+
+
+def _claim_unlabelled(xyz, local, normals, points, eps, cell):
+    """Give points on no plane (edges, a second flight strip offset in height) the plane
+    vertically nearest to them when that is within the step tolerance of :func:`split_parts`
+    (3 eps + tan(tilt) cell): closer than a step, it is the same roof surface."""
+    free = np.flatnonzero(local < 0)
+    if not len(free) or not len(normals):
+        return local
+    xy = xyz[free, :2]
+    dz = np.abs(np.stack([_plane_z(normals, points, np.full(len(free), q), xy) for q in range(len(normals))], 1)
+                - xyz[free, 2:3])
+    best = np.argmin(dz, axis=1)
+    slope = np.hypot(normals[:, 0], normals[:, 1]) / normals[:, 2]
+    ok = dz[np.arange(len(free)), best] < 3 * eps + slope[best] * cell
+    out = local.copy()
+    out[free[ok]] = best[ok]
+    return out
+
+
+def merge_building_planes(xyz, local, normals, eps, angle_deg):
+    """Merge the planes of one building that are the same plane (normals within ``angle_deg``,
+    each centroid within ``eps`` of the other plane) even where they do not touch (pieces of one
+    roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    from .planes import fit_plane
+
+    p = len(normals)
+    cen = np.array([xyz[local == q].mean(axis=0) for q in range(p)])
+    i, j = np.triu_indices(p, 1)
+    same = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
+    same &= np.abs(np.einsum("ij,ij->i", normals[i], cen[j] - cen[i])) < eps
+    same &= np.abs(np.einsum("ij,ij->i", normals[j], cen[i] - cen[j])) < eps
+    _, comp = connected_components(coo_matrix((np.ones(int(same.sum())), (i[same], j[same])), shape=(p, p)), directed=False)
+    local = np.where(local >= 0, comp[np.maximum(local, 0)], -1)
+    out_n, out_p = [], []
+    for q in range(comp.max() + 1):
+        pts = xyz[local == q]
+        n, d = fit_plane(pts)
+        c = pts.mean(axis=0)
+        out_n.append(n)
+        out_p.append(c - (n @ c + d) * n)
+    return local, np.array(out_n), np.array(out_p)
+
+
+def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.ndarray, planes, ground: float,
+                   params: ModelParams = ModelParams(), cell: float = 0.5) -> BuildingModel:
+    """LoD1.2 and LoD2.2 of one building from its footprint (k, 2), its points (m, 3), their
+    plane labels (m,) into ``planes`` (a :class:`~workstation.buildings.planes.RoofPlanes`) and
+    the ground height (m)."""
+    import shapely
+
+    from .footprints import _ccw
+
+    fp_xy = _ccw(np.asarray(footprint, float))
+    fp = shapely.Polygon(fp_xy)
+    height = float(np.percentile(xyz[:, 2], params.lod1_percentile)) if len(xyz) else ground
+    lod1 = prism(fp_xy, ground, max(height, ground + 0.1))
+    ids, counts = np.unique(labels[labels >= 0], return_counts=True)
+    if len(ids):
+        roof = planes.tilt_deg[ids] <= params.max_roof_tilt_deg
+        keep = ids[roof & (counts >= max(3, params.min_plane_share * counts[roof].sum()))]
+    else:
+        keep = ids
+    if len(keep):
+        local = np.full(len(xyz), -1, np.int64)
+        m = np.isin(labels, keep)
+        local[m] = np.searchsorted(keep, labels[m])
+        local, normals, points = merge_building_planes(xyz, local, planes.normals[keep], planes.threshold, planes.angle_deg)
+    else:  # no plane: a flat roof at the median height
+        c = fp.centroid
+        normals = np.array([[0.0, 0.0, 1.0]])
+        points = np.array([[c.x, c.y, float(np.median(xyz[:, 2])) if len(xyz) else height]])
+        local = np.zeros(len(xyz), np.int64)
+    local = _claim_unlabelled(xyz, local, normals, points, planes.threshold, cell)
+    grid, origin, centres = ownership_raster(fp, xyz, local, len(normals), cell)
+    part_of_plane = split_parts(grid, origin, cell, normals, points, planes.threshold)
+    solids, roofs = [], []
+    for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane).items():
+        sel = np.flatnonzero(part_of_plane == q)
+        lut = np.full(len(normals), -2, np.int64)
+        lut[sel] = np.arange(len(sel))
+        sub = np.where(grid >= 0, lut[np.maximum(grid, 0)], -1)
+        for poly in polys:
+            solid, faces = part_solid(poly, normals[sel], points[sel], ground, sub, centres, len(solids))
+            solids.append(solid)
+            roofs += faces
+    return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs, len(solids)), lod1, solids, roofs)

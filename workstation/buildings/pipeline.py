@@ -1,0 +1,228 @@
+"""The buildings stage: classified points in, footprints, roof planes, LoD1.2/LoD2.2 models and
+solar potential out (:func:`reconstruct_buildings`)."""
+
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from workstation.core.classes import ASPRSClass
+from workstation.core.errors import InvalidInputError, StageError
+
+from .footprints import Footprint, FootprintParams, extract_footprints, nominal_spacing
+from .models import ModelParams, build_building
+from .planes import PlaneParams, segment_planes
+from .solar import SolarParams
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class BuildingsParams:
+    """Parameters of :func:`reconstruct_buildings`.
+
+    Attributes
+    ----------
+    building_class, ground_class : int
+        ASPRS classes of roof points and ground points.
+    planes, footprints, models : PlaneParams, FootprintParams, ModelParams
+        Stage parameters (see each).
+    solar : SolarParams or None
+        Solar potential parameters; None skips the solar computation.
+    dtm_cell : float
+        Cell of the DTM gridded from the ground points (m).
+    dsm_cell : float or None
+        Cell of the DSM used for shading (m); None uses the nominal point spacing (at least 0.5 m).
+    """
+
+    building_class: int = int(ASPRSClass.BUILDING)
+    ground_class: int = int(ASPRSClass.GROUND)
+    planes: PlaneParams = field(default_factory=PlaneParams)
+    footprints: FootprintParams = field(default_factory=FootprintParams)
+    models: ModelParams = field(default_factory=ModelParams)
+    solar: SolarParams | None = field(default_factory=SolarParams)
+    dtm_cell: float = 1.0
+    dsm_cell: float | None = None
+
+
+@dataclass(frozen=True)
+class BuildingsResult:
+    """Everything :func:`reconstruct_buildings` made.
+
+    Attributes
+    ----------
+    models : list of BuildingModel
+    solar_kwh_m2_year : list of (r,) arrays
+        Annual irradiation of each roof face of each building (kWh/m^2/year; NaN when skipped).
+    footprint_source : str
+        ``points`` or ``given``.
+    timings : dict
+        Seconds per step.
+    spacing : float
+        Nominal point spacing of the building points (m).
+    coverage : dict
+        How footprints and points agree: ``building_points_outside`` (share of building points
+        in no footprint, 0-1) and ``footprints_without_points`` (count), given footprints
+        checked against the cloud.
+    """
+
+    models: list
+    solar_kwh_m2_year: list
+    footprint_source: str
+    timings: dict
+    spacing: float
+    coverage: dict = field(default_factory=dict)
+
+
+def ground_dtm(xyz: np.ndarray, cell: float):
+    """DTM (m) of ground points: mean height per cell, empty cells (under buildings) from the
+    nearest ground cell. Returns (z (rows, cols), origin (2,))."""
+    from scipy import ndimage
+
+    origin = xyz[:, :2].min(axis=0)
+    ij = np.floor((xyz[:, :2] - origin) / cell).astype(np.int64)
+    shape = (int(ij[:, 1].max()) + 1, int(ij[:, 0].max()) + 1)
+    flat = ij[:, 1] * shape[1] + ij[:, 0]
+    n = np.bincount(flat, minlength=shape[0] * shape[1])
+    s = np.bincount(flat, weights=xyz[:, 2], minlength=shape[0] * shape[1])
+    z = np.where(n > 0, s / np.maximum(n, 1), np.nan).reshape(shape)
+    empty = np.isnan(z)
+    if empty.any():
+        _, (ii, jj) = ndimage.distance_transform_edt(empty, return_indices=True)
+        z = z[ii, jj]
+    return z, origin
+
+
+def sample_grid(z: np.ndarray, origin: np.ndarray, cell: float, xy: np.ndarray) -> np.ndarray:
+    """Nearest-cell values of a raster at ``xy`` (m, 2), clamped to the raster."""
+    ij = np.floor((xy - origin) / cell).astype(np.int64)
+    return z[np.clip(ij[:, 1], 0, z.shape[0] - 1), np.clip(ij[:, 0], 0, z.shape[1] - 1)]
+
+
+def assign_to_footprints(xy: np.ndarray, polygons: list) -> np.ndarray:
+    """Footprint index (n,) of each point (-1 outside every footprint), via an STR-tree."""
+    import shapely
+
+    tree = shapely.STRtree([shapely.Polygon(p) for p in polygons])
+    pi, gi = tree.query(shapely.points(xy), predicate="intersects")
+    out = np.full(len(xy), -1, np.int64)
+    out[pi] = gi
+    return out
+
+
+def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: BuildingsParams = BuildingsParams(),
+                          footprints: list | None = None) -> BuildingsResult:
+    """Footprints, roof planes, LoD1.2/LoD2.2 models and solar potential of the buildings in a
+    classified cloud (``xyz`` (n, 3) in metres, ``classification`` (n,) ASPRS codes).
+
+    ``footprints`` (list of (k, 2) polygons, metres) are used instead of traced ones when given.
+    """
+    t: dict = {}
+    t0 = time.perf_counter()
+    cls = np.asarray(classification)
+    bmask = cls == params.building_class
+    if bmask.sum() < 10:
+        raise StageError("buildings", f"only {int(bmask.sum())} points of class {params.building_class}",
+                         "classify the cloud first (ws classify) or pass --classify")
+    bxyz = np.asarray(xyz, float)[bmask]
+    spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2])
+    if footprints is None:
+        fps, owner = extract_footprints(bxyz[:, :2], replace(params.footprints, spacing=spacing))
+        source = "points"
+    else:
+        if not footprints:
+            raise InvalidInputError("no footprint polygons given", field="footprints")
+        fps = [Footprint(np.asarray(p, float), "given") for p in footprints]
+        owner = assign_to_footprints(bxyz[:, :2], [f.polygon for f in fps])
+        source = "given"
+    t["footprints_s"] = time.perf_counter() - t0
+    coverage = {"building_points_outside": float(np.mean(owner < 0)),
+                "footprints_without_points": int(len(fps) - len(np.unique(owner[owner >= 0])))}
+    if source == "given" and coverage["building_points_outside"] > 0.2:
+        log.warning("%.0f %% of the building points lie outside the given footprints",
+                    100 * coverage["building_points_outside"])
+    models = _models(bxyz, owner, fps, xyz, cls, params, spacing, t)
+    solar = _solar(models, xyz, params, spacing, t)
+    t["total_s"] = time.perf_counter() - t0
+    return BuildingsResult(models, solar, source, t, spacing, coverage)
+
+
+def _models(bxyz, owner, fps, xyz, cls, params, spacing, t):
+    """One model per footprint with points, its roof planes segmented on its own points (so
+    the scan-line frame is local); ground heights from the DTM of the ground class."""
+    t1 = time.perf_counter()
+    gmask = cls == params.ground_class
+    if gmask.sum() >= 3:
+        dtm, dorigin = ground_dtm(np.asarray(xyz, float)[gmask], params.dtm_cell)
+    else:
+        log.warning("no ground points (class %d): walls reach down to each building's lowest point",
+                    params.ground_class)
+        dtm = None
+    order = np.argsort(owner, kind="stable")
+    bounds = np.searchsorted(owner[order], np.arange(len(fps) + 1))
+    cell = params.models.cell or spacing
+    models, t_planes = [], 0.0
+    for i, fp in enumerate(fps):
+        idx = order[bounds[i]:bounds[i + 1]]
+        if len(idx) < max(3, params.planes.min_points):
+            continue
+        pts = bxyz[idx]
+        tp = time.perf_counter()
+        planes = segment_planes(pts, params.planes)
+        t_planes += time.perf_counter() - tp
+        ground = float(sample_grid(dtm, dorigin, params.dtm_cell, fp.polygon).min()) if dtm is not None else float(pts[:, 2].min())
+        models.append(build_building(len(models), fp.polygon, pts, planes.labels, planes, ground, params.models, cell))
+    if not models:
+        raise StageError("buildings", "no footprint holds building points", "check the footprints' CRS and extent")
+    t["planes_s"] = t_planes
+    t["models_s"] = time.perf_counter() - t1 - t_planes
+    return models
+
+
+def _solar(models, xyz, params, spacing, t):
+    """Annual irradiation per roof face, shaded by the DSM of all points."""
+    from .solar import build_dsm, horizon_angles, plane_irradiation
+
+    if params.solar is None:
+        return [np.full(len(m.roofs), np.nan) for m in models]
+    t1 = time.perf_counter()
+    cell = params.dsm_cell or max(spacing, 0.5)
+    dsm, origin = build_dsm(np.asarray(xyz, float), cell)
+    faces = [f for m in models for f in m.roofs]
+    pts, owner = _face_samples(faces, cell)
+    hor = horizon_angles(dsm, origin, cell, pts, params.solar.sectors, params.solar.max_distance)
+    normals = np.array([f.normal for f in faces])[owner]
+    per_sample = plane_irradiation(normals, hor, params.solar)
+    per_face = np.bincount(owner, per_sample, minlength=len(faces)) / np.maximum(np.bincount(owner, minlength=len(faces)), 1)
+    out, k = [], 0
+    for m in models:
+        out.append(per_face[k:k + len(m.roofs)])
+        k += len(m.roofs)
+    t["solar_s"] = time.perf_counter() - t1
+    return out
+
+
+def _face_samples(faces, cell):
+    """Up to about nine points on each roof face (a grid inside it, else its representative
+    point), lifted by the DSM's own roughness over one cell diagonal so a face does not shade
+    itself: (points (s, 3), face index (s,))."""
+    import shapely
+
+    pts, owner = [], []
+    for i, f in enumerate(faces):
+        poly = shapely.Polygon(f.polygon)
+        step = max(np.sqrt(poly.area / 9.0), cell)
+        x0, y0, x1, y1 = poly.bounds
+        gx, gy = np.meshgrid(np.arange(x0 + step / 2, x1, step), np.arange(y0 + step / 2, y1, step))
+        xy = np.column_stack([gx.ravel(), gy.ravel()])
+        xy = xy[shapely.contains_xy(poly, xy[:, 0], xy[:, 1])]
+        if not len(xy):
+            rp = poly.representative_point()
+            xy = np.array([[rp.x, rp.y]])
+        lift = np.sqrt(2) * cell * np.hypot(f.normal[0], f.normal[1]) / max(f.normal[2], 1e-3) + 0.05
+        pts.append(np.column_stack([xy, f.z(xy) + lift]))
+        owner.append(np.full(len(xy), i))
+    return np.vstack(pts), np.concatenate(owner)

@@ -1,0 +1,422 @@
+"""Roof plane segmentation: normals, region growing, RANSAC, coplanar merging.
+
+The method follows the textbook chain for airborne laser scanning (Vosselman & Maas 2010,
+*Airborne and Terrestrial Laser Scanning*, ch. 2; Rabbani et al. 2006, "Segmentation of point
+clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
+
+1. Normals and a local noise figure from the principal components of each point's k nearest
+   neighbours (the smallest eigenvalue is the variance along the normal).
+2. Region growing on normals: neighbours are joined when both are locally planar, their normals
+   agree within ``angle_deg`` and the neighbour lies within the distance threshold of the
+   point's tangent plane. Growing is the connected components of that neighbour graph
+   (scipy.sparse.csgraph), so it runs without a Python loop over points.
+3. Sequential RANSAC inside each region with the textbook iteration bound
+   ``k = log(1 - p) / log(1 - w^m)`` (p the wanted confidence, w the inlier ratio, m = 3 points
+   per plane), adaptively tightened as better consensus sets are found (Hartley & Zisserman
+   2004, alg. 4.5), then a least-squares refit on the inliers.
+4. Planes that are coplanar (normals within ``angle_deg``, each other's points within the
+   threshold) and touch are merged; points left over (ridges, edges) join the nearest plane of
+   their neighbours when within the threshold.
+
+The distance threshold combines the noise and the spacing: ``eps = sqrt((3 sigma)^2 +
+(s tan(angle))^2)``: 3 sigma keeps 99.7 % of Gaussian noise and the second term is the offset a
+plane tilted by the angle tolerance makes over one point spacing ``s``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.errors import InvalidInputError
+
+
+@dataclass(frozen=True)
+class PlaneParams:
+    """Parameters of :func:`segment_planes`.
+
+    Attributes
+    ----------
+    k_neighbors : int
+        Neighbours used for normals and region growing (points).
+    noise : float or None
+        Standard deviation of the points along the surface normal (m); None estimates it from
+        the median local PCA residual.
+    spacing : float or None
+        Mean 3-D point spacing (m); None estimates it as the median nearest-neighbour distance.
+    angle_deg : float
+        Largest angle between normals of one plane (degrees), for growing and merging.
+    confidence : float
+        RANSAC probability p of drawing at least one all-inlier sample (0-1).
+    inlier_ratio : float
+        Initial guess w of the inlier fraction (0-1) for the iteration bound; adapted upwards.
+    min_points : int
+        Smallest plane kept (points).
+    max_planes_per_region : int
+        Planes extracted by sequential RANSAC from one grown region at most.
+    seed : int
+        Random seed of the RANSAC samples.
+    """
+
+    k_neighbors: int = 24
+    noise: float | None = None
+    spacing: float | None = None
+    angle_deg: float = 10.0
+    confidence: float = 0.999
+    inlier_ratio: float = 0.5
+    min_points: int = 20
+    max_planes_per_region: int = 6
+    seed: int = 0
+
+
+@dataclass(frozen=True)
+class RoofPlanes:
+    """Planes found in a cloud.
+
+    Attributes
+    ----------
+    labels : (n,) int64
+        Plane index per point, -1 for points on no plane.
+    normals : (p, 3) float64
+        Unit normals pointing up (z >= 0).
+    offsets : (p,) float64
+        Plane offsets d with ``normal . (x - origin) + d = 0`` (m).
+    origin : (3,) float64
+        Local origin subtracted from the coordinates before fitting (m).
+    rmse : (p,) float64
+        RMS distance of each plane's points to it (m).
+    counts : (p,) int64
+        Points per plane.
+    threshold : float
+        Distance threshold used (m).
+    noise, spacing : float
+        Noise sigma and point spacing used (m).
+    angle_deg : float
+        Angle tolerance used (degrees).
+    """
+
+    labels: np.ndarray
+    normals: np.ndarray
+    offsets: np.ndarray
+    origin: np.ndarray
+    rmse: np.ndarray
+    counts: np.ndarray
+    threshold: float
+    noise: float
+    spacing: float
+    angle_deg: float = 10.0
+
+    @property
+    def tilt_deg(self) -> np.ndarray:
+        """(p,) angle of each plane to the horizontal (degrees)."""
+        return np.degrees(np.arccos(np.clip(np.abs(self.normals[:, 2]), 0.0, 1.0)))
+
+    @property
+    def azimuth_deg(self) -> np.ndarray:
+        """(p,) direction each plane faces (downslope), clockwise from north (degrees, 0-360)."""
+        return azimuth_of(self.normals)
+
+    def height_at(self, plane: np.ndarray, xy: np.ndarray) -> np.ndarray:
+        """z (m) of planes ``plane`` (m,) at absolute positions ``xy`` (m, 2)."""
+        n = self.normals[plane]
+        d = self.offsets[plane]
+        x = xy - self.origin[:2]
+        return self.origin[2] - (n[:, 0] * x[:, 0] + n[:, 1] * x[:, 1] + d) / n[:, 2]
+
+
+def azimuth_of(normals: np.ndarray) -> np.ndarray:
+    """(p,) azimuth (degrees clockwise from north, 0-360) of up-pointing normals (p, 3)."""
+    return np.degrees(np.arctan2(normals[:, 0], normals[:, 1])) % 360.0
+
+
+def ransac_iterations(confidence: float, inlier_ratio: float, sample_size: int = 3) -> int:
+    """Iterations k so that a sample of ``sample_size`` inliers is drawn with probability
+    ``confidence``: k = log(1 - p) / log(1 - w^m) (Fischler & Bolles 1981).
+
+    Examples
+    --------
+    >>> ransac_iterations(0.99, 0.5, 3)
+    35
+    >>> ransac_iterations(0.999, 1.0, 3)
+    1
+    """
+    if not (0.0 < confidence < 1.0) or not (0.0 < inlier_ratio <= 1.0) or sample_size < 1:
+        raise InvalidInputError("needs 0 < confidence < 1, 0 < inlier_ratio <= 1 and sample_size >= 1",
+                                field="ransac")
+    good = inlier_ratio ** sample_size
+    if good >= 1.0:
+        return 1
+    return max(1, math.ceil(math.log(1.0 - confidence) / math.log(1.0 - good)))
+
+
+def distance_threshold(noise: float, spacing: float, angle_deg: float) -> float:
+    """eps = sqrt((3 noise)^2 + (spacing tan(angle))^2) (m), see the module docstring.
+
+    >>> round(distance_threshold(0.03, 0.5, 10.0), 4)
+    0.126
+    """
+    return float(math.hypot(3.0 * noise, spacing * math.tan(math.radians(angle_deg))))
+
+
+def scan_frame(xy: np.ndarray, k: int = 8):
+    """Anisotropy of airborne sampling: (unit scan-line direction (2,), along-line spacing a,
+    across-line spacing b) in metres. Along scan lines the ``k`` nearest neighbours lie nearly
+    all in one direction; then a is the median distance of the k-th neighbour over k / 2 (points
+    on both sides), and b = 1 / (density a) with the density counted over 2 m cells. Sampling
+    without a dominant direction gives b = a and direction (1, 0)."""
+    from scipy.spatial import cKDTree
+
+    d, i = cKDTree(xy).query(xy, k=k + 1)
+    v = (xy[i[:, 1:]] - xy[:, None, :]) / np.maximum(d[:, 1:, None], 1e-12)
+    w, e = np.linalg.eigh(np.einsum("nki,nkj->ij", v, v) / v.shape[0] / k)
+    a = float(np.median(d[:, k]) / (k / 2))
+    if w[1] < ANISOTROPY:  # offsets spread over directions: isotropic enough
+        return np.array([1.0, 0.0]), a, a, 1.0 / (a * a)
+    cells = np.unique(np.floor(xy / 2.0).astype(np.int64), axis=0)
+    density = len(xy) / (4.0 * len(cells))
+    return e[:, 1], a, float(max(a, 1.0 / (density * max(a, 1e-9)))), density
+
+
+#: Share of the neighbour directions along one axis above which sampling counts as scan lines
+#: (1 for perfectly aligned offsets, 0.5 for isotropic ones; the simulator's zigzag ALS gives 0.68).
+ANISOTROPY = 0.65
+
+
+def local_geometry(xyz: np.ndarray, k: int, chunk: int = 200_000, frame=None):
+    """Normals (n, 3, up), local residual sigma (n,) and the neighbour index (n, k).
+
+    PCA of each point's k nearest neighbours (itself included); the normal is the eigenvector
+    of the smallest eigenvalue, the residual its square root scaled by sqrt(k / (k - 3)) for the
+    three degrees of freedom of the fitted plane. With a scan ``frame`` from :func:`scan_frame`
+    the neighbours are searched with the along-line axis stretched by f = 4 pi density b^2 / k
+    (at most b / a): the k neighbours then span about two line spacings across, so they come
+    from several scan lines instead of one. A neighbourhood whose second eigenvalue is under 9
+    times the smallest (its spread across under 3 noise sigmas) has no defined normal and gets
+    an infinite sigma. Processed in chunks (memory bounded).
+    """
+    from scipy.spatial import cKDTree
+
+    k = int(min(k, len(xyz)))
+    q = xyz
+    if frame is not None and frame[2] > frame[1]:
+        u, a, b, density = frame
+        f = min(b / a, max(1.0, 4 * math.pi * density * b * b / k))
+        along = xyz[:, :2] @ u
+        q = xyz + np.outer(along * (f - 1.0), np.r_[u, 0.0])
+    tree = cKDTree(q)
+    _, idx = tree.query(q, k=k)
+    idx = idx.reshape(len(xyz), k)
+    normals = np.empty((len(xyz), 3))
+    sigma = np.empty(len(xyz))
+    scale = math.sqrt(k / max(k - 3, 1))
+    for s in range(0, len(xyz), chunk):
+        nb = xyz[idx[s:s + chunk]]
+        c = nb - nb.mean(axis=1, keepdims=True)
+        cov = np.einsum("nki,nkj->nij", c, c) / k
+        w, v = np.linalg.eigh(cov)
+        nrm = v[:, :, 0]
+        nrm *= np.where(nrm[:, 2:3] < 0, -1.0, 1.0)
+        normals[s:s + chunk] = nrm
+        sigma[s:s + chunk] = np.sqrt(np.maximum(w[:, 0], 0.0)) * scale
+        # a neighbourhood along one scan line has no defined normal: call it non-planar
+        linear = w[:, 1] < 9.0 * w[:, 0]
+        sigma[s:s + chunk][linear] = np.inf
+    return normals, sigma, idx
+
+
+def fit_plane(pts: np.ndarray):
+    """Least-squares plane of (m, 3) points: unit normal (up) and offset d (n . x + d = 0)."""
+    c = pts.mean(axis=0)
+    _, _, vt = np.linalg.svd(pts - c, full_matrices=False)
+    n = vt[-1]
+    if n[2] < 0:
+        n = -n
+    return n, -float(n @ c)
+
+
+def ransac_plane(pts: np.ndarray, eps: float, params: PlaneParams, rng: np.random.Generator):
+    """Best plane of ``pts`` (m, 3) by RANSAC with the adaptive textbook bound, refitted by
+    least squares on its inliers. Returns (normal, d, inlier mask)."""
+    m = len(pts)
+    w = params.inlier_ratio
+    k_max = ransac_iterations(params.confidence, w)
+    best_n, best_d, best_count = None, 0.0, -1
+    drawn = 0
+    while drawn < k_max:
+        batch = min(k_max - drawn, 256)
+        drawn += batch
+        s = rng.integers(0, m, size=(batch, 3))
+        a, b, c = pts[s[:, 0]], pts[s[:, 1]], pts[s[:, 2]]
+        n = np.cross(b - a, c - a)
+        nn = np.linalg.norm(n, axis=1)
+        ok = nn > 1e-12
+        if not ok.any():
+            continue
+        n = n[ok] / nn[ok, None]
+        d = -np.einsum("ij,ij->i", n, a[ok])
+        counts = (np.abs(pts @ n.T + d) < eps).sum(axis=0)
+        j = int(np.argmax(counts))
+        if counts[j] > best_count:
+            best_n, best_d, best_count = n[j], d[j], int(counts[j])
+            w = max(w, best_count / m)
+            k_max = min(k_max, ransac_iterations(params.confidence, min(w, 1.0)))
+    if best_n is None:
+        return None, 0.0, np.zeros(m, bool)
+    inl = np.abs(pts @ best_n + best_d) < eps
+    for _ in range(2):  # refit on the consensus set, then re-select with the refined plane
+        n, d = fit_plane(pts[inl])
+        new = np.abs(pts @ n + d) < eps
+        if new.sum() < 3:
+            break
+        inl = new
+    return n, d, inl
+
+
+def _grow_regions(xyz, normals, sigma, idx, eps, spacing, angle_deg):
+    """Region growing as connected components of the smooth-neighbour graph (labels (n,), -1 off)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    n, k = idx.shape
+    planar = sigma < eps / 1.5
+    i = np.repeat(np.arange(n), k - 1)
+    j = idx[:, 1:].ravel()
+    diff = xyz[j] - xyz[i]
+    ok = planar[i] & planar[j]
+    ok &= np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
+    ok &= np.abs(np.einsum("ij,ij->i", normals[i], diff)) < eps
+    ok &= np.einsum("ij,ij->i", diff, diff) < (3.0 * spacing) ** 2
+    g = coo_matrix((np.ones(int(ok.sum()), np.int8), (i[ok], j[ok])), shape=(n, n))
+    _, lab = connected_components(g, directed=False)
+    lab = np.where(planar, lab, -1)
+    return lab
+
+
+def _ransac_regions(xyz, regions, eps, params):
+    """Sequential RANSAC in every grown region; returns point labels and (normals, offsets)."""
+    rng = np.random.default_rng(params.seed)
+    labels = np.full(len(xyz), -1, np.int64)
+    normals, offsets = [], []
+    valid = regions >= 0
+    order = np.argsort(regions[valid], kind="stable")
+    ids = np.flatnonzero(valid)[order]
+    uniq, start, count = np.unique(regions[valid][order], return_index=True, return_counts=True)
+    for s, c in zip(start[count >= params.min_points], count[count >= params.min_points]):
+        members = ids[s:s + c]
+        for _ in range(params.max_planes_per_region):
+            if len(members) < params.min_points:
+                break
+            nrm, d, inl = ransac_plane(xyz[members], eps, params, rng)
+            if nrm is None or inl.sum() < params.min_points:
+                break
+            labels[members[inl]] = len(normals)
+            normals.append(nrm)
+            offsets.append(d)
+            members = members[~inl]
+    return labels, np.array(normals).reshape(-1, 3), np.array(offsets, float)
+
+
+def _merge_coplanar(xyz, labels, normals, offsets, idx, eps, angle_deg):
+    """Union touching planes whose normals agree and where the smaller plane's centroid lies on
+    the larger plane (the larger one is the better determined)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    p = len(normals)
+    if p < 2:
+        return labels
+    a = np.repeat(labels, idx.shape[1] - 1)
+    b = labels[idx[:, 1:].ravel()]
+    keep = (a >= 0) & (b >= 0) & (a != b)
+    pairs = np.unique(np.sort(np.column_stack([a[keep], b[keep]]), axis=1), axis=0)
+    if not len(pairs):
+        return labels
+    on = labels >= 0
+    cnt = np.bincount(labels[on], minlength=p).astype(float)
+    cen = np.column_stack([np.bincount(labels[on], xyz[on, c], minlength=p) for c in range(3)]) / np.maximum(cnt, 1)[:, None]
+    pa, pb = pairs[:, 0], pairs[:, 1]
+    same = np.einsum("ij,ij->i", normals[pa], normals[pb]) > math.cos(math.radians(angle_deg))
+    big = np.where(cnt[pa] >= cnt[pb], pa, pb)  # the better-determined plane
+    small = np.where(cnt[pa] >= cnt[pb], pb, pa)
+    same &= np.abs(np.einsum("ij,ij->i", normals[big], cen[small]) + offsets[big]) < eps
+    g = coo_matrix((np.ones(int(same.sum())), (pa[same], pb[same])), shape=(p, p))
+    _, comp = connected_components(g, directed=False)
+    return np.where(labels >= 0, comp[np.maximum(labels, 0)], -1)
+
+
+def _refit(xyz, labels, min_points):
+    """Contiguous labels, least-squares planes, counts and RMS of every plane with enough points."""
+    cnt = np.bincount(labels[labels >= 0]) if (labels >= 0).any() else np.zeros(0, int)
+    keep = np.flatnonzero(cnt >= min_points)
+    remap = np.full(len(cnt) + 1, -1, np.int64)
+    remap[keep] = np.arange(len(keep))
+    labels = remap[labels]  # -1 maps through the last entry
+    order = np.argsort(labels, kind="stable")
+    lab_sorted = labels[order]
+    bounds = np.searchsorted(lab_sorted, np.arange(len(keep) + 1))
+    normals, offsets, rmse = np.zeros((len(keep), 3)), np.zeros(len(keep)), np.zeros(len(keep))
+    for q in range(len(keep)):
+        pts = xyz[order[bounds[q]:bounds[q + 1]]]
+        normals[q], offsets[q] = fit_plane(pts)
+        rmse[q] = float(np.sqrt(np.mean((pts @ normals[q] + offsets[q]) ** 2)))
+    return labels, normals, offsets, rmse, np.bincount(labels[labels >= 0], minlength=len(keep))
+
+
+def _assign_leftovers(xyz, labels, normals, offsets, idx, eps, rounds: int = 2):
+    """Give unlabelled points the closest plane among their neighbours' planes when within eps."""
+    for _ in range(rounds):
+        free = np.flatnonzero(labels < 0)
+        if not len(free) or not len(normals):
+            break
+        cand = labels[idx[free]]  # (u, k)
+        has = cand >= 0
+        c = np.maximum(cand, 0)
+        dist = np.abs(np.einsum("ukj,uj->uk", normals[c], xyz[free]) + offsets[c])
+        dist[~has] = np.inf
+        best = np.argmin(dist, axis=1)
+        dmin = dist[np.arange(len(free)), best]
+        ok = dmin < eps
+        if not ok.any():
+            break
+        new = labels.copy()
+        new[free[ok]] = cand[ok, best[ok]]
+        labels = new
+    return labels
+
+
+def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> RoofPlanes:
+    """Planes of a cloud of roof points (n, 3) (m) by region growing, RANSAC and merging.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> xy = rng.uniform(0, 10, (2000, 2))
+    >>> z = np.where(xy[:, 1] < 5, 0.5 * xy[:, 1], 5 - 0.5 * (xy[:, 1] - 5)) + rng.normal(0, 0.02, 2000)
+    >>> r = segment_planes(np.column_stack([xy, z]))
+    >>> len(r.normals), sorted(np.round(r.tilt_deg).astype(int).tolist())
+    (2, [27, 27])
+    """
+    xyz = np.asarray(xyz, float)
+    if xyz.ndim != 2 or xyz.shape[1] != 3 or len(xyz) < 3:
+        raise InvalidInputError("plane segmentation needs an (n, 3) array of at least 3 points", field="xyz")
+    origin = xyz.min(axis=0)
+    loc = xyz - origin
+    frame = scan_frame(loc[:, :2])
+    normals, sigma, idx = local_geometry(loc, params.k_neighbors, frame=frame)
+    spacing = params.spacing
+    if spacing is None:  # the across-line spacing bounds how far neighbours may be
+        spacing = frame[2] if frame[2] > frame[1] else float(np.median(np.linalg.norm(loc[idx[:, 1]] - loc, axis=1)))
+    noise = params.noise if params.noise is not None else float(np.median(sigma[np.isfinite(sigma)]))
+    eps = distance_threshold(noise, spacing, params.angle_deg)
+    regions = _grow_regions(loc, normals, sigma, idx, eps, spacing, params.angle_deg)
+    labels, pn, pd = _ransac_regions(loc, regions, eps, params)
+    labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
+    labels, pn, pd, _, _ = _refit(loc, labels, params.min_points)
+    labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
+    labels, pn, pd, _, _ = _refit(loc, labels, params.min_points)
+    # pieces of one plane split by a gap of unassigned points touch only now
+    labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
+    labels, pn, pd, rmse, counts = _refit(loc, labels, params.min_points)
+    return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg)
