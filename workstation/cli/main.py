@@ -44,6 +44,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "sfm": ("workstation.cli.sfm:sfm", "Orient photos and build a sparse cloud (pycolmap); georeference with GCPs."),
     "run": ("workstation.cli.run:run", "Process a project (project.toml): every stage over every chunk, on a Dask cluster."),
     "qc": ("workstation.cli.qc:qc", "Check a LiDAR delivery against USGS QL0-QL3 or ASPRS classes: format, density, voids, swath DZ, NVA/VVA."),
+    "publish": ("workstation.cli.publish:publish", "Publish products as a static web viewer (COPC streamed by level of detail, maps, cameras); --serve."),
+    "strip-adjust": ("workstation.cli.strip_adjust:strip_adjust", "Boresight calibration and strip adjustment of overlapping ALS flight lines."),
+    "buildings": ("workstation.cli.buildings:buildings", "Roof planes, footprints, LoD1.2/LoD2.2 models (CityJSON, glTF) and rooftop solar potential."),
     "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU plane sweep or CUDA PatchMatch) and fusion."),
 }
 

@@ -88,6 +88,8 @@ def _xy(ctx, param, value):
 @click.option("--line-bias", "line_bias", multiple=True, callback=_line_bias, metavar="LINE:dE,dN,dU",
               help="Navigation bias of one flight line (its point source id) east,north,up in metres, "
                    "e.g. 2:0,0,0.1 raises line 2 by 10 cm (repeatable).")
+@click.option("--range-offset", type=finite_float, default=None,
+              help="Constant ranging bias in metres: every recorded range is this much too long (0 = off).")
 @click.option("--range-walk", type=nonneg_float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
 @click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
               help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
@@ -101,7 +103,7 @@ def _xy(ctx, param, value):
 def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
              scan_frequency, fov, h_step, v_step, stations, subrays, divergence, wavelength, max_returns, no_errors,
              range_noise, gnss_noise, gnss_bias, imu_noise, lever_arm_error, boresight_error, scan_angle_scale,
-             scan_angle_offset, time_bias, line_bias, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
+             scan_angle_offset, time_bias, line_bias, range_offset, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
     """Simulate an ALS, ULS, MLS or TLS survey of a synthetic scene.
 
     Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
@@ -164,7 +166,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
                       ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
                       ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
                       ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
-                      ("range_walk_m", range_walk), ("line_bias_m", line_bias or None)):
+                      ("range_walk_m", range_walk), ("range_offset_m", range_offset), ("line_bias_m", line_bias or None)):
         if val is not None:
             errors = replace(errors, **{name: val})
     vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle

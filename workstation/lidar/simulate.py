@@ -202,6 +202,11 @@ class ErrorModel:
         Amplitude-dependent range bias of leading-edge timing (range walk): a return at the
         detection threshold is ranged ``range_walk_m`` too long, a saturated one not at all,
         log-linear in received power in between. Default 0.02.
+    range_offset_m : float
+        Constant ranging bias (m): every recorded range is this much longer than the true
+        one (an uncalibrated range zero, e.g. a cable or electronic delay). It enters the
+        georeferencing chain along each beam, so it moves points along their lines of sight
+        (mostly vertically near nadir, across track towards the swath edges). Default 0.
     line_bias_m : tuple of (line_id, dE, dN, dU)
         Navigation position bias per flight line (m, east / north / up), as a different GNSS
         ambiguity fix per line gives: while the scanning segment of point source id ``line_id``
@@ -222,9 +227,12 @@ class ErrorModel:
     scan_angle_offset_deg: float = 0.0
     time_bias_s: float = 0.0
     range_walk_m: float = 0.02
+    range_offset_m: float = 0.0
     line_bias_m: tuple = ()
 
     def __post_init__(self):
+        if not np.isfinite(self.range_offset_m):
+            raise InvalidInputError(f"range_offset_m must be finite metres, got {self.range_offset_m}", field="range_offset_m")
         object.__setattr__(self, "line_bias_m", _line_biases(self.line_bias_m))
 
     @classmethod
@@ -619,6 +627,8 @@ def simulate(
         r_meas = ret["range"] + (rng.normal(0, errors.range_noise_m, j.size) if errors.range_noise_m > 0 else 0.0)
         if errors.range_walk_m:
             r_meas = r_meas + errors.range_walk_m * _walk_fraction(ret["power"], sensor)
+        if errors.range_offset_m:
+            r_meas = r_meas + errors.range_offset_m
         d_enc = d_true[j] if exact_angles else scanner.directions(ang.primary[j], ang.secondary[j])
         tp = t[j]
         pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
