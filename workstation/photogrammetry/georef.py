@@ -235,7 +235,8 @@ class GeorefResult:
         return out
 
 
-def _image_lookup(rec: Reconstruction) -> dict[str, Image]:
+def image_lookup(rec: Reconstruction) -> dict[str, Image]:
+    """Images by name and by file name (a name given without its sub-folder still matches)."""
     out: dict[str, Image] = {}
     for im in rec.images.values():
         out[im.name] = im
@@ -252,7 +253,7 @@ def triangulate_gcps(gcps: Sequence, rec: Reconstruction, sigma_px: float = 1.0)
     info : dict name -> {"rays", "std_model", "rms_px", "angle_deg"} for triangulated points
     problems : dict name -> reason for points that cannot be placed in the model
     """
-    lookup = _image_lookup(rec) if rec is not None else {}
+    lookup = image_lookup(rec) if rec is not None else {}
     positions, info, problems = {}, {}, {}
     for g in gcps:
         if g.model_xyz is not None:

@@ -177,14 +177,6 @@ def parse_scale_distance(text: str, option: str = "--scale-distance") -> ScaleBa
     return bar
 
 
-def _lookup(rec: Reconstruction) -> dict[str, Image]:
-    out: dict[str, Image] = {}
-    for im in rec.images.values():
-        out[im.name] = im
-        out.setdefault(im.name.rsplit("/", 1)[-1], im)
-    return out
-
-
 def _end_point(end: BarEnd, rec: Reconstruction, lookup: Mapping[str, Image], sigma_px: float, label: str):
     """(point (3,), covariance (3, 3), info dict) of a bar end in the model frame."""
     from .collinearity import intersect
@@ -259,7 +251,9 @@ def estimate_scale(rec: Reconstruction, bars: Sequence[ScaleBar], sigma_px: floa
         raise InvalidInputError("no scale bar or known distance given", f"give one as {SYNTAX}")
     if rec.crs is not None:
         log.warning("the reconstruction has a CRS (%s): scaling it changes its units", rec.crs)
-    lookup = _lookup(rec)
+    from .georef import image_lookup
+
+    lookup = image_lookup(rec)
     rows, s, var = [], [], []
     for i, bar in enumerate(bars, start=1):
         label = f"scale bar {i}"
