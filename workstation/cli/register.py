@@ -28,7 +28,11 @@ def read_matrix(path) -> np.ndarray:
             obj = json.loads(read_text(p))
             M = np.asarray(obj["transform"] if isinstance(obj, dict) else obj, dtype=np.float64)
         else:
-            M = np.loadtxt(p, dtype=np.float64)
+            import warnings
+
+            with warnings.catch_warnings():  # an empty file: the shape check below says so
+                warnings.simplefilter("ignore", UserWarning)
+                M = np.loadtxt(p, dtype=np.float64)
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise InvalidInputError(f"cannot read a 4x4 matrix: {e}", path=p) from None
     if M.shape != (4, 4) or not np.isfinite(M).all():
