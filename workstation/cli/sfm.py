@@ -57,10 +57,53 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     to metres by --scale-bar / --scale-distance; without them (or GCPs) its lengths are in
     arbitrary units and the record says "scaled": false.
     """
-    from workstation.core.errors import InvalidInputError
     from workstation.io.atomic import work_folder
     from workstation.io.reconstruction import SFM_RECORD, write_stage_record
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
+
+    camera, gcps, bars = _read_inputs(images, camera_file, gcp_file, scale_bars, scale_distances)
+    if do_dense:
+        from workstation.photogrammetry.dense import resolve_device
+
+        device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
+    params = SfMParams(
+        matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
+        camera_model=camera_model, refine_intrinsics=refine_intrinsics,
+        refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
+    )
+    with work_folder(workdir):  # a failed run removes what it wrote
+        result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
+        wd = Path(workdir)
+        out = result.to_dict()
+        from workstation.io import write_cloud
+
+        cloud, frame = _upright_and_scale(result, wd, upright, bars, sigma_px)
+        out.update(frame)
+        write_cloud(cloud, wd / "sparse.ply", overwrite=True)
+        out["sparse_cloud"] = str(wd / "sparse.ply")
+        _echo_result(result, wd)
+        if gcps is not None:
+            out["georef"] = _georeference(wd, images, gcps, sigma_px, crs, gcp_adjustment)
+        if do_dense:
+            out["dense"] = _densify(wd, images, device, overwrite)
+        out = _record(out, images, camera_file, gcp_file, params, gcp_adjustment, crs, sigma_px, wd)
+        write_stage_record(out, wd / SFM_RECORD)
+        from workstation.cli.summary import count, emit_summary
+
+        s = result.summary
+        emit_summary("sfm", f"{s['registered']}/{count(s['images'], 'images')} registered, {count(s['points'], 'points')}",
+                     [wd / "sparse" / "0", wd / "sparse.ply", wd / "summary.json"],
+                     details=[f"reprojection {s['mean_reprojection_error_px']:.3f} px",
+                              "georeferenced" if gcps is not None else "", "dense" if do_dense else ""])
+        if as_json:
+            emit_json(out)
+
+
+def _read_inputs(images, camera_file, gcp_file, scale_bars, scale_distances):
+    """Read and check the inputs before the long run, so a bad file fails early: the camera
+    (or None), the GCPs (or None; at least 3 control points for the 7-parameter similarity),
+    the image folder's existence, and the scale bars (none allowed with GCPs)."""
+    from workstation.core.errors import InvalidInputError
 
     camera = None
     if camera_file:
@@ -86,56 +129,35 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     bars = [parse_scale_bar(t) for t in scale_bars] + [parse_scale_distance(t) for t in scale_distances]
     if bars and gcps is not None:
         raise click.UsageError("--scale-bar/--scale-distance with --gcp: the control points already fix the scale")
-    if do_dense:
-        from workstation.photogrammetry.dense import resolve_device
+    return camera, gcps, bars
 
-        device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
-    params = SfMParams(
-        matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
-        camera_model=camera_model, refine_intrinsics=refine_intrinsics,
-        refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
+
+def _echo_result(result, wd: Path) -> None:
+    """Print the SfM outcome on stderr: registered images, points, reprojection error, track
+    length, then the images not registered and the disconnected models."""
+    s = result.summary
+    click.echo(
+        f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
+        f"{s['mean_reprojection_error_px']:.3f} px, mean track length {s['mean_track_length']:.2f} -> {wd / 'sparse' / '0'}",
+        err=True,
     )
-    with work_folder(workdir):  # a failed run removes what it wrote
-        result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
-        wd = Path(workdir)
-        out = result.to_dict()
-        from workstation.io import write_cloud
+    if result.unregistered:
+        click.echo("not registered: " + ", ".join(result.unregistered), err=True)
+    for o in result.other_models:
+        click.echo(f"disconnected model sparse/{o['index']}: " + ", ".join(o["images"]), err=True)
 
-        cloud, frame = _upright_and_scale(result, wd, upright, bars, sigma_px)
-        out.update(frame)
-        write_cloud(cloud, wd / "sparse.ply", overwrite=True)
-        out["sparse_cloud"] = str(wd / "sparse.ply")
-        s = result.summary
-        click.echo(
-            f"registered {s['registered']}/{s['images']} images, {s['points']} points, mean reprojection error "
-            f"{s['mean_reprojection_error_px']:.3f} px, mean track length {s['mean_track_length']:.2f} -> {wd / 'sparse' / '0'}",
-            err=True,
-        )
-        if result.unregistered:
-            click.echo("not registered: " + ", ".join(result.unregistered), err=True)
-        for o in result.other_models:
-            click.echo(f"disconnected model sparse/{o['index']}: " + ", ".join(o["images"]), err=True)
-        if gcps is not None:
-            out["georef"] = _georeference(wd, images, gcps, sigma_px, crs, gcp_adjustment)
-        if do_dense:
-            from workstation.cli.dense import write_dense_record
-            from workstation.photogrammetry.dense import DenseParams, run_dense
 
-            dense_params = DenseParams(device=device)
-            _, dense_summary = run_dense(wd, images, dense_params, overwrite=overwrite)
-            write_dense_record(wd, images, dense_params, dense_summary)
-            click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
-            out["dense"] = dense_summary
-        out = _record(out, images, camera_file, gcp_file, params, gcp_adjustment, crs, sigma_px, wd)
-        write_stage_record(out, wd / SFM_RECORD)
-        from workstation.cli.summary import count, emit_summary
+def _densify(wd: Path, images, device: str, overwrite: bool) -> dict:
+    """--dense: depth maps and fusion into WORKDIR/dense with its record, as `ws dense` writes
+    them; returns the dense summary."""
+    from workstation.cli.dense import write_dense_record
+    from workstation.photogrammetry.dense import DenseParams, run_dense
 
-        emit_summary("sfm", f"{s['registered']}/{count(s['images'], 'images')} registered, {count(s['points'], 'points')}",
-                     [wd / "sparse" / "0", wd / "sparse.ply", wd / "summary.json"],
-                     details=[f"reprojection {s['mean_reprojection_error_px']:.3f} px",
-                              "georeferenced" if gcps is not None else "", "dense" if do_dense else ""])
-        if as_json:
-            emit_json(out)
+    dense_params = DenseParams(device=device)
+    _, dense_summary = run_dense(wd, images, dense_params, overwrite=overwrite)
+    write_dense_record(wd, images, dense_params, dense_summary)
+    click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
+    return dense_summary
 
 
 def _upright_and_scale(result, wd: Path, upright: bool, bars: list, sigma_px: float):

@@ -114,17 +114,13 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     written beside it as CSV.
     """
     import time
-    from dataclasses import replace
     from pathlib import Path
 
-    from workstation.core.errors import InvalidInputError
     from workstation.core.log import get_logger
     from workstation.core.progress import progress_bar
-    from workstation.io import atomic_paths, check_outputs, format_of, write_cloud
-    from workstation.lidar.platforms import Station
-    from workstation.lidar.scene import build_scene, save_scene, scene_summary
-    from workstation.lidar.simulate import ErrorModel, write_trajectory_csv
-    from workstation.lidar.survey import count_pulses, default_survey, run_survey, survey_from_toml, survey_trajectory
+    from workstation.io import check_outputs, format_of
+    from workstation.lidar.scene import build_scene, scene_summary
+    from workstation.lidar.survey import count_pulses, run_survey, survey_trajectory
 
     log = get_logger(__name__)
     t0 = time.perf_counter()
@@ -133,6 +129,47 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     outputs = [output, traj_out, *([scene_out] if scene_out else [])]
     inputs = [p for p in (config_path, scene_path) if p and Path(p).is_file()]
     check_outputs(outputs, overwrite, inputs=inputs)
+    cfg, scene_arg, seed = _survey_config(kind, config_path, scene_path, seed)
+    cfg = _with_options(
+        cfg, kind, no_errors, speed, stations,
+        flight=(("altitude", altitude), ("speed", speed), ("overlap", overlap), ("n_lines", lines), ("heading_deg", heading)),
+        scanner=(("kind", pattern), ("prf", prf), ("scan_frequency", scan_frequency), ("fov_deg", fov),
+                 ("h_step_deg", h_step), ("v_step_deg", v_step)),
+        sensor=(("subrays", subrays), ("divergence_mrad", divergence), ("wavelength_nm", wavelength),
+                ("max_returns", max_returns)),
+        errors=(("range_noise_m", range_noise), ("gnss_noise_m", gnss_noise), ("gnss_bias_m", gnss_bias),
+                ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
+                ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
+                ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
+                ("range_walk_m", range_walk), ("range_offset_m", range_offset), ("line_bias_m", line_bias or None)),
+    )
+
+    scene = build_scene(scene_arg, seed)
+    log.info("scene: %s", scene_summary(scene))
+    traj = survey_trajectory(scene, cfg, seed)
+    total = count_pulses(traj, cfg.scanner)
+    with progress_bar(f"simulate {kind}", total, unit="pulses") as advance:
+        result = run_survey(scene, cfg, seed, progress=advance, with_nir=point_format == "8", trajectory=traj)
+    cloud = _write_outputs(result, scene, outputs, overwrite, inputs, point_format)
+    dt = time.perf_counter() - t0
+    log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
+    from workstation.cli.summary import count, emit_summary
+
+    emit_summary("simulate", f"{kind} {count(cloud.n, 'points')}", [output, traj_out, scene_out], dt,
+                 details=[count(result.stats["pulses"], "pulses"), count(len(traj.segments), "lines or stations")])
+    if as_json:
+        emit_json(_json_summary(cloud, result, scene, traj, kind, seed, output, traj_out, scene_out, dt))
+
+
+def _survey_config(kind: str, config_path, scene_path, seed):
+    """The survey of ``kind`` from the --config TOML or the defaults, the scene to build (the
+    --scene option, else the config's, a TOML path there resolved beside the config, else
+    "mixed") and the seed (--seed, else the config's, else 0)."""
+    from pathlib import Path
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.lidar.survey import default_survey, survey_from_toml
+
     top: dict = {}
     if config_path:
         cfg, top = survey_from_toml(config_path, kind)
@@ -146,62 +183,66 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
 
         scene_arg = str(resolve_inside(scene_arg, Path(config_path).parent, source=config_path, field="survey.scene"))
     seed = seed if seed is not None else int(top.get("seed", 0))
+    return cfg, scene_arg, seed
 
-    flight = cfg.flight
-    for name, val in (("altitude", altitude), ("speed", speed), ("overlap", overlap), ("n_lines", lines), ("heading_deg", heading)):
+
+def _replace_given(obj, values):
+    """``obj`` with each (field, value) pair of ``values`` whose value was given (not None)
+    replaced, one field at a time (each step is validated by the dataclass)."""
+    from dataclasses import replace
+
+    for name, val in values:
         if val is not None:
-            flight = replace(flight, **{name: val})
-    scanner = cfg.scanner
-    for name, val in (("kind", pattern), ("prf", prf), ("scan_frequency", scan_frequency), ("fov_deg", fov),
-                      ("h_step_deg", h_step), ("v_step_deg", v_step)):
-        if val is not None:
-            scanner = replace(scanner, **{name: val})
-    sensor = cfg.sensor
-    for name, val in (("subrays", subrays), ("divergence_mrad", divergence), ("wavelength_nm", wavelength),
-                      ("max_returns", max_returns)):
-        if val is not None:
-            sensor = replace(sensor, **{name: val})
-    errors = ErrorModel.none() if no_errors else cfg.errors
-    for name, val in (("range_noise_m", range_noise), ("gnss_noise_m", gnss_noise), ("gnss_bias_m", gnss_bias),
-                      ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
-                      ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
-                      ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
-                      ("range_walk_m", range_walk), ("range_offset_m", range_offset), ("line_bias_m", line_bias or None)):
-        if val is not None:
-            errors = replace(errors, **{name: val})
+            obj = replace(obj, **{name: val})
+    return obj
+
+
+def _with_options(cfg, kind: str, no_errors: bool, speed, stations, *, flight, scanner, sensor, errors):
+    """The survey ``cfg`` with the command-line options applied over the config: flight,
+    scanner, sensor and error fields; --no-errors first switches every error off; --speed is
+    also the MLS vehicle's speed; --station replaces the TLS stations."""
+    from dataclasses import replace
+
+    from workstation.lidar.platforms import Station
+    from workstation.lidar.simulate import ErrorModel
+
+    flight = _replace_given(cfg.flight, flight)
+    scanner = _replace_given(cfg.scanner, scanner)
+    sensor = _replace_given(cfg.sensor, sensor)
+    errors = _replace_given(ErrorModel.none() if no_errors else cfg.errors, errors)
     vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle
     st = tuple(Station(x, y) for x, y in stations) if stations else cfg.stations
-    cfg = replace(cfg, flight=flight, scanner=scanner, sensor=sensor, errors=errors, vehicle=vehicle, stations=st)
+    return replace(cfg, flight=flight, scanner=scanner, sensor=sensor, errors=errors, vehicle=vehicle, stations=st)
 
-    scene = build_scene(scene_arg, seed)
-    log.info("scene: %s", scene_summary(scene))
-    traj = survey_trajectory(scene, cfg, seed)
-    total = count_pulses(traj, cfg.scanner)
-    with progress_bar(f"simulate {kind}", total, unit="pulses") as advance:
-        result = run_survey(scene, cfg, seed, progress=advance, with_nir=point_format == "8", trajectory=traj)
+
+def _write_outputs(result, scene, outputs: list, overwrite: bool, inputs: list, point_format: str):
+    """Write the cloud (without colour for point format 6), the trajectory CSV and optionally
+    the scene mesh: all files or none. Returns the cloud as written."""
+    from workstation.io import atomic_paths, format_of, write_cloud
+    from workstation.lidar.scene import save_scene
+    from workstation.lidar.simulate import write_trajectory_csv
+
     cloud = result.cloud
     if point_format == "6":
         cloud = cloud.without_attrs("rgb")
-    opts = {"point_format": int(point_format)} if format_of(output)[0] in ("las", "laz") else {}
+    opts = {"point_format": int(point_format)} if format_of(outputs[0])[0] in ("las", "laz") else {}
     with atomic_paths(outputs, overwrite, inputs=inputs) as tmps:  # all files or none
         write_cloud(cloud, tmps[0], overwrite=True, **opts)
         write_trajectory_csv(result, tmps[1], overwrite=True)
-        if scene_out:
+        if len(outputs) > 2:
             save_scene(scene, tmps[2], overwrite=True)
-    dt = time.perf_counter() - t0
-    log.info("wrote %s (%d points) and %s in %.1f s", output, cloud.n, traj_out, dt)
-    from workstation.cli.summary import count, emit_summary
+    return cloud
 
-    emit_summary("simulate", f"{kind} {count(cloud.n, 'points')}", [output, traj_out, scene_out], dt,
-                 details=[count(result.stats["pulses"], "pulses"), count(len(traj.segments), "lines or stations")])
-    if as_json:
-        import numpy as np
 
-        cls, cnt = np.unique(cloud.attrs["classification"], return_counts=True)
-        emit_json({
-            "output": output, "trajectory": str(traj_out), "scene_mesh": scene_out, "kind": kind, "scene": scene.meta.get("recipe"), "seed": seed,
-            "pulses": result.stats["pulses"], "point_count": cloud.n,
-            "multiple_return_share": result.stats["multiple_return_share"],
-            "flight_lines_or_stations": len(traj.segments),
-            "classes": {int(c): int(n) for c, n in zip(cls, cnt)}, "crs": cloud.crs, "seconds": dt,
-        })
+def _json_summary(cloud, result, scene, traj, kind: str, seed: int, output, traj_out, scene_out, dt: float) -> dict:
+    """The --json document: outputs, survey, counts, classes (code: points), CRS, seconds."""
+    import numpy as np
+
+    cls, cnt = np.unique(cloud.attrs["classification"], return_counts=True)
+    return {
+        "output": output, "trajectory": str(traj_out), "scene_mesh": scene_out, "kind": kind, "scene": scene.meta.get("recipe"), "seed": seed,
+        "pulses": result.stats["pulses"], "point_count": cloud.n,
+        "multiple_return_share": result.stats["multiple_return_share"],
+        "flight_lines_or_stations": len(traj.segments),
+        "classes": {int(c): int(n) for c, n in zip(cls, cnt)}, "crs": cloud.crs, "seconds": dt,
+    }

@@ -856,6 +856,73 @@ def _powerline(b: _Builder, L: _Layout, rng):
             b.add(S.tube(path, 0.025, sides=6), C.WIRE_CONDUCTOR, M["steel"], oid)
 
 
+def _place_buildings(b: "_Builder", L: "_Layout", rng: np.random.Generator, recipe: SceneRecipe) -> None:
+    """Place the recipe's courtyards, large blocks, houses and buildings, in that order.
+
+    Each object asks the layout for a free spot of its footprint radius (m) and is skipped
+    when none is left, so a crowded recipe yields fewer objects instead of overlaps. The order
+    of the random draws is part of the scene's identity for a seed: it must not change.
+    """
+    kinds = ["flat", "gabled", "hipped"]
+    for i in range(recipe.courtyards):
+        size = rng.uniform(28.0, 40.0)
+        spot = L.find_spot(rng, size * 0.72)
+        if spot:
+            _courtyard(b, L, rng, *spot, size, L.road.angle)
+    for i in range(recipe.large_buildings):
+        lx, ly = rng.uniform(*recipe.large_size), rng.uniform(*recipe.large_size)
+        spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
+        if spot:
+            _large_block(b, L, rng, *spot, lx, ly, L.road.angle + rng.uniform(-0.3, 0.3))
+    for i in range(recipe.houses):
+        size = rng.uniform(*recipe.house_size)
+        spot = L.find_spot(rng, 0.7 * size + 4.0)
+        if spot:
+            _house(b, L, rng, *spot, size, rng.uniform(0, np.pi))
+    for i in range(recipe.buildings):
+        lx, ly = rng.uniform(*recipe.building_length), rng.uniform(*recipe.building_width)
+        spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
+        if spot:
+            _building(b, L, rng, *spot, lx, ly, L.road.angle + rng.choice([0.0, np.pi / 2]), kinds[i % 3])
+
+
+def _place_vegetation(b: "_Builder", L: "_Layout", rng: np.random.Generator, recipe: SceneRecipe) -> None:
+    """Place the trees (a ``forest_fraction`` share clustered in stands of ~40 trees within
+    18 m of a stand centre, the rest scattered), then the bushes and grass patches, each on a
+    free spot of the layout (skipped when none is left)."""
+    n_forest = int(round(recipe.trees * recipe.forest_fraction))
+    stands = [L.find_spot(rng, 3.0) for _ in range(max(1, n_forest // 40))] if n_forest else []
+    stands = [s for s in stands if s]
+    for i in range(recipe.trees):
+        if i < n_forest and stands:
+            c = np.array(stands[i % len(stands)])
+            spot = L.find_spot(rng, 2.0, center=c, spread=18.0)
+        else:
+            spot = L.find_spot(rng, 2.0)
+        if spot:
+            _tree(b, L, rng, *spot, bool(rng.uniform() < recipe.conifer_fraction))
+    for _ in range(recipe.bushes):
+        spot = L.find_spot(rng, 1.5)
+        if spot:
+            _bush(b, L, rng, *spot)
+    for _ in range(recipe.grass_patches):
+        spot = L.find_spot(rng, 3.0)
+        if spot:
+            _grass(b, L, rng, *spot)
+
+
+def _scene_meta(recipe: SceneRecipe, seed: int, b: "_Builder", L: "_Layout") -> dict:
+    """The scene's ``meta``: recipe name, seed, objects per kind, extent (m) and, when present,
+    the road and stream axes (point ``p`` and direction ``d`` in local metres, half width m)."""
+    meta = {"recipe": recipe.name, "seed": int(seed), "objects": {str(k): v for k, v in b.kinds.items()},
+            "extent": list(recipe.extent)}
+    if recipe.road:
+        meta["road"] = {"p": L.road.p.tolist(), "d": L.road.d.tolist(), "half_width": 3.5}
+    if recipe.stream:
+        meta["stream"] = {"p": L.stream.p.tolist(), "d": L.stream.d.tolist(), "half_width": L.stream_width / 2}
+    return meta
+
+
 def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Scene:
     """Build the scene of a recipe and seed, deterministically.
 
@@ -889,58 +956,15 @@ def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Sc
     _bridge(b, L)
     if recipe.heritage:
         _church(b, L, rng)
-    kinds = ["flat", "gabled", "hipped"]
-    for i in range(recipe.courtyards):
-        size = rng.uniform(28.0, 40.0)
-        spot = L.find_spot(rng, size * 0.72)
-        if spot:
-            _courtyard(b, L, rng, *spot, size, L.road.angle)
-    for i in range(recipe.large_buildings):
-        lx, ly = rng.uniform(*recipe.large_size), rng.uniform(*recipe.large_size)
-        spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
-        if spot:
-            _large_block(b, L, rng, *spot, lx, ly, L.road.angle + rng.uniform(-0.3, 0.3))
-    for i in range(recipe.houses):
-        size = rng.uniform(*recipe.house_size)
-        spot = L.find_spot(rng, 0.7 * size + 4.0)
-        if spot:
-            _house(b, L, rng, *spot, size, rng.uniform(0, np.pi))
-    for i in range(recipe.buildings):
-        lx, ly = rng.uniform(*recipe.building_length), rng.uniform(*recipe.building_width)
-        spot = L.find_spot(rng, 0.5 * np.hypot(lx, ly) + 1.0)
-        if spot:
-            _building(b, L, rng, *spot, lx, ly, L.road.angle + rng.choice([0.0, np.pi / 2]), kinds[i % 3])
-    n_forest = int(round(recipe.trees * recipe.forest_fraction))
-    stands = [L.find_spot(rng, 3.0) for _ in range(max(1, n_forest // 40))] if n_forest else []
-    stands = [s for s in stands if s]
-    for i in range(recipe.trees):
-        if i < n_forest and stands:
-            c = np.array(stands[i % len(stands)])
-            spot = L.find_spot(rng, 2.0, center=c, spread=18.0)
-        else:
-            spot = L.find_spot(rng, 2.0)
-        if spot:
-            _tree(b, L, rng, *spot, bool(rng.uniform() < recipe.conifer_fraction))
-    for _ in range(recipe.bushes):
-        spot = L.find_spot(rng, 1.5)
-        if spot:
-            _bush(b, L, rng, *spot)
-    for _ in range(recipe.grass_patches):
-        spot = L.find_spot(rng, 3.0)
-        if spot:
-            _grass(b, L, rng, *spot)
+    _place_buildings(b, L, rng, recipe)
+    _place_vegetation(b, L, rng, recipe)
     if recipe.road and recipe.cars:
         _cars(b, L, rng)
     if recipe.powerline:
         _powerline(b, L, rng)
     v, f, cls, mat, obj, rgb = b.finish()
     origin = np.array([recipe.origin[0], recipe.origin[1], 0.0])
-    meta = {"recipe": recipe.name, "seed": int(seed), "objects": {str(k): v for k, v in b.kinds.items()},
-            "extent": list(recipe.extent)}
-    if recipe.road:
-        meta["road"] = {"p": L.road.p.tolist(), "d": L.road.d.tolist(), "half_width": 3.5}
-    if recipe.stream:
-        meta["stream"] = {"p": L.stream.p.tolist(), "d": L.stream.d.tolist(), "half_width": L.stream_width / 2}
+    meta = _scene_meta(recipe, seed, b, L)
     log.info("scene %s seed %d: %d triangles, %d objects", recipe.name, seed, len(f), len(b.kinds))
     return Scene(v, f, cls, mat, obj, rgb, origin, recipe.crs, MATERIALS, meta)
 

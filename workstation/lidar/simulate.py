@@ -394,19 +394,57 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     P = len(origins)
     N = sensor.subrays
     if N == 1:
-        rays = np.empty((P, 6), np.float32)
-        rays[:, :3] = origins
-        rays[:, 3:] = dirs
-        t, prim = _cast(c, rays, rng)
-        ok = np.isfinite(t) & (t >= sensor.min_range_m) & (t <= sensor.max_range_m)
-        idx = np.flatnonzero(ok)
-        t = t[idx]
-        prim = prim[idx]
-        pw = _power(c, sensor, t, prim, dirs[idx], 1.0, rng)
-        det = pw >= sensor.detection_threshold_w
-        idx, t, prim, pw = idx[det], t[det], prim[det], pw[det]
-        one = np.ones(len(idx), np.uint8)
-        return {"pulse": idx, "range": t, "prim": prim, "power": pw, "return_number": one, "number_of_returns": one}
+        return _single_ray_returns(c, sensor, origins, dirs, rng)
+    rays, weights = _footprint_rays(sensor, origins, dirs, rng)
+    t, prim = _cast(c, rays.reshape(-1, 6), rng)
+    t = t.reshape(P, N)
+    t = np.where((t >= sensor.min_range_m) & (t <= sensor.max_range_m), t, np.inf)
+    # each pulse's hits by range; a new group starts where the next hit is beyond the pulse width
+    order = np.argsort(t, axis=1)
+    ts = np.take_along_axis(t, order, 1)
+    ps = np.take_along_axis(prim.reshape(P, N), order, 1)
+    valid = np.isfinite(ts)
+    with np.errstate(invalid="ignore"):
+        gap = np.diff(ts, axis=1) > sensor.min_separation_m
+    gid = np.concatenate([np.zeros((P, 1), np.int64), np.cumsum(gap, axis=1)], axis=1)
+    flat = np.flatnonzero(valid.ravel())
+    if flat.size == 0:
+        e = np.zeros(0, np.int64)
+        return {"pulse": e, "range": np.zeros(0), "prim": e, "power": np.zeros(0),
+                "return_number": e.astype(np.uint8), "number_of_returns": e.astype(np.uint8)}
+    pulse = flat // N
+    sub = order.ravel()[flat]
+    tf = ts.ravel()[flat]
+    pf = ps.ravel()[flat]
+    dsub = rays.reshape(-1, 6)[pulse * N + sub, 3:]
+    pw = _power(c, sensor, tf, pf, dsub, weights[sub], rng)
+    return _merge_groups(sensor, P, pulse, pulse * N + gid.ravel()[flat], tf, pf, pw)
+
+
+def _single_ray_returns(c: _Caster, sensor: Sensor, origins, dirs, rng) -> dict:
+    """Returns of pulses cast as one ray each (``subrays == 1``): the first hit within the
+    range gate whose received power reaches the detection threshold, one return per pulse."""
+    P = len(origins)
+    rays = np.empty((P, 6), np.float32)
+    rays[:, :3] = origins
+    rays[:, 3:] = dirs
+    t, prim = _cast(c, rays, rng)
+    ok = np.isfinite(t) & (t >= sensor.min_range_m) & (t <= sensor.max_range_m)
+    idx = np.flatnonzero(ok)
+    t = t[idx]
+    prim = prim[idx]
+    pw = _power(c, sensor, t, prim, dirs[idx], 1.0, rng)
+    det = pw >= sensor.detection_threshold_w
+    idx, t, prim, pw = idx[det], t[det], prim[det], pw[det]
+    one = np.ones(len(idx), np.uint8)
+    return {"pulse": idx, "range": t, "prim": prim, "power": pw, "return_number": one, "number_of_returns": one}
+
+
+def _footprint_rays(sensor: Sensor, origins, dirs, rng) -> tuple[np.ndarray, np.ndarray]:
+    """The sub-rays (P, N, 6) f4 sampling each beam's footprint (step 3 of the module
+    docstring): the sunflower pattern scaled to the half divergence, turned by a random angle
+    per pulse, in an orthonormal basis across the beam; and the sub-rays' energy weights (N,)."""
+    P, N = len(origins), sensor.subrays
     offs, weights = subray_pattern(N)
     half = np.float32(sensor.divergence_mrad * 1e-3 / 2)
     d = np.asarray(dirs, np.float32)
@@ -428,28 +466,14 @@ def _returns(c: _Caster, sensor: Sensor, origins, dirs, rng):
     rays[:, :, :3] = origins[:, None, :]
     for i, (dc, uc, vc) in enumerate(((dx, ux, vx), (dy, uy, vy), (dz, uz, vz))):
         rays[:, :, 3 + i] = dc[:, None] + ox * uc[:, None] + oy * vc[:, None]
-    t, prim = _cast(c, rays.reshape(-1, 6), rng)
-    t = t.reshape(P, N)
-    t = np.where((t >= sensor.min_range_m) & (t <= sensor.max_range_m), t, np.inf)
-    order = np.argsort(t, axis=1)
-    ts = np.take_along_axis(t, order, 1)
-    ps = np.take_along_axis(prim.reshape(P, N), order, 1)
-    valid = np.isfinite(ts)
-    with np.errstate(invalid="ignore"):
-        gap = np.diff(ts, axis=1) > sensor.min_separation_m
-    gid = np.concatenate([np.zeros((P, 1), np.int64), np.cumsum(gap, axis=1)], axis=1)
-    flat = np.flatnonzero(valid.ravel())
-    if flat.size == 0:
-        e = np.zeros(0, np.int64)
-        return {"pulse": e, "range": np.zeros(0), "prim": e, "power": np.zeros(0),
-                "return_number": e.astype(np.uint8), "number_of_returns": e.astype(np.uint8)}
-    pulse = flat // N
-    sub = order.ravel()[flat]
-    tf = ts.ravel()[flat]
-    pf = ps.ravel()[flat]
-    dsub = rays.reshape(-1, 6)[pulse * N + sub, 3:]
-    pw = _power(c, sensor, tf, pf, dsub, weights[sub], rng)
-    key = pulse * N + gid.ravel()[flat]
+    return rays, weights
+
+
+def _merge_groups(sensor: Sensor, P: int, pulse: np.ndarray, key: np.ndarray, tf: np.ndarray, pf: np.ndarray,
+                  pw: np.ndarray) -> dict:
+    """Merge the range-sorted sub-ray hits of each group (same ``key``) into one return (step 5
+    of the module docstring): power-weighted mean range, summed power, the strongest sub-ray's
+    triangle; keep those reaching the detection threshold, at most ``max_returns`` per pulse."""
     starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
     lens = np.diff(np.r_[starts, key.size])
     psum = np.add.reduceat(pw, starts)
@@ -529,6 +553,174 @@ def _to_map(rpy: np.ndarray, v_b: np.ndarray, trig=None) -> np.ndarray:
     return out
 
 
+class _BatchSimulator:
+    """The fixed inputs of one simulation; calling it with a job ``(segment index, segment, k0,
+    k1)`` simulates pulses ``k0..k1-1`` of that segment (steps 1-6 of the module docstring).
+
+    Each batch draws from its own random stream seeded by (seed, segment, k0), so the output
+    does not depend on the order or concurrency in which batches run.
+    """
+
+    def __init__(self, scene: Scene, trajectory: Trajectory, nav: Trajectory, scanner: ScanPattern, sensor: Sensor,
+                 errors: ErrorModel, mount: GeorefChain, caster: _Caster, seed: int, start_gps_time: float,
+                 roll_in_scan_angle: bool, with_nir: bool, with_truth: bool):
+        self.scene, self.trajectory, self.nav, self.scanner = scene, trajectory, nav, scanner
+        self.sensor, self.errors, self.mount, self.caster = sensor, errors, mount, caster
+        self.seed, self.start_gps_time = int(seed), start_gps_time
+        self.roll_in_scan_angle, self.with_nir, self.with_truth = roll_in_scan_angle, with_nir, with_truth
+        # the true mounting: nominal lever arm and boresight plus their errors
+        self.true_chain = GeorefChain(
+            tuple(np.asarray(mount.lever_arm) + np.asarray(errors.lever_arm_error_m, float)),
+            tuple(np.asarray(mount.boresight) + np.radians(np.asarray(errors.boresight_error_deg, float))),
+        )
+        self.R_bs_true = self.true_chain.R_bs
+        self.lever_true = np.asarray(self.true_chain.lever_arm)
+        self.scale = 1.0 + errors.scan_angle_scale
+        self.offset = np.radians(errors.scan_angle_offset_deg)
+        self.exact_angles = self.scale == 1.0 and self.offset == 0.0
+
+    def __call__(self, job) -> tuple[int, dict | None]:
+        """Simulate one batch: (pulses fired, per-return arrays or None when nothing returned)."""
+        si, seg, k0, k1 = job
+        rng = np.random.default_rng([self.seed, 0x51D, si, k0])  # per batch: order-independent
+        k = np.arange(k0, k1, dtype=np.int64)
+        t = seg.t0 + k / self.scanner.prf
+        ang = self.scanner.angles(k)
+        d_true, origins, dirs = self._true_beams(t, ang)
+        ret = _returns(self.caster, self.sensor, origins, dirs, rng)
+        j = ret["pulse"]
+        if j.size == 0:
+            return len(k), None
+        r_meas = self._measured_range(ret, rng)
+        d_enc = d_true[j] if self.exact_angles else self.scanner.directions(ang.primary[j], ang.secondary[j])
+        tp = t[j]
+        pos_p, rpy_p = self.nav.interpolate(tp + self.errors.time_bias_s)
+        xyz = self.mount.forward(r_meas, d_enc, pos_p, rpy_p, trig=rpy_trig(rpy_p, precise=False))
+        sa = self.scanner.scan_angle_deg(ang.primary[j])
+        if self.roll_in_scan_angle:
+            sa = sa + np.degrees(rpy_p[:, 0])
+        part = {"xyz": xyz, "gps_time": self.start_gps_time + tp}
+        part.update(self._point_attrs(ret, ang, j, sa, r_meas, seg.source_id))
+        if self.with_truth:
+            part.update(_truth(ret, origins[j], dirs[j], self.scene.origin))
+        return len(k), part
+
+    def _true_beams(self, t: np.ndarray, ang):
+        """The true beams of pulses at times ``t`` (s): mirror directions with the scan-angle
+        errors (k, 3) f4, and the beam origins and directions in the scene frame through the
+        true trajectory and true mounting (step 2 of the module docstring)."""
+        # the true beam in float32 (the rays are float32): trig ~15x faster than float64 in numpy
+        primary = ang.primary * self.scale + self.offset if not self.exact_angles else ang.primary
+        d_true = self.scanner.directions(primary, ang.secondary, np.float32)
+        pos, rpy = self.trajectory.interpolate(t)
+        trig = rpy_trig(rpy, precise=False)
+        if self.lever_true.any():
+            origins = pos + _to_map(rpy, np.broadcast_to(self.lever_true.astype(np.float32), (len(t), 3)), trig)
+        else:
+            origins = pos
+        tilted = self.true_chain.boresight != (0.0, 0.0, 0.0)
+        dirs = _to_map(rpy, d_true @ self.R_bs_true.T.astype(np.float32) if tilted else d_true, trig)
+        return d_true, origins, dirs
+
+    def _measured_range(self, ret: dict, rng: np.random.Generator) -> np.ndarray:
+        """The recorded range (m): true range plus Gaussian noise, range walk and offset."""
+        errors = self.errors
+        r_meas = ret["range"] + (rng.normal(0, errors.range_noise_m, ret["range"].size)
+                                 if errors.range_noise_m > 0 else 0.0)
+        if errors.range_walk_m:
+            r_meas = r_meas + errors.range_walk_m * _walk_fraction(ret["power"], self.sensor)
+        if errors.range_offset_m:
+            r_meas = r_meas + errors.range_offset_m
+        return r_meas
+
+    def _point_attrs(self, ret: dict, ang, j: np.ndarray, sa: np.ndarray, r_meas: np.ndarray, source_id: int) -> dict:
+        """The per-return attributes after ``xyz`` and ``gps_time``: labels of the hit triangle,
+        return numbers, intensity on a 16-bit scale saturating at ``saturation_power_w``, scan
+        angle (deg) and flags, line id, colour, measured range (m) and optionally NIR."""
+        c, prim = self.caster, ret["prim"]
+        attrs = {
+            "classification": c.cls[prim],
+            "return_number": ret["return_number"],
+            "number_of_returns": ret["number_of_returns"],
+            "intensity": np.minimum(np.rint(ret["power"] * (65535.0 / self.sensor.saturation_power_w)),
+                                    65535).astype(np.uint16),
+            "scan_angle": np.clip(sa, -180.0, 180.0).astype(np.float32),
+            "scan_direction_flag": ang.direction[j],
+            "edge_of_flight_line": ang.edge[j],
+            "point_source_id": np.full(j.size, source_id, np.uint16),
+            "object_id": c.obj[prim],
+            "part": c.part[prim],
+            "rgb": c.rgb16[prim],
+            "range": r_meas.astype(np.float32),
+        }
+        if self.with_nir:
+            attrs["nir"] = np.rint(c.refl[prim] * 65535).astype(np.uint16)
+        return attrs
+
+
+def _batch_jobs(trajectory: Trajectory, scanner: ScanPattern, per_batch: int) -> list[tuple]:
+    """Split every scanning segment's pulses into batches of at most ``per_batch`` pulses:
+    ``(segment index, segment, first pulse, end pulse)``."""
+    return [(si, seg, k0, min(k0 + per_batch, n_seg))
+            for si, seg in enumerate(trajectory.segments)
+            for n_seg in [scanner.pulses_in(seg.t1 - seg.t0)]
+            for k0 in range(0, n_seg, per_batch)]
+
+
+def _run_batches(run_batch: Callable, jobs: list, threads: int | None,
+                 progress: Callable[[int], None] | None) -> tuple[list[dict], int]:
+    """Run the batches on up to 4 threads, in job order; return the non-empty parts and the
+    number of pulses fired. numpy and Embree release the GIL on large arrays, so batches
+    overlap on several cores. Raises StageError when no pulse returned anything."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    parts: list[dict] = []
+    n_pulses = 0
+    workers = max(1, min(threads if threads else (os.cpu_count() or 1), 4))
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        for n_k, part in (pool.map(run_batch, jobs) if workers > 1 else map(run_batch, jobs)):
+            n_pulses += n_k
+            if progress:
+                progress(n_k)
+            if part is not None:
+                parts.append(part)
+    if not parts:
+        raise StageError("simulate", f"no returns from {n_pulses} pulses",
+                         "check that the trajectory flies over the scene and the range gate / power allow returns")
+    return parts, n_pulses
+
+
+def _join_batches(parts: list[dict], origin: np.ndarray) -> tuple[np.ndarray, dict]:
+    """Concatenate the batches' returns: map coordinates (n, 3) and attributes, one attribute
+    at a time, freeing the batch arrays as they are joined (peak ~ output + 1 attribute)."""
+    xyz = np.concatenate([p.pop("xyz") for p in parts])
+    xyz += origin
+    attrs = {k: np.concatenate([p.pop(k) for p in parts]) for k in list(parts[0])}
+    attrs["user_data"] = (attrs["object_id"] % 256).astype(np.uint8)
+    return xyz, attrs
+
+
+def _run_stats(n_pulses: int, n_returns: int, attrs: dict, seconds: float, sensor: Sensor, scanner: ScanPattern,
+               errors: ErrorModel) -> dict:
+    """The run statistics of :class:`SimulationResult`: counts, wall time (s), pulse rate (1/s),
+    share of returns from multiple-return pulses, and the sensor, scanner and error settings."""
+    return {"pulses": n_pulses, "returns": n_returns, "seconds": seconds,
+            "pulses_per_second": n_pulses / seconds if seconds > 0 else float("nan"),
+            "multiple_return_share": float(np.mean(attrs["number_of_returns"] > 1)),
+            "sensor": asdict(sensor), "scanner": asdict(scanner), "errors": asdict(errors)}
+
+
+def _simulated_cloud(xyz: np.ndarray, attrs: dict, scene: Scene, scanner: ScanPattern, seed: int,
+                     seconds: float) -> Cloud:
+    """The output cloud in the scene's CRS with the simulation's meta and history entry;
+    StageError if it is empty."""
+    cloud = Cloud(xyz, attrs, crs=scene.crs, meta={"simulation": {"seed": int(seed), "scene": scene.meta.get("recipe")}})
+    cloud = cloud.with_history("simulate", {"scanner": scanner.kind, "prf": scanner.prf, "seed": int(seed)}, seconds)
+    if cloud.n == 0:
+        raise StageError("simulate", "empty cloud")
+    return cloud
+
+
 def simulate(
     scene: Scene,
     trajectory: Trajectory,
@@ -596,102 +788,15 @@ def simulate(
     nav_rng = np.random.default_rng([int(seed), 0x4E4156])
     caster = _Caster(scene, sensor)
     nav = _nav_errors(trajectory, errors, nav_rng)
-    true_chain = GeorefChain(
-        tuple(np.asarray(mount.lever_arm) + np.asarray(errors.lever_arm_error_m, float)),
-        tuple(np.asarray(mount.boresight) + np.radians(np.asarray(errors.boresight_error_deg, float))),
-    )
-    R_bs_true = true_chain.R_bs
-    lever_true = np.asarray(true_chain.lever_arm)
-    scale = 1.0 + errors.scan_angle_scale
-    offset = np.radians(errors.scan_angle_offset_deg)
-    per_batch = max(batch_rays // sensor.subrays, 1)
-    exact_angles = scale == 1.0 and offset == 0.0
-
-    def run_batch(job):
-        si, seg, k0, k1 = job
-        rng = np.random.default_rng([int(seed), 0x51D, si, k0])  # per batch: order-independent
-        k = np.arange(k0, k1, dtype=np.int64)
-        t = seg.t0 + k / scanner.prf
-        ang = scanner.angles(k)
-        # the true beam in float32 (the rays are float32): trig ~15x faster than float64 in numpy
-        d_true = scanner.directions(ang.primary * scale + offset if not exact_angles else ang.primary, ang.secondary,
-                                    np.float32)
-        pos, rpy = trajectory.interpolate(t)
-        trig = rpy_trig(rpy, precise=False)
-        origins = pos + _to_map(rpy, np.broadcast_to(lever_true.astype(np.float32), (len(k), 3)), trig) if lever_true.any() else pos
-        dirs = _to_map(rpy, d_true @ R_bs_true.T.astype(np.float32) if true_chain.boresight != (0.0, 0.0, 0.0) else d_true, trig)
-        ret = _returns(caster, sensor, origins, dirs, rng)
-        j = ret["pulse"]
-        if j.size == 0:
-            return len(k), None
-        r_meas = ret["range"] + (rng.normal(0, errors.range_noise_m, j.size) if errors.range_noise_m > 0 else 0.0)
-        if errors.range_walk_m:
-            r_meas = r_meas + errors.range_walk_m * _walk_fraction(ret["power"], sensor)
-        if errors.range_offset_m:
-            r_meas = r_meas + errors.range_offset_m
-        d_enc = d_true[j] if exact_angles else scanner.directions(ang.primary[j], ang.secondary[j])
-        tp = t[j]
-        pos_p, rpy_p = nav.interpolate(tp + errors.time_bias_s)
-        xyz = mount.forward(r_meas, d_enc, pos_p, rpy_p, trig=rpy_trig(rpy_p, precise=False))
-        prim = ret["prim"]
-        sa = scanner.scan_angle_deg(ang.primary[j])
-        if roll_in_scan_angle:
-            sa = sa + np.degrees(rpy_p[:, 0])
-        return len(k), {
-            "xyz": xyz,
-            "gps_time": start_gps_time + tp,
-            "classification": caster.cls[prim],
-            "return_number": ret["return_number"],
-            "number_of_returns": ret["number_of_returns"],
-            "intensity": np.minimum(np.rint(ret["power"] * (65535.0 / sensor.saturation_power_w)), 65535).astype(np.uint16),
-            "scan_angle": np.clip(sa, -180.0, 180.0).astype(np.float32),
-            "scan_direction_flag": ang.direction[j],
-            "edge_of_flight_line": ang.edge[j],
-            "point_source_id": np.full(j.size, seg.source_id, np.uint16),
-            "object_id": caster.obj[prim],
-            "part": caster.part[prim],
-            "rgb": caster.rgb16[prim],
-            "range": r_meas.astype(np.float32),
-            **({"nir": np.rint(caster.refl[prim] * 65535).astype(np.uint16)} if with_nir else {}),
-            **(_truth(ret, origins[j], dirs[j], scene.origin) if with_truth else {}),
-        }
-
-    jobs = [(si, seg, k0, min(k0 + per_batch, n_seg))
-            for si, seg in enumerate(trajectory.segments)
-            for n_seg in [scanner.pulses_in(seg.t1 - seg.t0)]
-            for k0 in range(0, n_seg, per_batch)]
-    parts: list[dict] = []
-    n_pulses = 0
-    workers = max(1, min(threads if threads else (os.cpu_count() or 1), 4))
-    from concurrent.futures import ThreadPoolExecutor
-
-    # numpy and Embree release the GIL on large arrays: batches overlap on several cores
-    with ThreadPoolExecutor(max_workers=workers) as pool:
-        for n_k, part in (pool.map(run_batch, jobs) if workers > 1 else map(run_batch, jobs)):
-            n_pulses += n_k
-            if progress:
-                progress(n_k)
-            if part is not None:
-                parts.append(part)
-    if not parts:
-        raise StageError("simulate", f"no returns from {n_pulses} pulses",
-                         "check that the trajectory flies over the scene and the range gate / power allow returns")
-    xyz = np.concatenate([p.pop("xyz") for p in parts])
-    xyz += scene.origin
-    # one attribute at a time, freeing the batch arrays as they are joined (peak ~ output + 1 attribute)
-    attrs = {k: np.concatenate([p.pop(k) for p in parts]) for k in list(parts[0])}
-    attrs["user_data"] = (attrs["object_id"] % 256).astype(np.uint8)
+    run_batch = _BatchSimulator(scene, trajectory, nav, scanner, sensor, errors, mount, caster, seed, start_gps_time,
+                                roll_in_scan_angle, with_nir, with_truth)
+    jobs = _batch_jobs(trajectory, scanner, max(batch_rays // sensor.subrays, 1))
+    parts, n_pulses = _run_batches(run_batch, jobs, threads, progress)
+    xyz, attrs = _join_batches(parts, scene.origin)
     seconds = time.perf_counter() - t_start
-    n_ret = xyz.shape[0]
-    stats = {"pulses": n_pulses, "returns": n_ret, "seconds": seconds,
-             "pulses_per_second": n_pulses / seconds if seconds > 0 else float("nan"),
-             "multiple_return_share": float(np.mean(attrs["number_of_returns"] > 1)),
-             "sensor": asdict(sensor), "scanner": asdict(scanner), "errors": asdict(errors)}
-    cloud = Cloud(xyz, attrs, crs=scene.crs, meta={"simulation": {"seed": int(seed), "scene": scene.meta.get("recipe")}})
-    cloud = cloud.with_history("simulate", {"scanner": scanner.kind, "prf": scanner.prf, "seed": int(seed)}, seconds)
-    if cloud.n == 0:
-        raise StageError("simulate", "empty cloud")
-    log.info("simulated %d pulses -> %d returns in %.1f s", n_pulses, n_ret, seconds)
+    stats = _run_stats(n_pulses, xyz.shape[0], attrs, seconds, sensor, scanner, errors)
+    cloud = _simulated_cloud(xyz, attrs, scene, scanner, seed, seconds)
+    log.info("simulated %d pulses -> %d returns in %.1f s", n_pulses, xyz.shape[0], seconds)
     return SimulationResult(cloud, nav, trajectory, scene.origin, start_gps_time, stats)
 
 

@@ -340,9 +340,6 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         and ``rgb`` carried per corner, ``face_attrs["texture_view"]`` (m,) int32 (best image
         id, -1 unseen) and the texture (h, w, 3) uint8 in ``meta["texture"]``.
     """
-    from workstation.io.images import read_image
-    from workstation.registration.colorize import bilinear, project
-
     if mesh.n_faces == 0:
         raise InvalidInputError("the mesh has no faces", field="faces")
     if not rec.images:
@@ -357,84 +354,127 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         atlas = build_atlas(mesh, texel, params)
         order = _corner_order(mesh.vertices[mesh.faces])
         corners = np.take_along_axis(mesh.faces, order, axis=1)  # (right angle, p, q) vertex ids
-        tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float32)
-        tex_w = np.zeros((atlas.height, atlas.width), dtype=np.float32)
-        cache: dict[int, np.ndarray] = {}
-
-        def image(iid):
-            if iid not in cache:
-                im = rec.images[iid]
-                cam = rec.cameras[im.camera_id]
-                a = images[iid] if images is not None and iid in images else read_image(im, image_root)
-                if a.shape[0] != cam.height or a.shape[1] != cam.width:
-                    raise InvalidInputError(f"image {im.name} is {a.shape[1]}x{a.shape[0]} but its camera says "
-                                            f"{cam.width}x{cam.height}", field="images")
-                if a.dtype != np.uint8:
-                    a = np.round(a.astype(np.float64) / 257.0).clip(0, 255).astype(np.uint8)
-                cache[iid] = a[:, :, :3]
-            return cache[iid]
-
-        chunk = 2_000_000
-        for c in np.unique(atlas.cell):
-            faces_c = np.flatnonzero((atlas.cell == c) & seen)
-            per = max(1, chunk // int(c * c))
-            for s0 in range(0, faces_c.size, per):
-                f, x, y, w = _texels_of(int(c), faces_c[s0:s0 + per], atlas)
-                P = np.einsum("nk,nkd->nd", w, mesh.vertices[corners[f]])
-                for slot in range(views.shape[1]):
-                    vid = views[f, slot]
-                    for iid in np.unique(vid[vid >= 0]):
-                        sel = np.flatnonzero(vid == iid)
-                        im = rec.images[int(iid)]
-                        cam = rec.cameras[im.camera_id]
-                        u, v, _ = project(P[sel], cam, im.pose)
-                        u = np.clip(u, 0, cam.width - 1)
-                        v = np.clip(v, 0, cam.height - 1)
-                        col = bilinear(image(int(iid)), u, v)[:, :3]
-                        wt = weights[f[sel], slot]
-                        # a texel belongs to one face: indices are unique within one call
-                        tex_w[y[sel], x[sel]] += wt
-                        tex[y[sel], x[sel]] += col * wt[:, None]
-        filled = tex_w > 0
-        tex[filled] /= tex_w[filled][:, None]
-        # faces no photo sees: their vertex colours, or the fallback colour
-        unseen = np.flatnonzero(~seen)
-        if unseen.size:
-            rgb = None
-            if "rgb" in mesh.vertex_attrs:
-                from workstation.interop.pymeshlab import rgb_to_u8
-
-                rgb = rgb_to_u8(np.asarray(mesh.vertex_attrs["rgb"])).astype(np.float64)
-            for c in np.unique(atlas.cell[unseen]):
-                f, x, y, w = _texels_of(int(c), unseen[atlas.cell[unseen] == c], atlas)
-                if rgb is not None:
-                    tex[y, x] = np.einsum("nk,nkd->nd", w, rgb[corners[f]])
-                else:
-                    tex[y, x] = np.asarray(params.fallback_rgb, dtype=np.float64)
+        photos = _PhotoCache(rec, images, image_root)
+        tex = _blend_photos(mesh, rec, views, weights, seen, atlas, corners, photos)
+        _paint_unseen(tex, mesh, seen, atlas, corners, params)
         texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
-        uv = atlas_uv(mesh, atlas).reshape(-1, 2).astype(np.float32)
-        wedge = mesh.faces.reshape(-1)
-        vattrs = {"uv": uv}
-        for name in ("normal", "rgb"):
-            if name in mesh.vertex_attrs:
-                vattrs[name] = np.asarray(mesh.vertex_attrs[name])[wedge]
-        fattrs = {k: np.asarray(a) for k, a in mesh.face_attrs.items()}
-        fattrs["texture_view"] = views[:, 0].astype(np.int32)
-        meta = dict(mesh.meta)
-        meta["texture"] = texture
-        out = Mesh(mesh.vertices[wedge], np.arange(3 * mesh.n_faces, dtype=np.int64).reshape(-1, 3), vattrs,
-                   fattrs, crs=mesh.crs, meta=meta)
+        out = _textured_mesh(mesh, atlas, views, texture)
+    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds)
+    log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
+             int(seen.sum()), mesh.n_faces)
+    return out, step
+
+
+class _PhotoCache:
+    """The photos' pixels as (h, w, 3) uint8, loaded once each on first use: from ``images``
+    when given there, else read from disk; 16-bit photos are scaled to 8 bits (/257)."""
+
+    def __init__(self, rec: Reconstruction, images: Mapping[int, np.ndarray] | None, image_root):
+        self.rec, self.images, self.image_root = rec, images, image_root
+        self.cache: dict[int, np.ndarray] = {}
+
+    def __call__(self, iid: int) -> np.ndarray:
+        from workstation.io.images import read_image
+
+        if iid not in self.cache:
+            im = self.rec.images[iid]
+            cam = self.rec.cameras[im.camera_id]
+            a = self.images[iid] if self.images is not None and iid in self.images else read_image(im, self.image_root)
+            if a.shape[0] != cam.height or a.shape[1] != cam.width:
+                raise InvalidInputError(f"image {im.name} is {a.shape[1]}x{a.shape[0]} but its camera says "
+                                        f"{cam.width}x{cam.height}", field="images")
+            if a.dtype != np.uint8:
+                a = np.round(a.astype(np.float64) / 257.0).clip(0, 255).astype(np.uint8)
+            self.cache[iid] = a[:, :, :3]
+        return self.cache[iid]
+
+
+def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
+                  atlas: Atlas, corners: np.ndarray, photos: _PhotoCache) -> np.ndarray:
+    """The texture (h, w, 3) float32 of the seen faces: each texel's 3-D point projected into
+    the face's selected views, the photos sampled bilinearly and blended with the views'
+    weights; texels of unseen faces stay 0. Faces are processed per atlas cell size in
+    chunks of about 2 million texels to bound memory."""
+    from workstation.registration.colorize import bilinear, project
+
+    tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float32)
+    tex_w = np.zeros((atlas.height, atlas.width), dtype=np.float32)
+    chunk = 2_000_000
+    for c in np.unique(atlas.cell):
+        faces_c = np.flatnonzero((atlas.cell == c) & seen)
+        per = max(1, chunk // int(c * c))
+        for s0 in range(0, faces_c.size, per):
+            f, x, y, w = _texels_of(int(c), faces_c[s0:s0 + per], atlas)
+            P = np.einsum("nk,nkd->nd", w, mesh.vertices[corners[f]])
+            for slot in range(views.shape[1]):
+                vid = views[f, slot]
+                for iid in np.unique(vid[vid >= 0]):
+                    sel = np.flatnonzero(vid == iid)
+                    im = rec.images[int(iid)]
+                    cam = rec.cameras[im.camera_id]
+                    u, v, _ = project(P[sel], cam, im.pose)
+                    u = np.clip(u, 0, cam.width - 1)
+                    v = np.clip(v, 0, cam.height - 1)
+                    col = bilinear(photos(int(iid)), u, v)[:, :3]
+                    wt = weights[f[sel], slot]
+                    # a texel belongs to one face: indices are unique within one call
+                    tex_w[y[sel], x[sel]] += wt
+                    tex[y[sel], x[sel]] += col * wt[:, None]
+    filled = tex_w > 0
+    tex[filled] /= tex_w[filled][:, None]
+    return tex
+
+
+def _paint_unseen(tex: np.ndarray, mesh: Mesh, seen: np.ndarray, atlas: Atlas, corners: np.ndarray,
+                  params: TextureParams) -> None:
+    """Fill the texels of faces no photo sees (in place): the mesh's vertex colours
+    interpolated across the face when it has ``rgb``, else ``params.fallback_rgb``."""
+    unseen = np.flatnonzero(~seen)
+    if not unseen.size:
+        return
+    rgb = None
+    if "rgb" in mesh.vertex_attrs:
+        from workstation.interop.pymeshlab import rgb_to_u8
+
+        rgb = rgb_to_u8(np.asarray(mesh.vertex_attrs["rgb"])).astype(np.float64)
+    for c in np.unique(atlas.cell[unseen]):
+        f, x, y, w = _texels_of(int(c), unseen[atlas.cell[unseen] == c], atlas)
+        if rgb is not None:
+            tex[y, x] = np.einsum("nk,nkd->nd", w, rgb[corners[f]])
+        else:
+            tex[y, x] = np.asarray(params.fallback_rgb, dtype=np.float64)
+
+
+def _textured_mesh(mesh: Mesh, atlas: Atlas, views: np.ndarray, texture: np.ndarray) -> Mesh:
+    """The output mesh: one vertex per face corner (so each corner has its own ``uv``), the
+    input's ``normal`` and ``rgb`` carried per corner, face attributes plus ``texture_view``
+    and the texture image in ``meta["texture"]``."""
+    uv = atlas_uv(mesh, atlas).reshape(-1, 2).astype(np.float32)
+    wedge = mesh.faces.reshape(-1)
+    vattrs = {"uv": uv}
+    for name in ("normal", "rgb"):
+        if name in mesh.vertex_attrs:
+            vattrs[name] = np.asarray(mesh.vertex_attrs[name])[wedge]
+    fattrs = {k: np.asarray(a) for k, a in mesh.face_attrs.items()}
+    fattrs["texture_view"] = views[:, 0].astype(np.int32)
+    meta = dict(mesh.meta)
+    meta["texture"] = texture
+    return Mesh(mesh.vertices[wedge], np.arange(3 * mesh.n_faces, dtype=np.int64).reshape(-1, 3), vattrs,
+                fattrs, crs=mesh.crs, meta=meta)
+
+
+def _texture_record(mesh: Mesh, rec: Reconstruction, params: TextureParams, atlas: Atlas, views: np.ndarray,
+                    seen: np.ndarray, seconds: float) -> StepRecord:
+    """The step record: texel size (mesh units) used and requested, limits, texture size (px),
+    faces and area fraction textured, number of images and of views used."""
     area = mesh.face_areas()
-    rec_ = StepRecord(
+    return StepRecord(
         STAGE,
         {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
          "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos},
-        t.seconds,
+        seconds,
         {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
          "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
          "area_textured_fraction": float(area[seen].sum() / max(area.sum(), 1e-300)),
          "views_used": int(np.unique(views[seen, 0]).size)},
     )
-    log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
-             int(seen.sum()), mesh.n_faces)
-    return out, rec_

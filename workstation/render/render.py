@@ -422,7 +422,7 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     size = (int(camera[0].width), int(camera[0].height)) if camera else (int(params.size[0]), int(params.size[1]))
     if is_cloud:
         obj = _subset(obj, params.max_points)
-    kind, rgb, scalars, legend = _scalar_colors(obj, params)
+    colors = _scalar_colors(obj, params)
     xyz = obj.xyz if is_cloud else obj.vertices
     lo, hi = xyz.min(axis=0), xyz.max(axis=0)  # once, in float64
     origin = np.round(0.5 * (lo + hi))
@@ -443,41 +443,7 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
             kw.update(style="points", point_size=_point_size(params, flo, fhi, n_points, size), render_points_as_spheres=False)
         else:
             kw.update(smooth_shading=True)
-        if kind == "texture":
-            poly.active_texture_coordinates = np.asarray(obj.vertex_attrs["uv"], dtype=np.float32)
-            tex = pv.Texture(np.ascontiguousarray(np.asarray(obj.meta["texture"], dtype=np.uint8)[:, :, :3]))
-            tex.interpolate = True
-            # the photos' own shading is in the texture: draw it unlit, as seen
-            pl.add_mesh(poly, texture=tex, **{**kw, "lighting": False, "smooth_shading": False})
-        elif rgb is not None:
-            if kind == "class-face":
-                poly.cell_data["_rgb"] = rgb
-            else:
-                poly.point_data["_rgb"] = rgb
-            pl.add_mesh(poly, scalars="_rgb", rgb=True, **kw)
-        elif scalars is not None:
-            sample = scalars if scalars.size <= 1_000_000 else scalars[
-                np.random.default_rng(0).choice(scalars.size, 1_000_000, replace=False)]
-            finite = sample[np.isfinite(sample)]
-            vmin, vmax = (np.percentile(finite, [params.clip_percent, 100 - params.clip_percent]) if finite.size
-                      else (0.0, 1.0))
-            if vmax <= vmin:
-                vmax = vmin + 1.0
-            poly.point_data["_s"] = scalars
-            cmap = params.cmap or ("gray" if kind == "intensity" else "viridis")
-            pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(vmin), float(vmax)], **kw)
-            if params.legend:
-                fg = "white" if bg.mean() < 0.5 else "black"
-                pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.8, position_y=0.1,
-                                  width=0.05, height=0.7, n_labels=5, fmt="%.4g",
-                                  title_font_size=max(6, size[1] // 40), label_font_size=max(6, size[1] // 45))
-        else:
-            pl.add_mesh(poly, color="lightgray", **kw)
-        if kind.startswith("class") and params.legend and legend:
-            lw, lh = 0.34, min(0.055 * len(legend), 0.6)
-            actor = pl.add_legend(labels=[[name, col] for name, col in legend], bcolor=tuple(bg), border=True,
-                                  loc="upper right", size=(lw, lh), face="rectangle")
-            actor.SetPosition(1 - lw - 0.01, 1 - lh - 0.01)  # pyvista places it as if 0.2 wide
+        _add_model(pl, pv, poly, obj, colors, kw, params, bg, size)
         if camera is not None:
             _set_pinhole(pl, camera[0], camera[1], origin, lo, hi)
         else:
@@ -493,6 +459,57 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
     if img is None or img.shape[:2] != (size[1], size[0]):
         raise StageError("render", "VTK returned no image", "check the OpenGL (EGL/OSMesa) libraries")
     return np.ascontiguousarray(img[:, :, :3])
+
+
+def _add_model(pl, pv, poly, obj, colors: tuple, kw: dict, params: RenderParams, bg: np.ndarray, size) -> None:
+    """Add the model to the plotter coloured as :func:`_scalar_colors` decided: its texture
+    (unlit: the photos' own shading is in it), per-point or per-face RGB, a scalar with a
+    colour map (and scalar bar), or plain grey; then the class legend for class colourings."""
+    kind, rgb, scalars, legend = colors
+    if kind == "texture":
+        poly.active_texture_coordinates = np.asarray(obj.vertex_attrs["uv"], dtype=np.float32)
+        tex = pv.Texture(np.ascontiguousarray(np.asarray(obj.meta["texture"], dtype=np.uint8)[:, :, :3]))
+        tex.interpolate = True
+        # the photos' own shading is in the texture: draw it unlit, as seen
+        pl.add_mesh(poly, texture=tex, **{**kw, "lighting": False, "smooth_shading": False})
+    elif rgb is not None:
+        if kind == "class-face":
+            poly.cell_data["_rgb"] = rgb
+        else:
+            poly.point_data["_rgb"] = rgb
+        pl.add_mesh(poly, scalars="_rgb", rgb=True, **kw)
+    elif scalars is not None:
+        _add_scalars(pl, poly, kind, scalars, legend, kw, params, bg, size)
+    else:
+        pl.add_mesh(poly, color="lightgray", **kw)
+    if kind.startswith("class") and params.legend and legend:
+        lw, lh = 0.34, min(0.055 * len(legend), 0.6)
+        actor = pl.add_legend(labels=[[name, col] for name, col in legend], bcolor=tuple(bg), border=True,
+                              loc="upper right", size=(lw, lh), face="rectangle")
+        actor.SetPosition(1 - lw - 0.01, 1 - lh - 0.01)  # pyvista places it as if 0.2 wide
+
+
+def _add_scalars(pl, poly, kind: str, scalars: np.ndarray, legend, kw: dict, params: RenderParams, bg: np.ndarray,
+                 size) -> None:
+    """Add the model coloured by a scalar: the colour range spans the ``clip_percent`` to
+    ``100 - clip_percent`` percentiles of the finite values (of a fixed random sample of 10^6
+    when there are more), so a few outliers do not wash out the map; a scalar bar when
+    ``params.legend``."""
+    sample = scalars if scalars.size <= 1_000_000 else scalars[
+        np.random.default_rng(0).choice(scalars.size, 1_000_000, replace=False)]
+    finite = sample[np.isfinite(sample)]
+    vmin, vmax = (np.percentile(finite, [params.clip_percent, 100 - params.clip_percent]) if finite.size
+                  else (0.0, 1.0))
+    if vmax <= vmin:
+        vmax = vmin + 1.0
+    poly.point_data["_s"] = scalars
+    cmap = params.cmap or ("gray" if kind == "intensity" else "viridis")
+    pl.add_mesh(poly, scalars="_s", cmap=cmap, clim=[float(vmin), float(vmax)], **kw)
+    if params.legend:
+        fg = "white" if bg.mean() < 0.5 else "black"
+        pl.add_scalar_bar(title=str(legend), color=fg, vertical=True, position_x=0.8, position_y=0.1,
+                          width=0.05, height=0.7, n_labels=5, fmt="%.4g",
+                          title_font_size=max(6, size[1] // 40), label_font_size=max(6, size[1] // 45))
 
 
 def find_image(rec: Reconstruction, ref) -> int:

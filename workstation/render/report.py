@@ -408,7 +408,6 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         When ``workdir`` is not a folder.
     """
     from workstation.render.load import is_mesh_file
-    from workstation.render.render import RenderParams, render
 
     root = Path(workdir)
     if not root.is_dir():
@@ -427,49 +426,12 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
     parts.append("<h2>Products</h2>" + (_table(rows, ("file", "kind", "size")) if rows else "<p>No products found.</p>"))
 
     # the work folder's steps (stage records), then run.json and other records
-    docs, stage_html = {}, []
-    for p in jsons:
-        try:
-            docs[p] = json.loads(read_text(p))
-        except (OSError, ValueError) as e:
-            stage_html.append(f'<p class="note">{html.escape(p.name)}: unreadable ({html.escape(str(e))})</p>')
+    docs, stage_html = _read_records(jsons)
     steps = work_steps(docs, root)
     if steps:
         parts.append("<h2>Steps</h2>" + _table(steps, ("stage", "finished", "seconds", "record", "inputs", "outputs")))
-    for p, doc in docs.items():
-        srows = _stage_rows(doc)
-        title = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>"
-        if srows:
-            stage_html.append(title + _table(srows, ("stage", "seconds", "parameters", "summary")))
-        rest = {k: v for k, v in doc.items() if k not in ("stages", "steps", "history")} if isinstance(doc, dict) else doc
-        flat = [(k, v) for k, v in _flatten(rest) if not isinstance(v, (dict,))]
-        if flat:
-            stage_html.append(title + f"<details><summary>{len(flat)} figures</summary>"
-                              + _table(flat, ("figure", "value")) + "</details>")
-        cm = _confusion(doc)
-        if cm is not None:
-            stage_html.append(_img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({p.name})"),
-                                   f"Confusion matrix from {p.name}"))
-    # the products' own records: a folder of plain ws outputs has no JSON, but its rasters carry
-    # their stage's metadata and its clouds their history
-    prod_rows = []
-    for p in rasters[: params.max_files]:
-        m = _raster_meta(p)
-        if m.get("kind"):
-            figs = {k: v for k, v in m.items() if k not in ("kind", "source", "params", "seconds", "units")}
-            prod_rows.append((str(p.relative_to(root)), m["kind"], m.get("seconds", ""), figs))
-    cloud_cache: dict = {}
-    from workstation.io import read_cloud
-
-    for p in clouds[: params.max_files]:
-        try:
-            cloud_cache[p] = read_cloud(p)
-        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
-            cloud_cache[p] = e
-            continue
-        for h in cloud_cache[p].history:
-            prod_rows.append((str(p.relative_to(root)), h.stage, h.seconds if h.seconds is not None else "",
-                              dict(h.params)))
+    stage_html += _records_html(docs, root)
+    prod_rows, cloud_cache = _product_records(rasters[: params.max_files], clouds[: params.max_files], root)
     if prod_rows:
         stage_html.append("<h3>Records in the products</h3>" + _table(prod_rows, ("file", "stage", "seconds", "parameters and figures")))
     parts.append("<h2>Stages and figures</h2>" + ("".join(stage_html) or
@@ -481,63 +443,149 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         parts.append("<h2>Ground</h2>" + _table(ground_rows, ("cloud", "points", "ground points", "ground",
                                                               "unclassified (1)", "ground before", "class changed",
                                                               "stage")))
+    parts.append("<h2>Clouds</h2>" + ("".join(_clouds_html(clouds[: params.max_files], cloud_cache, root, params))
+                                      or "<p>No clouds found.</p>"))
+    parts.append("<h2>Meshes</h2>" + ("".join(_meshes_html(meshes[: params.max_files], root, params))
+                                      or "<p>No meshes found.</p>"))
+    parts.extend(_rasters_and_images_html(root, rasters, params))
+    return ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
+            f"<title>Report: {html.escape(root.resolve().name)}</title><style>{CSS}</style></head><body>"
+            + "\n".join(parts) + "</body></html>\n")
 
-    # clouds: summary, history, render, class histogram
-    from workstation.io.mesh import read_mesh
 
-    cloud_html = []
+def _read_records(jsons: list[Path]) -> tuple[dict, list[str]]:
+    """The JSON records parsed ({path: document}) and a note for each unreadable one."""
+    docs, notes = {}, []
+    for p in jsons:
+        try:
+            docs[p] = json.loads(read_text(p))
+        except (OSError, ValueError) as e:
+            notes.append(f'<p class="note">{html.escape(p.name)}: unreadable ({html.escape(str(e))})</p>')
+    return docs, notes
+
+
+def _records_html(docs: dict, root: Path) -> list[str]:
+    """Per JSON record: its stage rows, its other figures (flattened, folded) and the plot of
+    a confusion matrix when it holds one."""
+    out = []
+    for p, doc in docs.items():
+        srows = _stage_rows(doc)
+        title = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>"
+        if srows:
+            out.append(title + _table(srows, ("stage", "seconds", "parameters", "summary")))
+        rest = {k: v for k, v in doc.items() if k not in ("stages", "steps", "history")} if isinstance(doc, dict) else doc
+        flat = [(k, v) for k, v in _flatten(rest) if not isinstance(v, (dict,))]
+        if flat:
+            out.append(title + f"<details><summary>{len(flat)} figures</summary>"
+                       + _table(flat, ("figure", "value")) + "</details>")
+        cm = _confusion(doc)
+        if cm is not None:
+            out.append(_img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({p.name})"),
+                            f"Confusion matrix from {p.name}"))
+    return out
+
+
+def _product_records(rasters: list[Path], clouds: list[Path], root: Path) -> tuple[list[tuple], dict]:
+    """The products' own records: a folder of plain ws outputs has no JSON, but its rasters
+    carry their stage's metadata and its clouds their history. Returns the rows (file, stage,
+    seconds, figures) and the clouds read ({path: Cloud, or the exception that reading raised})."""
+    from workstation.io import read_cloud
+
+    prod_rows = []
+    for p in rasters:
+        m = _raster_meta(p)
+        if m.get("kind"):
+            figs = {k: v for k, v in m.items() if k not in ("kind", "source", "params", "seconds", "units")}
+            prod_rows.append((str(p.relative_to(root)), m["kind"], m.get("seconds", ""), figs))
+    cloud_cache: dict = {}
+    for p in clouds:
+        try:
+            cloud_cache[p] = read_cloud(p)
+        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
+            cloud_cache[p] = e
+            continue
+        for h in cloud_cache[p].history:
+            prod_rows.append((str(p.relative_to(root)), h.stage, h.seconds if h.seconds is not None else "",
+                              dict(h.params)))
+    return prod_rows, cloud_cache
+
+
+def _clouds_html(clouds: list[Path], cloud_cache: dict, root: Path, params: ReportParams) -> list[str]:
+    """One block per cloud (summary, history, top render, class histogram); a note for an
+    unreadable cloud and for the same points as a cloud already shown (a ground filter's
+    output with other attributes is a product of its own, so attributes count as different)."""
+    out = []
     seen: dict = {}
-    for p in clouds[: params.max_files]:
+    for p in clouds:
         c = cloud_cache.get(p)
         if isinstance(c, Exception):
-            cloud_html.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(c))})</p>')
+            out.append(f'<p class="note">{html.escape(p.name)}: not readable here ({html.escape(str(c))})</p>')
             continue
-        # the same points with other attributes (a ground filter's output) are a product of their own
         sig = (c.n, tuple(np.round(c.xyz[:3].ravel(), 6)),
                tuple((k, hash(np.ascontiguousarray(v).tobytes())) for k, v in sorted(c.attrs.items())))
         if sig in seen:
-            cloud_html.append(f'<p class="note">{html.escape(str(p.relative_to(root)))}: the same points as '
-                              f'{html.escape(seen[sig])} (not drawn again)</p>')
+            out.append(f'<p class="note">{html.escape(str(p.relative_to(root)))}: the same points as '
+                       f'{html.escape(seen[sig])} (not drawn again)</p>')
             continue
         seen[sig] = str(p.relative_to(root))
-        lo, hi = c.bounds
-        info = [("points", c.n), ("CRS", (c.crs or "none")[:80]), ("min", np.round(lo, 3).tolist()),
-                ("max", np.round(hi, 3).tolist()), ("dimensions", ", ".join(c.dims))]
-        block = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
-        hist = [(h.stage, h.seconds if h.seconds is not None else "", dict(h.params)) for h in c.history]
-        if hist:
-            block += _table(hist, ("history stage", "seconds", "parameters"))
-        col = "class" if "classification" in c.attrs and len(np.unique(c.attrs["classification"])) > 1 else "auto"
-        figs = []
-        try:
-            img = render(c, RenderParams(size=params.render_size, view="top", color=col, max_points=params.max_points,
-                                         legend=col != "class"))
-            if col == "class":
-                figs.append(_img(_class_legend_figure(img, c.attrs["classification"], p.name),
-                                 f"{p.name}: top view, colour class"))
-            else:
-                figs.append(_img(_png_b64(img), f"{p.name}: top view, colour {col}"))
-        except Exception as e:  # noqa: BLE001
-            block += f'<p class="note">render failed: {html.escape(str(e))}</p>'
-        if "classification" in c.attrs:
-            figs.append(_img(_plot_class_histogram(c.attrs["classification"], p.name), f"{p.name}: classes"))
-        cloud_html.append(block + "".join(figs))
-    parts.append("<h2>Clouds</h2>" + ("".join(cloud_html) or "<p>No clouds found.</p>"))
+        out.append(_cloud_block(p, c, root, params))
+    return out
 
-    mesh_html = []
-    for p in meshes[: params.max_files]:
+
+def _cloud_block(p: Path, c, root: Path, params: ReportParams) -> str:
+    """A cloud's block: points, CRS, bounds and dimensions, its history, a top view coloured
+    by class (with a legend of the classes present) or automatically, and its class histogram."""
+    from workstation.render.render import RenderParams, render
+
+    lo, hi = c.bounds
+    info = [("points", c.n), ("CRS", (c.crs or "none")[:80]), ("min", np.round(lo, 3).tolist()),
+            ("max", np.round(hi, 3).tolist()), ("dimensions", ", ".join(c.dims))]
+    block = f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
+    hist = [(h.stage, h.seconds if h.seconds is not None else "", dict(h.params)) for h in c.history]
+    if hist:
+        block += _table(hist, ("history stage", "seconds", "parameters"))
+    col = "class" if "classification" in c.attrs and len(np.unique(c.attrs["classification"])) > 1 else "auto"
+    figs = []
+    try:
+        img = render(c, RenderParams(size=params.render_size, view="top", color=col, max_points=params.max_points,
+                                     legend=col != "class"))
+        if col == "class":
+            figs.append(_img(_class_legend_figure(img, c.attrs["classification"], p.name),
+                             f"{p.name}: top view, colour class"))
+        else:
+            figs.append(_img(_png_b64(img), f"{p.name}: top view, colour {col}"))
+    except Exception as e:  # noqa: BLE001
+        block += f'<p class="note">render failed: {html.escape(str(e))}</p>'
+    if "classification" in c.attrs:
+        figs.append(_img(_plot_class_histogram(c.attrs["classification"], p.name), f"{p.name}: classes"))
+    return block + "".join(figs)
+
+
+def _meshes_html(meshes: list[Path], root: Path, params: ReportParams) -> list[str]:
+    """One block per mesh: faces, vertices, area, vertex attributes and an iso view; a note
+    for a mesh that cannot be read or drawn."""
+    from workstation.io.mesh import read_mesh
+    from workstation.render.render import RenderParams, render
+
+    out = []
+    for p in meshes:
         try:
             m = read_mesh(p)
             img = render(m, RenderParams(size=params.render_size, view="iso"))
         except Exception as e:  # noqa: BLE001
-            mesh_html.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
+            out.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
             continue
         info = [("faces", m.n_faces), ("vertices", m.n_vertices), ("area", float(m.face_areas().sum())),
                 ("vertex attributes", ", ".join(m.vertex_attrs))]
-        mesh_html.append(f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
-                         + _img(_png_b64(img), f"{p.name}: iso view"))
-    parts.append("<h2>Meshes</h2>" + ("".join(mesh_html) or "<p>No meshes found.</p>"))
+        out.append(f"<h3>{html.escape(str(p.relative_to(root)))}</h3>" + _table(info, ("", ""))
+                   + _img(_png_b64(img), f"{p.name}: iso view"))
+    return out
 
+
+def _rasters_and_images_html(root: Path, rasters: list[Path], params: ReportParams) -> list[str]:
+    """The "Rasters" section (a plot per raster, a note for an unreadable one) and the "Images
+    in the folder" section (PNGs up to 2 MB embedded as they are), each only when not empty."""
+    sections = []
     raster_html = []
     for p in rasters[: params.max_files]:
         try:
@@ -548,15 +596,13 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         if r:
             raster_html.append(_img(r[1], r[0]))
     if raster_html:
-        parts.append("<h2>Rasters</h2>" + "".join(raster_html))
+        sections.append("<h2>Rasters</h2>" + "".join(raster_html))
     pngs = [p for p in _find(root, (".png",), params.max_depth) if p.stat().st_size <= 2_000_000]
     if pngs:
-        parts.append("<h2>Images in the folder</h2>" + "".join(
+        sections.append("<h2>Images in the folder</h2>" + "".join(
             _img(base64.b64encode(p.read_bytes()).decode("ascii"), str(p.relative_to(root)))
             for p in pngs[: params.max_files]))
-    return ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
-            f"<title>Report: {html.escape(root.resolve().name)}</title><style>{CSS}</style></head><body>"
-            + "\n".join(parts) + "</body></html>\n")
+    return sections
 
 
 def write_report(workdir, output, overwrite: bool = False, params: ReportParams = ReportParams()) -> Path:
