@@ -8,6 +8,12 @@
     python scripts/bench_dense.py fountain --images 6   # same size, fewer images (memory)
     python scripts/bench_dense.py fusion --dense-dir DIR --fusion-cache-gb 0   # fusion alone
 
+CPU depth-map method (issue 24): ``--method sgbm`` / ``sweep`` runs one; ``--method both``
+(the default) runs the sweep and then SGBM, each in its own process (so each peak RSS is its
+own), one after the other on the same data, and for the temple and the fountain adds a line
+comparing the two fused clouds (``compare``: share of one cloud's points with a point of the
+other within a radius, and median nearest distances).
+
 Options: --work DIR (scratch folder, default /tmp/bench_dense), --reuse (keep a rendered rig
 and its SfM workdir), --render PNG (off-screen view of the dense cloud).
 Wall time is contended on a shared machine; ``cpu_s`` (process CPU time) is also reported.
@@ -98,7 +104,7 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     """
     from dataclasses import replace
 
-    from workstation.photogrammetry.dense import DenseParams, evaluate, run_dense
+    from workstation.photogrammetry.dense import evaluate, run_dense
     from workstation.photogrammetry.georef import fit_similarity
     from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
@@ -127,8 +133,8 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
         run_sfm(rigdir / "images", sfmdir, sfm_cam, params=sfm_params, overwrite=True)
     t_sfm = time.perf_counter() - t0
     c0, t0 = time.process_time(), time.perf_counter()
-    cloud, summary = run_dense(sfmdir, rigdir / "images", DenseParams(device="cpu", min_consistent=min_consistent, min_ncc=min_ncc,
-                                                                      fusion_min_pixels=fusion_min_pixels),
+    cloud, summary = run_dense(sfmdir, rigdir / "images", _params(min_consistent=min_consistent, min_ncc=min_ncc,
+                                                                  fusion_min_pixels=fusion_min_pixels),
                                overwrite=True)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     true = read_reconstruction(rigdir / "cameras.json")
@@ -146,7 +152,7 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
     gsd = None
     if spec.layout == "grid":
         gsd = spec.distance / spec.focal_px  # ground sampling distance at the base of the target, m
-    _emit({"bench": f"dense_{tag}", "layout": spec.layout, "camera": camera, "true_dist": list(spec.dist[:2]),
+    _emit({"bench": f"dense_{tag}", **_method_fields(), "layout": spec.layout, "camera": camera, "true_dist": list(spec.dist[:2]),
            "sfm_camera": {"model": est_cam.model, "f": round(est_cam.fx, 1), "dist": [round(float(x), 4) for x in est_cam.dist[:2]]},
            "min_consistent": min_consistent, "min_ncc": min_ncc, "fusion_min_pixels": fusion_min_pixels,
            "registered": len(pairs), "images": len(true.images), "sim_scale": round(float(sim.scale), 5),
@@ -179,7 +185,7 @@ def _true_workdir(work: Path, name: str, cams: list) -> Path:
 
 def bench_temple(work: Path, render: str | None) -> None:
     from workstation.core.products import Camera, Pose
-    from workstation.photogrammetry.dense import DenseParams, run_dense
+    from workstation.photogrammetry.dense import run_dense
 
     folder = DATA / "middlebury_templeSparseRing"
     cams = []
@@ -188,13 +194,13 @@ def bench_temple(work: Path, render: str | None) -> None:
         v = np.array(f[1:], float)
         K, R, t = v[:9].reshape(3, 3), v[9:18].reshape(3, 3), v[18:21]
         cams.append((f[0], Camera(640, 480, K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, t)))
-    wd = _true_workdir(work, "temple", cams)
+    wd = _true_workdir(work, f"temple_{METHOD['method']}", cams)
     c0, t0 = time.process_time(), time.perf_counter()
-    cloud, summary = run_dense(wd, folder, DenseParams(device="cpu", depth_range=(0.45, 0.8), max_image_size=-1), overwrite=True)
+    cloud, summary = run_dense(wd, folder, _params(depth_range=(0.45, 0.8), max_image_size=-1), overwrite=True)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     lo, hi = np.array([-0.073568, 0.021728, -0.012445]), np.array([0.028855, 0.181892, 0.062736])
     inside = np.all((cloud.xyz >= lo - 0.005) & (cloud.xyz <= hi + 0.005), axis=1)
-    _emit({"bench": "dense_middlebury_templeSR", "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
+    _emit({"bench": "dense_middlebury_templeSR", **_method_fields(), "fused": str(wd / "dense" / "fused.ply"), "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
            "cpu_s": round(cpu, 1), "peak_gb": round(_peak_gb(), 2), "inside_bbox": round(float(inside.mean()), 4),
            "goal_wall_s": 180, "summary": summary["timings_s"]})
     if render:
@@ -207,7 +213,6 @@ def bench_fountain(work: Path, size: int, render: str | None, n_images: int = 0,
     ``n_images`` > 0 keeps the first n images (memory against image count at one size)."""
     from workstation.core.products import Camera, Pose
     from workstation.photogrammetry.dense import (
-        DenseParams,
         compute_depth_maps,
         fuse,
         undistort,
@@ -222,21 +227,76 @@ def bench_fountain(work: Path, size: int, render: str | None, n_images: int = 0,
         cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, -R @ C)))
     if n_images > 0:
         cams = cams[:n_images]
-    name = f"fountain_{len(cams)}"
+    name = f"fountain_{len(cams)}_{size}_{METHOD['method']}"
     wd = _true_workdir(work, name, cams)
-    params = DenseParams(device="cpu", depth_range=(3.0, 25.0), max_image_size=size, fusion_cache_gb=fusion_cache_gb)
+    params = _params(depth_range=(3.0, 25.0), max_image_size=size, fusion_cache_gb=fusion_cache_gb)
     c0, t0 = time.process_time(), time.perf_counter()
     dense_dir = undistort(wd, folder / "images", size, overwrite=True)
     stats = compute_depth_maps(dense_dir, params)
     peak_depth, t_depth = _peak_gb(), time.perf_counter() - t0
     cloud = fuse(dense_dir, params)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
-    _emit({"bench": f"dense_fountain_P11_{size}", "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
+    _emit({"bench": f"dense_fountain_P11_{size}", **_method_fields(), "size": size, "fused": str(dense_dir / "fused.ply"), "images": len(cams), "points": cloud.n, "wall_s": round(wall, 1),
            "cpu_s": round(cpu, 1), "depth_maps_wall_s": round(t_depth, 1), "peak_gb_after_depth_maps": round(peak_depth, 2),
            "peak_gb": round(_peak_gb(), 2), "fusion_cache_gb": fusion_cache_gb, "goal_wall_s": 900, "goal_peak_gb": 6,
            "valid_geometric": stats["valid_geometric"], "workdir": str(wd)})
     if render:
         _render(cloud, render, view=cams[len(cams) // 2][1:])
+
+
+METHOD = {"method": "sgbm", "num_sources": None}
+
+
+def _params(**kw):
+    """DenseParams on the CPU with the method (and source count) chosen on the command line."""
+    from workstation.photogrammetry.dense import DenseParams
+
+    if METHOD["num_sources"]:
+        kw["num_sources"] = METHOD["num_sources"]
+        kw["top_k"] = min(2, METHOD["num_sources"])
+    return DenseParams(device="cpu", method=METHOD["method"], **kw)
+
+
+def _method_fields() -> dict:
+    p = _params()
+    return {"method": p.method, "num_sources": p.sources, "threads": os.cpu_count()}
+
+
+def compare_clouds(a_path, b_path, radius: float, label: str) -> dict:
+    """Agreement of cloud A (SGBM) with cloud B (sweep): the share of B's points with an A
+    point within ``radius`` (A's completeness against B), the share of A's points with a B
+    point within ``radius`` (A's points that B confirms), and the median nearest distances."""
+    from scipy.spatial import cKDTree
+
+    from workstation.io import read_cloud
+
+    A, B = read_cloud(a_path).xyz, read_cloud(b_path).xyz
+    dab, _ = cKDTree(B).query(A, k=1, workers=-1)
+    dba, _ = cKDTree(A).query(B, k=1, workers=-1)
+    return {"bench": f"compare_{label}", "a": str(a_path), "b": str(b_path), "points_a": len(A), "points_b": len(B),
+            "radius": radius, "b_covered_by_a": round(float(np.mean(dba <= radius)), 4),
+            "a_confirmed_by_b": round(float(np.mean(dab <= radius)), 4),
+            "median_a_to_b": round(float(np.median(dab)), 5), "median_b_to_a": round(float(np.median(dba)), 5)}
+
+
+def run_both(argv: list[str], what: str, reuse: bool) -> None:
+    """Run the sweep then SGBM in child processes on the same data; compare the fused clouds."""
+    import subprocess
+
+    lines = {}
+    for k, m in enumerate(("sweep", "sgbm")):
+        extra = ["--reuse"] if (what == "rig" and k > 0 and not reuse) else []
+        out = subprocess.run([sys.executable, __file__, *argv, "--method", m, *extra], check=True,
+                             stdout=subprocess.PIPE, text=True).stdout
+        for line in out.splitlines():
+            print(line, flush=True)
+            if line.startswith("{"):
+                lines[m] = json.loads(line)
+    if what in ("temple", "fountain") and "fused" in lines.get("sgbm", {}) and "fused" in lines.get("sweep", {}):
+        # radius: 3 pixel footprints at the scene (temple: 0.5 mm/px at 0.6 m; fountain at
+        # 1536 px: 6 mm/px at 8.5 m, scaled with the image size)
+        r = 0.0015 if what == "temple" else 0.018 * 1536 / lines["sgbm"].get("size", 1536)
+        _emit(compare_clouds(lines["sgbm"]["fused"], lines["sweep"]["fused"], r, what))
 
 
 def bench_fusion(dense_dir: Path, fusion_cache_gb: float) -> None:
@@ -269,7 +329,15 @@ def main() -> None:
     ap.add_argument("--images", type=int, default=0, help="fountain: keep the first N images (0: all)")
     ap.add_argument("--fusion-cache-gb", type=float, default=1.0)
     ap.add_argument("--dense-dir", help="fusion: an existing dense workspace")
+    ap.add_argument("--method", choices=["sgbm", "sweep", "both"], default="both", help="CPU depth maps (both: side by side)")
+    ap.add_argument("--sources", type=int, default=0, help="source views per image (0: DenseParams default)")
     a = ap.parse_args()
+    if a.method == "both" and a.what != "fusion":
+        argv = [x for i, x in enumerate(sys.argv[1:]) if x != "--method" and (i == 0 or sys.argv[i] != "--method")]
+        run_both(argv, a.what, a.reuse)
+        return
+    METHOD["method"] = "sgbm" if a.method == "both" else a.method
+    METHOD["num_sources"] = a.sources or None
     work = Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     if a.what == "rig":

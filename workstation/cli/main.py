@@ -47,7 +47,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "publish": ("workstation.cli.publish:publish", "Publish products as a static web viewer (COPC streamed by level of detail, maps, cameras); --serve."),
     "strip-adjust": ("workstation.cli.strip_adjust:strip_adjust", "Boresight calibration and strip adjustment of overlapping ALS flight lines."),
     "buildings": ("workstation.cli.buildings:buildings", "Roof planes, footprints, LoD1.2/LoD2.2 models (CityJSON, glTF) and rooftop solar potential."),
-    "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU plane sweep or CUDA PatchMatch) and fusion."),
+    "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU semi-global matching or plane sweep, CUDA PatchMatch) and fusion."),
 }
 
 

@@ -35,7 +35,7 @@ from workstation.core.jsonutil import json_clean
 @click.option("--scale-bar", "scale_bars", multiple=True, metavar="'END ; END = LENGTH [UNIT]'", help="A known length between two points seen in the photos; each END is two or more IMAGE:x,y pixels (column, row), e.g. 'A.JPG:1520,1006 B.JPG:1498,1010 ; A.JPG:2210,1003 B.JPG:2187,1009 = 1.000 m'. Units m (default), cm, mm, km, in, ft, us-ft, yd. Repeatable (weighted mean; each bar's residual is reported).")
 @click.option("--scale-distance", "scale_distances", multiple=True, metavar="'X,Y,Z ; X,Y,Z = LENGTH [UNIT]'", help="A known distance between two model points (e.g. picked in sparse.ply), e.g. '0.12,-1.5,3.2 ; 2.9,-1.4,3.3 = 4.25 m'.")
 @click.option("--dense", "do_dense", is_flag=True, help="Then densify: depth maps and fusion into WORKDIR/dense/fused.ply (as `ws dense`).")
-@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU plane sweep.")
+@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU semi-global matching (as `ws dense`).")
 @overwrite_option
 @allow_outside_option
 @json_option

@@ -9,22 +9,29 @@ fusion (``pycolmap.stereo_fusion``, CPU) turns either into ``WORKDIR/dense/fused
   the same ``*.geometric.bin`` maps the CPU path writes; source views come from
   ``stereo/patch-match.cfg`` (COLMAP's ``__auto__, 20`` for an SfM model; for a model without
   sparse points, e.g. true rig cameras, the CPU path's selection and ``depth_range``).
-- ``cpu``: our plane-sweep stereo (Collins, *A space-sweep approach to true multi-image
-  matching*, CVPR 1996; Gallup et al., *Real-time plane-sweeping stereo with multiple sweeping
-  directions*, CVPR 2007): for each reference image, fronto-parallel planes uniformly spaced in
-  inverse depth are swept through the scene; every source view is warped onto each plane by
-  its homography (``cv2.warpPerspective``), scored by zero-mean NCC over a square window (box
-  filters), the best ``k`` source scores are averaged (robust to occlusion), the best plane wins
-  and a parabola through its neighbours refines the depth below the plane spacing. A
-  geometric consistency check (forward-backward reprojection, as in COLMAP's geometric
-  stage and Furukawa & Hernández, *Multi-View Stereo: A Tutorial*, 2015, §3) keeps depths that
-  agree with at least ``min_consistent`` source depth maps. Normals come from the depth map's
-  local plane (cross product of back-projected neighbours).
+- ``cpu``, ``method="sgbm"`` (the default): rectified pairwise semi-global matching
+  (Hirschmüller, TPAMI 2008, through ``cv2.StereoSGBM``) of the reference image with each
+  source view, the pairs' depths merged per pixel (:mod:`workstation.photogrammetry.sgbm`).
+- ``cpu``, ``method="sweep"``: our plane-sweep stereo (Collins, *A space-sweep approach to
+  true multi-image matching*, CVPR 1996; Gallup et al., *Real-time plane-sweeping stereo with
+  multiple sweeping directions*, CVPR 2007): for each reference image, fronto-parallel planes
+  uniformly spaced in inverse depth are swept through the scene; every source view is warped
+  onto each plane by its homography (``cv2.warpPerspective``), scored by zero-mean NCC over a
+  square window (box filters), the best ``k`` source scores are averaged (robust to
+  occlusion), the best plane wins and a parabola through its neighbours refines the depth
+  below the plane spacing.
 
-Memory is bounded by the image size: the sweep holds a handful of float32 arrays of one
-reference image and its sources at a time, and fusion reads the maps through COLMAP's cached
-workspace (``fusion_cache_gb``) instead of loading all of them, so the image count adds only
-the fused points.
+Both CPU methods end with the same geometric consistency check (forward-backward
+reprojection, as in COLMAP's geometric stage and Furukawa & Hernández, *Multi-View Stereo: A
+Tutorial*, 2015, §3; Merrell et al., *Real-time visibility-based fusion of depth maps*, ICCV
+2007): a depth is kept when at least ``min_consistent`` source depth maps agree with it.
+Normals come from the depth map's local plane (cross product of back-projected neighbours).
+
+Memory is bounded by the image size: SGBM holds one rectified pair and a few rows of its cost
+volume per worker, the sweep a handful of float32 arrays of one reference image and its
+sources at a time, and fusion reads the maps through COLMAP's cached workspace
+(``fusion_cache_gb``) instead of loading all of them, so the image count adds only the fused
+points.
 
 Depth and normal maps use COLMAP's array format: a text header ``width&height&channels&``
 followed by float32 data in column-major (width, height, channels) order (COLMAP's
@@ -45,10 +52,14 @@ from workstation.core.errors import (
     StageError,
 )
 from workstation.core.log import get_logger
+from workstation.photogrammetry.sgbm import SGBMParams
 
 log = get_logger(__name__)
 
 DEVICES = ("auto", "cpu", "cuda")
+METHODS = ("sgbm", "sweep")
+#: source views per reference image when ``DenseParams.num_sources`` is None, by CPU method
+DEFAULT_SOURCES = {"sgbm": 3, "sweep": 5}
 
 
 @dataclass(frozen=True)
@@ -58,13 +69,20 @@ class DenseParams:
     Attributes
     ----------
     device : str
-        "auto" (COLMAP PatchMatch when pycolmap has CUDA, else CPU plane sweep), "cpu", "cuda".
+        "auto" (COLMAP PatchMatch when pycolmap has CUDA, else the CPU ``method``), "cpu", "cuda".
+    method : str
+        CPU depth maps: "sgbm" (rectified pairwise semi-global matching,
+        :mod:`workstation.photogrammetry.sgbm`) or "sweep" (multi-view plane sweep).
+    sgbm : SGBMParams
+        Matching options of the "sgbm" method.
     max_image_size : int
         Longest side of the undistorted images used for stereo, pixels (-1: full size).
-    num_sources : int
-        Source views per reference image (best by shared sparse points and triangulation angle).
+    num_sources : int, optional
+        Source views per reference image (best by shared sparse points and triangulation
+        angle); None: ``DEFAULT_SOURCES[method]`` (3 for "sgbm", each source a full two-view
+        match; 5 for "sweep").
     top_k : int
-        Best source NCC scores averaged per pixel and plane.
+        Best source NCC scores averaged per pixel and plane ("sweep").
     window : int
         NCC window side, pixels (odd).
     min_ncc : float
@@ -81,7 +99,8 @@ class DenseParams:
     max_reproj_px : float
         Forward-backward reprojection tolerance of the consistency check, pixels.
     max_rel_depth : float
-        Relative depth tolerance of the consistency check.
+        Relative depth tolerance of the consistency check (and of the agreement between the
+        pairs of one reference image, "sgbm").
     min_texture : float
         Smallest grey-level standard deviation (0-255 scale) in the window; flatter pixels
         (sky, saturated areas) get no depth.
@@ -96,12 +115,15 @@ class DenseParams:
         cached workspace, least recently used out first); 0 loads every map at once (faster
         for a few images, but memory grows with the image count).
     num_threads : int
-        OpenCV / fusion threads (-1: all).
+        OpenCV / fusion threads, and reference images matched at once by "sgbm" (-1: all
+        cores).
     """
 
     device: str = "auto"
+    method: str = "sgbm"
+    sgbm: SGBMParams = SGBMParams()
     max_image_size: int = 1600
-    num_sources: int = 5
+    num_sources: int | None = None
     top_k: int = 2
     window: int = 7
     min_ncc: float = 0.4
@@ -121,12 +143,19 @@ class DenseParams:
     def __post_init__(self):
         if self.device not in DEVICES:
             raise InvalidInputError(f"device must be one of {DEVICES}", field="device")
+        if self.method not in METHODS:
+            raise InvalidInputError(f"method must be one of {METHODS}", field="method")
         if self.window < 3 or self.window % 2 == 0:
             raise InvalidInputError("window must be an odd number ≥ 3", field="window")
         if self.fusion_cache_gb < 0:
             raise InvalidInputError("fusion_cache_gb must be ≥ 0 (0: no cache)", field="fusion_cache_gb")
-        if self.num_sources < 1 or not 1 <= self.top_k <= self.num_sources:
+        if self.sources < 1 or not 1 <= self.top_k <= self.sources:
             raise InvalidInputError("need num_sources ≥ 1 and 1 ≤ top_k ≤ num_sources", field="top_k")
+
+    @property
+    def sources(self) -> int:
+        """Source views per reference image: ``num_sources`` or the method's default."""
+        return DEFAULT_SOURCES[self.method] if self.num_sources is None else int(self.num_sources)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -257,14 +286,14 @@ def select_sources(views, pts, obs, params: DenseParams) -> dict[int, list[int]]
                 w = min(1.0, ang / 5.0)  # penalise tiny baselines (poor depth precision)
                 cand.append((shared.size * w, j))
         cand.sort(reverse=True)
-        out[i] = [j for _, j in cand[: params.num_sources]]
+        out[i] = [j for _, j in cand[: params.sources]]
     return out
 
 
 # ---------------------------------------------------------------------------------------------
 # plane sweep
 # ---------------------------------------------------------------------------------------------
-def _grey(path, size) -> np.ndarray:
+def _grey(path, size, dtype=np.float32) -> np.ndarray:
     import cv2
 
     img = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
@@ -272,7 +301,7 @@ def _grey(path, size) -> np.ndarray:
         raise InvalidInputError("cannot read image", path=path)
     if (img.shape[1], img.shape[0]) != size:
         img = cv2.resize(img, size, interpolation=cv2.INTER_AREA)
-    return img.astype(np.float32)
+    return img.astype(dtype, copy=False)
 
 
 def _box(a, r):
@@ -419,34 +448,61 @@ def depth_normals(depth: np.ndarray, K: np.ndarray) -> np.ndarray:
 
 def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View], params: DenseParams) -> np.ndarray:
     """Keep depths that ``min_consistent`` source depth maps confirm (forward-backward
-    reprojection within ``max_reproj_px`` and relative depth within ``max_rel_depth``)."""
-    import cv2
+    reprojection within ``max_reproj_px`` and relative depth within ``max_rel_depth``).
 
+    A reference pixel's point goes into the source camera (relative pose), takes the source
+    depth at the nearest source pixel, comes back into the reference camera and must land
+    within ``max_reproj_px`` of where it started at a depth within ``max_rel_depth``. Only the
+    valid pixels are processed, in float32 (reprojection errors of a pixel or so).
+    """
     h, w = depth.shape
-    u, v = np.meshgrid(np.arange(w, dtype=np.float64), np.arange(h, dtype=np.float64))
-    Kinv = np.linalg.inv(ref.K)
-    rays = np.stack([u, v, np.ones_like(u)], -1) @ Kinv.T
-    Xc = rays * depth[..., None]
-    Xw = (Xc - ref.t) @ ref.R  # R^T (x - t)
-    count = np.zeros((h, w), np.int32)
+    idx = np.flatnonzero(depth > 0)
+    v, u = np.divmod(idx, w)
+    u, v = u.astype(np.float32), v.astype(np.float32)
+    z = depth.reshape(-1)[idx].astype(np.float32)
+    P = _unproject(np.linalg.inv(ref.K), u, v, z)
+    count = np.zeros(idx.size, np.int32)
     for s, ds in zip(srcs, src_depths):
-        xs = Xw @ s.R.T + s.t
-        zs = xs[..., 2]
-        ps = xs @ s.K.T
-        us = (ps[..., 0] / np.where(zs > 0, ps[..., 2], 1)).astype(np.float32)
-        vs = (ps[..., 1] / np.where(zs > 0, ps[..., 2], 1)).astype(np.float32)
-        dsamp = cv2.remap(ds, us, vs, cv2.INTER_NEAREST, borderMode=cv2.BORDER_CONSTANT, borderValue=0.0).astype(np.float64)
-        ub, vb = np.round(us), np.round(vs)
-        Xs = (np.stack([ub, vb, np.ones_like(ub)], -1) @ np.linalg.inv(s.K).T) * dsamp[..., None]
-        Xb = ((Xs - s.t) @ s.R) @ ref.R.T + ref.t
-        pb = Xb @ ref.K.T
-        zb = Xb[..., 2]
+        Rr = s.R @ ref.R.T
+        tr = s.t - Rr @ ref.t
+        Xs = _transform(Rr, tr, P)
+        us, vs, zs = _project(s.K, Xs)
+        ui, vi = np.rint(us), np.rint(vs)  # the nearest source pixel
+        inside = (ui >= 0) & (ui < ds.shape[1]) & (vi >= 0) & (vi < ds.shape[0])
+        dsamp = np.where(inside, ds[np.where(inside, vi, 0).astype(np.int64), np.where(inside, ui, 0).astype(np.int64)], 0)
+        Xb = _transform(Rr.T, -Rr.T @ tr, _unproject(np.linalg.inv(s.K), ui, vi, dsamp.astype(np.float32)))
+        ub, vb, zb = _project(ref.K, Xb)
         with np.errstate(divide="ignore", invalid="ignore"):
-            err = np.hypot(pb[..., 0] / zb - u, pb[..., 1] / zb - v)
-            rel = np.abs(zb - depth) / depth
-        ok = (depth > 0) & (zs > 0) & (dsamp > 0) & (zb > 0) & (err <= params.max_reproj_px) & (rel <= params.max_rel_depth)
-        count += ok
-    return np.where(count >= params.min_consistent, depth, 0.0).astype(np.float32)
+            err = np.hypot(ub - u, vb - v)
+            rel = np.abs(zb - z) / z
+        count += (zs > 0) & (dsamp > 0) & (zb > 0) & (err <= params.max_reproj_px) & (rel <= params.max_rel_depth)
+    out = np.zeros(h * w, np.float32)
+    keep = count >= params.min_consistent
+    out[idx[keep]] = z[keep]
+    return out.reshape(h, w)
+
+
+def _unproject(Kinv: np.ndarray, u, v, z) -> tuple:
+    """Camera-frame points (x, y, z) of pixels (u, v) at depths z (float32 arrays)."""
+    k = Kinv.astype(np.float32)
+    return ((k[0, 0] * u + k[0, 1] * v + k[0, 2]) * z, (k[1, 1] * v + k[1, 2]) * z, z)
+
+
+def _transform(R: np.ndarray, t: np.ndarray, P: tuple) -> tuple:
+    """``R · P + t`` for points given as a tuple of coordinate arrays."""
+    R, t = R.astype(np.float32), t.astype(np.float32)
+    return tuple(R[i, 0] * P[0] + R[i, 1] * P[1] + R[i, 2] * P[2] + t[i] for i in range(3))
+
+
+def _project(K: np.ndarray, P: tuple) -> tuple:
+    """Pixels (u, v) and depth of camera-frame points; points behind the camera get (-1, -1)."""
+    K = K.astype(np.float32)
+    z = P[2]
+    front = z > 0
+    zz = np.where(front, z, 1)
+    u = np.where(front, (K[0, 0] * P[0] + K[0, 1] * P[1]) / zz + K[0, 2], -1).astype(np.float32)
+    v = np.where(front, K[1, 1] * P[1] / zz + K[1, 2], -1).astype(np.float32)
+    return u, v, z
 
 
 # ---------------------------------------------------------------------------------------------
@@ -595,14 +651,14 @@ def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
 
 
 def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
-    """CPU plane-sweep depth and normal maps for every image of an undistorted workspace.
+    """CPU depth and normal maps (``params.method``: "sgbm" or "sweep") for every image of an
+    undistorted workspace, then the multi-view geometric filter and normals.
 
     Writes ``stereo/depth_maps/NAME.{photometric,geometric}.bin`` and
-    ``stereo/normal_maps/NAME.{photometric,geometric}.bin``. Returns per-image statistics.
+    ``stereo/normal_maps/NAME.geometric.bin``. Returns per-image statistics.
     """
     import cv2
 
-    from workstation.core.progress import track
     from workstation.interop.pycolmap import import_pycolmap
 
     pycolmap = import_pycolmap()
@@ -617,42 +673,101 @@ def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
     dm, nm = d / "stereo" / "depth_maps", d / "stereo" / "normal_maps"
     dm.mkdir(parents=True, exist_ok=True)
     nm.mkdir(parents=True, exist_ok=True)
-    stats = {"images": len(views), "photometric_s": 0.0, "geometric_s": 0.0, "valid_photometric": 0, "valid_geometric": 0}
+    stats = {"images": len(views), "method": params.method}
     t0 = time.perf_counter()
-    for iid in track(sorted(views), "plane sweep", unit="views"):
-        v = views[iid]
-        if not sources[iid]:
-            log.warning("%s: no source view in the angle range; no depth map", v.name)
-            write_array(np.zeros((v.height, v.width), np.float32), dm / f"{v.name}.photometric.bin")
-            continue
-        ref = _grey(d / "images" / v.name, (v.width, v.height))
-        srcs = [views[j] for j in sources[iid]]
-        imgs = [_grey(d / "images" / s.name, (s.width, s.height)) for s in srcs]
-        ti = time.perf_counter()
-        depth, _ = plane_sweep(ref, v, imgs, srcs, params)
-        write_array(depth, dm / f"{v.name}.photometric.bin")
-        log.info("depth map %s: %.0f %% of pixels, %d sources, %.1f s", v.name, 100.0 * float((depth > 0).mean()),
-                 len(srcs), time.perf_counter() - ti)
-        stats["valid_photometric"] += int((depth > 0).sum())
+    stats["valid_photometric"] = _photometric_maps(d, views, sources, pts, obs, params)
     stats["photometric_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
+    stats["valid_geometric"] = _geometric_maps(d, views, sources, params)
+    stats["geometric_s"] = time.perf_counter() - t0
+    if stats["valid_geometric"] == 0:
+        raise StageError("dense", "no depth survived the consistency check",
+                         "check the cameras (SfM residuals), lower min_ncc or min_consistent")
+    return stats
+
+
+def _photometric_maps(d: Path, views, sources, pts, obs, params: DenseParams) -> int:
+    """Write ``NAME.photometric.bin`` for every view (plane sweep or SGBM); valid pixels.
+
+    SGBM works on ``num_threads`` reference images at a time (threads: OpenCV and numpy
+    release the GIL), so memory holds that many references with their sources; the sweep
+    goes one reference at a time (OpenCV's own threads inside).
+    """
+    import os
+    from concurrent.futures import ThreadPoolExecutor
+
+    from workstation.core.progress import track
+
+    sgbm = params.method == "sgbm"
+    workers = params.num_threads if params.num_threads > 0 else (os.cpu_count() or 1)
+    sets = {i: set(o) for i, o in obs.items()}
+    ids = sorted(views)
+    label = "SGBM" if sgbm else "plane sweep"
+
+    def one(iid) -> int:
+        return _photometric_map(d, views, sources[iid], iid, pts, sets, params)
+
+    if sgbm and workers > 1 and len(ids) > 1:
+        import cv2
+
+        cv_threads = cv2.getNumThreads()
+        cv2.setNumThreads(1)  # the parallelism is over reference images: no nested pools
+        try:
+            with ThreadPoolExecutor(max_workers=workers) as ex:
+                return sum(track(ex.map(one, ids), label, total=len(ids), unit="views"))
+        finally:
+            cv2.setNumThreads(cv_threads)
+    return sum(one(i) for i in track(ids, label, unit="views"))
+
+
+def _photometric_map(d: Path, views, src_ids: list, iid: int, pts, sets, params: DenseParams) -> int:
+    """Depth map of one reference image by ``params.method``, written to
+    ``stereo/depth_maps/NAME.photometric.bin``; returns its valid pixels."""
+    from workstation.photogrammetry.sgbm import sgbm_depth
+
+    v = views[iid]
+    out = d / "stereo" / "depth_maps" / f"{v.name}.photometric.bin"
+    if not src_ids:
+        log.warning("%s: no source view in the angle range; no depth map", v.name)
+        write_array(np.zeros((v.height, v.width), np.float32), out)
+        return 0
+    sgbm = params.method == "sgbm"
+    dtype = np.uint8 if sgbm else np.float32
+    ref = _grey(d / "images" / v.name, (v.width, v.height), dtype)
+    srcs = [views[j] for j in src_ids]
+    imgs = [_grey(d / "images" / s.name, (s.width, s.height), dtype) for s in srcs]
+    ti = time.perf_counter()
+    if sgbm:
+        shared = [pts[np.fromiter(sets[iid] & sets[j], np.int64)] if len(pts) else None for j in src_ids]
+        depth = sgbm_depth(ref, v, imgs, srcs, params.sgbm, params.max_rel_depth, params.min_texture,
+                           params.window, shared)
+    else:
+        depth, _ = plane_sweep(ref, v, imgs, srcs, params)
+    write_array(depth, out)
+    log.info("depth map %s: %.0f %% of pixels, %d sources, %.1f s", v.name, 100.0 * float((depth > 0).mean()),
+             len(srcs), time.perf_counter() - ti)
+    return int((depth > 0).sum())
+
+
+def _geometric_maps(d: Path, views, sources, params: DenseParams) -> int:
+    """Geometric filter of every photometric map against its sources' maps, normals; writes
+    ``NAME.geometric.bin`` depth and normal maps and returns the valid pixels."""
+    from workstation.core.progress import track
+
+    dm, nm = d / "stereo" / "depth_maps", d / "stereo" / "normal_maps"
+    valid = 0
     for iid in track(sorted(views), "consistency", unit="views"):
         v = views[iid]
         depth = read_array(dm / f"{v.name}.photometric.bin")
         srcs = [views[j] for j in sources[iid]]
         sd = [read_array(dm / f"{s.name}.photometric.bin") for s in srcs]
         geo = geometric_filter(depth, v, sd, srcs, params)
-        write_array(geo, dm / f"{v.name}.geometric.bin")
         nrm = depth_normals(geo, v.K)
         geo = np.where(np.any(nrm != 0, -1), geo, 0).astype(np.float32)
         write_array(geo, dm / f"{v.name}.geometric.bin")
         write_array(nrm, nm / f"{v.name}.geometric.bin")
-        stats["valid_geometric"] += int((geo > 0).sum())
-    stats["geometric_s"] = time.perf_counter() - t0
-    if stats["valid_geometric"] == 0:
-        raise StageError("dense", "no depth survived the consistency check",
-                         "check the cameras (SfM residuals), lower min_ncc or min_consistent")
-    return stats
+        valid += int((geo > 0).sum())
+    return valid
 
 
 def fuse(dense_dir, params: DenseParams = DenseParams()):
@@ -680,7 +795,8 @@ def fuse(dense_dir, params: DenseParams = DenseParams()):
 
 
 def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), overwrite: bool = False):
-    """Undistort, compute depth/normal maps (CUDA PatchMatch or CPU plane sweep), fuse.
+    """Undistort, compute depth/normal maps (CUDA PatchMatch, or on the CPU ``params.method``:
+    pairwise SGBM or the plane sweep), fuse.
 
     Parameters
     ----------
@@ -697,7 +813,7 @@ def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), over
     cloud : Cloud
         Fused points (model frame) with ``rgb`` and ``normal``.
     summary : dict
-        Device, timings (s), image count, points.
+        Device, method ("sgbm", "sweep" or "patch_match"), timings (s), image count, points.
     """
     workdir = Path(workdir)
     image_dir = Path(image_dir) if image_dir is not None else workdir / "images"
@@ -710,7 +826,7 @@ def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), over
     t["undistort"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if device == "cuda":
-        stats = _patch_match_cuda(dense_dir, params)
+        stats = {"method": "patch_match", **_patch_match_cuda(dense_dir, params)}
     else:
         stats = compute_depth_maps(dense_dir, params)
     t["depth_maps"] = time.perf_counter() - t0
@@ -720,7 +836,8 @@ def run_dense(workdir, image_dir=None, params: DenseParams = DenseParams(), over
     summary = {"device": device, "points": cloud.n, "timings_s": {k: round(v, 2) for k, v in t.items()},
                "fused": str(dense_dir / "fused.ply"), **stats}
     log.info("dense (%s): %d points in %.1f s", device, cloud.n, sum(t.values()))
-    return cloud.with_history("dense", {"device": device, "max_image_size": params.max_image_size}, sum(t.values())), summary
+    hist = {"device": device, "method": summary.get("method", "patch_match"), "max_image_size": params.max_image_size}
+    return cloud.with_history("dense", hist, sum(t.values())), summary
 
 
 def evaluate(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray, extent: float, samples: np.ndarray) -> dict:
@@ -758,6 +875,7 @@ def evaluate(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray, extent
 
 __all__ = [
     "DEVICES",
+    "METHODS",
     "DenseParams",
     "compute_depth_maps",
     "depth_normals",

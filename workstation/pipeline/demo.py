@@ -27,7 +27,7 @@ STEPS: list[tuple[str, str]] = [
     ("ws run: the ALS flight as a four-tile project on a local Dask cluster", "workstation.pipeline.demo_steps.project:step"),
     ("registration: two stations registered and merged", "workstation.pipeline.demo_steps.registration:step"),
     ("photogrammetry: DLT, resection, intersection, GCP check report", "workstation.pipeline.demo_steps.photogrammetry:step"),
-    ("dense stereo: CPU plane sweep and fusion on a tiny rig", "workstation.pipeline.demo_steps.dense:step"),
+    ("dense stereo: CPU semi-global matching and fusion on a tiny rig", "workstation.pipeline.demo_steps.dense:step"),
     ("renders, terrain mesh, HTML report", "workstation.pipeline.demo_steps.mesh_render:step"),
 ]
 

@@ -1,5 +1,5 @@
 """Demo step of dense reconstruction: a tiny synthetic rig (5 views of a box in front of a wall,
-true cameras) densified by the CPU plane sweep and fused by COLMAP's fusion."""
+true cameras) densified on the CPU (semi-global matching, the default method) and fused by COLMAP's fusion."""
 
 from __future__ import annotations
 
