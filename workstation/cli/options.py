@@ -89,6 +89,19 @@ positive_int = click.IntRange(min=1)
 nonneg_int = click.IntRange(min=0)
 
 
+def float_triple(ctx, param, value):
+    """Click callback: ``"a,b,c"`` -> (a, b, c) floats (None stays None)."""
+    if value is None:
+        return None
+    try:
+        parts = tuple(float(v) for v in value.split(","))
+    except ValueError:
+        raise click.BadParameter("give three comma-separated numbers, e.g. 0.1,0,0.25") from None
+    if len(parts) != 3:
+        raise click.BadParameter("give three comma-separated numbers")
+    return parts
+
+
 def emit_json(obj) -> None:
     """Write one JSON document on stdout (NaN/inf become null)."""
     text = dumps(obj, indent=2)

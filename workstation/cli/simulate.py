@@ -4,20 +4,8 @@ from __future__ import annotations
 
 import click
 
-from .options import allow_outside_option, emit_json, overwrite_option
+from .options import allow_outside_option, emit_json, float_triple, overwrite_option
 from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float, positive_int
-
-
-def _triple(ctx, param, value):
-    if value is None:
-        return None
-    try:
-        parts = tuple(float(v) for v in value.split(","))
-    except ValueError:
-        raise click.BadParameter("give three comma-separated numbers, e.g. 0.01,0,-0.02") from None
-    if len(parts) != 3:
-        raise click.BadParameter("give three comma-separated numbers")
-    return parts
 
 
 def _line_bias(ctx, param, value):
@@ -77,11 +65,11 @@ def _xy(ctx, param, value):
 @click.option("--max-returns", type=click.IntRange(1, 15), default=None, help="Returns recorded per pulse (1-15).")
 @click.option("--no-errors", is_flag=True, help="Perfect measurements: switch every error off (then apply the error options).")
 @click.option("--range-noise", type=nonneg_float, default=None, help="1-sigma range noise in metres.")
-@click.option("--gnss-noise", callback=_triple, default=None, help="1-sigma GNSS noise E,N,U in metres.")
-@click.option("--gnss-bias", callback=_triple, default=None, help="GNSS bias E,N,U in metres.")
-@click.option("--imu-noise", callback=_triple, default=None, help="1-sigma attitude noise roll,pitch,yaw in degrees.")
-@click.option("--lever-arm-error", callback=_triple, default=None, help="Lever-arm error x,y,z (body frame) in metres.")
-@click.option("--boresight-error", callback=_triple, default=None, help="Boresight error roll,pitch,yaw in degrees.")
+@click.option("--gnss-noise", callback=float_triple, default=None, help="1-sigma GNSS noise E,N,U in metres.")
+@click.option("--gnss-bias", callback=float_triple, default=None, help="GNSS bias E,N,U in metres.")
+@click.option("--imu-noise", callback=float_triple, default=None, help="1-sigma attitude noise roll,pitch,yaw in degrees.")
+@click.option("--lever-arm-error", callback=float_triple, default=None, help="Lever-arm error x,y,z (body frame) in metres.")
+@click.option("--boresight-error", callback=float_triple, default=None, help="Boresight error roll,pitch,yaw in degrees.")
 @click.option("--scan-angle-scale", type=FiniteFloatRange(-1.0, 1.0, min_open=True, max_open=True), default=None, help="Relative mirror-angle scale error (negative: smile).")
 @click.option("--scan-angle-offset", type=FiniteFloatRange(-90.0, 90.0, min_open=True, max_open=True), default=None, help="Mirror angle offset in degrees.")
 @click.option("--time-bias", type=finite_float, default=None, help="Scanner-to-navigation clock offset in seconds.")

@@ -4,17 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, json_option, overwrite_option, positive_float
-
-
-def _triple(ctx, param, value):
-    try:
-        parts = tuple(float(v) for v in value.split(","))
-    except ValueError:
-        raise click.BadParameter("give three comma-separated numbers, e.g. 0.1,0,0.25") from None
-    if len(parts) != 3:
-        raise click.BadParameter("give three comma-separated numbers")
-    return parts
+from .options import emit_json, float_triple, json_option, overwrite_option, positive_float
 
 
 def _estimate(ctx, param, value):
@@ -41,9 +31,9 @@ def _estimate(ctx, param, value):
                    "Default: boresight,range with --trajectory, else strip-shift.")
 @click.option("--fixed-strip", type=click.IntRange(0, 65535), default=None,
               help="Point source id of the datum strip (default: the one in the most overlaps).")
-@click.option("--lever-arm", callback=_triple, default="0,0,0", show_default=True,
+@click.option("--lever-arm", callback=float_triple, default="0,0,0", show_default=True,
               help="Nominal lever arm the points were georeferenced with: x,y,z body frame (fwd, right, down) in metres.")
-@click.option("--boresight", callback=_triple, default="0,0,0", show_default=True,
+@click.option("--boresight", callback=float_triple, default="0,0,0", show_default=True,
               help="Nominal boresight roll,pitch,yaw the points were georeferenced with, in degrees.")
 @click.option("--cell", type=positive_float, default=None,
               help="Patch cell side in metres (default: ~40 single returns of one strip per cell).")
