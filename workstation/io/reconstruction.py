@@ -122,7 +122,8 @@ def stage_record(stage: str, figures: dict | None = None, *, inputs: dict, param
     outs = [outputs] if isinstance(outputs, (str, Path)) else list(outputs or [])
     head = {
         "stage": stage,
-        "finished": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
+        # microseconds: stages of a small job finish within one second, and the report orders by this
+        "finished": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="microseconds"),
         "seconds": round(float(seconds), 3),
         "inputs": {k: absolute(v) for k, v in inputs.items()},
         "params": dict(params),

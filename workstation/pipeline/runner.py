@@ -234,8 +234,11 @@ def _execute(todo, manifest, ctx, options, project, failures, on_progress, run_i
                 if ac.is_empty():
                     break
                 while not ac.has_ready():
-                    latch.sleep(0.1)
+                    latch.sleep(0.05)
                 fut = next(ac)
+                if fut.status not in ("finished", "error", "cancelled"):
+                    ac.add(fut)  # its result was lost with a worker and is being computed again
+                    continue
                 t = by_id[fut.key.split("|")[0]]
                 finished.add(t.id)
                 rec = _record(t, fut, futures, manifest, broken, run_id)
