@@ -207,11 +207,24 @@ def bench_temple(work: Path, render: str | None) -> None:
         _render(cloud, render, view=cams[0][1:])
 
 
+def fountain_cameras(folder: Path) -> list:
+    """(image name, Camera, Pose) of the Strecha ``gt_dense_cameras/*.camera`` files of
+    ``folder`` (K, distortion, camera-to-world R, centre C, size), by image name."""
+    from workstation.core.products import Camera, Pose
+
+    cams = []
+    for p in sorted((folder / "gt_dense_cameras").glob("*.camera")):
+        v = np.array(p.read_text().split(), float)
+        K, Rcw, C, (w, h) = v[:9].reshape(3, 3), v[12:21].reshape(3, 3), v[21:24], v[24:26]
+        R = Rcw.T
+        cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, -R @ C)))
+    return cams
+
+
 def bench_fountain(work: Path, size: int, render: str | None, n_images: int = 0, fusion_cache_gb: float = 1.0) -> None:
     """fountain-P11 with true cameras, stage by stage (undistort, depth maps, fusion: what
     ``run_dense`` does on the CPU) so that the peak RSS after each stage is reported.
     ``n_images`` > 0 keeps the first n images (memory against image count at one size)."""
-    from workstation.core.products import Camera, Pose
     from workstation.photogrammetry.dense import (
         compute_depth_maps,
         fuse,
@@ -219,12 +232,7 @@ def bench_fountain(work: Path, size: int, render: str | None, n_images: int = 0,
     )
 
     folder = DATA / "strecha_fountain-P11"
-    cams = []
-    for p in sorted((folder / "gt_dense_cameras").glob("*.camera")):
-        v = np.array(p.read_text().split(), float)
-        K, Rcw, C, (w, h) = v[:9].reshape(3, 3), v[12:21].reshape(3, 3), v[21:24], v[24:26]
-        R = Rcw.T
-        cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]), Pose(R, -R @ C)))
+    cams = fountain_cameras(folder)
     if n_images > 0:
         cams = cams[:n_images]
     name = f"fountain_{len(cams)}_{size}_{METHOD['method']}"

@@ -27,20 +27,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 
-def _cameras(folder: Path) -> list:
-    """(image name, Camera, Pose) of the Strecha ``*.camera`` files (K, distortion, R, C, size)."""
-    from workstation.core.products import Camera, Pose
-
-    cams = []
-    for p in sorted((folder / "gt_dense_cameras").glob("*.camera")):
-        v = np.array(p.read_text().split(), float)
-        K, Rcw, C, (w, h) = v[:9].reshape(3, 3), v[12:21].reshape(3, 3), v[21:24], v[24:26]
-        R = Rcw.T
-        cams.append((p.name.replace(".camera", ""), Camera(int(w), int(h), K[0, 0], K[1, 1], K[0, 2], K[1, 2]),
-                     Pose(R, -R @ C)))
-    return cams
-
-
 def _run(work: Path, folder: Path, cams: list, method: str, size: int) -> tuple[np.ndarray, dict]:
     from bench_dense import _true_workdir
 
@@ -80,7 +66,9 @@ def main() -> None:
     ap.add_argument("--methods", default="cuda,sgbm,sweep")
     a = ap.parse_args()
     folder = a.data / "strecha_fountain-P11"
-    cams = _cameras(folder)
+    from bench_dense import fountain_cameras
+
+    cams = fountain_cameras(folder)
     clouds = {}
     for method in a.methods.split(","):
         try:

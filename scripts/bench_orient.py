@@ -36,11 +36,9 @@ def angle_deg(a, b) -> float:
 
 def fountain_truth() -> dict:
     """name -> camera centre of fountain-P11's true cameras (metres, GT frame)."""
-    out = {}
-    for f in sorted((DATA / "strecha_fountain-P11" / "gt_dense_cameras").glob("*.jpg.camera")):
-        rows = [[float(v) for v in line.split()] for line in f.read_text().splitlines() if line.strip()]
-        out[f.name[: -len(".camera")]] = np.array(rows[7])
-    return out
+    from bench_dense import fountain_cameras
+
+    return {name: -pose.R.T @ pose.t for name, _, pose in fountain_cameras(DATA / "strecha_fountain-P11")}
 
 
 def sfm(images: Path, work: Path, reuse: bool, max_image_size: int):
