@@ -235,7 +235,7 @@ def _merge_runs(dirs, pts, cls, weights, tol):
     return np.array([o[0] for o in out]), np.array([o[1] for o in out]), np.array([o[2] for o in out])
 
 
-def _intersections(dirs, pts):
+def edge_intersections(dirs, pts):
     """Corner k = intersection of edge line k-1 and edge line k."""
     prev = np.roll(np.arange(len(dirs)), 1)
     u, v = dirs[prev], dirs
@@ -249,12 +249,14 @@ def _intersections(dirs, pts):
     return out
 
 
-def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = FootprintParams()) -> np.ndarray:
+def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = FootprintParams(),
+               direction: float | None = None) -> np.ndarray:
     """Douglas-Peucker then orthogonal regularisation of a traced closed ring (k, 2) (m).
 
     Douglas-Peucker at ``DP_TOLERANCE`` spacings; short free edges at corners (chamfers of the smoothed outline,
     under 3 smoothing radii) are dropped; snapped edges share one orientation fitted to all of
-    them; consecutive parallel lines closer than the Douglas-Peucker tolerance are merged.
+    them (or ``direction``, radians, when given: a building part takes its footprint's);
+    consecutive parallel lines closer than the Douglas-Peucker tolerance are merged.
     Returns the counter-clockwise polygon (m, 2); the simplified ring when regularisation fails.
     """
     import shapely
@@ -266,9 +268,9 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
         return ring
     simple = ring[keep]
     segs, chords = _edges(ring, keep)
-    theta0 = _dominant_direction_rect(simple)
+    theta0 = _dominant_direction_rect(simple) if direction is None else float(direction)
     cls, L = _classify(chords, theta0, spacing, params)
-    if (cls >= 0).any():
+    if (cls >= 0).any() and direction is None:
         theta0 = _joint_direction(segs, cls, 2 * CORNER_RADIUS * spacing)
         cls, L = _classify(chords, theta0, spacing, params)
     chamfer = (cls < 0) & (L < 3.0 * CORNER_RADIUS * spacing)
@@ -279,7 +281,7 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     dirs, pts, cls = _merge_runs(dirs, pts, cls, L, tol)
     if len(dirs) < 3:
         return simple
-    poly = _drop_short(_intersections(dirs, pts), spacing / 4)
+    poly = _drop_short(edge_intersections(dirs, pts), spacing / 4)
     if len(poly) < 3 or not shapely.is_valid(shapely.Polygon(poly)):
         return simple
     reg, ref = shapely.Polygon(poly), shapely.Polygon(simple)
@@ -431,10 +433,10 @@ def _orthogonal_pass(rp, fine, spacing, ref):
     dirs, mids, ecls = _merge_runs(dirs, mids, cls[sel], L[sel], tol)
     if len(dirs) < 4:
         return None
-    corners = _intersections(dirs, mids)
+    corners = edge_intersections(dirs, mids)
     nxt = np.roll(corners, -1, axis=0)
     mids, near = _refine_offsets(dirs, 0.5 * (corners + nxt), np.linalg.norm(nxt - corners, axis=1), fine, tol, trim)
-    poly = _drop_short(_intersections(dirs, mids), cell / 2)
+    poly = _drop_short(edge_intersections(dirs, mids), cell / 2)
     if len(poly) < 4 or not shapely.is_valid(shapely.Polygon(poly)):
         return None
     delta = _joint_direction(near, ecls, 0.0) if any(len(q) for q in near) else 0.0

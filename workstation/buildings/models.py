@@ -254,9 +254,85 @@ def split_parts(grid, origin, cell, normals, points, eps):
     return connected_components(g, directed=False)[1]
 
 
-def part_polygons(footprint, grid, origin, cell, part_of_plane):
+def step_split(s_own: np.ndarray, s_other: np.ndarray) -> float:
+    """Offset along an edge normal that best separates a part's points (``s_own``, expected
+    below) from the other parts' points beside it (``s_other``, expected above): the middle of
+    the interval where the fewest points fall on the wrong side.
+
+    Along a straight step edge the part's outermost point and the neighbour's innermost one
+    are each within about 1 / (density x edge length) of the true edge, so the middle of the
+    gap places the edge far closer than the point spacing.
+
+    >>> step_split(np.array([-0.3, -0.1, -0.02]), np.array([0.04, 0.2, 0.5]))
+    0.01
+    """
+    s = np.concatenate([s_own, s_other])
+    order = np.argsort(s, kind="stable")
+    own = np.r_[np.ones(len(s_own), bool), np.zeros(len(s_other), bool)][order]
+    ss = s[order]
+    # wrong when the split lies after position i (between ss[i] and ss[i+1]): own above + other below
+    wrong = (len(s_own) - np.cumsum(own)) + np.cumsum(~own)
+    best = np.flatnonzero(wrong[:-1] == wrong[:-1].min())
+    i = best[len(best) // 2]
+    return round(float(0.5 * (ss[i] + ss[i + 1])), 12)
+
+
+def refine_step_edges(ring: np.ndarray, footprint, xy: np.ndarray, point_part: np.ndarray, q: int,
+                      cell: float) -> np.ndarray:
+    """Part ``q``'s regularised ring (k, 2) with each edge that runs inside the footprint (a
+    step edge between parts) refitted to the points within two cells of it: :func:`step_split`
+    of ``q``'s own points against those of other parts, in each half of the edge, gives two
+    points of the new edge line (its direction from the data, not only from the outline).
+    Edges along the footprint, shorter than four cells, or with under three points on either
+    side of a half, stay where they are."""
+    from .footprints import edge_intersections
+
+    ring = np.asarray(ring, float)
+    seg = np.roll(ring, -1, axis=0) - ring
+    length = np.linalg.norm(seg, axis=1)
+    if len(ring) < 3 or (length <= 0).any():
+        return ring
+    dirs, pts = seg / length[:, None], ring.copy()
+    labelled = point_part >= 0
+    for i, (d, p0, L) in enumerate(zip(dirs.copy(), ring, length)):
+        if L < 4 * cell or footprint.exterior.distance(_shapely_point(p0 + 0.5 * L * d)) < cell:
+            continue
+        nrm = np.array([d[1], -d[0]])  # outward normal of a CCW ring
+        rel = xy - p0
+        along, off = rel @ d, rel @ nrm
+        near = labelled & (np.abs(off) < 2 * cell)
+        ends = []
+        for lo, hi in ((cell, 0.5 * L), (0.5 * L, L - cell)):
+            half = near & (along >= lo) & (along < hi)
+            own, other = half & (point_part == q), half & (point_part != q)
+            if own.sum() < 3 or other.sum() < 3:
+                break
+            ends.append(p0 + 0.5 * (lo + hi) * d + step_split(off[own], off[other]) * nrm)
+        if len(ends) == 2:
+            pts[i], dirs[i] = ends[0], (ends[1] - ends[0]) / np.linalg.norm(ends[1] - ends[0])
+    return edge_intersections(dirs, pts)
+
+
+def _longest_edge_direction(ring: np.ndarray) -> float:
+    """Direction (radians) of the longest edge of a regularised outline: its parts' edges
+    run along it or across it."""
+    e = np.diff(ring, axis=0)
+    k = int(np.argmax(np.hypot(e[:, 0], e[:, 1])))
+    return float(np.arctan2(e[k, 1], e[k, 0]))
+
+
+def _shapely_point(xy):
+    import shapely
+
+    return shapely.Point(float(xy[0]), float(xy[1]))
+
+
+def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_plane=None):
     """Shapely polygons tiling the footprint, one list per part: each smaller part is its
-    traced raster region, regularised and clipped to the footprint, the largest part the rest."""
+    traced raster region, regularised, its step edges placed between the points of the parts
+    (:func:`refine_step_edges`, when the points ``xy`` (n, 2) and their plane indices
+    ``point_plane`` (n,), -1 for none, are given) and clipped to the footprint; the largest
+    part is the rest."""
     import shapely
 
     from .footprints import regularize, trace_outline
@@ -274,15 +350,20 @@ def part_polygons(footprint, grid, origin, cell, part_of_plane):
     _, (ii, jj) = ndimage.distance_transform_edt(full < 0, return_indices=True)
     full = part_of_plane[np.maximum(full[ii, jj], 0)]
     o2 = origin - 2 * cell
+    direction = _longest_edge_direction(np.asarray(footprint.exterior.coords))
     out, taken = {}, shapely.Polygon()
+    near_fp = ndimage.binary_dilation(np.pad(grid >= 0, 2), iterations=2)  # not the box corners
     for q in order[:-1]:
-        mask = full == q
+        mask = (full == q) & near_fp
         if cells[q] < 4:
             continue
         ring = trace_outline(mask.astype(float), o2, cell)
-        ring = regularize(ring, cell)
+        ring = regularize(ring, cell, direction=direction)
         if len(ring) < 3:
             continue
+        if xy is not None:
+            point_part = np.where(point_plane >= 0, part_of_plane[np.maximum(point_plane, 0)], -1)
+            ring = refine_step_edges(ring, footprint, xy, point_part, q, cell)
         geom = shapely.set_precision(shapely.make_valid(shapely.Polygon(ring)).intersection(footprint).difference(taken), GRID)
         polys = [g for g in getattr(geom, "geoms", [geom]) if g.geom_type == "Polygon" and g.area > 4 * cell * cell]
         if polys:
@@ -565,7 +646,7 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
     grid, origin, centres = ownership_raster(fp, xyz, local, len(normals), cell)
     part_of_plane = split_parts(grid, origin, cell, normals, points, planes.threshold)
     solids, roofs = [], []
-    for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane).items():
+    for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane, xyz[:, :2], local).items():
         sel = np.flatnonzero(part_of_plane == q)
         lut = np.full(len(normals), -2, np.int64)
         lut[sel] = np.arange(len(sel))
