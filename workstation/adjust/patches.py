@@ -46,6 +46,7 @@ import numpy as np
 from workstation.core.classes import NOISE
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
+from workstation.core.pca import grouped_plane_fit
 from workstation.qc.swath import SwathParams
 
 log = get_logger(__name__)
@@ -164,18 +165,12 @@ def usable_points(attrs) -> np.ndarray:
 
 def plane_fit(xyz: np.ndarray, slot: np.ndarray, m: int) -> Planes:
     """Planes of the points ``xyz`` (k, 3) grouped by ``slot`` (k,) into ``m`` groups (two passes:
-    centroids, then centred second moments, so large coordinates lose no precision)."""
-    n = np.bincount(slot, minlength=m).astype(float)
-    nn = np.where(n > 0, n, 1.0)
-    c = np.column_stack([np.bincount(slot, xyz[:, i], m) / nn for i in range(3)])
-    d = xyz - c[slot]
-    cov = np.empty((m, 3, 3))
-    for i, j in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)):
-        cov[:, i, j] = cov[:, j, i] = np.bincount(slot, d[:, i] * d[:, j], m) / nn
-    w, v = np.linalg.eigh(cov)
-    normal = v[:, :, 0] * np.where(v[:, 2, 0] < 0, -1.0, 1.0)[:, None]
-    s2 = w[:, 0].clip(0) * n / np.maximum(n - 3, 1)
-    return Planes(c, normal, n.astype(np.int64), s2, w[:, 1])
+    centroids, then centred second moments, so large coordinates lose no precision); the plane
+    variance has the three degrees of freedom of the plane removed."""
+    g = grouped_plane_fit(xyz, slot, m, residuals=False)
+    n = g.counts.astype(float)
+    s2 = g.eigenvalues[:, 0].clip(0) * n / np.maximum(n - 3, 1)
+    return Planes(g.centroids, g.normals, g.counts, s2, g.eigenvalues[:, 1])
 
 
 def auto_cell(xy: np.ndarray, sid: np.ndarray, min_points: int) -> float:

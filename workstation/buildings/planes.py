@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
+from workstation.core.pca import grouped_plane_fit, local_pca
 
 
 @dataclass(frozen=True)
@@ -196,34 +197,19 @@ def local_geometry(xyz: np.ndarray, k: int, chunk: int = 200_000, frame=None):
     times the smallest (its spread across under 3 noise sigmas) has no defined normal and gets
     an infinite sigma. Processed in chunks (memory bounded).
     """
-    from scipy.spatial import cKDTree
-
     k = int(min(k, len(xyz)))
-    q = xyz
+    q = None
     if frame is not None and frame[2] > frame[1]:
         u, a, b, density = frame
         f = min(b / a, max(1.0, 4 * math.pi * density * b * b / k))
         along = xyz[:, :2] @ u
         q = xyz + np.outer(along * (f - 1.0), np.r_[u, 0.0])
-    tree = cKDTree(q)
-    _, idx = tree.query(q, k=k)
-    idx = idx.reshape(len(xyz), k)
-    normals = np.empty((len(xyz), 3))
-    sigma = np.empty(len(xyz))
-    scale = math.sqrt(k / max(k - 3, 1))
-    for s in range(0, len(xyz), chunk):
-        nb = xyz[idx[s:s + chunk]]
-        c = nb - nb.mean(axis=1, keepdims=True)
-        cov = np.einsum("nki,nkj->nij", c, c) / k
-        w, v = np.linalg.eigh(cov)
-        nrm = v[:, :, 0]
-        nrm *= np.where(nrm[:, 2:3] < 0, -1.0, 1.0)
-        normals[s:s + chunk] = nrm
-        sigma[s:s + chunk] = np.sqrt(np.maximum(w[:, 0], 0.0)) * scale
-        # a neighbourhood along one scan line has no defined normal: call it non-planar
-        linear = w[:, 1] < 9.0 * w[:, 0]
-        sigma[s:s + chunk][linear] = np.inf
-    return normals, sigma, idx
+    r = local_pca(xyz, k=k, search_xyz=q, chunk=chunk)
+    w = r.eigenvalues
+    sigma = np.sqrt(np.maximum(w[:, 0], 0.0)) * math.sqrt(k / max(k - 3, 1))
+    # a neighbourhood along one scan line has no defined normal: call it non-planar
+    sigma[w[:, 1] < 9.0 * w[:, 0]] = np.inf
+    return r.normals, sigma, r.indices
 
 
 def fit_plane(pts: np.ndarray):
@@ -283,10 +269,12 @@ def _grow_regions(xyz, normals, sigma, idx, eps, spacing, angle_deg):
     planar = sigma < eps / 1.5
     i = np.repeat(np.arange(n), k - 1)
     j = idx[:, 1:].ravel()
+    both = planar[i] & planar[j]  # the other tests only for pairs of planar points
+    i, j = i[both], j[both]
     diff = xyz[j] - xyz[i]
-    ok = planar[i] & planar[j]
-    ok &= np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
-    ok &= np.abs(np.einsum("ij,ij->i", normals[i], diff)) < eps
+    ni = normals[i]
+    ok = np.einsum("ij,ij->i", ni, normals[j]) > math.cos(math.radians(angle_deg))
+    ok &= np.abs(np.einsum("ij,ij->i", ni, diff)) < eps
     ok &= np.einsum("ij,ij->i", diff, diff) < (3.0 * spacing) ** 2
     g = coo_matrix((np.ones(int(ok.sum()), np.int8), (i[ok], j[ok])), shape=(n, n))
     _, lab = connected_components(g, directed=False)
@@ -353,15 +341,8 @@ def _refit(xyz, labels, min_points):
     remap = np.full(len(cnt) + 1, -1, np.int64)
     remap[keep] = np.arange(len(keep))
     labels = remap[labels]  # -1 maps through the last entry
-    order = np.argsort(labels, kind="stable")
-    lab_sorted = labels[order]
-    bounds = np.searchsorted(lab_sorted, np.arange(len(keep) + 1))
-    normals, offsets, rmse = np.zeros((len(keep), 3)), np.zeros(len(keep)), np.zeros(len(keep))
-    for q in range(len(keep)):
-        pts = xyz[order[bounds[q]:bounds[q + 1]]]
-        normals[q], offsets[q] = fit_plane(pts)
-        rmse[q] = float(np.sqrt(np.mean((pts @ normals[q] + offsets[q]) ** 2)))
-    return labels, normals, offsets, rmse, np.bincount(labels[labels >= 0], minlength=len(keep))
+    g = grouped_plane_fit(xyz, labels, len(keep))
+    return labels, g.normals, g.offsets, g.rms, g.counts
 
 
 def _assign_leftovers(xyz, labels, normals, offsets, idx, eps, rounds: int = 2):

@@ -51,6 +51,7 @@ import numpy as np
 
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
+from workstation.core.pca import sym3_eigen, sym3_eigenvalues, sym3_eigenvector_z  # noqa: F401 (sym3_eigen re-exported)
 
 #: Names of the feature columns, in order.
 FEATURE_NAMES: tuple[str, ...] = (
@@ -300,47 +301,6 @@ def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv
 
 
-def _eigvec_z_parts(a00, a11, a22, a01, a02, a12, lam):
-    """z component (m,) of the unit eigenvectors for eigenvalues ``lam`` (m,) of symmetric 3x3
-    matrices given by their six distinct entries (m,) (contiguous arrays: about twice as fast
-    as strided views of an (m, 3, 3) array): the largest cross product of two rows of
-    (A - lam I), written out per component (the same operations as ``np.cross``; the sign is
-    arbitrary, callers take its magnitude)."""
-    a00, a11, a22 = a00 - lam, a11 - lam, a22 - lam
-    a10, a20, a21 = a01, a02, a12
-    c0 = (a01 * a12 - a02 * a11, a02 * a10 - a00 * a12, a00 * a11 - a01 * a10)  # row 0 x row 1
-    c1 = (a01 * a22 - a02 * a21, a02 * a20 - a00 * a22, a00 * a21 - a01 * a20)  # row 0 x row 2
-    c2 = (a11 * a22 - a12 * a21, a12 * a20 - a10 * a22, a10 * a21 - a11 * a20)  # row 1 x row 2
-    n0 = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]
-    n1 = c1[0] * c1[0] + c1[1] * c1[1] + c1[2] * c1[2]
-    n2 = c2[0] * c2[0] + c2[1] * c2[1] + c2[2] * c2[2]
-    nv = np.maximum(n0, n1)
-    vz = np.where(n2 > nv, c2[2], np.where(n0 >= n1, c0[2], c1[2]))
-    return vz / np.sqrt(np.maximum(np.maximum(nv, n2), 1e-30))
-
-
-def sym3_eigen(cov: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Eigenvalues l1 >= l2 >= l3 of symmetric 3x3 matrices (m, 3, 3), closed form
-    (O. K. Smith 1961, Eigenvalues of a symmetric 3x3 matrix, Comm. ACM 4(4):168)."""
-    return _sym3_eigen_parts(cov[:, 0, 0], cov[:, 1, 1], cov[:, 2, 2], cov[:, 0, 1], cov[:, 0, 2], cov[:, 1, 2])
-
-
-def _sym3_eigen_parts(a00, a11, a22, a01, a02, a12):
-    """:func:`sym3_eigen` of symmetric matrices given by their six distinct entries (m,)."""
-    q = (a00 + a11 + a22) / 3
-    p1 = a01 * a01 + a02 * a02 + a12 * a12
-    b00, b11, b22 = a00 - q, a11 - q, a22 - q
-    p2 = b00 * b00 + b11 * b11 + b22 * b22 + 2 * p1
-    p = np.sqrt(np.maximum(p2 / 6, 1e-30))
-    det = (b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02) + a02 * (a01 * a12 - b11 * a02))
-    r = np.clip(det / (2 * p ** 3), -1, 1)
-    phi = np.arccos(r) / 3
-    l1 = q + 2 * p * np.cos(phi)
-    l3 = q + 2 * p * np.cos(phi + 2 * np.pi / 3)
-    l2 = 3 * q - l1 - l3
-    return l1, l2, l3
-
-
 def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
     """Eigenvalue features of the kNN covariance of each query point among reference points.
 
@@ -408,12 +368,12 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
             acc += tmp
         cov[a] = acc / k
     cov[:3] += 1e-8
-    l1, l2, l3 = _sym3_eigen_parts(*cov)
+    l1, l2, l3 = sym3_eigenvalues(*cov)
     l1 = np.maximum(l1, 1e-12)
     l2 = np.clip(l2, 0, l1)
     l3 = np.clip(l3, 0, l2)
-    nrm_z = _eigvec_z_parts(*cov, l3)  # the normal's and the main direction's z components
-    main_z = _eigvec_z_parts(*cov, l1)
+    nrm_z = sym3_eigenvector_z(*cov, l3)  # the normal's and the main direction's z components
+    main_z = sym3_eigenvector_z(*cov, l1)
     zq = xyz_q[:, 2] - mu[2]  # heights relative to the neighbourhood mean
     out[:, 0] = (l1 - l2) / l1
     out[:, 1] = (l2 - l3) / l1

@@ -125,7 +125,7 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
 def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
     """Smallest plane variance over the whole disc and its four half-discs of each
     neighbourhood ``off`` (m, k, 3), offsets from the query point."""
-    from .features import _sym3_eigen_parts
+    from workstation.core.pca import sym3_eigenvalues
 
     off = off.astype(np.float32, copy=False)  # offsets of a few metres: float32 moments lose nothing at 1 cm
     x, y, z = off[:, :, 0], off[:, :, 1], off[:, :, 2]
@@ -146,7 +146,7 @@ def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
     # the six distinct covariance entries (m, 5) each: xx, yy, zz, xy, xz, yz
     cov = (S[..., 4] / safe - mx * mx, S[..., 7] / safe - my * my, S[..., 9] / safe - mz * mz,
            S[..., 5] / safe - mx * my, S[..., 6] / safe - mx * mz, S[..., 8] / safe - my * mz)
-    l3 = _sym3_eigen_parts(*cov)[2]
+    l3 = sym3_eigenvalues(*cov)[2]
     l3 = np.where(cnt >= max(6, k // 3), l3, np.inf)
     return l3.min(axis=1)
 

@@ -55,6 +55,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
+from workstation.core.pca import local_pca
 from workstation.core.products import Image, Reconstruction
 
 from .georef import Similarity
@@ -265,15 +266,7 @@ def level_rotation(up: np.ndarray) -> np.ndarray:
 def point_normals(points: np.ndarray, k: int = 12) -> np.ndarray:
     """Unit (unsigned) normals of points: the least principal axis of each point's k nearest
     neighbours (Hoppe et al. 1992, "Surface reconstruction from unorganized points")."""
-    from scipy.spatial import cKDTree
-
-    P = np.asarray(points, dtype=float)
-    k = min(k, P.shape[0])
-    _, idx = cKDTree(P).query(P, k=k)
-    nb = P[idx] - P[idx].mean(axis=1, keepdims=True)
-    cov = np.einsum("nki,nkj->nij", nb, nb)
-    _, vecs = np.linalg.eigh(cov)
-    return vecs[:, :, 0]
+    return local_pca(points, k=k, orient=None).normals
 
 
 def _dominant_azimuth(normals_h: np.ndarray) -> float:

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
+from workstation.core.pca import group_moments
 
 _OFF = 1 << 20  # voxel indices are packed as three 21-bit fields
 _GOLD = np.uint64(0x9E3779B97F4A7C15)
@@ -144,13 +145,7 @@ class VoxelPlanes:
         uk, inv, cnt = np.unique(key, return_inverse=True, return_counts=True)
         inv = inv.reshape(-1)
         m = uk.size
-        s = np.column_stack([np.bincount(inv, xyz[:, k], m) for k in range(3)])
-        mu = s / cnt[:, None]
-        d = xyz - mu[inv]
-        C = np.empty((m, 3, 3))
-        for a in range(3):
-            for b in range(a, 3):
-                C[:, a, b] = C[:, b, a] = np.bincount(inv, d[:, a] * d[:, b], m) / cnt
+        _, mu, C = group_moments(xyz, inv, m)  # centroids and covariances of every voxel
         ok = cnt >= min_points
         w, V = np.linalg.eigh(C[ok])
         curv = w[:, 0] / np.maximum(w.sum(axis=1), 1e-300)
