@@ -1,5 +1,9 @@
 """Progress on stderr: a rich bar in a terminal or a notebook, plain lines otherwise.
 
+In a Jupyter notebook the bar is a widget (rich draws it in an ``ipywidgets.Output``) that
+stays under the cell when the work is done, showing the finished state; without
+``ipywidgets`` rich cannot draw it there, so the notebook gets plain lines instead.
+
 When stderr is not a terminal (a batch job, CI, a redirected log), :class:`PlainProgress`
 writes a line now and then instead of a bar: at most one every ``min_interval`` seconds *and*
 every ``min_fraction`` of the work (whichever is rarer), with the percentage, the rate and the
@@ -29,10 +33,15 @@ def stderr_console():
 
 
 def _in_notebook() -> bool:
+    """Whether this runs in a Jupyter kernel where rich can draw a live bar (it needs
+    ``ipywidgets`` for that; without it a notebook counts as a plain stream)."""
     try:
-        return bool(stderr_console().is_jupyter)
-    except Exception:  # noqa: BLE001 - no rich console: not a notebook
+        if not stderr_console().is_jupyter:
+            return False
+        import ipywidgets  # noqa: F401 - rich's Live draws into an ipywidgets.Output
+    except Exception:  # noqa: BLE001 - no rich console or no widgets: no live bar here
         return False
+    return True
 
 
 def progress_mode() -> str:
@@ -159,12 +168,17 @@ def progress_bar(description: str, total: float | None = None, unit: str = "item
         return
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
+    # a terminal's bar is erased when done; a notebook keeps its widget, redrawn here at the
+    # finished state (rich's own redraws there are timed, and it makes none when it stops)
+    notebook = _in_notebook()
     with Progress(
         TextColumn("[bold]{task.description}"), BarColumn(), TextColumn("{task.percentage:>5.1f}%"),
-        TimeElapsedColumn(), TimeRemainingColumn(), console=stderr_console(), transient=True,
+        TimeElapsedColumn(), TimeRemainingColumn(), console=stderr_console(), transient=not notebook,
     ) as prog:
         task = prog.add_task(description, total=total)
         yield lambda n=1: prog.advance(task, n)
+        if notebook:
+            prog.refresh()
 
 
 def track(items: Iterable[T], description: str, total: int | None = None, unit: str = "items") -> Iterator[T]:

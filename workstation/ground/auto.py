@@ -15,7 +15,6 @@ filtering").
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -24,8 +23,7 @@ from workstation.core.cloud import Cloud
 
 from . import common
 from .csf import CSFParams, csf_ground
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 from .patches import PatchParams, raised_patches
 from .pmf import PMFParams, pmf_ground
 from .ptd import PTDParams, ptd_ground
@@ -37,8 +35,10 @@ STAGE = "ground.auto"
 
 
 @dataclass(frozen=True)
-class AutoParams:
-    """Parameters of the ``auto`` vote. Lengths in metres.
+class AutoParams(FilterOptions):
+    """Parameters of the ``auto`` vote and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`; those of the members are not used).
+    Lengths in metres.
 
     Attributes
     ----------
@@ -65,8 +65,6 @@ class AutoParams:
     understorey : bool
         Take the understorey out of the ground under canopy (True; needs return numbers).
     understorey_params : UnderstoreyParams
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     smrf_wide: SMRFParams = field(default_factory=lambda: SMRFParams(slope=0.15, window=30.0, trend_slope=1.0))
@@ -81,15 +79,9 @@ class AutoParams:
     riser_params: RiserParams = field(default_factory=RiserParams)
     understorey: bool = True
     understorey_params: UnderstoreyParams = field(default_factory=UnderstoreyParams)
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
-PRESETS: dict[str, AutoParams] = {k: AutoParams() for k in ("default", "flat", "urban", "forest", "steep")}
+PRESETS: dict[str, AutoParams] = common.presets(AutoParams)  # one parameter set for all terrain
 
 
 MEMBERS = ("smrf_wide", "smrf_tight", "pmf", "csf", "ptd")
@@ -130,11 +122,13 @@ def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or AutoParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    share = None
-    if p.understorey and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs:
-        share = canopy_share(prep.xyz[:, :2], np.asarray(cloud.attrs["return_number"])[prep.index],
-                             np.asarray(cloud.attrs["number_of_returns"])[prep.index], p.understorey_params.canopy_cell)
-    return common.write_classes(cloud, prep, auto_ground(prep.xyz, p, share), STAGE, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE, lambda prep: auto_ground(prep.xyz, p, _canopy_share(cloud, prep, p)))
+
+
+def _canopy_share(cloud: Cloud, prep: common.Prepared, p: AutoParams) -> np.ndarray | None:
+    """:func:`~workstation.ground.understorey.canopy_share` of the prepared points, None when
+    the understorey step is off or the cloud has no return numbers."""
+    if not (p.understorey and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs):
+        return None
+    return canopy_share(prep.xyz[:, :2], np.asarray(cloud.attrs["return_number"])[prep.index],
+                        np.asarray(cloud.attrs["number_of_returns"])[prep.index], p.understorey_params.canopy_cell)

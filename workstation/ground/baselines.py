@@ -13,24 +13,23 @@ Low noise is set aside first by the low-noise step of every filter (``noise=True
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 
 STAGE_LOWEST = "ground.lowest"
 STAGE_LOCALMIN = "ground.local_min"
 
 
 @dataclass(frozen=True)
-class LowestParams:
-    """Lowest point per cell. Lengths in metres.
+class LowestParams(FilterOptions):
+    """Lowest point per cell, and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres.
 
     Attributes
     ----------
@@ -38,23 +37,16 @@ class LowestParams:
         Cell size, metres (5.0).
     threshold : float
         Height above the cell's lowest point still counted as ground, metres (0.3).
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cell: float = 5.0
     threshold: float = 0.3
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
 @dataclass(frozen=True)
-class LocalMinParams:
-    """Local minimum with a slope threshold (Vosselman 2000). Lengths in metres.
+class LocalMinParams(FilterOptions):
+    """Local minimum with a slope threshold (Vosselman 2000), and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres.
 
     Attributes
     ----------
@@ -66,20 +58,17 @@ class LocalMinParams:
         Largest terrain slope, rise over run (0.3).
     threshold : float
         Height tolerance added to the slope term, metres (0.5).
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cell: float = 1.0
     radius: float = 15.0
     slope: float = 0.3
     threshold: float = 0.5
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
+
+
+LOWEST_PRESETS: dict[str, LowestParams] = common.presets(LowestParams)
+LOCAL_MIN_PRESETS: dict[str, LocalMinParams] = common.presets(
+    LocalMinParams, flat={"slope": 0.15}, steep={"slope": 1.0, "threshold": 1.0})
 
 
 def lowest_ground(xyz: np.ndarray, p: LowestParams) -> np.ndarray:
@@ -106,16 +95,10 @@ def local_min_ground(xyz: np.ndarray, p: LocalMinParams) -> np.ndarray:
 def lowest(cloud: Cloud, params: LowestParams | None = None, **overrides) -> Cloud:
     """Classify ground as the lowest point per cell (and points just above it)."""
     p = replace(params or LowestParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE_LOWEST, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    return common.write_classes(cloud, prep, lowest_ground(prep.xyz, p), STAGE_LOWEST, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE_LOWEST, lambda prep: lowest_ground(prep.xyz, p))
 
 
 def local_min(cloud: Cloud, params: LocalMinParams | None = None, **overrides) -> Cloud:
     """Classify ground by the local minimum with a slope threshold (Vosselman 2000)."""
     p = replace(params or LocalMinParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE_LOCALMIN, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    return common.write_classes(cloud, prep, local_min_ground(prep.xyz, p), STAGE_LOCALMIN, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE_LOCALMIN, lambda prep: local_min_ground(prep.xyz, p))

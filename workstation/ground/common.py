@@ -19,6 +19,7 @@ from __future__ import annotations
 import time
 from dataclasses import asdict, dataclass, field
 from functools import lru_cache
+from typing import Callable
 
 import numpy as np
 
@@ -170,6 +171,48 @@ def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage:
     log.info("%s: %d ground of %d points (%.1f %%) in %.2f s", stage, int(ground.sum()), cloud.n,
              100.0 * ground.mean(), time.perf_counter() - t0)
     return out.with_history(stage, pd, time.perf_counter() - t0)
+
+
+def run_filter(cloud: Cloud, params, stage: str, core: Callable[[Prepared], np.ndarray]) -> Cloud:
+    """The run of every ground filter: select and convert the points (:func:`prepare`, with the
+    low-noise step when ``params.noise``), flag their ground with ``core``, write the classes
+    (:func:`write_classes`, bridge decks out when ``params.bridges``).
+
+    Parameters
+    ----------
+    params : FilterOptions
+        The method's parameters (:class:`workstation.ground.options.FilterOptions` fields read
+        here; the history record gets them all).
+    core : callable
+        ``core(prep)``: (m,) bool ground flags of the prepared points ``prep.xyz`` (local
+        metres); ``prep.index`` places them in ``cloud``.
+    """
+    t0 = time.perf_counter()
+    prep = prepare(cloud, stage, params.reclassify, params.last_returns_only,
+                   noise=params.noise_params if params.noise else None)
+    return write_classes(cloud, prep, core(prep), stage, params, t0, params.reclassify)
+
+
+#: The presets every method has (``ws ground --preset``).
+PRESET_NAMES = ("default", "flat", "urban", "forest", "steep")
+
+
+def presets(cls: type, **changes: dict) -> dict:
+    """A method's presets: for each of :data:`PRESET_NAMES`, ``cls`` with the fields of
+    ``changes[name]`` (its defaults for a name not given).
+
+    Examples
+    --------
+    >>> from workstation.ground.smrf import SMRFParams
+    >>> p = presets(SMRFParams, steep={"slope": 0.6})
+    >>> list(p), p["steep"].slope, p["flat"] == SMRFParams()
+    (['default', 'flat', 'urban', 'forest', 'steep'], 0.6, True)
+    """
+    unknown = sorted(set(changes) - set(PRESET_NAMES))
+    if unknown:
+        raise ValueError(f"{cls.__name__}: unknown preset(s) {', '.join(unknown)}; "
+                         f"the presets are {', '.join(PRESET_NAMES)}")
+    return {name: cls(**changes.get(name, {})) for name in PRESET_NAMES}
 
 
 # -- grids -----------------------------------------------------------------------------------

@@ -56,16 +56,14 @@ paper's 3.87 % (tuned per terrain group) is approached, not reached, with one de
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 
 STAGE = "ground.csf"
 
@@ -77,8 +75,9 @@ DAMPING = 0.01
 
 
 @dataclass(frozen=True)
-class CSFParams:
-    """CSF parameters. Lengths in metres, whatever the CRS unit.
+class CSFParams(FilterOptions):
+    """CSF parameters and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres, whatever the CRS unit.
 
     Attributes
     ----------
@@ -106,8 +105,6 @@ class CSFParams:
         Set isolated low points among the particles' lowest points aside before simulating
         (False: the low-noise step, ``noise``, does it for every filter; this k-neighbour test
         also takes out sparse ground under a closed canopy).
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cloth_resolution: float = 0.5
@@ -120,21 +117,11 @@ class CSFParams:
     smooth_threshold: float = 0.3
     empty_fill: str = "ground"
     remove_low_outliers: bool = False
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
-PRESETS: dict[str, CSFParams] = {
-    "default": CSFParams(),
-    "flat": CSFParams(rigidness=3, slope_smooth=False),
-    "urban": CSFParams(rigidness=3, slope_smooth=False),
-    "forest": CSFParams(rigidness=2, cloth_resolution=1.0),
-    "steep": CSFParams(rigidness=1, slope_smooth=True),
-}
+PRESETS: dict[str, CSFParams] = common.presets(
+    CSFParams, flat={"rigidness": 3, "slope_smooth": False}, urban={"rigidness": 3, "slope_smooth": False},
+    forest={"rigidness": 2, "cloth_resolution": 1.0}, steep={"rigidness": 1, "slope_smooth": True})
 
 
 class _StdoutToStderr:
@@ -390,8 +377,4 @@ def csf(cloud: Cloud, params: CSFParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or CSFParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    g = csf_ground(prep.xyz, p)
-    return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE, lambda prep: csf_ground(prep.xyz, p))

@@ -13,7 +13,7 @@ from typing import Callable
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 
-PRESET_NAMES = ("default", "flat", "urban", "forest", "steep")
+from .common import PRESET_NAMES  # noqa: F401 - the preset names, here with the method table
 
 
 @dataclass(frozen=True)
@@ -30,18 +30,15 @@ class Method:
 def _table() -> dict[str, Method]:
     from . import auto, baselines, csf, pmf, ptd, smrf
 
-    flat = {k: baselines.LowestParams() for k in PRESET_NAMES}
-    lm = {k: baselines.LocalMinParams() for k in PRESET_NAMES}
-    lm["steep"] = baselines.LocalMinParams(slope=1.0, threshold=1.0)
-    lm["flat"] = baselines.LocalMinParams(slope=0.15)
     return {
         "smrf": Method("smrf", smrf.smrf, smrf.SMRFParams, smrf.PRESETS, "simple morphological filter (Pingel et al. 2013)"),
         "csf": Method("csf", csf.csf, csf.CSFParams, csf.PRESETS, "cloth simulation filter (Zhang et al. 2016)"),
         "pmf": Method("pmf", pmf.pmf, pmf.PMFParams, pmf.PRESETS, "progressive morphological filter (Zhang et al. 2003)"),
         "ptd": Method("ptd", ptd.ptd, ptd.PTDParams, ptd.PRESETS, "progressive TIN densification (Axelsson 2000)"),
         "auto": Method("auto", auto.auto, auto.AutoParams, auto.PRESETS, "majority vote of SMRF (2 settings), PMF, CSF and PTD"),
-        "lowest": Method("lowest", baselines.lowest, baselines.LowestParams, flat, "lowest point per cell (baseline)"),
-        "local_min": Method("local_min", baselines.local_min, baselines.LocalMinParams, lm,
+        "lowest": Method("lowest", baselines.lowest, baselines.LowestParams, baselines.LOWEST_PRESETS,
+                         "lowest point per cell (baseline)"),
+        "local_min": Method("local_min", baselines.local_min, baselines.LocalMinParams, baselines.LOCAL_MIN_PRESETS,
                             "local minimum with a slope threshold (Vosselman 2000, baseline)"),
     }
 

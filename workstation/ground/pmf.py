@@ -16,23 +16,22 @@ its cell is non-ground. Square openings are separable running minima/maxima (sci
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 
 STAGE = "ground.pmf"
 
 
 @dataclass(frozen=True)
-class PMFParams:
-    """PMF parameters (PDAL's ``filters.pmf`` defaults but a 1 m cell). Lengths in metres.
+class PMFParams(FilterOptions):
+    """PMF parameters (PDAL's ``filters.pmf`` defaults but a 1 m cell) and the options of every
+    filter (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres.
 
     Attributes
     ----------
@@ -48,8 +47,6 @@ class PMFParams:
         Largest height threshold, metres (2.5).
     exponential : bool
         Window sizes 2·2^k + 1 cells (True) or 2k + 1 (False).
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     cell: float = 1.0
@@ -58,21 +55,11 @@ class PMFParams:
     initial_distance: float = 0.15
     max_distance: float = 2.5
     exponential: bool = True
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
-PRESETS: dict[str, PMFParams] = {
-    "default": PMFParams(),
-    "flat": PMFParams(slope=0.3, max_distance=2.0),
-    "urban": PMFParams(slope=0.3, max_window=49.0, max_distance=2.0),
-    "forest": PMFParams(slope=1.0, max_window=17.0),
-    "steep": PMFParams(slope=2.0, max_window=17.0, max_distance=4.0),
-}
+PRESETS: dict[str, PMFParams] = common.presets(
+    PMFParams, flat={"slope": 0.3, "max_distance": 2.0}, urban={"slope": 0.3, "max_window": 49.0, "max_distance": 2.0},
+    forest={"slope": 1.0, "max_window": 17.0}, steep={"slope": 2.0, "max_window": 17.0, "max_distance": 4.0})
 
 
 def _windows(p: PMFParams, shape=None) -> list[int]:
@@ -126,8 +113,4 @@ def pmf(cloud: Cloud, params: PMFParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or PMFParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    g = pmf_ground(prep.xyz, p)
-    return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE, lambda prep: pmf_ground(prep.xyz, p))

@@ -32,23 +32,22 @@ docs/benchmarks.md (Ground filtering).
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 
 STAGE = "ground.ptd"
 
 
 @dataclass(frozen=True)
-class PTDParams:
-    """PTD parameters. Lengths in metres, angles in degrees.
+class PTDParams(FilterOptions):
+    """PTD parameters and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres, angles in degrees.
 
     Attributes
     ----------
@@ -78,8 +77,6 @@ class PTDParams:
         Stop when fewer than this fraction of the candidates joined in an iteration (0.0005).
     max_iterations : int
         (100).
-    reclassify, last_returns_only, noise, noise_params, bridges, bridge_params
-        See :class:`workstation.ground.smrf.SMRFParams`.
     """
 
     seed_cell: float = 20.0
@@ -94,22 +91,14 @@ class PTDParams:
     final_scalar: float = 0.5
     min_added: float = 0.0005
     max_iterations: int = 100
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
-PRESETS: dict[str, PTDParams] = {
-    "default": PTDParams(),
-    "flat": PTDParams(max_angle=10.0, max_distance=1.0, seed_cell=25.0),
-    "urban": PTDParams(max_angle=10.0, max_distance=1.0, seed_cell=40.0),
+PRESETS: dict[str, PTDParams] = common.presets(
+    PTDParams, flat={"max_angle": 10.0, "max_distance": 1.0, "seed_cell": 25.0},
+    urban={"max_angle": 10.0, "max_distance": 1.0, "seed_cell": 40.0},
     # dense forest lidar: no slope allowance in the final test (bcts_1 1 m DTM RMSE 0.36 -> 0.21 m)
-    "forest": PTDParams(seed_cell=15.0, final_threshold=0.3, final_scalar=0.0),
-    "steep": PTDParams(max_angle=30.0, max_distance=2.0, seed_cell=12.0, final_scalar=1.0),
-}
+    forest={"seed_cell": 15.0, "final_threshold": 0.3, "final_scalar": 0.0},
+    steep={"max_angle": 30.0, "max_distance": 2.0, "seed_cell": 12.0, "final_scalar": 1.0})
 
 
 def _seeds(xyz: np.ndarray, cell: float) -> np.ndarray:
@@ -298,8 +287,4 @@ def ptd(cloud: Cloud, params: PTDParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or PTDParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    g = ptd_ground(prep.xyz, p)
-    return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE, lambda prep: ptd_ground(prep.xyz, p))

@@ -40,23 +40,22 @@ judged against a flat-terrain slope where the terrain is flat.
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from workstation.core.cloud import Cloud
 
 from . import common
-from .bridges import BridgeParams
-from .noise import LowNoiseParams
+from .options import FilterOptions
 
 STAGE = "ground.smrf"
 
 
 @dataclass(frozen=True)
-class SMRFParams:
-    """SMRF parameters (PDAL's defaults). Lengths in metres, whatever the CRS unit.
+class SMRFParams(FilterOptions):
+    """SMRF parameters (PDAL's defaults) and the options of every filter
+    (:class:`~workstation.ground.options.FilterOptions`). Lengths in metres, whatever the CRS unit.
 
     Attributes
     ----------
@@ -78,21 +77,6 @@ class SMRFParams:
         Slope-adaptive object test (dimensionless factor; 0 = off, PDAL's behaviour): the
         per-cell slope is ``max(slope, trend_slope · terrain trend slope)``, see the module
         notes.
-    reclassify : bool
-        Overwrite classes other than 0/1/2 and use noise points (False).
-    last_returns_only : bool
-        Only last/only returns can be ground (True, as PDAL's ``returns="last,only"``).
-    noise : bool
-        Run the low-noise step first (True): isolated low points become class 7 and take no
-        part (:func:`workstation.ground.noise.low_noise`; PDAL's ``filters.elm`` before
-        ``filters.smrf``). Off: every point takes part, as in PDAL without it.
-    noise_params : LowNoiseParams
-        Its parameters (metres).
-    bridges : bool
-        Take bridge decks out of the ground as class 17 (True;
-        :func:`workstation.ground.bridges.bridge_decks`), so a DTM runs under them.
-    bridge_params : BridgeParams
-        Its parameters (metres).
     """
 
     cell: float = 1.0
@@ -102,21 +86,12 @@ class SMRFParams:
     scalar: float = 1.25
     low_outliers: bool = False
     trend_slope: float = 0.0
-    reclassify: bool = False
-    last_returns_only: bool = True
-    noise: bool = True
-    noise_params: LowNoiseParams = field(default_factory=LowNoiseParams)
-    bridges: bool = True
-    bridge_params: BridgeParams = field(default_factory=BridgeParams)
 
 
-PRESETS: dict[str, SMRFParams] = {
-    "default": SMRFParams(),
-    "flat": SMRFParams(slope=0.1, window=24.0),
-    "urban": SMRFParams(slope=0.15, window=30.0),
-    "forest": SMRFParams(slope=0.3, window=12.0, threshold=0.45),
-    "steep": SMRFParams(slope=0.6, window=10.0, threshold=0.6, scalar=1.5),
-}
+PRESETS: dict[str, SMRFParams] = common.presets(
+    SMRFParams, flat={"slope": 0.1, "window": 24.0}, urban={"slope": 0.15, "window": 30.0},
+    forest={"slope": 0.3, "window": 12.0, "threshold": 0.45},
+    steep={"slope": 0.6, "window": 10.0, "threshold": 0.6, "scalar": 1.5})
 
 
 def progressive_filter(surface: np.ndarray, cell: float, slope, window: float) -> np.ndarray:
@@ -222,8 +197,4 @@ def smrf(cloud: Cloud, params: SMRFParams | None = None, **overrides) -> Cloud:
         No usable points, or no ground found.
     """
     p = replace(params or SMRFParams(), **overrides)
-    t0 = time.perf_counter()
-    prep = common.prepare(cloud, STAGE, p.reclassify, p.last_returns_only,
-                          noise=p.noise_params if p.noise else None)
-    g = smrf_ground(prep.xyz, p)
-    return common.write_classes(cloud, prep, g, STAGE, p, t0, p.reclassify)
+    return common.run_filter(cloud, p, STAGE, lambda prep: smrf_ground(prep.xyz, p))
