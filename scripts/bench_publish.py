@@ -3,12 +3,14 @@ to its first complete view in headless Chromium (SwiftShader WebGL).
 
     python scripts/bench_publish.py publish --points 20000000 [--out DIR] [--keep]
     python scripts/bench_publish.py viewer --site DIR
+    python scripts/bench_publish.py tiles3d --points 20000000 [--out DIR] [--keep]
 
 Each prints one JSON line. ``publish`` writes a synthetic LAZ (terrain with buildings-like
 blocks, four classes, RGB, intensity; not timed) and times ``publish_site`` on it (COPC
 conversion + statistics + site files); ``viewer`` serves a published site and times the page
 from navigation to ``data-ws-state="ready"`` (the Chromium driver is the one of
-tests/publish/test_publish_site.py).
+tests/publish/test_publish_site.py); ``tiles3d`` times the 3D Tiles tileset of the same synthetic
+LAZ (:func:`workstation.publish.tiles3d.save_tileset`: staging, octree, one GLB per node).
 """
 
 from __future__ import annotations
@@ -81,6 +83,36 @@ def bench_publish(args) -> dict:
     return out
 
 
+def _synthetic_input(args) -> tuple[Path, Path]:
+    """(work folder, its synthetic input/cloud.laz of ``args.points`` points, written once)."""
+    work = Path(args.out or tempfile.mkdtemp(prefix="bench_publish_"))
+    src = work / "input" / "cloud.laz"
+    src.parent.mkdir(parents=True, exist_ok=True)
+    if not src.exists():
+        t = time.perf_counter()
+        synthetic_laz(src, args.points)
+        print(f"# wrote {src} in {time.perf_counter() - t:.1f} s", file=sys.stderr)
+    return work, src
+
+
+def bench_tiles3d(args) -> dict:
+    from workstation.publish.tiles3d import save_tileset
+
+    work, src = _synthetic_input(args)
+    t0, c0 = time.perf_counter(), time.process_time()
+    res = save_tileset(src, work / "3dtiles", overwrite=True)
+    seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    out = {"bench": "tiles3d", "points": res.points, "seconds": round(seconds, 2), "cpu_s": round(cpu, 1),
+           "points_per_s": round(res.points / seconds), "tiles": res.tiles, "levels": res.levels,
+           "tileset_mb": round(res.bytes / 1e6, 1), "input_mb": round(src.stat().st_size / 1e6, 1),
+           "peak_rss_mb": round(max(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss, children.ru_maxrss) / 1024),
+           "load_avg_1min": round(__import__("os").getloadavg()[0], 1), "cpus": __import__("os").cpu_count()}
+    if not args.keep and not args.out:
+        shutil.rmtree(work, ignore_errors=True)
+    return out
+
+
 def bench_viewer(args) -> dict:
     spec = importlib.util.spec_from_file_location("t", REPO / "tests" / "publish" / "test_publish_site.py")
     t = importlib.util.module_from_spec(spec)
@@ -121,8 +153,13 @@ def main() -> None:
     v.add_argument("--screenshot", help="also save the page once ready as this PNG")
     v.add_argument("--size", type=int, nargs=2, default=(640, 480), metavar=("W", "H"), help="window size, pixels")
     v.add_argument("--view", default="", help="a '#view=px,py,pz,tx,ty,tz' camera (CRS units)")
+    t = sub.add_parser("tiles3d", help="time the 3D Tiles tileset of a synthetic LAZ")
+    t.add_argument("--points", type=int, default=20_000_000)
+    t.add_argument("--out", default=None, help="work folder (kept; the LAZ is reused when present)")
+    t.add_argument("--keep", action="store_true", help="keep the temporary work folder")
     args = ap.parse_args()
-    print(json.dumps(bench_publish(args) if args.cmd == "publish" else bench_viewer(args)), flush=True)
+    run = {"publish": bench_publish, "viewer": bench_viewer, "tiles3d": bench_tiles3d}[args.cmd]
+    print(json.dumps(run(args)), flush=True)
 
 
 if __name__ == "__main__":

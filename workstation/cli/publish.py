@@ -17,19 +17,24 @@ from .options import emit_json, json_option, overwrite_option
 @click.option("--title", default=None, help="Page title (default: the name of the first input).")
 @click.option("--preview-size", type=click.IntRange(min=16), default=2048, show_default=True,
               help="Longest side of the raster preview PNGs, pixels.")
+@click.option("--3d-tiles", "tiles3d", is_flag=True,
+              help="Also write 3D Tiles 1.1 (CesiumJS) of every cloud and mesh (OBJ, PLY with faces) in "
+                   "SITE/3dtiles/NAME/tileset.json, georeferenced (ECEF) when the data has a CRS.")
 @click.option("--serve", is_flag=True, help="Then serve the site on localhost (with HTTP Range support) until Ctrl-C.")
 @click.option("--port", type=click.IntRange(0, 65535), default=8000, show_default=True,
               help="Port of --serve (0 picks a free one).")
 @click.option("--host", default="127.0.0.1", show_default=True, help="Address --serve listens on.")
 @overwrite_option
 @json_option
-def publish(inputs, output, title, preview_size, serve, port, host, overwrite, as_json):
+def publish(inputs, output, title, preview_size, tiles3d, serve, port, host, overwrite, as_json):
     """Publish INPUTS (work or product folders, or cloud/raster files) as a static web site.
 
     LAS/LAZ clouds become COPC files streamed by level of detail; hillshade, DTM and ortho
     GeoTIFFs become map previews; cameras.json / COLMAP models become camera frusta. The
     folder works on any static web server that supports HTTP Range requests, with no network
-    access (the JavaScript is vendored, with its licences, in SITE/viewer/).
+    access (the JavaScript is vendored, with its licences, in SITE/viewer/). With --3d-tiles,
+    clouds and meshes are also written as 3D Tiles tilesets for CesiumJS and other 3D Tiles
+    viewers.
     """
     from workstation.cli.summary import count, emit_summary
     from workstation.publish.site import PublishParams, publish_site
@@ -39,15 +44,17 @@ def publish(inputs, output, title, preview_size, serve, port, host, overwrite, a
             raise click.UsageError("give -o SITE (or --serve with a published site as the only input)")
         return _serve(Path(inputs[0]), host, port)
     res = publish_site(list(inputs), output, overwrite=overwrite,
-                       params=PublishParams(title=title, preview_px=preview_size))
+                       params=PublishParams(title=title, preview_px=preview_size, tiles3d=tiles3d))
     doc = res.doc
     emit_summary("publish", f"{count(res.points, 'points')} in {count(len(doc['clouds']), 'clouds')}", res.site / "index.html",
-                 res.seconds, details=[count(len(doc["rasters"]), "rasters"), count(len(doc["cameras"]), "cameras")])
+                 res.seconds, details=[count(len(doc["rasters"]), "rasters"), count(len(doc["cameras"]), "cameras"),
+                                       *([count(len(doc["tilesets"]), "3D Tiles tilesets")]
+                                         if "tilesets" in doc else [])])
     if as_json:
         emit_json({"site": str(res.site), "index": str(res.site / "index.html"), "points": res.points,
                    "clouds": [{k: c[k] for k in ("name", "url", "points", "levels", "nodes")} for c in doc["clouds"]],
                    "rasters": [{k: r[k] for k in ("name", "kind", "url")} for r in doc["rasters"]],
-                   "cameras": len(doc["cameras"]), "seconds": res.seconds})
+                   "cameras": len(doc["cameras"]), "tilesets": doc.get("tilesets", []), "seconds": res.seconds})
     if serve:
         _serve(res.site, host, port)
 

@@ -26,7 +26,9 @@ millimetres); ``bounds`` [xmin, ymin, zmin, xmax, ymax, zmax] of all clouds (CRS
 present; ``intensity_range``: the 2nd and 98th percentiles of intensity (raw counts);
 ``rasters``: ``name``, ``kind`` (hillshade / ortho), ``url`` (PNG), ``bounds`` [xmin, ymin,
 xmax, ymax] (CRS units), ``source``, ``crs``; ``cameras``: ``name``, ``center`` [x, y, z] and
-``corners`` (4 × [x, y, z], the image corners at the frustum depth), CRS units.
+``corners`` (4 × [x, y, z], the image corners at the frustum depth), CRS units;
+``tilesets`` (only with ``PublishParams.tiles3d``): the 3D Tiles of
+:func:`workstation.publish.tiles3d.publish_tilesets` (``name``, ``kind``, ``url``, ...).
 """
 
 from __future__ import annotations
@@ -74,6 +76,9 @@ class PublishParams:
     copc : CopcParams or None
         Octree parameters of the COPC writer for LAS/LAZ inputs
         (:class:`workstation.publish.copc.CopcParams`); None uses the writer's defaults.
+    tiles3d : bool
+        Also write a 3D Tiles tileset per cloud and mesh in ``SITE/3dtiles/NAME/``
+        (:func:`workstation.publish.tiles3d.publish_tilesets`, same octree as the COPC).
     """
 
     title: str | None = None
@@ -81,6 +86,7 @@ class PublishParams:
     frustum_depth: float | None = None
     chunk_points: int = 2_000_000
     copc: object | None = None
+    tiles3d: bool = False
 
     def __post_init__(self):
         if self.preview_px < 16:
@@ -477,6 +483,11 @@ def publish_site(inputs, site, *, overwrite: bool = False, params: PublishParams
         extent = float(np.linalg.norm(np.ptp(np.array([c["bounds"] for c in clouds]).reshape(-1, 3), axis=0)))
         cameras = [f for rec in _read_cameras(found.cameras) for f in camera_frusta(rec, params.frustum_depth, extent)]
         doc = _site_doc(title, clouds, stats, rasters, cameras, crs)
+        if params.tiles3d:
+            from workstation.publish.tiles3d import publish_tilesets
+
+            doc["tilesets"] = publish_tilesets(inputs, found.clouds, tmp / "3dtiles", crs=crs, params=params.copc,
+                                               chunk_points=params.chunk_points)
         from workstation.core.jsonutil import dumps
 
         (tmp / "site.json").write_text(dumps(doc, indent=1))
