@@ -53,18 +53,49 @@ def terrain(n, size, seed):
     return np.column_stack([xy[:, 0] + 500_000.3, xy[:, 1] + 5_000_000.7, z]), cls
 
 
+def lattice(spacing, size, angle):
+    """Points on a square lattice (``spacing`` apart, turned by ``angle`` radians) over rolling,
+    twisted ground with one 12 m x 10 m building (class 6): every quad of neighbours is
+    co-circular, points fall on cell edges and cell centres are equally far from several
+    points, the ties where a DEM decides by the rounding of the coordinates."""
+    g = np.arange(0.0, size, spacing)
+    gx, gy = (a.ravel() for a in np.meshgrid(g, g))
+    x, y = np.cos(angle) * gx - np.sin(angle) * gy, np.sin(angle) * gx + np.cos(angle) * gy
+    z = 100.0 + 5.0 * np.sin(x / 7.0) + 0.002 * x * y + 0.5 * np.cos(y / 5.0)
+    roof = (np.abs(x - size / 3) < 6) & (np.abs(y - size / 2) < 5)
+    z[roof] += 8.0
+    cls = np.where(roof, 6, 2).astype(np.uint8)
+    return np.column_stack([x + 500_000.0, y + 5_000_000.0, z]), cls
+
+
+def _write_pair(d, xyz, cls, scale):
+    """(metre file, feet copy): the feet copy holds the metre file's coordinates / 0.3048006096,
+    with the scale and offsets in feet too, so both files store the same integers and hold
+    exactly the same points."""
+    m, f = d / "m.las", d / "f.las"
+    write_las(m, xyz, cls, scale)
+    src = laspy.read(str(m))
+    write_las(f, src.xyz / US_FT, cls, scale / US_FT, feet=True, offsets=np.asarray(src.header.offsets) / US_FT)
+    return m, f
+
+
 @pytest.fixture(scope="module")
 def pair(tmp_path_factory):
     """(metre file, feet copy): 6,000 points over 120 m x 120 m."""
-    d = tmp_path_factory.mktemp("feet")
     xyz, cls = terrain(6000, 120.0, 7)
-    m, f = d / "m.las", d / "f.las"
-    write_las(m, xyz, cls, 1e-4)  # 0.1 mm: fewer exact ties with the filters' thresholds
-    # the feet copy: the metre file's coordinates / 0.3048006096, with the scale and offsets in
-    # feet too, so both files store the same integers and hold exactly the same points
-    src = laspy.read(str(m))
-    write_las(f, src.xyz / US_FT, cls, 1e-4 / US_FT, feet=True, offsets=np.asarray(src.header.offsets) / US_FT)
-    return m, f
+    return _write_pair(tmp_path_factory.mktemp("feet"), xyz, cls, 1e-4)  # 0.1 mm: fewer exact ties with the filters' thresholds
+
+
+@pytest.fixture(scope="module", params=[(0.5, 0.0), (0.8, 0.35)], ids=["grid-0.5m", "turned-0.8m"])
+def lattice_pair(request, tmp_path_factory):
+    """(metre file, feet copy) of a lattice of points (:func:`lattice`, 60 m x 60 m): one on
+    the cell edges of 0.5 m, 1 m and 2 m DEMs, one turned by 20 degrees."""
+    return _lattice_pair(tmp_path_factory, *request.param)
+
+
+def _lattice_pair(tmp_path_factory, spacing, angle):
+    xyz, cls = lattice(spacing, 60.0, angle)
+    return _write_pair(tmp_path_factory.mktemp("lattice"), xyz, cls, 1e-3)
 
 
 def _run(capsys, *args):
@@ -83,10 +114,22 @@ def _dem(capsys, src, out, *opts):
     return _json(capsys, "dem", src, "-o", out, "--overwrite", *opts)
 
 
-@pytest.mark.parametrize("opts", [("--resolution", "1"), ("--resolution", "auto"), ("--resolution", "3ft")])
-def test_dem_in_feet_equals_dem_in_metres(pair, tmp_path, capsys, opts):
+def _assert_same_heights(m_tif, f_tif, scale=US_FT):
+    """The metre raster and the feet raster (values × ``scale``) cover the same cells, with
+    the same cells missing, and every cell holds the same value within 1 mm."""
     from workstation.io.geotiff import read_raster
 
+    rm, rf = read_raster(m_tif), read_raster(f_tif)
+    assert rm.shape == rf.shape
+    np.testing.assert_allclose(np.asarray(rf.transform) * US_FT, rm.transform, atol=1e-3)
+    am, af = np.asarray(rm.array, float), np.asarray(rf.array, float) * scale
+    np.testing.assert_array_equal(np.isnan(am), np.isnan(af))
+    assert np.isfinite(am).sum() > 0.25 * am.size  # not a vacuous comparison
+    np.testing.assert_allclose(af, am, rtol=0, atol=1e-3)
+
+
+@pytest.mark.parametrize("opts", [("--resolution", "1"), ("--resolution", "auto"), ("--resolution", "3ft")])
+def test_dem_in_feet_equals_dem_in_metres(pair, tmp_path, capsys, opts):
     m, f = pair
     jm, _ = _dem(capsys, m, tmp_path / "m.tif", *opts)
     jf, err = _dem(capsys, f, tmp_path / "f.tif", *opts)
@@ -94,24 +137,31 @@ def test_dem_in_feet_equals_dem_in_metres(pair, tmp_path, capsys, opts):
     assert jf["resolution"] == pytest.approx(jm["resolution_m"] / US_FT)
     assert jf["resolution_unit"] == "US survey foot" and jf["z_unit"] == "US survey foot"
     assert f"{jm['resolution_m']:g} m (" in err and "US ft in the CRS units" in err
-    rm, rf = read_raster(tmp_path / "m.tif"), read_raster(tmp_path / "f.tif")
-    assert rm.shape == rf.shape
-    np.testing.assert_allclose(np.asarray(rf.transform) * US_FT, rm.transform, atol=1e-3)
-    am, af = np.asarray(rm.array, float), np.asarray(rf.array, float) * US_FT
-    # the same cells hold the same heights within 1 mm; the few that do not are TIN triangles
-    # whose choice flips on a 1e-10 change of a vertex (slivers on the hull, co-circular
-    # quads): numerical ties of the triangulation, not a unit error
-    both = ~np.isnan(am) & ~np.isnan(af)
-    assert (np.isnan(am) != np.isnan(af)).mean() < 0.005
-    assert (np.abs(am - af)[both] <= 1e-3).mean() > 0.999
-    assert np.median(np.abs(am - af)[both]) < 1e-4
+    _assert_same_heights(tmp_path / "m.tif", tmp_path / "f.tif")
 
 
-@pytest.fixture(scope="module")
-def dems(pair, tmp_path_factory):
+@pytest.mark.parametrize("resolution", ["1", "3ft"])
+@pytest.mark.parametrize("opts", [
+    ("--method", "tin"), ("--method", "nn"), ("--method", "idw"), ("--max-edge", "2"), ("--kind", "dsm"),
+    ("--kind", "dsm", "--method", "tin"), ("--kind", "chm", "--pit-free"),
+], ids=lambda o: "-".join(x.strip("-") for x in o))
+def test_every_dem_of_a_lattice_in_feet_equals_metres(lattice_pair, tmp_path, capsys, opts, resolution):
+    """On a lattice every interpolation meets ties (co-circular quads, points on cell edges,
+    equidistant neighbours, edges as long as the freeze distance); the DEM of the feet copy
+    still matches the metre DEM in every cell."""
+    m, f = lattice_pair
+    _dem(capsys, m, tmp_path / "m.tif", "--resolution", resolution, *opts)
+    _dem(capsys, f, tmp_path / "f.tif", "--resolution", resolution, *opts)
+    _assert_same_heights(tmp_path / "m.tif", tmp_path / "f.tif")
+
+
+@pytest.fixture(scope="module", params=["random", "turned-lattice"])
+def dems(request, tmp_path_factory):
+    """The 1 m DTMs of a metre file and of its feet copy (random points, a turned lattice)."""
     d = tmp_path_factory.mktemp("dems")
     out = []
-    for src in pair:
+    files = request.getfixturevalue("pair") if request.param == "random" else _lattice_pair(tmp_path_factory, 0.8, 0.35)
+    for src in files:
         assert main(["dem", str(src), "-o", str(d / f"{src.stem}.tif"), "--resolution", "1"]) == 0
         out.append(d / f"{src.stem}.tif")
     return out

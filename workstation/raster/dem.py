@@ -18,6 +18,10 @@ Notes
   al. (2014, PE&RS 80(9)): first returns normalised by the DTM, partial TINs of the returns
   above 0, 2, 5, 10, 15 ... m with triangles longer than a freeze distance dropped, and the
   cell-wise maximum of the partial CHMs.
+* Ties (a point on a cell edge, a cell centre as far from several points, co-circular points,
+  an edge as long as the limit, a height at a layer threshold) are settled by fixed rules
+  (:data:`~workstation.raster.grid.TIE`), not by the rounding of the coordinates, so a file
+  and its copy in US feet give the same DEM cell for cell (lattices of points are full of them).
 * ``resolution=None`` (``--resolution auto``): the cell is at least the nominal point spacing
   of the points used, rounded up to a round value (USGS Lidar Base Specification: QL2 data
   with an aggregate nominal pulse spacing ≤ 0.71 m gives a 1 m DEM, QL1 ≤ 0.35 m gives 0.5 m),
@@ -51,11 +55,15 @@ from workstation.core.log import get_logger
 from workstation.core.products import Raster
 from workstation.io.crs import crs_units
 
-from .grid import GridSpec, fill_voids_tin, tin_surface
+from .grid import TIE, GridSpec, fill_voids_tin, tin_surface
 
 log = get_logger(__name__)
 
 KINDS = ("dsm", "dtm", "chm")
+#: The gridding methods of each kind (None: the kind's default, the first listed).
+KIND_METHODS = {"dsm": ("highest", "tin"), "dtm": ("tin", "nn", "idw"), "chm": ("highest", "tin")}
+#: Every gridding method.
+METHODS = ("tin", "nn", "idw", "highest")
 #: Bytes per cell of an in-memory DEM: both accumulators (count, sums, maximum and its
 #: position), the interpolated float64 surface and the float32 result.
 _BYTES_PER_CELL = 96
@@ -119,8 +127,7 @@ class DemParams:
     def __post_init__(self):
         if self.kind not in KINDS:
             raise InvalidInputError(f"unknown kind '{self.kind}'", "use dsm, dtm or chm", field="kind")
-        ok = {"dsm": (None, "highest", "tin"), "dtm": (None, "tin", "nn", "idw"), "chm": (None, "highest", "tin")}
-        if self.method not in ok[self.kind]:
+        if self.method is not None and self.method not in KIND_METHODS[self.kind]:
             raise InvalidInputError(
                 f"method '{self.method}' does not apply to a {self.kind}",
                 "DTM: tin, nn or idw; DSM/CHM: highest or tin", field="method",
@@ -132,9 +139,34 @@ class DemParams:
 
 
 # --------------------------------------------------------------------------- accumulators
+def _cell_index(grid: GridSpec, x, y) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(row, col, inside)`` of points as :meth:`GridSpec.cell_index`, a point within the tie
+    band (:data:`~workstation.raster.grid.TIE` cells) of a cell edge taken as on it: it goes
+    to the cell east or south of the edge, as a point exactly on the edge does. A point on an
+    edge in metres is off it by the rounding of the conversion in feet; without the band it
+    would fall in the other cell and change that cell's representative."""
+    col = np.floor((np.asarray(x) - grid.x0) / grid.res + TIE).astype(np.int64)
+    row = np.floor((grid.y1 - np.asarray(y)) / grid.res + TIE).astype(np.int64)
+    inside = (row >= 0) & (row < grid.rows) & (col >= 0) & (col < grid.cols)
+    return row, col, inside
+
+
+def _bounds_grid(xmin: float, ymin: float, xmax: float, ymax: float, res: float) -> GridSpec:
+    """:meth:`GridSpec.from_bounds` with the tie band of :func:`_cell_index`: a bound within
+    :data:`~workstation.raster.grid.TIE` cells of a multiple of ``res`` is taken as on it, so
+    the grid of a file and of its copy in another unit have the same cells."""
+    if not (res > 0 and math.isfinite(res)):
+        raise InvalidInputError(f"cell size must be positive, got {res}", field="resolution")
+    c0 = math.floor(xmin / res + TIE)
+    r1 = math.floor(ymax / res + TIE) + 1
+    cols = math.floor(xmax / res + TIE) - c0 + 1
+    rows = r1 - math.floor(ymin / res + TIE)
+    return GridSpec(float(c0 * res), float(r1 * res), float(res), int(rows), int(cols))
+
+
 def _in_grid(grid: GridSpec, x, y, z):
     """Cell row/column of the points inside ``grid`` and those points; None when none is."""
-    row, col, inside = grid.cell_index(x, y)
+    row, col, inside = _cell_index(grid, x, y)
     if not inside.all():
         row, col, x, y, z = row[inside], col[inside], x[inside], y[inside], z[inside]
     return None if len(z) == 0 else (row, col, x, y, z)
@@ -348,7 +380,7 @@ def _survey(source, params: DemParams, chunk_size: int, need_area: bool = True) 
         n_first += int(_first_returns(c).sum())
         if c.get("classification") is not None:
             n_ground += int(np.isin(c.get("classification"), list(params.ground_classes)).sum())
-        k = (np.floor(xyz[:, 0] / cov).astype(np.int64) << 32) + (np.floor(xyz[:, 1] / cov).astype(np.int64) + _KEY_BIAS)
+        k = (np.floor(xyz[:, 0] / cov + TIE).astype(np.int64) << 32) + (np.floor(xyz[:, 1] / cov + TIE).astype(np.int64) + _KEY_BIAS)
         keys = np.union1d(keys, np.unique(k))
     if n_all == 0:
         raise InvalidInputError("no points (after removing noise classes) to grid", "check the input file")
@@ -423,7 +455,57 @@ def auto_resolution(n_points: int, area: float, vertical_rmse: float | None = No
 
 
 # --------------------------------------------------------------------------- surfaces
+def _tied(d: np.ndarray, ref: np.ndarray) -> np.ndarray:
+    """Whether distances ``d`` (cells) equal ``ref`` within the tie band of
+    :data:`~workstation.raster.grid.TIE` (relative, and absolute for distances near 0)."""
+    return np.abs(d - ref) <= TIE * (ref + 1.0)
+
+
+def _query_shells(tree, q: np.ndarray, k: int) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """The ``k`` nearest points of each query and every point tied (:func:`_tied`) with the
+    k-th: ``[(rows, d, nb)]`` blocks, the first of the queries with no tie for the k-th place
+    (``k`` columns), then blocks whose last column lies beyond the k-th distance (or that hold
+    every point). On a lattice of points several are often equally far; which of them
+    the k-d tree returns first follows the rounding of the coordinates, so the whole shell is
+    kept and :func:`_shell_weights` shares it out."""
+    n = tree.n
+    kk = min(k + 1, n)
+    d, nb = tree.query(q, k=kk)
+    d, nb = d.reshape(len(q), kk), nb.reshape(len(q), kk)
+    rows = np.arange(len(q))
+    out = []
+    while True:
+        tie = _tied(d[:, -1], d[:, k - 1]) if kk > k else np.zeros(len(rows), bool)
+        open_ = tie & (kk < n)
+        done = ~open_
+        if not out:  # the first query: those with no tie need their first k alone
+            out.append((rows[~tie], d[~tie, :k], nb[~tie, :k]))
+            done = tie & ~open_
+        if done.any():
+            out.append((rows[done], d[done], nb[done]))
+        if not open_.any():
+            return out
+        rows, kk = rows[open_], min(2 * kk, n)
+        d, nb = tree.query(q[rows], k=kk)
+        d, nb = d.reshape(len(rows), kk), nb.reshape(len(rows), kk)
+
+
+def _shell_weights(d: np.ndarray, k: int, w: np.ndarray) -> np.ndarray:
+    """Weights ``w`` of the neighbours (columns, nearest first) with the k-th shell shared out:
+    the points tied with the k-th distance fill the slots the closer ones leave, each with the
+    fraction ``slots / shell size`` of its weight (the mean over every way of breaking the tie);
+    farther points get 0."""
+    kth = d[:, k - 1 : k]
+    shell = _tied(d, kth)
+    inner = (d < kth) & ~shell
+    slots = k - inner.sum(1, keepdims=True)
+    share = slots / np.maximum(shell.sum(1, keepdims=True), 1)
+    return np.where(inner, w, np.where(shell, w * share, 0.0))
+
+
 def _idw(du, dv, z, valid, cells: np.ndarray, k: int, power: float) -> np.ndarray:
+    """Inverse-distance weighting of the ``k`` nearest representatives at the cell centres
+    ``cells``; a tie for the k-th place is shared out (:func:`_shell_weights`)."""
     from scipy.spatial import cKDTree
 
     ii, jj = np.nonzero(valid)
@@ -439,13 +521,27 @@ def _idw(du, dv, z, valid, cells: np.ndarray, k: int, power: float) -> np.ndarra
     step = 1_000_000
     for s in range(0, len(qi), step):
         q = np.column_stack([qj[s : s + step], qi[s : s + step]]).astype(float)
-        d, nb = tree.query(q, k=k)
-        if k == 1:
-            d, nb = d[:, None], nb[:, None]
-        w = 1.0 / np.maximum(d, 1e-6) ** power
-        res[s : s + step] = (w * vals[nb]).sum(1) / w.sum(1)
+        for rows, d, nb in _query_shells(tree, q, k):
+            w = 1.0 / np.maximum(d, 1e-6) ** power
+            w = w if d.shape[1] == k else _shell_weights(d, k, w)
+            res[s + rows] = (w * vals[nb]).sum(1) / w.sum(1)
     out[qi, qj] = res
     return out
+
+
+def _nearest_value(tree, q: np.ndarray, vals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distance to the nearest point of each query and its value; a query equally near several
+    points (a Voronoi edge or corner, within the tie band) takes the mean of their values, so
+    the choice does not follow the rounding of the coordinates."""
+    d, val = np.empty(len(q)), np.empty(len(q))
+    for rows, dd, nb in _query_shells(tree, q, 1):
+        d[rows] = dd[:, 0]
+        if dd.shape[1] == 1:
+            val[rows] = vals[nb[:, 0]]
+            continue
+        tied = _tied(dd, dd[:, :1])
+        val[rows] = np.where(tied, vals[nb], 0.0).sum(1) / tied.sum(1)
+    return d, val
 
 
 def _discrete_sibson(du, dv, z, valid, cells: np.ndarray, fallback: np.ndarray, max_radius: float) -> np.ndarray:
@@ -462,15 +558,17 @@ def _discrete_sibson(du, dv, z, valid, cells: np.ndarray, fallback: np.ndarray, 
     ii, jj = np.nonzero(valid)
     tree = cKDTree(np.column_stack([jj + du[ii, jj], ii + dv[ii, jj]]))
     qi, qj = np.nonzero(cells)
-    d, nb = tree.query(np.column_stack([qj, qi]).astype(float))
-    val = z[ii[nb], jj[nb]]
+    d, val = _nearest_value(tree, np.column_stack([qj, qi]).astype(float), z[ii, jj])
     n = R * C
     flat = qi * C + qj
     total = np.bincount(flat, val, minlength=n)
     count = np.bincount(flat, minlength=n).astype(float)
-    far = d > max_radius
-    order = np.argsort(-np.minimum(d, max_radius))
-    ds = np.minimum(d, max_radius)[order]
+    # a cell scatters to the offsets within its distance, those at the same distance included
+    # (within the tie band): d on a lattice is often exactly an offset's length
+    reach = max_radius + TIE * (max_radius + 1.0)
+    far = d > reach
+    order = np.argsort(-np.minimum(d + TIE * (d + 1.0), reach))
+    ds = np.minimum(d + TIE * (d + 1.0), reach)[order]
     r = int(math.floor(ds[0])) if len(ds) else 0
     oi, oj = np.mgrid[-r : r + 1, -r : r + 1]
     L = np.hypot(oi, oj).ravel()
@@ -522,6 +620,16 @@ def _highest(acc: _MaxAcc, params: DemParams, res: float) -> np.ndarray:
     return fill_voids_tin(out, du, dv, z, valid, max_edge)
 
 
+def _snap01(f: np.ndarray) -> np.ndarray:
+    """Fractions in [0, 1] with those within the tie band of 0 or 1 set to it exactly."""
+    return np.where(f < TIE, 0.0, np.where(f > 1.0 - TIE, 1.0, f))
+
+
+def _term(value: np.ndarray, weight: np.ndarray) -> np.ndarray:
+    """``value * weight``, 0 where the weight is 0 (a missing value with no weight adds 0)."""
+    return np.where(weight > 0, value * weight, 0.0)
+
+
 def sample_bilinear(raster: Raster, x, y) -> np.ndarray:
     """Bilinear interpolation of a single-band raster at world points.
 
@@ -535,8 +643,9 @@ def sample_bilinear(raster: Raster, x, y) -> np.ndarray:
     Returns
     -------
     (n,) float64
-        Values; NaN outside the grid of cell centres' hull or next to a missing cell. Within
-        half a cell of the outer edge the nearest edge cells are used (clamped).
+        Values; NaN outside the grid of cell centres' hull or next to a missing cell (one
+        with a weight above 0). Within half a cell of the outer edge the nearest edge cells
+        are used (clamped).
     """
     a = np.asarray(raster.array, dtype=np.float64)
     if a.ndim == 3:
@@ -554,9 +663,14 @@ def sample_bilinear(raster: Raster, x, y) -> np.ndarray:
     i0 = np.minimum(np.floor(vc).astype(np.int64), max(R - 2, 0))
     j1 = np.minimum(j0 + 1, C - 1)
     i1 = np.minimum(i0 + 1, R - 1)
-    fu = uc - j0
-    fv = vc - i0
-    val = (a[i0, j0] * (1 - fu) * (1 - fv) + a[i0, j1] * fu * (1 - fv) + a[i1, j0] * (1 - fu) * fv + a[i1, j1] * fu * fv)
+    # a point on a row or column of cell centres (within the tie band) uses that row or column
+    # alone: a missing cell beyond it, with weight 0, leaves the value defined whichever side
+    # the rounding of the coordinates puts the point
+    fu = _snap01(uc - j0)
+    fv = _snap01(vc - i0)
+    with np.errstate(invalid="ignore"):
+        val = (_term(a[i0, j0], (1 - fu) * (1 - fv)) + _term(a[i0, j1], fu * (1 - fv))
+               + _term(a[i1, j0], (1 - fu) * fv) + _term(a[i1, j1], fu * fv))
     out[inside] = val
     return out
 
@@ -578,6 +692,12 @@ def height_above_ground(cloud: Cloud, dtm: Raster) -> Cloud:
     return cloud.with_attrs(hag=hag).with_history("hag", {"dtm": str(dtm.meta.get("source", "raster"))}, time.perf_counter() - t0)
 
 
+#: Relative tie band of a height compared with a threshold: float64 elevations carry a rounding
+#: of about 1e-16 x |z| per operation (1e-13 after gridding and bilinear sampling), and 1e-9 x
+#: |z| (0.1 µm at 100 m) holds it with room to spare while real heights almost never fall in it.
+_Z_TIE = 1e-9
+
+
 def _pit_free(source, grid: GridSpec, dtm: np.ndarray, params: DemParams, chunk_size: int) -> np.ndarray:
     """Khosravipour et al. (2014) pit-free CHM from first returns normalised by ``dtm``."""
     dtm_r = Raster(dtm, grid.transform)
@@ -590,8 +710,11 @@ def _pit_free(source, grid: GridSpec, dtm: np.ndarray, params: DemParams, chunk_
             continue
         h = xyz[:, 2] - sample_bilinear(dtm_r, xyz[:, 0], xyz[:, 1])
         ok = np.isfinite(h)
+        # a height at a threshold within the height tie band is in the layer (a point on the
+        # DTM has h = 0 up to the rounding of its elevation)
+        tol = _Z_TIE * np.abs(xyz[:, 2])
         for t, acc in zip(ths, accs):
-            m = ok & (h >= t)
+            m = ok & (h >= t - tol)
             if m.any():
                 acc.add(xyz[m, 0], xyz[m, 1], h[m])
     freeze = (params.pit_free_max_edge / grid.res) if params.pit_free_max_edge else 3.0
@@ -637,7 +760,7 @@ def _build_tiled(source, params: DemParams, grid: GridSpec, method: str, chunk_s
             rec["x"], rec["y"], rec["z"] = xyz[:, 0], xyz[:, 1], xyz[:, 2]
             rec["cls"] = cls_a[keep] if cls_a is not None else 0
             rec["rn"] = rn_a[keep] if rn_a is not None else 1
-            row, col, inside = grid.cell_index(rec["x"], rec["y"])
+            row, col, inside = _cell_index(grid, rec["x"], rec["y"])
             n_used += int((_used(c, params, method)[keep] & inside).sum())  # each point once, not per tile
             for k, (r0, r1, c0, c1) in enumerate(tiles):
                 m = inside & (row >= r0 - buffer) & (row < r1 + buffer) & (col >= c0 - buffer) & (col < c1 + buffer)
@@ -847,7 +970,7 @@ def build_dem(source, params: DemParams = DemParams(), *, chunk_size: int = 2_00
     units = crs_units(crs)
     res, res_m, reason = _resolution(grid, params, survey, units, vrmse)
     if grid is None:
-        grid = _box_grid(box, res) if box is not None else GridSpec.from_bounds(*survey.bounds, res)
+        grid = _box_grid(box, res) if box is not None else _bounds_grid(*survey.bounds, res)
     tiled = bool(tile_cells) and not isinstance(source, Cloud) and grid.rows * grid.cols > tile_cells * tile_cells
     # out of core only the float32 result spans the grid; in memory the per-cell accumulators too;
     # a grid is sized by its points too (CELLS_PER_POINT), never by a bounding box alone

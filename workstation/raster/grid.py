@@ -21,6 +21,12 @@ The TIN machinery is vectorised numpy (no Python loop over points or triangles):
   centres they cover, grouped by bounding-box size so that each group is one array operation;
   triangles whose bounding box holds no cell to fill are skipped (most rim triangles of a
   void fill lie between occupied cells).
+
+Ties: every geometric decision (which diagonal, which Delaunay split of co-circular points,
+whether a cell centre on an edge is inside, whether an edge is as long as the limit) treats
+values equal within :data:`TIE` as equal and settles them by a fixed rule, so the rounding of
+the coordinates — another unit, another origin — does not change the surface
+(:func:`canonical_ties`).
 """
 
 from __future__ import annotations
@@ -32,7 +38,18 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 
-_EPS = 1e-9
+#: Relative tolerance under which two lengths or angles (cell units, radians) are a tie. World
+#: coordinates carry float64 rounding of about 2**-52 * |x| / cell in cell units (1e-9 for
+#: 5e6 m northings on 1 m cells, 2e-8 on 5 cm cells), and a change of unit (metres to US
+#: feet) moves them by that much; a decision inside this band is made by a fixed rule (the
+#: AD diagonal, a fan from the first cell in row-major order) instead of by that rounding, so
+#: the same data in another unit gives the same TIN. It is far below any geometry a DEM can
+#: resolve (a micrometre on a 1 m cell).
+TIE = 1e-6
+#: A cell centre whose barycentric coordinates are all ≥ -_EPS is inside the triangle: one on
+#: an edge or a corner (a point of a lattice on a cell centre) is inside whatever the rounding
+#: of the unit, so the tolerance is the tie band.
+_EPS = TIE
 
 
 @dataclass(frozen=True)
@@ -117,9 +134,12 @@ def _bary(p0u, p0v, p1u, p1v, p2u, p2v, qu, qv):
 
 
 def _edges_ok(tri_u, tri_v, max_edge):
+    """Whether every edge of the triangles (corners ``tri_u[k]``, ``tri_v[k]``, cell units) is
+    at most ``max_edge`` long; an edge equal to it within :data:`TIE` (a lattice spacing that
+    is a whole number of cells) is kept."""
     if max_edge is None:
         return True
-    m2 = max_edge * max_edge
+    m2 = max_edge * max_edge * (1.0 + 2.0 * TIE)
     ok = True
     for a, b in ((0, 1), (1, 2), (2, 0)):
         ok = ok & ((tri_u[a] - tri_u[b]) ** 2 + (tri_v[a] - tri_v[b]) ** 2 <= m2)
@@ -160,7 +180,10 @@ def lattice_tin(du, dv, z, valid, max_edge: float | None = None) -> np.ndarray:
     qvalid = valid[sl["A"]] & valid[sl["B"]] & valid[sl["C"]] & valid[sl["D"]]
     if not qvalid.any():
         return out
-    ad = (U["D"] - U["A"]) ** 2 + (V["D"] - V["A"]) ** 2 <= (U["C"] - U["B"]) ** 2 + (V["C"] - V["B"]) ** 2
+    # the shorter diagonal; AD when the two are equal within TIE (a rectangle, a lattice of points)
+    ad2 = (U["D"] - U["A"]) ** 2 + (V["D"] - V["A"]) ** 2
+    bc2 = (U["C"] - U["B"]) ** 2 + (V["C"] - V["B"]) ** 2
+    ad = ad2 - bc2 <= TIE * (ad2 + bc2)
     # triangle 1: (A, B, D) if AD else (A, B, C); triangle 2: (A, D, C) if AD else (B, D, C)
     def pick(k_ad, k_bc, arr):
         return arr[k_ad] if k_ad == k_bc else np.where(ad, arr[k_ad], arr[k_bc])
@@ -394,6 +417,76 @@ def _dilate(mask: np.ndarray, iterations: int) -> np.ndarray:
     return binary_dilation(mask, structure=np.ones((3, 3), bool), iterations=iterations)
 
 
+def _tie_pairs(pu, pv, s, nb) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs ``(t, n)`` of neighbouring triangles whose four corners lie on one circle within
+    :data:`TIE`: the angles opposite their shared edge sum to π (both Delaunay splits of the
+    quad are valid), each angle well away from 0 and π (no sliver)."""
+    m = len(s)
+    t = np.repeat(np.arange(m), 3)
+    k = np.tile(np.arange(3), m)
+    n = nb.ravel()
+    keep = n > t  # each interior edge once
+    t, k, n = t[keep], k[keep], n[keep]
+    a, p, q = s[t, k], s[t, (k + 1) % 3], s[t, (k + 2) % 3]
+    c = s[n].sum(1) - p - q  # the corner of n off the shared edge pq
+
+    def angle_terms(o):
+        e1u, e1v, e2u, e2v = pu[p] - pu[o], pv[p] - pv[o], pu[q] - pu[o], pv[q] - pv[o]
+        norm = np.sqrt((e1u * e1u + e1v * e1v) * (e2u * e2u + e2v * e2v))
+        return np.abs(e1u * e2v - e1v * e2u), e1u * e2u + e1v * e2v, norm
+
+    sa, ca, na = angle_terms(a)
+    sc, cc, nc = angle_terms(c)
+    with np.errstate(invalid="ignore"):
+        tie = (np.abs(sa * cc + ca * sc) <= TIE * na * nc) & (ca * cc - sa * sc < 0)
+        tie &= (sa > TIE * na) & (sc > TIE * nc)
+    return t[tie], n[tie]
+
+
+def canonical_ties(pu, pv, s, nb) -> np.ndarray:
+    """Delaunay triangles ``s`` (neighbours ``nb``, as scipy gives them) with every set of
+    co-circular corners (within :data:`TIE`) triangulated by a fixed rule.
+
+    Where four or more points lie on one empty circle (a lattice of points, a rectangle of
+    cells) every split is a Delaunay triangulation and Qhull's choice follows the rounding of
+    the coordinates; so the same points in another unit get another TIN. Here the triangles
+    joined by such tied edges (a convex polygon inscribed in the circle) are replaced by the fan
+    from their corner of lowest index, the corners taken in angular order; point indices are in
+    row-major cell order, so a tied lattice quad is split along AD as in :func:`lattice_tin`.
+    A group whose triangles do not make a fan of its corners (not a simple convex polygon) is
+    left as Qhull made it.
+    """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    t, n = _tie_pairs(pu, pv, s, nb)
+    if len(t) == 0:
+        return s
+    m = len(s)
+    lab = connected_components(coo_matrix((np.ones(len(t)), (t, n)), shape=(m, m)), directed=False)[1]
+    size = np.bincount(lab)
+    group = np.flatnonzero(size[lab] > 1)  # triangles in a tie group
+    glab = lab[group]
+    # the corners of each group, once each, in angular order around their mean from the lowest index
+    pairs = np.unique(np.column_stack([np.repeat(glab, 3), s[group].ravel()]), axis=0)
+    pl, pi = pairs[:, 0], pairs[:, 1]
+    cnt = np.bincount(pl, minlength=len(size))
+    cu = np.bincount(pl, pu[pi], minlength=len(size)) / np.maximum(cnt, 1)
+    cv = np.bincount(pl, pv[pi], minlength=len(size)) / np.maximum(cnt, 1)
+    ang = np.arctan2(pv[pi] - cv[pl], pu[pi] - cu[pl])
+    first = np.flatnonzero(np.r_[True, pl[1:] != pl[:-1]])  # pairs are sorted by (group, index)
+    start = np.repeat(ang[first], cnt[pl[first]])
+    order = np.lexsort((np.mod(ang - start, 2 * np.pi), pl))
+    pl, pi = pl[order], pi[order]
+    pos = np.arange(len(pl)) - np.repeat(first, cnt[pl[first]])
+    ok = cnt - 2 == size  # a fan of k corners has k - 2 triangles
+    mid = np.flatnonzero((pos >= 1) & (pos < cnt[pl] - 1) & ok[pl])
+    fan = np.column_stack([pi[np.repeat(first, cnt[pl[first]])][mid], pi[mid], pi[mid + 1]])
+    drop = np.zeros(m, bool)
+    drop[group[ok[glab]]] = True
+    return np.concatenate([s[~drop], fan.astype(s.dtype)])
+
+
 def fill_voids_tin(out, du, dv, z, valid, max_edge: float | None = None, rim: int = 1) -> np.ndarray:
     """Fill the NaN cells of ``out`` from a Delaunay TIN of the occupied cells on void rims.
 
@@ -431,7 +524,7 @@ def fill_voids_tin(out, du, dv, z, valid, max_edge: float | None = None, rim: in
         tri = Delaunay(np.column_stack([pu, pv]))
     except (QhullError, ValueError):
         return out  # collinear or too few distinct points: nothing to triangulate
-    s = tri.simplices
+    s = canonical_ties(pu, pv, tri.simplices, tri.neighbors)
     tu, tv, tz = pu[s], pv[s], pz[s]
     if max_edge is not None:
         ok = _edges_ok(tu.T, tv.T, max_edge)
