@@ -5,8 +5,12 @@ from __future__ import annotations
 
 import click
 
+from workstation.buildings.pipeline import BuildingsParams
+from workstation.buildings.solar import SolarParams
+
 from .options import emit_json, json_option, overwrite_option, read_options
 from .options import FiniteFloatRange, positive_float
+from .options import bound, param_group
 
 OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildings.glb")
 
@@ -19,20 +23,27 @@ OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildi
               help="Building outlines (GeoJSON polygons, in the cloud's CRS) used instead of tracing them.")
 @click.option("--classify", "run_classifier", is_flag=True,
               help="Classify the cloud first with the shipped point classifier (else class 6 is taken as given).")
-@click.option("--building-class", default=6, show_default=True, type=click.IntRange(0, 255), help="Class of roof points.")
-@click.option("--ground-class", default=2, show_default=True, type=click.IntRange(0, 255), help="Class of ground points (DTM).")
-@click.option("--latitude", type=FiniteFloatRange(-90, 90), default=None,
-              help="Site latitude in degrees for the sun (default: from the CRS).")
-@click.option("--longitude", type=FiniteFloatRange(-180, 180), default=None,
-              help="Site longitude in degrees for the sun (default: from the CRS).")
-@click.option("--linke-turbidity", type=positive_float, default=3.5, show_default=True,
-              help="Linke turbidity factor of the clear-sky model (ESRA); 3-4 is typical in central Europe.")
+@param_group(
+    "classes",
+    bound(BuildingsParams, "building_class", "--building-class", show_default=True, type=click.IntRange(0, 255),
+          help="Class of roof points."),
+    bound(BuildingsParams, "ground_class", "--ground-class", show_default=True, type=click.IntRange(0, 255),
+          help="Class of ground points (DTM)."),
+)
+@param_group(
+    "site",
+    bound(SolarParams, "latitude", "--latitude", type=FiniteFloatRange(-90, 90), default=None,
+          help="Site latitude in degrees for the sun (default: from the CRS)."),
+    bound(SolarParams, "longitude", "--longitude", type=FiniteFloatRange(-180, 180), default=None,
+          help="Site longitude in degrees for the sun (default: from the CRS)."),
+    bound(SolarParams, "linke_turbidity", "--linke-turbidity", type=positive_float, show_default=True,
+          help="Linke turbidity factor of the clear-sky model (ESRA); 3-4 is typical in central Europe."),
+)
 @click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null).")
 @overwrite_option
 @read_options
 @json_option
-def buildings(src, out_dir, footprints_path, run_classifier, building_class, ground_class, latitude, longitude,
-              linke_turbidity, no_solar, overwrite, read_opts, as_json):
+def buildings(src, out_dir, footprints_path, run_classifier, classes, site, no_solar, overwrite, read_opts, as_json):
     """Model the buildings of IN: roof planes (region growing + RANSAC), footprints (traced and
     regularised, or --footprints), LoD1.2 blocks and LoD2.2 roofs (closed solids), and the
     clear-sky annual irradiation of every roof face shaded by the DSM."""
@@ -41,7 +52,7 @@ def buildings(src, out_dir, footprints_path, run_classifier, building_class, gro
 
     import numpy as np
 
-    from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+    from workstation.buildings.pipeline import reconstruct_buildings
     from workstation.core.errors import doing
     from workstation.io import check_outputs, read_cloud, work_folder
 
@@ -65,8 +76,8 @@ def buildings(src, out_dir, footprints_path, run_classifier, building_class, gro
         from workstation.core.errors import InvalidInputError
 
         raise InvalidInputError("has no classification", "pass --classify or classify it with ws classify", path=src)
-    solar = None if no_solar else _solar_params(cloud, latitude, longitude, linke_turbidity)
-    params = BuildingsParams(building_class=building_class, ground_class=ground_class, solar=solar)
+    solar = None if no_solar else _solar_params(cloud, site)
+    params = BuildingsParams(**classes, solar=solar)
     with doing(f"modelling the buildings of {src}"):
         result = reconstruct_buildings(cloud.xyz, np.asarray(cloud.attrs["classification"]), params, footprints)
     with work_folder(out):
@@ -74,19 +85,20 @@ def buildings(src, out_dir, footprints_path, run_classifier, building_class, gro
     _report(src, out, result, solar, time.perf_counter() - t0, as_json, paths)
 
 
-def _solar_params(cloud, latitude, longitude, linke):
-    """SolarParams at the given or the CRS-derived site; None (with a warning) without either."""
-    from workstation.buildings.solar import SolarParams
+def _solar_params(cloud, site: dict):
+    """SolarParams at the given (``site``: latitude, longitude, linke_turbidity) or the
+    CRS-derived site; None (with a warning) without either."""
     from workstation.core.log import get_logger
 
+    latitude, longitude = site["latitude"], site["longitude"]
     if latitude is None or longitude is None:
-        site = _site_from_crs(cloud)
-        if site is None:
+        lon_lat = _site_from_crs(cloud)
+        if lon_lat is None:
             get_logger(__name__).warning("no CRS and no --latitude/--longitude: solar potential skipped")
             return None
-        longitude = site[0] if longitude is None else longitude
-        latitude = site[1] if latitude is None else latitude
-    return SolarParams(latitude=latitude, longitude=longitude, linke_turbidity=linke,
+        longitude = lon_lat[0] if longitude is None else longitude
+        latitude = lon_lat[1] if latitude is None else latitude
+    return SolarParams(latitude=latitude, longitude=longitude, linke_turbidity=site["linke_turbidity"],
                        elevation=float(max(0.0, float(cloud.xyz[:, 2].min()))))
 
 

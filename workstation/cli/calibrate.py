@@ -8,8 +8,9 @@ from pathlib import Path
 import click
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
-from workstation.cli.options import FiniteFloatRange, positive_float
+from workstation.cli.options import FiniteFloatRange, field_option, positive_float
 from workstation.core.errors import InvalidInputError
+from workstation.photogrammetry.calibration import ZhangParams
 
 
 def _pair(text: str, what: str, cast=int):
@@ -56,7 +57,7 @@ def calibrate():
 @click.option("--free-k3", is_flag=True, help="Also estimate the 6th-order radial term k3 (wide-angle lenses).")
 @click.option("--no-tangential", is_flag=True, help="Hold the tangential terms p1, p2 at 0.")
 @click.option("--skew", "estimate_skew", is_flag=True, help="Also estimate the skew K[0,1] in pixels (joint refinement after OpenCV).")
-@click.option("--outlier-factor", type=FiniteFloatRange(min=1.0), default=3.0, show_default=True, help="Drop images whose RMS exceeds this multiple of the median per-image RMS.")
+@field_option(ZhangParams, "outlier_factor", "--outlier-factor", type=FiniteFloatRange(min=1.0), show_default=True, help="Drop images whose RMS exceeds this multiple of the median per-image RMS.")
 @output_option
 @overwrite_option
 @json_option
@@ -69,7 +70,6 @@ def zhang(images, board, square, model_file, corners_dir, image_size, free_k3, n
     from workstation.io.atomic import check_output
     from workstation.io.camera import write_camera
     from workstation.photogrammetry.calibration import (
-        ZhangParams,
         calibrate_zhang,
         calibrate_zhang_images,
         list_images,

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import click
 
+from workstation.ml.model import DEVICES, resolve_device
+
 from .options import emit_json, json_option, output_option, overwrite_option, read_options
-from .options import positive_float
+from .options import RegistryChoice, field_option, positive_float
 
 
 @click.command()
@@ -13,7 +15,7 @@ from .options import positive_float
 @output_option
 @click.option("--model", "model_path", default=None, type=click.Path(dir_okay=False),
               help="Model file from `ws train` (default: the shipped models/point_classifier.pt).")
-@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True,
+@field_option(resolve_device, "device", "--device", type=RegistryChoice(DEVICES), show_default=True,
               help="Where the network runs (auto: CUDA when present).")
 @click.option("--tile-points", type=click.IntRange(10_000), default=None,
               help="Largest number of points classified per tile (tiles overlap by the feature radius).")
@@ -47,8 +49,6 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
 
     t0 = time.perf_counter()
     check_output(output, overwrite, inputs=[src])
-    from workstation.ml.model import resolve_device
-
     resolve_device(device)  # --device cuda without CUDA fails before the cloud is read
     clf = PointClassifier.load(model_path, device=device)
     if tile_points:

@@ -12,7 +12,8 @@ from workstation.cli.options import (
     output_option,
     overwrite_option,
 )
-from workstation.cli.options import positive_float, positive_int
+from workstation.cli.options import field_option, positive_float, positive_int
+from workstation.registration.colorize import ColorizeParams
 
 
 @click.command("colorize")
@@ -23,7 +24,8 @@ from workstation.cli.options import positive_float, positive_int
 @output_option
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Folder of the images [default: the folder `ws sfm` recorded in WORKDIR, else WORKDIR/images].")
-@click.option("--max-views", type=positive_int, default=3, show_default=True, help="Best views blended per point.")
+@field_option(ColorizeParams, "max_views", "--max-views", type=positive_int, show_default=True,
+              help="Best views blended per point.")
 @click.option("--depth-maps", "use_depth_maps", is_flag=True,
               help="Test visibility against the MVS depth maps of WORKDIR/dense (ws sfm --dense) and colour from "
                    "its undistorted images, instead of a z-buffer of the cloud (also catches occluders the cloud "
@@ -49,7 +51,6 @@ def colorize(cloud, workdir, output, image_dir, max_views, use_depth_maps, depth
 
     from workstation.cli.summary import count, emit_summary, percent
     from workstation.io import check_output, read_cloud, write_cloud
-    from workstation.registration.colorize import ColorizeParams
     from workstation.registration.colorize import colorize as run_colorize
 
     check_output(output, overwrite, inputs=[cloud])

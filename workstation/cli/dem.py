@@ -4,42 +4,48 @@ from __future__ import annotations
 
 import click
 
+from workstation.raster.dem import KINDS, METHODS, DemParams, build_dem
+
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import GEOTIFF, require_suffix
 from .options import Length, positive_int, positive_length, read_options
+from .options import IntTuple, RegistryChoice, bound, field_option, param_group
 from .pipeline_out import pipeline_out_option
 
 
 @click.command()
 @click.argument("inputs", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @output_option
-@click.option("--kind", type=click.Choice(["dsm", "dtm", "chm"]), default="dtm", show_default=True,
-              help="Surface: DSM (highest returns), DTM (ground TIN), CHM (DSM - DTM).")
-@click.option("--resolution", default="auto", show_default=True, type=Length(auto=True),
-              help="Cell size in metres whatever the CRS unit (or with a unit: 3ft, 1m), or 'auto' "
-                   "(from the point spacing and the 3x vertical-RMSE rule).")
-@click.option("--method", type=click.Choice(["tin", "nn", "idw", "highest"]), default=None,
-              help="DTM: tin (default), nn (natural neighbour) or idw; DSM/CHM: highest (default) or tin (TIN of first returns).")
-@click.option("--vertical-rmse", type=positive_length, default=None,
-              help="Known vertical RMSE of the points in metres (3x rule for auto cells; contour default).")
-@click.option("--max-edge", type=positive_length, default=None,
-              help="Leave voids whose TIN triangles have an edge longer than this (metres) as nodata; default fill all.")
-@click.option("--pit-free", is_flag=True, help="CHM by the pit-free algorithm (Khosravipour et al. 2014).")
-@click.option("--ground-classes", default="2", show_default=True, help="Comma-separated classes used as ground.")
-@click.option("--chunk-size", default=2_000_000, show_default=True, type=positive_int, help="Points read per chunk (memory bound).")
+@param_group(
+    "given",
+    bound(DemParams, "kind", "--kind", type=RegistryChoice(KINDS), show_default=True,
+          help="Surface: DSM (highest returns), DTM (ground TIN), CHM (DSM - DTM)."),
+    bound(DemParams, "resolution", "--resolution", default="auto", show_default=True, type=Length(auto=True),
+          help="Cell size in metres whatever the CRS unit (or with a unit: 3ft, 1m), or 'auto' "
+               "(from the point spacing and the 3x vertical-RMSE rule)."),
+    bound(DemParams, "method", "--method", type=RegistryChoice(METHODS),
+          help="DTM: tin (default), nn (natural neighbour) or idw; DSM/CHM: highest (default) or tin (TIN of first returns)."),
+    bound(DemParams, "vertical_rmse", "--vertical-rmse", type=positive_length,
+          help="Known vertical RMSE of the points in metres (3x rule for auto cells; contour default)."),
+    bound(DemParams, "max_edge", "--max-edge", type=positive_length,
+          help="Leave voids whose TIN triangles have an edge longer than this (metres) as nodata; default fill all."),
+    bound(DemParams, "pit_free", "--pit-free", is_flag=True, help="CHM by the pit-free algorithm (Khosravipour et al. 2014)."),
+    bound(DemParams, "ground_classes", "--ground-classes", type=IntTuple("ground_classes"), show_default=True,
+          help="Comma-separated classes used as ground."),
+)
+@field_option(build_dem, "chunk_size", "--chunk-size", show_default=True, type=positive_int,
+              help="Points read per chunk (memory bound).")
 @read_options(resolution_flag="--copc-resolution")
 @pipeline_out_option
 @overwrite_option
 @json_option
-def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_free, ground_classes, chunk_size,
-        read_opts, pipeline_out, overwrite, as_json):
+def dem(inputs, output, given, chunk_size, read_opts, pipeline_out, overwrite, as_json):
     """Grid INPUTS (one or more point cloud files, mosaicked) into a DSM, DTM or CHM GeoTIFF.
 
     Files are streamed in chunks; the output is a tiled, DEFLATE-compressed GeoTIFF with
     overviews, the input CRS and nodata -9999. With --bounds only the points inside the box are
     read and the grid covers the box (cells aligned to multiples of the cell size).
     """
-    from workstation.core.errors import InvalidInputError
     from workstation.core.log import get_logger
     from workstation.io.geotiff import write_raster
 
@@ -48,18 +54,11 @@ def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_f
         from workstation.io import check_outputs
         from workstation.ops.pdal import dem_equivalent
 
-        why = dem_equivalent(method, kind, pit_free)
+        why = dem_equivalent(given["method"], given["kind"], given["pit_free"])
         if why:
             raise click.UsageError(f"--pipeline-out: {why}")
         check_outputs([output, pipeline_out], overwrite, inputs=inputs)
-    from workstation.raster.dem import DemParams, build_dem
-
-    try:
-        classes = tuple(int(c) for c in ground_classes.split(",") if c.strip())
-    except ValueError:
-        raise InvalidInputError("--ground-classes must be integers like 2,9", field="ground_classes") from None
-    params = DemParams(kind=kind, resolution=resolution, method=method, vertical_rmse=vertical_rmse,
-                       max_edge=max_edge, pit_free=pit_free, ground_classes=classes)
+    params = DemParams(**given)
     from workstation.core.errors import doing
 
     with doing(f"gridding {', '.join(inputs)}"):
@@ -75,6 +74,7 @@ def dem(inputs, output, kind, resolution, method, vertical_rmse, max_edge, pit_f
 
     units = Units.from_dict(r.meta.get("units")) or Units()
     click.echo(f"resolution {units.describe_h(r.meta['resolution_m'])} ({r.meta['resolution_reason']})", err=True)
+    kind = given["kind"]
     get_logger(__name__).info("%s %s written: %d x %d cells", kind, output, *r.shape)
     from workstation.cli.summary import count, emit_summary
 

@@ -10,24 +10,38 @@ from workstation.cli.options import allow_outside_option
 
 from workstation.cli.options import emit_json, json_option, overwrite_option
 from workstation.cli.options import FiniteFloatRange, SentinelIntRange, nonneg_float, nonneg_int, positive_float, positive_int
+from workstation.cli.options import RegistryChoice, bound, param_group
+from workstation.photogrammetry.dense import DEVICES, METHODS, DenseParams
 
 
 @click.command()
 @click.argument("workdir", type=click.Path(file_okay=False, exists=True))
 @click.option("--images", "image_dir", type=click.Path(file_okay=False, exists=True), help="Folder of the original images [default: the folder `ws sfm` recorded in WORKDIR/summary.json, else WORKDIR/images].")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), help="Also write the cloud here (.las, .laz, .ply).")
-@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU --method.")
-@click.option("--method", type=click.Choice(["sgbm", "sweep"]), default="sgbm", show_default=True, help="CPU depth maps: sgbm (rectified pairwise semi-global matching, fast) or sweep (multi-view plane sweep).")
-@click.option("--max-image-size", type=SentinelIntRange(-1, min=1), default=1600, show_default=True, help="Longest side of the images used for stereo, pixels (-1 = full size).")
-@click.option("--sources", "num_sources", type=positive_int, default=None, help="Source views per reference image (CPU path; default 3 for sgbm, 5 for sweep).")
-@click.option("--min-ncc", type=FiniteFloatRange(-1.0, 1.0), default=0.4, show_default=True, help="Smallest aggregated NCC (-1..1) kept (sweep).")
-@click.option("--min-consistent", type=nonneg_int, default=1, show_default=True, help="Source depth maps that must confirm a depth (CPU path).")
-@click.option("--fusion-cache-gb", type=nonneg_float, default=1.0, show_default=True, help="GB of images and depth/normal maps fusion keeps in memory (0 = load all: faster for a few images, memory grows with the image count).")
-@click.option("--depth-range", nargs=2, type=positive_float, help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras).")
+@param_group(
+    "given",
+    bound(DenseParams, "device", "--device", type=RegistryChoice(DEVICES), show_default=True,
+          help="auto: COLMAP PatchMatch when pycolmap has CUDA, else the CPU --method."),
+    bound(DenseParams, "method", "--method", type=RegistryChoice(METHODS), show_default=True,
+          help="CPU depth maps: sgbm (rectified pairwise semi-global matching, fast) or sweep (multi-view plane sweep)."),
+    bound(DenseParams, "max_image_size", "--max-image-size", type=SentinelIntRange(-1, min=1), show_default=True,
+          help="Longest side of the images used for stereo, pixels (-1 = full size)."),
+    bound(DenseParams, "num_sources", "--sources", "num_sources", type=positive_int,
+          help="Source views per reference image (CPU path; default 3 for sgbm, 5 for sweep)."),
+    bound(DenseParams, "min_ncc", "--min-ncc", type=FiniteFloatRange(-1.0, 1.0), show_default=True,
+          help="Smallest aggregated NCC (-1..1) kept (sweep)."),
+    bound(DenseParams, "min_consistent", "--min-consistent", type=nonneg_int, show_default=True,
+          help="Source depth maps that must confirm a depth (CPU path)."),
+    bound(DenseParams, "fusion_cache_gb", "--fusion-cache-gb", type=nonneg_float, show_default=True,
+          help="GB of images and depth/normal maps fusion keeps in memory (0 = load all: faster for a few images, "
+               "memory grows with the image count)."),
+    bound(DenseParams, "depth_range", "--depth-range", nargs=2, type=positive_float,
+          help="NEAR FAR depth in model units for every image (needed when the model has no sparse points, e.g. true rig cameras)."),
+)
 @overwrite_option
 @allow_outside_option
 @json_option
-def dense(workdir, image_dir, output, device, method, max_image_size, num_sources, min_ncc, min_consistent, fusion_cache_gb, depth_range, overwrite, as_json):
+def dense(workdir, image_dir, output, given, overwrite, as_json):
     """Dense reconstruction of WORKDIR (from `ws sfm`, or a synthetic rig folder).
 
     Undistorts the images into WORKDIR/dense (COLMAP layout), computes depth and normal maps
@@ -38,7 +52,7 @@ def dense(workdir, image_dir, output, device, method, max_image_size, num_source
     (shown by `ws report WORKDIR`). --overwrite replaces WORKDIR/dense and the -o file.
     """
     from workstation.io.reconstruction import check_image_files, resolve_image_dir
-    from workstation.photogrammetry.dense import DenseParams, resolve_device, run_dense
+    from workstation.photogrammetry.dense import resolve_device, run_dense
 
     if output is not None and Path(output).suffix.lower() not in (".las", ".laz", ".ply"):
         from workstation.core.errors import InvalidInputError
@@ -48,14 +62,13 @@ def dense(workdir, image_dir, output, device, method, max_image_size, num_source
 
     check_outputs([output], overwrite, inputs=[])
     _check_dense_folder(Path(workdir) / "dense", overwrite)
-    resolve_device(device)  # every input checked before the long run
+    resolve_device(given["device"])  # every input checked before the long run
     names = _model_image_names(workdir)
     image_dir = resolve_image_dir(workdir, image_dir) or Path(workdir) / "images"
     check_image_files(names, image_dir, workdir)
-    params = DenseParams(device=device, method=method, max_image_size=max_image_size, num_sources=num_sources,
-                         top_k=min(2, num_sources or 2), min_ncc=min_ncc, min_consistent=min_consistent,
-                         fusion_cache_gb=fusion_cache_gb,
-                         depth_range=tuple(depth_range) if depth_range else None)
+    depth_range = given["depth_range"]
+    params = DenseParams(**{**given, "depth_range": tuple(depth_range) if depth_range else None},
+                         top_k=min(2, given["num_sources"] or 2))
     with work_folder(Path(workdir) / "dense"):  # a failed run removes what it wrote
         cloud, summary = run_dense(workdir, image_dir, params, overwrite=overwrite)
     if output is not None:

@@ -4,27 +4,33 @@ from __future__ import annotations
 
 import click
 
+from workstation.ground.evaluate import evaluate_clouds
+
 from .options import emit_json, json_option
 from .options import fraction, nonneg_float
+from .options import IntTuple, bound, field_option, param_group
 
 
 @click.command()
 @click.argument("pred", metavar="PRED", type=click.Path(dir_okay=False))
 @click.option("--reference", "ref", required=True, type=click.Path(dir_okay=False),
               help="Reference: a classified LAS/LAZ, or an ISPRS text sample (x y z label; 0 ground, 1 object).")
-@click.option("--tolerance", type=nonneg_float, default=0.01, show_default=True,
-              help="Largest distance for matching points by coordinates, CRS units.")
-@click.option("--min-matched", type=fraction, default=0.5, show_default=True,
-              help="Smallest share of the smaller cloud's points that must be matched (fraction).")
+@param_group(
+    "given",
+    bound(evaluate_clouds, "tolerance", "--tolerance", type=nonneg_float, show_default=True,
+          help="Largest distance for matching points by coordinates, CRS units."),
+    bound(evaluate_clouds, "min_matched", "--min-matched", type=fraction, show_default=True,
+          help="Smallest share of the smaller cloud's points that must be matched (fraction)."),
+)
 @click.option("--plot-dir", type=click.Path(file_okay=False), default=None,
               help="Write errors_plan.png (Type I/II in plan view) and confusion.png into this folder.")
-@click.option("--ground-classes", default="2", show_default=True,
-              help="Classes counted as bare earth in the ground / non-ground view, comma separated "
+@field_option(evaluate_clouds, "ground_classes", "--ground-classes", type=IntTuple("ground_classes", usage=True),
+              show_default=True, help="Classes counted as bare earth in the ground / non-ground view, comma separated "
                    "(e.g. 2,9,11 for simulated truth with water and roads).")
 @click.option("--pred-columns", default=None, help="Column spec when PRED is a text file (must hold classification).")
 @click.option("--overwrite", is_flag=True, help="Replace the plots in --plot-dir if they exist.")
 @json_option
-def evaluate(pred, ref, tolerance, min_matched, plot_dir, ground_classes, pred_columns, overwrite, as_json):
+def evaluate(pred, ref, given, plot_dir, ground_classes, pred_columns, overwrite, as_json):
     """Compare the classes of PRED with a reference (points matched by order or coordinates).
 
     Prints Type I (ground rejected), Type II (object accepted), total error and Cohen's kappa
@@ -35,20 +41,17 @@ def evaluate(pred, ref, tolerance, min_matched, plot_dir, ground_classes, pred_c
 
     import numpy as np
 
-    from workstation.ground.evaluate import evaluate_clouds, plot_confusion, plot_errors, read_reference
+    from workstation.ground.evaluate import plot_confusion, plot_errors, read_reference
     from workstation.io import check_outputs, work_folder, read_cloud
 
-    try:
-        gcls = tuple(int(v) for v in ground_classes.split(",") if v.strip())
-    except ValueError:
-        raise click.UsageError(f"--ground-classes must be integers, got {ground_classes!r}") from None
+    gcls = ground_classes
     if plot_dir:  # before any work: the plots must be new files unless --overwrite
         plots = [Path(plot_dir) / "errors_plan.png", Path(plot_dir) / "confusion.png"]
         if Path(plot_dir).is_dir():
             check_outputs(plots, overwrite, inputs=[pred, ref])
     pc = read_cloud(pred, **({"columns": pred_columns} if pred_columns else {}))
     rc = read_reference(ref)
-    ev, pi, ri = evaluate_clouds(pc, rc, tolerance=tolerance, ground_classes=gcls, min_matched=min_matched)
+    ev, pi, ri = evaluate_clouds(pc, rc, **given, ground_classes=gcls)
     files = {}
     if plot_dir:
         from workstation.ground.evaluate import reference_classes

@@ -4,70 +4,106 @@ from __future__ import annotations
 
 import click
 
+from workstation.ground.methods import METHOD_NAMES, PRESET_NAMES, ground_filter, methods
+from workstation.ground.tiles import TileParams
+
+from .options import RegistryChoice, bound, field_option, param_group
 from .options import emit_json, json_option, output_option, overwrite_option, read_options
 from .options import FiniteFloatRange, nonneg_float, positive_int
 from .options import nonneg_length, positive_length
 from .pipeline_out import pipeline_out_option
 
 
+def _for(field: str) -> str:
+    """The help tag of a filter parameter: the methods whose parameter dataclass has ``field``
+    (``ml`` is the point classifier's :class:`~workstation.ml.ground.MLGroundParams`)."""
+    import dataclasses
+
+    from workstation.ml.ground import MLGroundParams
+
+    names = [n for n, m in methods().items() if field in {f.name for f in dataclasses.fields(m.params)}]
+    if field in {f.name for f in dataclasses.fields(MLGroundParams)}:
+        names.append("ml")
+    return "[all but ml]" if names == list(METHOD_NAMES) else f"[{', '.join(names)}]"
+
+
+def _filter_option(field: str, *decls, **attrs) -> dict:
+    """A filter parameter left to the method's preset unless given (its class is --method's)."""
+    return bound(None, field, *decls, default=None, **attrs)
+
+
 @click.command()
 @click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
 @output_option
-@click.option("--method", type=click.Choice(["smrf", "csf", "pmf", "ptd", "auto", "lowest", "local_min", "ml"]),
-              default="smrf", show_default=True, help="Ground filter.")
-@click.option("--preset", type=click.Choice(["default", "flat", "urban", "forest", "steep"]), default="default",
+@field_option(ground_filter, "method", "--method", type=RegistryChoice(METHOD_NAMES, extra=["ml"]),
+              show_default=True, help="Ground filter.")
+@field_option(ground_filter, "preset", "--preset", type=RegistryChoice(PRESET_NAMES),
               show_default=True, help="Parameter set for a kind of terrain.")
 @click.option("--reclassify", is_flag=True, help="Overwrite every class (also noise and classes other than 0/1/2).")
 @click.option("--all-returns", is_flag=True, help="Let first/intermediate returns be ground too (default: last and only).")
 @click.option("--noise/--no-noise", default=False, show_default=True,
               help="Classify noise first (isolated low points -> 7, outliers -> 7/18).")
 @click.option("--noise-step/--no-noise-step", default=None,
-              help="[all but ml] the low-noise step before the filter: points over 1 m under the lowest points "
+              help=f"{_for('noise')} the low-noise step before the filter: points over 1 m under the lowest points "
                    "around them -> class 7, never ground (default on; as PDAL's filters.elm before filters.smrf).")
 @click.option("--bridges/--no-bridges", default=None,
-              help="[all but ml] take bridge decks out of the ground as class 17 (surfaces spanning a gap at least "
+              help=f"{_for('bridges')} take bridge decks out of the ground as class 17 (surfaces spanning a gap at least "
                    "2 m below them, the road continuing beyond both ends); default on.")
 @click.option("--water", is_flag=True,
               help="Then make the ground on still water class 9 (level single-echo surfaces of 150 m2 or more "
                    "whose banks rise from them), as ws classify does.")
 @click.option("--hag", is_flag=True, help="Add the height above ground (hag, CRS vertical unit) from a ground TIN.")
-@click.option("--cell", type=positive_length, default=None, help="[smrf, pmf, lowest, local_min] grid cell, metres.")
-@click.option("--slope", type=nonneg_float, default=None, help="[smrf, pmf, local_min] terrain slope, rise over run.")
-@click.option("--window", type=positive_length, default=None, help="[smrf] largest window radius, metres.")
-@click.option("--threshold", type=nonneg_length, default=None, help="[smrf, lowest, local_min] elevation threshold, metres.")
-@click.option("--scalar", type=nonneg_float, default=None, help="[smrf] elevation scaling factor (metres per unit slope).")
-@click.option("--trend-slope", type=nonneg_float, default=None,
-              help="[smrf] slope-adaptive object test: per-cell slope max(--slope, factor x mean terrain slope); 0 = off (PDAL).")
-@click.option("--understorey/--no-understorey", default=None,
-              help="[auto] under canopy (multi-echo pulses), keep only the ground's lower envelope (default on).")
-@click.option("--raised-patches/--no-raised-patches", default=None,
-              help="[auto, ml] take out patches of ground that drop by 1 m or more on all sides (roofs, decks; default on).")
-@click.option("--risers/--no-risers", default=None,
-              help="[auto] put back rejected points on terrain steps the ground TIN spans (default on).")
-@click.option("--max-window", type=positive_length, default=None, help="[pmf] largest window size, metres.")
-@click.option("--cloth-resolution", type=positive_length, default=None, help="[csf] particle spacing, metres.")
-@click.option("--rigidness", type=click.IntRange(1, 3), default=None, help="[csf] 1 steep, 2 mixed, 3 flat.")
-@click.option("--class-threshold", type=positive_length, default=None, help="[csf] largest distance to the cloth, metres.")
-@click.option("--iterations", type=positive_int, default=None, help="[csf] largest number of time steps.")
-@click.option("--slope-smooth/--no-slope-smooth", default=None, help="[csf] slope post-processing.")
-@click.option("--max-angle", type=FiniteFloatRange(0.0, 90.0, min_open=True), default=None, help="[ptd] iteration angle, degrees.")
-@click.option("--max-distance", type=positive_length, default=None, help="[ptd] iteration distance, metres.")
-@click.option("--seed-cell", type=positive_length, default=None, help="[ptd] seed cell, metres.")
-@click.option("--tile-points", type=click.IntRange(min=0), default=10_000_000, show_default=True,
-              help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never.")
-@click.option("--tile-buffer", type=nonneg_float, default=60.0, show_default=True,
-              help="Metres of neighbouring points filtered with each tile.")
-@click.option("--tile-workers", type=click.IntRange(min=1), default=1, show_default=True,
-              help="Tiles filtered at once, one process each (memory grows with it).")
+@param_group(
+    "given",
+    _filter_option("cell", "--cell", type=positive_length, help=f"{_for('cell')} grid cell, metres."),
+    _filter_option("slope", "--slope", type=nonneg_float, help=f"{_for('slope')} terrain slope, rise over run."),
+    _filter_option("window", "--window", type=positive_length, help=f"{_for('window')} largest window radius, metres."),
+    _filter_option("threshold", "--threshold", type=nonneg_length,
+                   help=f"{_for('threshold')} elevation threshold, metres."),
+    _filter_option("scalar", "--scalar", type=nonneg_float,
+                   help=f"{_for('scalar')} elevation scaling factor (metres per unit slope)."),
+    _filter_option("trend_slope", "--trend-slope", type=nonneg_float,
+                   help=f"{_for('trend_slope')} slope-adaptive object test: per-cell slope max(--slope, factor x "
+                        "mean terrain slope); 0 = off (PDAL)."),
+    _filter_option("understorey", "--understorey/--no-understorey",
+                   help=f"{_for('understorey')} under canopy (multi-echo pulses), keep only the ground's lower "
+                        "envelope (default on)."),
+    _filter_option("raised_patches", "--raised-patches/--no-raised-patches",
+                   help=f"{_for('raised_patches')} take out patches of ground that drop by 1 m or more on all sides "
+                        "(roofs, decks; default on)."),
+    _filter_option("risers", "--risers/--no-risers",
+                   help=f"{_for('risers')} put back rejected points on terrain steps the ground TIN spans (default on)."),
+    _filter_option("max_window", "--max-window", type=positive_length, help=f"{_for('max_window')} largest window size, metres."),
+    _filter_option("cloth_resolution", "--cloth-resolution", type=positive_length,
+                   help=f"{_for('cloth_resolution')} particle spacing, metres."),
+    _filter_option("rigidness", "--rigidness", type=click.IntRange(1, 3), help=f"{_for('rigidness')} 1 steep, 2 mixed, 3 flat."),
+    _filter_option("class_threshold", "--class-threshold", type=positive_length,
+                   help=f"{_for('class_threshold')} largest distance to the cloth, metres."),
+    _filter_option("iterations", "--iterations", type=positive_int, help=f"{_for('iterations')} largest number of time steps."),
+    _filter_option("slope_smooth", "--slope-smooth/--no-slope-smooth", help=f"{_for('slope_smooth')} slope post-processing."),
+    _filter_option("max_angle", "--max-angle", type=FiniteFloatRange(0.0, 90.0, min_open=True),
+                   help=f"{_for('max_angle')} iteration angle, degrees."),
+    _filter_option("max_distance", "--max-distance", type=positive_length,
+                   help=f"{_for('max_distance')} pmf: largest elevation threshold; ptd: iteration distance; metres."),
+    _filter_option("seed_cell", "--seed-cell", type=positive_length, help=f"{_for('seed_cell')} seed cell, metres."),
+    given_only=True,
+)
+@param_group(
+    "tiles",
+    bound(TileParams, "tile_points", "--tile-points", type=click.IntRange(min=0), show_default=True,
+          help="Filter a larger cloud tile by tile, about this many points a tile (bounded memory); 0 = never."),
+    bound(TileParams, "buffer", "--tile-buffer", type=nonneg_float, show_default=True,
+          help="Metres of neighbouring points filtered with each tile."),
+    bound(TileParams, "workers", "--tile-workers", type=click.IntRange(min=1), show_default=True,
+          help="Tiles filtered at once, one process each (memory grows with it)."),
+)
 @click.option("--columns", default=None, help="Column spec of a text input, e.g. x,y,z,label.")
 @pipeline_out_option
 @overwrite_option
 @read_options
 @json_option
-def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, bridges, water, hag, cell, slope, window, threshold, scalar,
-           trend_slope, understorey, raised_patches, risers, max_window, cloth_resolution, rigidness, class_threshold, iterations, slope_smooth, max_angle,
-           max_distance, seed_cell, tile_points, tile_buffer, tile_workers, columns, pipeline_out, overwrite, read_opts,
-           as_json):
+def ground(src, output, method, preset, reclassify, all_returns, noise, noise_step, bridges, water, hag, given, tiles,
+           columns, pipeline_out, overwrite, read_opts, as_json):
     """Classify the ground of IN with one of the filters; write OUT (any cloud format).
 
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
@@ -85,16 +121,10 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     check_output(output, overwrite, inputs=[src])
     if pipeline_out:
         _check_pipeline_out(method, output, pipeline_out, overwrite, src)
-    given = _given_params(
-        {"cell": cell, "slope": slope, "window": window, "threshold": threshold, "scalar": scalar,
-         "trend_slope": trend_slope, "understorey": understorey, "raised_patches": raised_patches, "risers": risers,
-         "max_window": max_window, "cloth_resolution": cloth_resolution, "rigidness": rigidness,
-         "class_threshold": class_threshold, "iterations": iterations, "slope_smooth": slope_smooth,
-         "max_angle": max_angle, "max_distance": max_distance, "seed_cell": seed_cell},
-        reclassify, all_returns, noise_step, bridges)
-    params = _method_params(method, preset, given, reclassify, raised_patches)
+    given = _given_params(given, reclassify, all_returns, noise_step, bridges)
+    params = _method_params(method, preset, given, reclassify, given.get("raised_patches"))
     cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
-    out, params = _filter(cloud, method, params, given, noise, tile_points, tile_buffer, tile_workers)
+    out, params = _filter(cloud, method, params, given, noise, tiles)
     n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
     out, n_water = _after_filter(out, water, hag)
     write_cloud(out, output, overwrite=overwrite, inputs=[src])
@@ -103,10 +133,10 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     _report(src, output, method, preset, params, out, time.perf_counter() - t0, n_tiles, n_water, water, as_json)
 
 
-def _given_params(options: dict, reclassify: bool, all_returns: bool, noise_step, bridges) -> dict:
-    """The filter parameters the user gave (options left at None are the method's or preset's
-    to decide), with the flags translated to parameter names."""
-    given = {k: v for k, v in options.items() if v is not None}
+def _given_params(given: dict, reclassify: bool, all_returns: bool, noise_step, bridges) -> dict:
+    """The filter parameters the user gave (the options left at None are the method's or
+    preset's to decide), with the flags translated to parameter names."""
+    given = dict(given)
     if reclassify:
         given["reclassify"] = True
     if all_returns:
@@ -135,10 +165,10 @@ def _method_params(method: str, preset: str, given: dict, reclassify: bool, rais
         raise click.UsageError(e.message) from None
 
 
-def _filter(cloud, method: str, params, given: dict, noise: bool, tile_points: int, tile_buffer: float,
-            tile_workers: int):
+def _filter(cloud, method: str, params, given: dict, noise: bool, tiles: dict):
     """Classify noise first if asked, size the default cells by the points, then run the filter:
-    the point classifier, tile by tile above ``tile_points`` points, or on the whole cloud.
+    the point classifier, tile by tile above ``tiles["tile_points"]`` points (``tiles``: the
+    fields of :class:`~workstation.ground.tiles.TileParams`), or on the whole cloud.
     Returns ``(classified cloud, the parameters used)``."""
     from workstation.ground.methods import methods
 
@@ -154,10 +184,10 @@ def _filter(cloud, method: str, params, given: dict, noise: bool, tile_points: i
         from workstation.ml.ground import ml_ground
 
         return ml_ground(cloud, params), params
-    if tile_points and cloud.n > tile_points:
-        from workstation.ground.tiles import TileParams, ground_tiled
+    if tiles["tile_points"] and cloud.n > tiles["tile_points"]:
+        from workstation.ground.tiles import ground_tiled
 
-        return ground_tiled(cloud, method, params, TileParams(tile_points, tile_buffer, tile_workers)), params
+        return ground_tiled(cloud, method, params, TileParams(**tiles)), params
     return methods()[method].func(cloud, params), params
 
 

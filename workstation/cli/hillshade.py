@@ -4,24 +4,33 @@ from __future__ import annotations
 
 import click
 
+from workstation.raster.terrain import PRODUCTS, HillshadeParams
+
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import GEOTIFF, require_suffix
 from .options import FiniteFloatRange, positive_float
+from .options import RegistryChoice, bound, param_group
 
 
 @click.command()
 @click.argument("dem", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--azimuth", default=315.0, show_default=True, type=FiniteFloatRange(0.0, 360.0), help="Light direction, degrees clockwise from north.")
-@click.option("--altitude", default=45.0, show_default=True, type=FiniteFloatRange(0.0, 90.0), help="Light elevation above the horizon, degrees.")
-@click.option("--z-factor", default=1.0, show_default=True, type=positive_float, help="Vertical exaggeration (dimensionless); heights in another unit than the cells "
-                   "(feet on metres) are converted on top of it.")
-@click.option("--product", type=click.Choice(["hillshade", "slope", "aspect"]), default="hillshade", show_default=True,
+@param_group(
+    "light",
+    bound(HillshadeParams, "azimuth", "--azimuth", show_default=True, type=FiniteFloatRange(0.0, 360.0),
+          help="Light direction, degrees clockwise from north."),
+    bound(HillshadeParams, "altitude", "--altitude", show_default=True, type=FiniteFloatRange(0.0, 90.0),
+          help="Light elevation above the horizon, degrees."),
+    bound(HillshadeParams, "z_factor", "--z-factor", show_default=True, type=positive_float,
+          help="Vertical exaggeration (dimensionless); heights in another unit than the cells "
+               "(feet on metres) are converted on top of it."),
+)
+@click.option("--product", type=RegistryChoice(PRODUCTS), default=PRODUCTS[0], show_default=True,
               help="hillshade (0-255), slope (degrees) or aspect (degrees from north).")
 @click.option("--png", type=click.Path(dir_okay=False), default=None, help="Also write a PNG preview of the result.")
 @overwrite_option
 @json_option
-def hillshade(dem, output, azimuth, altitude, z_factor, product, png, overwrite, as_json):
+def hillshade(dem, output, light, product, png, overwrite, as_json):
     """Hillshade, slope or aspect of DEM by Horn (1981) gradients, as a GeoTIFF."""
     from workstation.io import atomic_paths, check_outputs
     from workstation.io.geotiff import read_raster, write_raster
@@ -32,9 +41,9 @@ def hillshade(dem, output, azimuth, altitude, z_factor, product, png, overwrite,
     check_outputs([output, png], overwrite, inputs=[dem])
     r = read_raster(dem, band=1)
     if product == "hillshade":
-        out = terrain.hillshade(r, terrain.HillshadeParams(azimuth, altitude, z_factor))
+        out = terrain.hillshade(r, HillshadeParams(**light))
     elif product == "slope":
-        out = terrain.slope(r, z_factor)
+        out = terrain.slope(r, light["z_factor"])
     else:
         out = terrain.aspect(r)
     if not png:

@@ -9,9 +9,10 @@ import click
 import numpy as np
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
-from workstation.cli.options import positive_float
+from workstation.cli.options import RegistryChoice, field_option, positive_float
 from workstation.cli.pipeline_out import pipeline_out_option, save_pipeline
 from workstation.io.textfile import read_text
+from workstation.ops.merge import SOURCE_IDS, merge_files
 
 
 def read_poses(path, n: int) -> list[np.ndarray]:
@@ -52,7 +53,7 @@ def _save_merge_pipeline(path, inputs, output, overwrite) -> None:
 @click.option("--voxel-size", type=positive_float, default=None, help="Keep one point per voxel of this edge (metres).")
 @click.option("--duplicate-distance", type=positive_float, default=None,
               help="Drop points closer than this (metres) to an earlier input's points (overlap thinning).")
-@click.option("--source-ids", type=click.Choice(["auto", "input", "keep"]), default="auto", show_default=True,
+@field_option(merge_files, "source_ids", "--source-ids", type=RegistryChoice(SOURCE_IDS), show_default=True,
               help="point_source_id of the output: keep the inputs' (flight lines, as PDAL's filters.merge), the "
                    "input number 1, 2, ..., or auto: keep them when an input has non-zero ids (always the input "
                    "number with --poses, --register, --voxel-size or --duplicate-distance).")
@@ -75,8 +76,6 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         raise InvalidInputError("--poses-out writes the poses of --register; add --register")
     check_outputs([output, poses_out, pipeline_out], overwrite, inputs=[*inputs, *([poses_path] if poses_path else [])])
     if not (poses_path or do_register or voxel_size or duplicate_distance):
-        from workstation.ops.merge import merge_files
-
         summary = merge_files(list(inputs), output, source_ids=source_ids, overwrite=overwrite)
         _save_merge_pipeline(pipeline_out, inputs, output, overwrite)
         from workstation.cli.summary import count, emit_summary

@@ -5,49 +5,76 @@ from __future__ import annotations
 import click
 
 from workstation.cli.options import allow_outside_option
+from workstation.mesh import (BallPivotingParams, CleanParams, Delaunay25dParams, MeshChainParams, NormalParams,
+                              PoissonParams, SmoothParams, TextureParams)
+from workstation.mesh.chain import METHODS
+from workstation.mesh.normals import ORIENTATIONS
+from workstation.mesh.reconstruct import POISSON_BACKENDS
+from workstation.mesh.simplify import SMOOTH_METHODS
 
 from .options import emit_json, json_option, output_option, overwrite_option, read_options
 from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float
+from .options import RegistryChoice, bound, field_option, param_group
+
+#: Pieces smaller than this fraction of the mesh diagonal are removed by ``ws mesh`` (the library's
+#: :class:`~workstation.mesh.CleanParams` keeps every piece unless asked: a command line mesh of a
+#: scan is cleaned of the small floating pieces its noise makes).
+MIN_PIECE_FRACTION = 0.05
 
 
 @click.command()
 @click.argument("src", metavar="IN", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--method", type=click.Choice(["poisson", "bpa", "delaunay25d"]), default="poisson", show_default=True,
+@field_option(MeshChainParams, "method", "--method", type=RegistryChoice(METHODS), show_default=True,
               help="Screened Poisson (objects, buildings), ball pivoting, or 2.5D Delaunay (terrain).")
-@click.option("--depth", type=click.IntRange(1, 16), default=9, show_default=True,
-              help="Poisson octree depth (finest cell = bounding cube / 2^depth).")
-@click.option("--samples-per-node", type=positive_float, default=2.0, show_default=True,
-              help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; larger is faster "
-                   "but smooths over sparsely sampled parts).")
-@click.option("--point-weight", type=nonneg_float, default=None,
-              help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab].")
-@click.option("--trim-quantile", type=FiniteFloatRange(0, 1, max_open=True), default=0.05, show_default=True,
-              help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all).")
-@click.option("--poisson-backend", type=click.Choice(["open3d", "pymeshlab"]), default="open3d", show_default=True,
-              help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2x slower here: PyMeshLab #408).")
-@click.option("--threads", type=nonneg_int, default=0, show_default=True, help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY).")
-@click.option("--radius", type=positive_float, default=None,
-              help="Ball-pivoting radius in CRS units [default: 2 x point spacing].")
-@click.option("--max-edge", type=positive_float, default=None,
-              help="2.5D Delaunay: longest triangle edge kept, CRS units [default: 8 x point spacing].")
-@click.option("--k-normals", type=click.IntRange(3, 200), default=10, show_default=True,
-              help="Neighbours per normal (PCA plane fit).")
-@click.option("--orient", type=click.Choice(["auto", "viewpoint", "up", "propagate", "keep"]), default="auto",
-              show_default=True, help="Normal orientation (auto: toward --viewpoint if given, else propagate).")
+@param_group(
+    "poisson",
+    bound(PoissonParams, "depth", "--depth", type=click.IntRange(1, 16), show_default=True,
+          help="Poisson octree depth (finest cell = bounding cube / 2^depth)."),
+    bound(PoissonParams, "samples_per_node", "--samples-per-node", type=positive_float, show_default=True,
+          help="Poisson minimum points per octree cell (1-5 clean data, 15-20 noisy; larger is faster "
+               "but smooths over sparsely sampled parts)."),
+    bound(PoissonParams, "point_weight", "--point-weight", type=nonneg_float,
+          help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab]."),
+    bound(PoissonParams, "trim_quantile", "--trim-quantile", type=FiniteFloatRange(0, 1, max_open=True), show_default=True,
+          help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all)."),
+    bound(PoissonParams, "backend", "--poisson-backend", type=RegistryChoice(POISSON_BACKENDS), show_default=True,
+          help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2x slower here: PyMeshLab #408)."),
+    bound(PoissonParams, "threads", "--threads", type=nonneg_int, show_default=True,
+          help="Poisson solver threads (0 = all cores, or 1 if OpenMP spins; see OMP_WAIT_POLICY)."),
+)
+@param_group("ball_pivoting", bound(BallPivotingParams, "radius", "--radius", type=positive_float,
+                                    help="Ball-pivoting radius in CRS units [default: 2 x point spacing]."))
+@param_group("delaunay", bound(Delaunay25dParams, "max_edge", "--max-edge", type=positive_float,
+                               help="2.5D Delaunay: longest triangle edge kept, CRS units [default: 8 x point spacing]."))
+@param_group(
+    "normals",
+    bound(NormalParams, "k", "--k-normals", type=click.IntRange(3, 200), show_default=True,
+          help="Neighbours per normal (PCA plane fit)."),
+    bound(NormalParams, "orient", "--orient", type=RegistryChoice(ORIENTATIONS), show_default=True,
+          help="Normal orientation (auto: toward --viewpoint if given, else propagate)."),
+)
 @click.option("--viewpoint", type=finite_float, nargs=3, default=None, metavar="X Y Z",
               help="Scanner position (CRS units) the normals must face.")
-@click.option("--recompute-normals", is_flag=True, help="Estimate normals even when the cloud has them.")
+@param_group("normals", bound(NormalParams, "recompute", "--recompute-normals", is_flag=True,
+                              help="Estimate normals even when the cloud has them."))
 @click.option("--target-faces", type=click.IntRange(4, None), default=None,
               help="Quadric edge-collapse decimation to this face count [default: no decimation].")
-@click.option("--smooth", type=click.Choice(["none", "taubin", "laplacian"]), default="none", show_default=True,
-              help="Smoothing after decimation.")
-@click.option("--smooth-iterations", type=click.IntRange(0, 1000), default=10, show_default=True,
-              help="Smoothing passes.")
-@click.option("--min-piece-fraction", type=FiniteFloatRange(0, 1, max_open=True), default=0.05, show_default=True,
-              help="Remove pieces smaller than this fraction of the mesh diagonal.")
-@click.option("--max-hole-edges", type=click.IntRange(0, None), default=0, show_default=True,
-              help="Close holes bounded by at most this many edges (0 = none).")
+@param_group(
+    "smooth",
+    bound(SmoothParams, "method", "--smooth", type=RegistryChoice(SMOOTH_METHODS, first=["none"]), default="none",
+          show_default=True, help="Smoothing after decimation."),
+    bound(SmoothParams, "iterations", "--smooth-iterations", type=click.IntRange(0, 1000), show_default=True,
+          help="Smoothing passes."),
+)
+@param_group(
+    "clean",
+    bound(CleanParams, "min_piece_fraction", "--min-piece-fraction", type=FiniteFloatRange(0, 1, max_open=True),
+          default=MIN_PIECE_FRACTION, show_default=True,
+          help="Remove pieces smaller than this fraction of the mesh diagonal."),
+    bound(CleanParams, "max_hole_edges", "--max-hole-edges", type=click.IntRange(0, None), show_default=True,
+          help="Close holes bounded by at most this many edges (0 = none)."),
+)
 @click.option("--no-color", is_flag=True, help="Do not transfer cloud colours to the vertices.")
 @click.option("--no-quality", is_flag=True, help="Skip the quality summary (distances to the cloud).")
 @click.option("--reconstruction", "workdir", type=click.Path(exists=True), default=None,
@@ -55,20 +82,21 @@ from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, p
                    "from them (OUT must be .obj, .glb or .gltf) and orient normals toward the cameras.")
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Folder of the photos [default: the folder `ws sfm` recorded in WORKDIR, else WORKDIR/images].")
-@click.option("--texel-size", type=positive_float, default=None,
-              help="Texture: surface size of one texel in CRS units [default: the photos' ground sample distance].")
-@click.option("--texture-size", type=click.IntRange(16, 32768), default=4096, show_default=True,
-              help="Texture: largest side of the texture image, pixels.")
-@click.option("--texture-views", type=click.IntRange(1, 16), default=1, show_default=True,
-              help="Texture: photos blended per face (1 = the sharpest view).")
+@param_group(
+    "texture",
+    bound(TextureParams, "texel_size", "--texel-size", type=positive_float,
+          help="Texture: surface size of one texel in CRS units [default: the photos' ground sample distance]."),
+    bound(TextureParams, "max_texture_size", "--texture-size", type=click.IntRange(16, 32768), show_default=True,
+          help="Texture: largest side of the texture image, pixels."),
+    bound(TextureParams, "max_views", "--texture-views", type=click.IntRange(1, 16), show_default=True,
+          help="Texture: photos blended per face (1 = the sharpest view)."),
+)
 @overwrite_option
 @allow_outside_option
 @read_options
 @json_option
-def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quantile, poisson_backend, threads, radius, max_edge,
-         k_normals, orient, viewpoint, recompute_normals, target_faces, smooth, smooth_iterations,
-         min_piece_fraction, max_hole_edges, no_color, no_quality, workdir, image_dir, texel_size, texture_size,
-         texture_views, overwrite, read_opts, as_json):
+def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoint, target_faces, smooth, clean,
+         no_color, no_quality, workdir, image_dir, texture, overwrite, read_opts, as_json):
     """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary.
 
     With --reconstruction the mesh is textured from the oriented photos: OUT.obj comes with
@@ -83,9 +111,7 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     from workstation.core.log import get_logger
     from workstation.io import check_outputs, read_cloud
     from workstation.io.mesh import check_mesh_extension, write_mesh
-    from workstation.mesh import (BallPivotingParams, CleanParams, ColorTransferParams, DecimateParams,
-                                  Delaunay25dParams, MeshChainParams, NormalParams, PoissonParams, QualityParams,
-                                  SmoothParams, TextureParams, mesh_cloud)
+    from workstation.mesh import ColorTransferParams, DecimateParams, QualityParams, mesh_cloud
 
     log = get_logger(__name__)
     ext = check_mesh_extension(output)
@@ -98,18 +124,12 @@ def mesh(src, output, method, depth, samples_per_node, point_weight, trim_quanti
     check_outputs(textured_mesh_files(output) if workdir is not None else [output], overwrite, inputs=[src])
     cloud = read_cloud(src, **read_opts)
     params = MeshChainParams(
-        method=method,
-        normals=NormalParams(k=k_normals, orient=orient, recompute=recompute_normals),
-        poisson=PoissonParams(depth=depth, samples_per_node=samples_per_node, point_weight=point_weight,
-                              trim_quantile=trim_quantile, backend=poisson_backend, threads=threads),
-        ball_pivoting=BallPivotingParams(radius=radius),
-        delaunay=Delaunay25dParams(max_edge=max_edge),
-        clean=CleanParams(min_piece_fraction=min_piece_fraction, max_hole_edges=max_hole_edges),
-        decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
-        smooth=SmoothParams(method=smooth, iterations=smooth_iterations) if smooth != "none" else None,
-        color=None if no_color else ColorTransferParams(),
-        quality=None if no_quality else QualityParams(),
-        texture=TextureParams(texel_size=texel_size, max_texture_size=texture_size, max_views=texture_views),
+        method=method, normals=NormalParams(**normals), poisson=PoissonParams(**poisson),
+        ball_pivoting=BallPivotingParams(**ball_pivoting), delaunay=Delaunay25dParams(**delaunay),
+        clean=CleanParams(**clean), decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
+        smooth=SmoothParams(**smooth) if smooth["method"] != "none" else None,
+        color=None if no_color else ColorTransferParams(), quality=None if no_quality else QualityParams(),
+        texture=TextureParams(**texture),
     )
     vp = np.asarray(viewpoint) if viewpoint else rec
     res = mesh_cloud(cloud, params, viewpoints=vp, reconstruction=rec)

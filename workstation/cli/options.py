@@ -1,4 +1,5 @@
-"""Options, parameter types and helpers shared by every command (output, overwrite, json)."""
+"""Options, parameter types and helpers shared by every command (output, overwrite, json), and
+the binding of a command's options to the fields of a stage's parameter dataclass (:func:`param_group`)."""
 
 from __future__ import annotations
 
@@ -185,3 +186,123 @@ class Length(click.ParamType):
 positive_length = Length()
 #: A length that may be 0.
 nonneg_length = Length(open_min=False)
+
+
+# --- options bound to the fields of a stage's parameter dataclass --------------------------------
+#
+# A command's options that are parameters of a library stage are declared once, as ``bound``
+# specs naming the dataclass field each one sets; ``param_group`` adds them to the command and
+# hands their values over as one dict keyed by field name. Defaults and choice lists are read
+# from the library (the dataclass's field default, a registry tuple), never written again here.
+
+_FIELD_DEFAULT = object()
+
+
+class BoundOption(click.Option):
+    """A ``click.Option`` that records the parameter it sets: ``bind = (dataclass or None,
+    field)`` (None where the class depends on another option, as the ground method's)."""
+
+    def __init__(self, *args, bind: tuple = (None, None), **kw):
+        super().__init__(*args, **kw)
+        self.bind = bind
+
+
+class RegistryChoice(click.Choice):
+    """A ``click.Choice`` whose names are a library registry (a tuple of names, or a dict keyed
+    by name) plus names the command itself handles (``first``, listed before, and ``extra``,
+    after), so a name added to the library is offered by the command without touching it."""
+
+    def __init__(self, registry, extra=(), first=(), case_sensitive: bool = True):
+        self.registry, self.extra, self.first = registry, tuple(extra), tuple(first)
+        super().__init__([*self.first, *registry, *self.extra], case_sensitive=case_sensitive)
+
+
+def field_default(cls, field: str):
+    """The default of ``field`` of the dataclass ``cls`` (its default factory called), or of the
+    keyword parameter ``field`` where ``cls`` is a library function (``ground_filter``'s method)."""
+    import dataclasses
+    import inspect
+
+    if not dataclasses.is_dataclass(cls):
+        p = inspect.signature(cls).parameters.get(field)
+        if p is None or p.default is inspect.Parameter.empty:
+            raise TypeError(f"{cls.__name__} has no keyword parameter {field!r} with a default")
+        return p.default
+    for f in dataclasses.fields(cls):
+        if f.name == field:
+            if f.default is not dataclasses.MISSING:
+                return f.default
+            if f.default_factory is not dataclasses.MISSING:
+                return f.default_factory()
+            raise TypeError(f"{cls.__name__}.{field} has no default")
+    raise TypeError(f"{cls.__name__} has no field {field!r}")
+
+
+def bound(cls, field: str, *decls, default=_FIELD_DEFAULT, **attrs) -> dict:
+    """The spec of one option of a :func:`param_group`: ``decls`` and ``attrs`` as for
+    ``click.option``, setting ``field`` of the dataclass ``cls``. Without ``default`` the option's
+    default is the dataclass's; ``default=None`` leaves the value to the library (a preset, a
+    config file, a rule on the data)."""
+    if default is _FIELD_DEFAULT:
+        default = field_default(cls, field)
+    return {"decls": decls, "attrs": {**attrs, "default": default}, "bind": (cls, field)}
+
+
+def field_option(cls, field: str, *decls, default=_FIELD_DEFAULT, **attrs):
+    """``click.option`` for one parameter passed to the command on its own, setting ``field`` of
+    the dataclass ``cls`` (default as in :func:`bound`)."""
+    spec = bound(cls, field, *decls, default=default, **attrs)
+    return click.option(*spec["decls"], cls=BoundOption, bind=spec["bind"], **spec["attrs"])
+
+
+def param_group(dest: str, *specs: dict, given_only: bool = False):
+    """Add the options of ``specs`` (:func:`bound`, in the order listed, as they appear in
+    ``--help``) to a command and pass their values on as one dict parameter ``dest``
+    ``{field: value}`` in place of one parameter each. With ``given_only`` the options left at
+    None are left out of the dict (the library decides those). Two groups with one ``dest``
+    (options of one dataclass with another option between them in ``--help``) fill one dict."""
+    import functools
+
+    def decorate(f):
+        names: dict[str, str] = {}
+
+        @functools.wraps(f)
+        def wrapper(*args, **kw):
+            values = {field: kw.pop(name) for name, field in names.items()}
+            if given_only:
+                values = {k: v for k, v in values.items() if v is not None}
+            kw[dest] = {**kw.get(dest, {}), **values}  # two groups may fill one dict
+            return f(*args, **kw)
+
+        for spec in reversed(specs):  # click lists the options last decorated first
+            wrapper = click.option(*spec["decls"], cls=BoundOption, bind=spec["bind"], **spec["attrs"])(wrapper)
+        added = wrapper.__click_params__[-len(specs):][::-1]
+        names.update((opt.name, opt.bind[1]) for opt in added)  # in the order of ``specs``
+        return wrapper
+
+    return decorate
+
+
+class IntTuple(click.ParamType):
+    """Comma-separated integers (``2,9``) as a tuple; a tuple (a dataclass default) passes
+    through, so ``--help`` shows it as ``2, 9``. A value that is not integers is the library's
+    own invalid-input error naming ``field`` (exit 1), as the stage would report it, or with
+    ``usage`` a usage error (exit 2)."""
+
+    name = "text"
+
+    def __init__(self, field: str, example: str = "2,9", usage: bool = False):
+        self.field, self.example, self.usage = field, example, usage
+
+    def convert(self, value, param, ctx):
+        from workstation.core.errors import InvalidInputError
+
+        if isinstance(value, tuple):
+            return value
+        try:
+            return tuple(int(c) for c in str(value).split(",") if c.strip())
+        except ValueError:
+            flag = param.opts[0] if param is not None else self.field
+            if self.usage:
+                raise click.UsageError(f"{flag} must be integers, got {value!r}") from None
+            raise InvalidInputError(f"{flag} must be integers like {self.example}", field=self.field) from None

@@ -7,10 +7,11 @@ from pathlib import Path
 import click
 
 from workstation.cli.options import allow_outside_option
+from workstation.raster.ortho import OrthoParams
 
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import GEOTIFF, require_suffix
-from .options import FiniteFloatRange, nonneg_float, positive_float
+from .options import FiniteFloatRange, field_option, nonneg_float, positive_float
 
 
 @click.command()
@@ -20,7 +21,7 @@ from .options import FiniteFloatRange, nonneg_float, positive_float
 @click.option("--resolution", type=positive_float, default=None, help="Ortho cell size in metres (default: the DSM's).")
 @click.option("--images", "image_dir", type=click.Path(exists=True, file_okay=False), default=None,
               help="Image folder [default: the folder `ws sfm` recorded in WORKDIR, else WORKDIR/images].")
-@click.option("--blend-angle", type=FiniteFloatRange(0.0, 90.0), default=2.0, show_default=True,
+@field_option(OrthoParams, "blend_angle", "--blend-angle", type=FiniteFloatRange(0.0, 90.0), show_default=True,
               help="Degrees: views within about this of the most nadir one are blended across seams.")
 @click.option("--no-occlusion", is_flag=True, help="Skip the visibility test (a conventional, not true, orthophoto).")
 @click.option("--accuracy", "accuracy_out", type=click.Path(dir_okay=False), default=None,
@@ -38,7 +39,7 @@ def ortho(workdir, dsm, output, resolution, image_dir, blend_angle, no_occlusion
     before any work; the stage record WORKDIR/ortho_OUT.json is written when WORKDIR is a folder."""
     from workstation.io.geotiff import read_raster, write_raster
     from workstation.photogrammetry.sfm import read_reconstruction
-    from workstation.raster.ortho import OrthoParams, true_ortho
+    from workstation.raster.ortho import true_ortho
 
     require_suffix(output, GEOTIFF, what="GeoTIFF")
     require_suffix(accuracy_out, GEOTIFF, "--accuracy", "GeoTIFF")

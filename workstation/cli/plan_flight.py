@@ -4,40 +4,53 @@ from __future__ import annotations
 
 import click
 
+from workstation.lidar.planning import SOLVABLE, FlightParams, solve_for_density
+from workstation.lidar.scanners import AIRBORNE_KINDS
+
 from .options import emit_json
 from .options import FiniteFloatRange, nonneg_float, positive_float
+from .options import RegistryChoice, bound, field_option, param_group
 
 
 @click.command("plan-flight")
-@click.option("--altitude", type=positive_float, default=1000.0, show_default=True, help="Flying height above ground in metres.")
-@click.option("--speed", type=positive_float, default=60.0, show_default=True, help="Ground speed in m/s.")
-@click.option("--prf", type=positive_float, default=300_000.0, show_default=True, help="Pulse repetition frequency in Hz.")
-@click.option("--scan-rate", "--scan-frequency", "scan_rate", type=positive_float, default=50.0, show_default=True,
-              help="Scan frequency in Hz (mirror cycles for zigzag, lines for polygon, revolutions for palmer).")
-@click.option("--fov", type=FiniteFloatRange(0.0, 180.0, min_open=True, max_open=True), default=40.0, show_default=True, help="Full field of view in degrees.")
-@click.option("--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True), default=0.3, show_default=True, help="Lateral strip overlap as a fraction 0-1.")
-@click.option("--area-width", type=positive_float, default=2000.0, show_default=True, help="Block width across the lines in metres.")
-@click.option("--area-length", type=positive_float, default=3000.0, show_default=True, help="Block length along the lines in metres.")
-@click.option("--run-in", type=nonneg_float, default=500.0, show_default=True, help="Extra line length before and after the block in metres.")
-@click.option("--bank", type=FiniteFloatRange(0.0, 90.0, min_open=True, max_open=True), default=20.0, show_default=True, help="Bank angle in turns in degrees.")
-@click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default="zigzag", show_default=True,
-              help="Scan mechanism.")
+@param_group(
+    "given",
+    bound(FlightParams, "altitude", "--altitude", type=positive_float, show_default=True,
+          help="Flying height above ground in metres."),
+    bound(FlightParams, "speed", "--speed", type=positive_float, show_default=True, help="Ground speed in m/s."),
+    bound(FlightParams, "prf", "--prf", type=positive_float, show_default=True, help="Pulse repetition frequency in Hz."),
+    bound(FlightParams, "scan_frequency", "--scan-rate", "--scan-frequency", "scan_rate", type=positive_float,
+          show_default=True,
+          help="Scan frequency in Hz (mirror cycles for zigzag, lines for polygon, revolutions for palmer)."),
+    bound(FlightParams, "fov_deg", "--fov", type=FiniteFloatRange(0.0, 180.0, min_open=True, max_open=True),
+          show_default=True, help="Full field of view in degrees."),
+    bound(FlightParams, "overlap", "--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True), show_default=True,
+          help="Lateral strip overlap as a fraction 0-1."),
+    bound(FlightParams, "area_width", "--area-width", type=positive_float, show_default=True,
+          help="Block width across the lines in metres."),
+    bound(FlightParams, "area_length", "--area-length", type=positive_float, show_default=True,
+          help="Block length along the lines in metres."),
+    bound(FlightParams, "run_in", "--run-in", type=nonneg_float, show_default=True,
+          help="Extra line length before and after the block in metres."),
+    bound(FlightParams, "bank_deg", "--bank", type=FiniteFloatRange(0.0, 90.0, min_open=True, max_open=True),
+          show_default=True, help="Bank angle in turns in degrees."),
+    bound(FlightParams, "pattern", "--pattern", type=RegistryChoice(AIRBORNE_KINDS), show_default=True,
+          help="Scan mechanism."),
+)
 @click.option("--divergence", type=nonneg_float, default=None, help="Beam divergence in mrad (adds the footprint diameter).")
 @click.option("--target-density", type=positive_float, default=None,
               help="Solve for this point density in points/m^2 per pass (inverse problem).")
-@click.option("--solve-for", type=click.Choice(["prf", "speed", "altitude"]), default="prf", show_default=True,
+@field_option(solve_for_density, "solve", "--solve-for", type=RegistryChoice(SOLVABLE), show_default=True,
               help="Which parameter --target-density solves for.")
 @click.option("--json", "as_json", is_flag=True, help="Print the plan as JSON on stdout (SI units).")
-def plan_flight(altitude, speed, prf, scan_rate, fov, overlap, area_width, area_length, run_in, bank, pattern,
-                divergence, target_density, solve_for, as_json):
+def plan_flight(given, divergence, target_density, solve_for, as_json):
     """Plan an airborne LiDAR block: swath width, along/across spacing, density, NPS, lines, time.
 
     With --target-density, first solve for the PRF (or speed, or altitude) that reaches it.
     """
-    from workstation.lidar.planning import FlightParams, plan_flight as plan, solve_for_density
+    from workstation.lidar.planning import plan_flight as plan
 
-    p = FlightParams(altitude=altitude, speed=speed, prf=prf, scan_frequency=scan_rate, fov_deg=fov, overlap=overlap,
-                     area_width=area_width, area_length=area_length, run_in=run_in, bank_deg=bank, pattern=pattern)
+    p = FlightParams(**given)
     if target_density is not None:
         p = solve_for_density(target_density, p, solve_for)
     result = plan(p, divergence)

@@ -15,7 +15,10 @@ from workstation.cli.options import (
     overwrite_option,
 )
 from workstation.cli.options import fraction, positive_float
+from workstation.cli.options import RegistryChoice, bound, field_option, param_group
 from workstation.io.textfile import read_text
+from workstation.registration.icp import ICP_METHODS, KERNELS, ICPParams
+from workstation.registration.register import METHODS, RegisterParams
 
 
 def read_matrix(path) -> np.ndarray:
@@ -74,31 +77,32 @@ def write_matrix(result, tmp: Path) -> None:
 @click.argument("source", type=click.Path(exists=True, dir_okay=False))
 @click.argument("target", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--method", type=click.Choice(["auto", "fpfh_ransac", "fgr", "clique", "icp", "similarity", "pairs"]),
-              default="auto", show_default=True,
+@field_option(RegisterParams, "method", "--method", type=RegistryChoice(METHODS, extra=["pairs"]), show_default=True,
               help="Coarse method (auto tries clique and RANSAC, verified by ICP); icp = fine only from --init; "
                    "similarity = 7 DoF for SfM <-> LiDAR (a search over scale hypotheses unless --init or "
                    "--pairs --scale gives a start, then 7-DoF point-to-plane ICP); pairs = only the --pairs fit.")
-@click.option("--fine", "fine", type=click.Choice(["point_to_plane", "point_to_point", "colored", "generalized",
-                                                   "voxel_plane"]), default="point_to_plane", show_default=True,
-              help="Fine ICP variant.")
-@click.option("--kernel", type=click.Choice(["none", "tukey", "huber", "cauchy", "gm", "l1"]), default="tukey",
-              show_default=True, help="Robust kernel of the fine stage.")
-@click.option("--voxel-size", type=positive_float, default=None,
-              help="Voxel edge in metres (CRS units) from which every radius derives; estimated when omitted.")
+@param_group(
+    "icp",
+    bound(ICPParams, "method", "--fine", "fine", type=RegistryChoice(ICP_METHODS), show_default=True,
+          help="Fine ICP variant."),
+    bound(ICPParams, "kernel", "--kernel", type=RegistryChoice(KERNELS), show_default=True,
+          help="Robust kernel of the fine stage."),
+)
+@param_group("given", bound(RegisterParams, "voxel_size", "--voxel-size", type=positive_float,
+                            help="Voxel edge in metres (CRS units) from which every radius derives; estimated when omitted."))
 @click.option("--init", "init_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="Initial 4x4 source->target matrix (JSON or text).")
 @click.option("--pairs", "pairs_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="CSV of >= 3 picked point pairs 'sx sy sz tx ty tz' (metres) giving the initial transform.")
 @click.option("--scale", "with_scale", is_flag=True, help="Estimate a scale from --pairs (7 DoF).")
-@click.option("--min-fitness", type=fraction, default=0.2, show_default=True,
-              help="Smallest accepted overlap (share of source points with a correspondence).")
+@param_group("given", bound(RegisterParams, "min_fitness", "--min-fitness", type=fraction, show_default=True,
+                            help="Smallest accepted overlap (share of source points with a correspondence)."))
 @click.option("--matrix-out", type=click.Path(dir_okay=False), default=None,
               help="Also write the result: .json (all fields) or text (the 4x4 matrix).")
 @overwrite_option
 @json_option
-def register(source, target, output, method, fine, kernel, voxel_size, init_path, pairs_path, with_scale, min_fitness,
-             matrix_out, overwrite, as_json):
+def register(source, target, output, method, icp, given, init_path, pairs_path, with_scale, matrix_out, overwrite,
+             as_json):
     """Register SOURCE onto TARGET and write the transformed SOURCE to OUT.
 
     The transform maps SOURCE coordinates into TARGET's frame. A result with too little overlap
@@ -108,9 +112,7 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
 
     from workstation.core.errors import InvalidInputError, doing
     from workstation.io import atomic_paths, check_outputs, read_cloud, write_cloud
-    from workstation.registration.icp import ICPParams
     from workstation.registration.merge import transform_cloud
-    from workstation.registration.register import RegisterParams
     from workstation.registration.register import register as run_register
     from workstation.registration.transforms import register_point_pairs
 
@@ -132,8 +134,7 @@ def register(source, target, output, method, fine, kernel, voxel_size, init_path
         result = pair_fit.result
     else:
         m = "icp" if (init is not None and method == "auto") else method
-        params = RegisterParams(method=m, voxel_size=voxel_size, min_fitness=min_fitness,
-                                fine=ICPParams(method=fine, kernel=kernel))
+        params = RegisterParams(method=m, **given, fine=ICPParams(**icp))
         result = run_register(src, tgt, params, init=init)
     moved = transform_cloud(src, result.transform).with_crs(tgt.crs or src.crs)
     moved = moved.with_history("register", {"method": method, "target": str(target), "fitness": result.fitness},

@@ -5,9 +5,11 @@ from __future__ import annotations
 import click
 
 from workstation.cli.options import allow_outside_option
+from workstation.render.render import VIEWS, RenderParams
 
 from .options import emit_json, json_option, output_option, overwrite_option
 from .options import nonneg_float, nonneg_int, read_options
+from .options import RegistryChoice, bound, field_default, param_group
 
 
 def _size(ctx, param, value):
@@ -41,18 +43,23 @@ def _background(ctx, param, value):
 @click.command()
 @click.argument("src", metavar="IN", type=click.Path(exists=True, dir_okay=False))
 @output_option
-@click.option("--color", "color", default="auto", show_default=True,
-              help="auto, rgb, class, elevation, intensity, hag, uniform, or any attribute name.")
-@click.option("--view", type=click.Choice(["top", "front", "iso"]), default="iso", show_default=True,
-              help="top: orthographic, north up, scale bar; front: looking north; iso: from the south-east.")
-@click.option("--size", default="1024x768", show_default=True, callback=_size, help="Image size WIDTHxHEIGHT in pixels.")
-@click.option("--background", default="white", show_default=True, callback=_background, help="Background colour (name or #rrggbb).")
-@click.option("--point-size", type=nonneg_float, default=0.0, show_default=True,
-              help="Point diameter in pixels (0 = from the point density).")
-@click.option("--edl", is_flag=True, help="Eye-dome lighting for clouds (shades depth edges).")
+@param_group(
+    "given",
+    bound(RenderParams, "color", "--color", show_default=True,
+          help="auto, rgb, class, elevation, intensity, hag, uniform, or any attribute name."),
+    bound(RenderParams, "view", "--view", type=RegistryChoice(VIEWS), show_default=True,
+          help="top: orthographic, north up, scale bar; front: looking north; iso: from the south-east."),
+    bound(RenderParams, "size", "--size", default="x".join(map(str, field_default(RenderParams, "size"))),
+          show_default=True, callback=_size, help="Image size WIDTHxHEIGHT in pixels."),
+    bound(RenderParams, "background", "--background", show_default=True, callback=_background,
+          help="Background colour (name or #rrggbb)."),
+    bound(RenderParams, "point_size", "--point-size", type=nonneg_float, show_default=True,
+          help="Point diameter in pixels (0 = from the point density)."),
+    bound(RenderParams, "edl", "--edl", is_flag=True, help="Eye-dome lighting for clouds (shades depth edges)."),
+)
 @click.option("--no-legend", is_flag=True, help="No class legend or scalar bar.")
-@click.option("--max-points", type=nonneg_int, default=0, show_default=True,
-              help="Draw a seeded random subset of at most this many points (0 = all).")
+@param_group("given", bound(RenderParams, "max_points", "--max-points", type=nonneg_int, show_default=True,
+                            help="Draw a seeded random subset of at most this many points (0 = all)."))
 @click.option("--turntable", type=click.IntRange(0, 720), default=0, show_default=True,
               help="Frames of a turntable orbit: OUT.gif is an animation, OUT.png a numbered PNG sequence.")
 @click.option("--reconstruction", "workdir", type=click.Path(exists=True), default=None,
@@ -64,8 +71,7 @@ def _background(ctx, param, value):
 @overwrite_option
 @allow_outside_option
 @json_option
-def render(src, output, color, view, size, background, point_size, edl, no_legend, max_points, turntable,
-           workdir, camera_ref, read_opts, overwrite, as_json):
+def render(src, output, given, no_legend, turntable, workdir, camera_ref, read_opts, overwrite, as_json):
     """Render the cloud or mesh IN to OUT (.png, or .gif with --turntable); --bounds renders only
     the points inside a box (a COPC file queried, --level/--resolution a coarser cloud)."""
     import time
@@ -73,7 +79,7 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
 
     from workstation.core.errors import InvalidInputError
     from workstation.io import check_output
-    from workstation.render import RenderParams, save_gif, save_png
+    from workstation.render import save_gif, save_png
     from workstation.render import render as render_image
     from workstation.render import turntable as turntable_frames
     from workstation.render.load import load_product
@@ -90,7 +96,7 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
         raise InvalidInputError("--turntable orbits its own camera", "leave out --camera or --turntable")
     check_output(out, overwrite, inputs=[src])
     t0 = time.perf_counter()
-    view_camera = None
+    view_camera, size, color = None, given["size"], given["color"]
     if camera_ref is not None:
         from workstation.photogrammetry.sfm import read_reconstruction
         from workstation.render.render import find_image, reconstruction_view
@@ -99,8 +105,7 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
         view_camera = reconstruction_view(rec, find_image(rec, camera_ref))
         size = (view_camera[0].width, view_camera[0].height)
     obj = load_product(src, **read_opts)
-    params = RenderParams(size=size, color=color, view=view, background=background, point_size=point_size, edl=edl,
-                          legend=not no_legend, max_points=max_points)
+    params = RenderParams(**{**given, "size": size}, legend=not no_legend)
     files = []
     if turntable:
         frames = turntable_frames(obj, params, frames=turntable)
@@ -121,5 +126,5 @@ def render(src, output, color, view, size, background, point_size, edl, no_legen
                  time.perf_counter() - t0, details=[f"{size[0]}x{size[1]} px", f"colour {color}"])
     if as_json:
         emit_json({"input": src, "files": files, "size": list(size), "color": color,
-                   "view": f"camera {camera_ref}" if camera_ref is not None else view,
+                   "view": f"camera {camera_ref}" if camera_ref is not None else given["view"],
                    "seconds": time.perf_counter() - t0})

@@ -11,6 +11,10 @@ from workstation.cli.options import allow_outside_option
 
 from workstation.cli.options import emit_json, json_option, overwrite_option
 from workstation.cli.options import SentinelIntRange, positive_float, positive_int
+from workstation.cli.options import RegistryChoice, bound, field_option, param_group
+from workstation.photogrammetry.dense import DEVICES, DenseParams
+from workstation.photogrammetry.georef import ADJUSTMENTS, georeference
+from workstation.photogrammetry.sfm import MAPPERS, MATCHERS, SfMParams
 from workstation.core.jsonutil import json_clean
 
 
@@ -18,28 +22,40 @@ from workstation.core.jsonutil import json_clean
 @click.argument("images", type=click.Path(file_okay=False))
 @click.option("-o", "--output", "workdir", required=True, type=click.Path(file_okay=False), help="Work folder (COLMAP layout: database.db, sparse/0 = largest model).")
 @click.option("--camera", "camera_file", type=click.Path(dir_okay=False), help="CAMERA.json from `ws calibrate`; intrinsics kept fixed unless --refine-intrinsics.")
-@click.option("--refine-intrinsics", is_flag=True, help="Refine the --camera intrinsics in the bundle adjustments.")
+@param_group("given", bound(SfMParams, "refine_intrinsics", "--refine-intrinsics", is_flag=True,
+                            help="Refine the --camera intrinsics in the bundle adjustments."))
 @click.option("--gcp", "gcp_file", type=click.Path(dir_okay=False), help="GCP.csv (schema in workstation.io.gcp): control points fix a 7-parameter similarity (then a bundle adjustment with GCP constraints), check points give the accuracy.")
-@click.option("--gcp-adjustment", type=click.Choice(["auto", "similarity", "bundle"]), default="auto", show_default=True, help="After the similarity: bundle adjustment with the control points' image observations and σ (auto = when ≥ 3 control points have ≥ 2 image observations), or the similarity alone.")
+@field_option(georeference, "adjustment", "--gcp-adjustment", type=RegistryChoice(ADJUSTMENTS), show_default=True, help="After the similarity: bundle adjustment with the control points' image observations and σ (auto = when ≥ 3 control points have ≥ 2 image observations), or the similarity alone.")
 @click.option("--crs", help="CRS of the GCP coordinates (EPSG code or WKT), recorded on the georeferenced outputs.")
-@click.option("--matcher", type=click.Choice(["auto", "exhaustive", "sequential", "spatial"]), default="auto", show_default=True, help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential.")
-@click.option("--mapper", type=click.Choice(["incremental", "global"]), default="incremental", show_default=True, help="Incremental (COLMAP) or global (GLOMAP) mapping.")
-@click.option("--max-image-size", type=SentinelIntRange(-1, min=1), default=-1, show_default=True, help="Longest image side used for features, pixels (-1 = full size).")
-@click.option("--max-features", type=positive_int, default=8192, show_default=True, help="SIFT features per image.")
-@click.option("--camera-model", default="SIMPLE_RADIAL", show_default=True, help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...).")
+@param_group(
+    "given",
+    bound(SfMParams, "matcher", "--matcher", type=RegistryChoice(MATCHERS), show_default=True,
+          help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential."),
+    bound(SfMParams, "mapper", "--mapper", type=RegistryChoice(MAPPERS), show_default=True,
+          help="Incremental (COLMAP) or global (GLOMAP) mapping."),
+    bound(SfMParams, "max_image_size", "--max-image-size", type=SentinelIntRange(-1, min=1), show_default=True,
+          help="Longest image side used for features, pixels (-1 = full size)."),
+    bound(SfMParams, "max_features", "--max-features", type=positive_int, show_default=True,
+          help="SIFT features per image."),
+    bound(SfMParams, "camera_model", "--camera-model", show_default=True,
+          help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...)."),
+)
 @click.option("--no-principal-point", is_flag=True, help="Keep the principal point fixed in the final bundle adjustment.")
 @click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
-@click.option("--sigma-px", type=positive_float, default=1.0, show_default=True, help="A-priori GCP image measurement precision, pixels.")
-@click.option("--seed", type=SentinelIntRange(-1, min=0), default=0, show_default=True, help="Random seed (-1 = random).")
+@field_option(georeference, "sigma_px", "--sigma-px", type=positive_float, show_default=True,
+              help="A-priori GCP image measurement precision, pixels.")
+@param_group("given", bound(SfMParams, "seed", "--seed", type=SentinelIntRange(-1, min=0), show_default=True,
+                            help="Random seed (-1 = random)."))
 @click.option("--upright/--no-upright", default=True, show_default=True, help="Turn the model upright: z up (from the photos' up direction and horizontal image rows, as COLMAP's model_orientation_aligner) and the main façade facing -y; a rotation about the cameras' centroid, no scale change.")
 @click.option("--scale-bar", "scale_bars", multiple=True, metavar="'END ; END = LENGTH [UNIT]'", help="A known length between two points seen in the photos; each END is two or more IMAGE:x,y pixels (column, row), e.g. 'A.JPG:1520,1006 B.JPG:1498,1010 ; A.JPG:2210,1003 B.JPG:2187,1009 = 1.000 m'. Units m (default), cm, mm, km, in, ft, us-ft, yd. Repeatable (weighted mean; each bar's residual is reported).")
 @click.option("--scale-distance", "scale_distances", multiple=True, metavar="'X,Y,Z ; X,Y,Z = LENGTH [UNIT]'", help="A known distance between two model points (e.g. picked in sparse.ply), e.g. '0.12,-1.5,3.2 ; 2.9,-1.4,3.3 = 4.25 m'.")
 @click.option("--dense", "do_dense", is_flag=True, help="Then densify: depth maps and fusion into WORKDIR/dense/fused.ply (as `ws dense`).")
-@click.option("--device", type=click.Choice(["auto", "cpu", "cuda"]), default="auto", show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU semi-global matching (as `ws dense`).")
+@field_option(DenseParams, "device", "--device", type=RegistryChoice(DEVICES), show_default=True, help="With --dense: COLMAP PatchMatch on CUDA, or the CPU semi-global matching (as `ws dense`).")
 @overwrite_option
 @allow_outside_option
 @json_option
-def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustment, crs, matcher, mapper, max_image_size, max_features, camera_model, no_principal_point, no_final_ba, sigma_px, seed, upright, scale_bars, scale_distances, do_dense, device, overwrite, as_json):
+def sfm(images, workdir, camera_file, given, gcp_file, gcp_adjustment, crs, no_principal_point, no_final_ba, sigma_px,
+        upright, scale_bars, scale_distances, do_dense, device, overwrite, as_json):
     """Orient the photos of IMAGES/ and build a sparse coloured cloud in WORKDIR.
 
     Writes WORKDIR/database.db, WORKDIR/sparse/0 (binary COLMAP model of the largest
@@ -59,18 +75,14 @@ def sfm(images, workdir, camera_file, refine_intrinsics, gcp_file, gcp_adjustmen
     """
     from workstation.io.atomic import work_folder
     from workstation.io.reconstruction import SFM_RECORD, write_stage_record
-    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+    from workstation.photogrammetry.sfm import run_sfm
 
     camera, gcps, bars = _read_inputs(images, camera_file, gcp_file, scale_bars, scale_distances)
     if do_dense:
         from workstation.photogrammetry.dense import resolve_device
 
         device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
-    params = SfMParams(
-        matcher=matcher, mapper=mapper, max_image_size=max_image_size, max_features=max_features,
-        camera_model=camera_model, refine_intrinsics=refine_intrinsics,
-        refine_principal_point=not no_principal_point, final_ba=not no_final_ba, seed=seed,
-    )
+    params = SfMParams(**given, refine_principal_point=not no_principal_point, final_ba=not no_final_ba)
     with work_folder(workdir):  # a failed run removes what it wrote
         result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
         wd = Path(workdir)

@@ -4,6 +4,12 @@ from __future__ import annotations
 
 import click
 
+from workstation.lidar.platforms import FlightSpec
+from workstation.lidar.scanners import AIRBORNE_KINDS, ScanPattern
+from workstation.lidar.simulate import ErrorModel, Sensor
+from workstation.lidar.survey import KINDS as SURVEY_KINDS
+
+from .options import RegistryChoice, bound, param_group
 from .options import allow_outside_option, emit_json, float_triple, overwrite_option
 from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float, positive_int
 
@@ -39,46 +45,81 @@ def _xy(ctx, param, value):
     return tuple(out)
 
 
+def _given(cls, field: str, *decls, **attrs) -> dict:
+    """An option over ``field`` of ``cls``: left to the survey config (or its defaults) unless given."""
+    return bound(cls, field, *decls, default=None, **attrs)
+
+
 @click.command()
-@click.argument("kind", type=click.Choice(["als", "uls", "mls", "tls"]))
+@click.argument("kind", type=RegistryChoice(SURVEY_KINDS))
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), help="Output cloud (.laz, .las, ...).")
 @click.option("--scene", "scene_path", default=None,
               help="Scene recipe TOML or the name of a shipped one (mixed, urban, rural, forest, mountain, demo_small). Default: mixed.")
 @click.option("--seed", type=nonneg_int, default=None, help="Seed of the scene and of every random error (default 0).")
 @click.option("--config", "config_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="Survey TOML: [survey] scene/seed/area/lever_arm..., [flight], [vehicle], [scanner], [sensor], [errors], [[stations]].")
-@click.option("--altitude", type=positive_float, default=None, help="Flying height above ground in metres (ALS/ULS).")
-@click.option("--speed", type=positive_float, default=None, help="Platform ground speed in m/s (ALS/ULS/MLS).")
-@click.option("--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True), default=None, help="Lateral strip overlap as a fraction 0-1 (ALS/ULS).")
-@click.option("--lines", type=positive_int, default=None, help="Number of flight lines to fly (default: cover the scene, at least 2).")
-@click.option("--heading", type=FiniteFloatRange(-360.0, 360.0), default=None, help="Flight line direction in degrees clockwise from north.")
-@click.option("--pattern", type=click.Choice(["zigzag", "polygon", "palmer"]), default=None, help="Airborne scan mechanism.")
-@click.option("--prf", type=positive_float, default=None, help="Pulse repetition frequency in Hz.")
-@click.option("--scan-frequency", type=positive_float, default=None, help="Scan frequency in Hz (mirror cycles, lines or revolutions).")
-@click.option("--fov", type=FiniteFloatRange(0.0, 360.0, min_open=True), default=None, help="Full field of view in degrees.")
-@click.option("--h-step", type=FiniteFloatRange(0.0, 360.0, min_open=True), default=None, help="TLS horizontal angular step in degrees.")
-@click.option("--v-step", type=FiniteFloatRange(0.0, 180.0, min_open=True), default=None, help="TLS vertical angular step in degrees.")
+@param_group(
+    "flight",
+    _given(FlightSpec, "altitude", "--altitude", type=positive_float, help="Flying height above ground in metres (ALS/ULS)."),
+    _given(FlightSpec, "speed", "--speed", type=positive_float, help="Platform ground speed in m/s (ALS/ULS/MLS)."),
+    _given(FlightSpec, "overlap", "--overlap", type=FiniteFloatRange(0.0, 1.0, max_open=True),
+           help="Lateral strip overlap as a fraction 0-1 (ALS/ULS)."),
+    _given(FlightSpec, "n_lines", "--lines", type=positive_int,
+           help="Number of flight lines to fly (default: cover the scene, at least 2)."),
+    _given(FlightSpec, "heading_deg", "--heading", type=FiniteFloatRange(-360.0, 360.0),
+           help="Flight line direction in degrees clockwise from north."),
+)
+@param_group(
+    "scanner",
+    _given(ScanPattern, "kind", "--pattern", type=RegistryChoice(AIRBORNE_KINDS), help="Airborne scan mechanism."),
+    _given(ScanPattern, "prf", "--prf", type=positive_float, help="Pulse repetition frequency in Hz."),
+    _given(ScanPattern, "scan_frequency", "--scan-frequency", type=positive_float,
+           help="Scan frequency in Hz (mirror cycles, lines or revolutions)."),
+    _given(ScanPattern, "fov_deg", "--fov", type=FiniteFloatRange(0.0, 360.0, min_open=True),
+           help="Full field of view in degrees."),
+    _given(ScanPattern, "h_step_deg", "--h-step", type=FiniteFloatRange(0.0, 360.0, min_open=True),
+           help="TLS horizontal angular step in degrees."),
+    _given(ScanPattern, "v_step_deg", "--v-step", type=FiniteFloatRange(0.0, 180.0, min_open=True),
+           help="TLS vertical angular step in degrees."),
+)
 @click.option("--station", "stations", multiple=True, callback=_xy, help="TLS station X,Y in local scene metres (repeatable).")
-@click.option("--subrays", type=positive_int, default=None, help="Rays per pulse sampling the beam footprint (1 = first return only).")
-@click.option("--divergence", type=nonneg_float, default=None, help="Full beam divergence in mrad.")
-@click.option("--wavelength", type=positive_float, default=None, help="Laser wavelength in nm (reflectances are given at 1064 and 1550).")
-@click.option("--max-returns", type=click.IntRange(1, 15), default=None, help="Returns recorded per pulse (1-15).")
+@param_group(
+    "sensor",
+    _given(Sensor, "subrays", "--subrays", type=positive_int,
+           help="Rays per pulse sampling the beam footprint (1 = first return only)."),
+    _given(Sensor, "divergence_mrad", "--divergence", type=nonneg_float, help="Full beam divergence in mrad."),
+    _given(Sensor, "wavelength_nm", "--wavelength", type=positive_float,
+           help="Laser wavelength in nm (reflectances are given at 1064 and 1550)."),
+    _given(Sensor, "max_returns", "--max-returns", type=click.IntRange(1, 15), help="Returns recorded per pulse (1-15)."),
+)
 @click.option("--no-errors", is_flag=True, help="Perfect measurements: switch every error off (then apply the error options).")
-@click.option("--range-noise", type=nonneg_float, default=None, help="1-sigma range noise in metres.")
-@click.option("--gnss-noise", callback=float_triple, default=None, help="1-sigma GNSS noise E,N,U in metres.")
-@click.option("--gnss-bias", callback=float_triple, default=None, help="GNSS bias E,N,U in metres.")
-@click.option("--imu-noise", callback=float_triple, default=None, help="1-sigma attitude noise roll,pitch,yaw in degrees.")
-@click.option("--lever-arm-error", callback=float_triple, default=None, help="Lever-arm error x,y,z (body frame) in metres.")
-@click.option("--boresight-error", callback=float_triple, default=None, help="Boresight error roll,pitch,yaw in degrees.")
-@click.option("--scan-angle-scale", type=FiniteFloatRange(-1.0, 1.0, min_open=True, max_open=True), default=None, help="Relative mirror-angle scale error (negative: smile).")
-@click.option("--scan-angle-offset", type=FiniteFloatRange(-90.0, 90.0, min_open=True, max_open=True), default=None, help="Mirror angle offset in degrees.")
-@click.option("--time-bias", type=finite_float, default=None, help="Scanner-to-navigation clock offset in seconds.")
-@click.option("--line-bias", "line_bias", multiple=True, callback=_line_bias, metavar="LINE:dE,dN,dU",
-              help="Navigation bias of one flight line (its point source id) east,north,up in metres, "
-                   "e.g. 2:0,0,0.1 raises line 2 by 10 cm (repeatable).")
-@click.option("--range-offset", type=finite_float, default=None,
-              help="Constant ranging bias in metres: every recorded range is this much too long (0 = off).")
-@click.option("--range-walk", type=nonneg_float, default=None, help="Range walk of the weakest returns in metres (0 = off).")
+@param_group(
+    "errors",
+    _given(ErrorModel, "range_noise_m", "--range-noise", type=nonneg_float, help="1-sigma range noise in metres."),
+    _given(ErrorModel, "gnss_noise_m", "--gnss-noise", callback=float_triple, help="1-sigma GNSS noise E,N,U in metres."),
+    _given(ErrorModel, "gnss_bias_m", "--gnss-bias", callback=float_triple, help="GNSS bias E,N,U in metres."),
+    _given(ErrorModel, "imu_noise_deg", "--imu-noise", callback=float_triple,
+           help="1-sigma attitude noise roll,pitch,yaw in degrees."),
+    _given(ErrorModel, "lever_arm_error_m", "--lever-arm-error", callback=float_triple,
+           help="Lever-arm error x,y,z (body frame) in metres."),
+    _given(ErrorModel, "boresight_error_deg", "--boresight-error", callback=float_triple,
+           help="Boresight error roll,pitch,yaw in degrees."),
+    _given(ErrorModel, "scan_angle_scale", "--scan-angle-scale",
+           type=FiniteFloatRange(-1.0, 1.0, min_open=True, max_open=True),
+           help="Relative mirror-angle scale error (negative: smile)."),
+    _given(ErrorModel, "scan_angle_offset_deg", "--scan-angle-offset",
+           type=FiniteFloatRange(-90.0, 90.0, min_open=True, max_open=True), help="Mirror angle offset in degrees."),
+    _given(ErrorModel, "time_bias_s", "--time-bias", type=finite_float,
+           help="Scanner-to-navigation clock offset in seconds."),
+    _given(ErrorModel, "line_bias_m", "--line-bias", "line_bias", multiple=True, callback=_line_bias,
+           metavar="LINE:dE,dN,dU",
+           help="Navigation bias of one flight line (its point source id) east,north,up in metres, "
+                "e.g. 2:0,0,0.1 raises line 2 by 10 cm (repeatable)."),
+    _given(ErrorModel, "range_offset_m", "--range-offset", type=finite_float,
+           help="Constant ranging bias in metres: every recorded range is this much too long (0 = off)."),
+    _given(ErrorModel, "range_walk_m", "--range-walk", type=nonneg_float,
+           help="Range walk of the weakest returns in metres (0 = off)."),
+)
 @click.option("--point-format", type=click.Choice(["6", "7", "8"]), default="7", show_default=True,
               help="LAS 1.4 point format: 6 (no colour), 7 (RGB), 8 (RGB + NIR).")
 @click.option("--trajectory", "trajectory_path", type=click.Path(dir_okay=False), default=None,
@@ -88,10 +129,8 @@ def _xy(ctx, param, value):
 @allow_outside_option
 @overwrite_option
 @click.option("--json", "as_json", is_flag=True, help="Print a summary as JSON on stdout.")
-def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overlap, lines, heading, pattern, prf,
-             scan_frequency, fov, h_step, v_step, stations, subrays, divergence, wavelength, max_returns, no_errors,
-             range_noise, gnss_noise, gnss_bias, imu_noise, lever_arm_error, boresight_error, scan_angle_scale,
-             scan_angle_offset, time_bias, line_bias, range_offset, range_walk, point_format, trajectory_path, scene_out, overwrite, as_json):
+def simulate(kind, output, scene_path, seed, config_path, flight, scanner, stations, sensor, no_errors, errors,
+             point_format, trajectory_path, scene_out, overwrite, as_json):
     """Simulate an ALS, ULS, MLS or TLS survey of a synthetic scene.
 
     Without --scene the default mixed scene (~300 m x 300 m: terrain features, houses, the
@@ -118,19 +157,7 @@ def simulate(kind, output, scene_path, seed, config_path, altitude, speed, overl
     inputs = [p for p in (config_path, scene_path) if p and Path(p).is_file()]
     check_outputs(outputs, overwrite, inputs=inputs)
     cfg, scene_arg, seed = _survey_config(kind, config_path, scene_path, seed)
-    cfg = _with_options(
-        cfg, kind, no_errors, speed, stations,
-        flight=(("altitude", altitude), ("speed", speed), ("overlap", overlap), ("n_lines", lines), ("heading_deg", heading)),
-        scanner=(("kind", pattern), ("prf", prf), ("scan_frequency", scan_frequency), ("fov_deg", fov),
-                 ("h_step_deg", h_step), ("v_step_deg", v_step)),
-        sensor=(("subrays", subrays), ("divergence_mrad", divergence), ("wavelength_nm", wavelength),
-                ("max_returns", max_returns)),
-        errors=(("range_noise_m", range_noise), ("gnss_noise_m", gnss_noise), ("gnss_bias_m", gnss_bias),
-                ("imu_noise_deg", imu_noise), ("lever_arm_error_m", lever_arm_error),
-                ("boresight_error_deg", boresight_error), ("scan_angle_scale", scan_angle_scale),
-                ("scan_angle_offset_deg", scan_angle_offset), ("time_bias_s", time_bias),
-                ("range_walk_m", range_walk), ("range_offset_m", range_offset), ("line_bias_m", line_bias or None)),
-    )
+    cfg = _with_options(cfg, kind, no_errors, stations, flight=flight, scanner=scanner, sensor=sensor, errors=errors)
 
     scene = build_scene(scene_arg, seed)
     log.info("scene: %s", scene_summary(scene))
@@ -174,33 +201,35 @@ def _survey_config(kind: str, config_path, scene_path, seed):
     return cfg, scene_arg, seed
 
 
-def _replace_given(obj, values):
-    """``obj`` with each (field, value) pair of ``values`` whose value was given (not None)
-    replaced, one field at a time (each step is validated by the dataclass)."""
+def _replace_given(obj, values: dict):
+    """``obj`` with each field of ``values`` that was given (not None) replaced, one field at a
+    time (each step is validated by the dataclass)."""
     from dataclasses import replace
 
-    for name, val in values:
+    for name, val in values.items():
         if val is not None:
             obj = replace(obj, **{name: val})
     return obj
 
 
-def _with_options(cfg, kind: str, no_errors: bool, speed, stations, *, flight, scanner, sensor, errors):
+def _with_options(cfg, kind: str, no_errors: bool, stations, *, flight: dict, scanner: dict, sensor: dict,
+                  errors: dict):
     """The survey ``cfg`` with the command-line options applied over the config: flight,
-    scanner, sensor and error fields; --no-errors first switches every error off; --speed is
-    also the MLS vehicle's speed; --station replaces the TLS stations."""
+    scanner, sensor and error fields (dicts keyed by field name); --no-errors first switches
+    every error off; --speed is also the MLS vehicle's speed; --station replaces the TLS
+    stations."""
     from dataclasses import replace
 
     from workstation.lidar.platforms import Station
-    from workstation.lidar.simulate import ErrorModel
 
-    flight = _replace_given(cfg.flight, flight)
-    scanner = _replace_given(cfg.scanner, scanner)
-    sensor = _replace_given(cfg.sensor, sensor)
-    errors = _replace_given(ErrorModel.none() if no_errors else cfg.errors, errors)
+    speed = flight["speed"]
+    errors = {**errors, "line_bias_m": errors["line_bias_m"] or None}  # no --line-bias: the config's
     vehicle = replace(cfg.vehicle, speed=speed) if (speed is not None and kind == "mls") else cfg.vehicle
     st = tuple(Station(x, y) for x, y in stations) if stations else cfg.stations
-    return replace(cfg, flight=flight, scanner=scanner, sensor=sensor, errors=errors, vehicle=vehicle, stations=st)
+    return replace(cfg, flight=_replace_given(cfg.flight, flight), scanner=_replace_given(cfg.scanner, scanner),
+                   sensor=_replace_given(cfg.sensor, sensor),
+                   errors=_replace_given(ErrorModel.none() if no_errors else cfg.errors, errors),
+                   vehicle=vehicle, stations=st)
 
 
 def _write_outputs(result, scene, outputs: list, overwrite: bool, inputs: list, point_format: str):

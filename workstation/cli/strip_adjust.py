@@ -4,7 +4,15 @@ from __future__ import annotations
 
 import click
 
+from workstation.adjust import AdjustParams, PatchParams
+
 from .options import emit_json, float_triple, json_option, overwrite_option, positive_float
+from .options import bound, field_default, param_group
+
+
+def _triple(cls, field: str) -> str:
+    """The default triple of ``field`` of ``cls`` as the text --help shows (``0,0,0``)."""
+    return ",".join(f"{v:g}" for v in field_default(cls, field))
 
 
 def _estimate(ctx, param, value):
@@ -29,20 +37,27 @@ def _estimate(ctx, param, value):
 @click.option("--estimate", callback=_estimate, default=None,
               help="Unknowns, comma-separated: boresight, leverarm, range, scan-angle (need --trajectory), strip-shift. "
                    "Default: boresight,range with --trajectory, else strip-shift.")
-@click.option("--fixed-strip", type=click.IntRange(0, 65535), default=None,
-              help="Point source id of the datum strip (default: the one in the most overlaps).")
-@click.option("--lever-arm", callback=float_triple, default="0,0,0", show_default=True,
-              help="Nominal lever arm the points were georeferenced with: x,y,z body frame (fwd, right, down) in metres.")
-@click.option("--boresight", callback=float_triple, default="0,0,0", show_default=True,
-              help="Nominal boresight roll,pitch,yaw the points were georeferenced with, in degrees.")
-@click.option("--cell", type=positive_float, default=None,
-              help="Patch cell side in metres (default: ~40 single returns of one strip per cell).")
-@click.option("--noise", type=positive_float, default=None,
-              help="1-sigma point noise along the surface normal in metres (default: estimated from the data).")
+@param_group(
+    "given",
+    bound(AdjustParams, "fixed_strip", "--fixed-strip", type=click.IntRange(0, 65535),
+          help="Point source id of the datum strip (default: the one in the most overlaps)."),
+    bound(AdjustParams, "lever_arm", "--lever-arm", callback=float_triple, default=_triple(AdjustParams, "lever_arm"),
+          show_default=True,
+          help="Nominal lever arm the points were georeferenced with: x,y,z body frame (fwd, right, down) in metres."),
+    bound(AdjustParams, "boresight_deg", "--boresight", callback=float_triple,
+          default=_triple(AdjustParams, "boresight_deg"), show_default=True,
+          help="Nominal boresight roll,pitch,yaw the points were georeferenced with, in degrees."),
+)
+@param_group(
+    "patches",
+    bound(PatchParams, "cell_m", "--cell", type=positive_float,
+          help="Patch cell side in metres (default: ~40 single returns of one strip per cell)."),
+    bound(PatchParams, "noise_m", "--noise", type=positive_float,
+          help="1-sigma point noise along the surface normal in metres (default: estimated from the data)."),
+)
 @overwrite_option
 @json_option
-def strip_adjust(inputs, out_dir, trajectory_path, estimate, fixed_strip, lever_arm, boresight, cell, noise,
-                 overwrite, as_json):
+def strip_adjust(inputs, out_dir, trajectory_path, estimate, given, patches, overwrite, as_json):
     """Estimate and remove the systematic misalignment between overlapping flight lines.
 
     Planar patches seen by two strips (point_source_id) give plane-to-plane distances; without a
@@ -55,7 +70,7 @@ def strip_adjust(inputs, out_dir, trajectory_path, estimate, fixed_strip, lever_
     import time
     from pathlib import Path
 
-    from workstation.adjust import AdjustParams, PatchParams, apply_corrections, estimate_corrections, read_trajectory_csv
+    from workstation.adjust import apply_corrections, estimate_corrections, read_trajectory_csv
     from workstation.adjust.report import pair_table, result_dict, swath_pass
     from workstation.core.errors import InvalidInputError
     from workstation.core.progress import progress_bar
@@ -68,7 +83,7 @@ def strip_adjust(inputs, out_dir, trajectory_path, estimate, fixed_strip, lever_
     if not trajectory_path and set(estimate) - {"strip-shift"}:
         raise InvalidInputError(f"estimating {', '.join(sorted(set(estimate) - {'strip-shift'}))} needs the trajectory",
                                 "give --trajectory CSV, or --estimate strip-shift")
-    params = AdjustParams(estimate, fixed_strip, lever_arm, boresight, patches=PatchParams(cell_m=cell, noise_m=noise))
+    params = AdjustParams(estimate, **given, patches=PatchParams(**patches))
     nav = read_trajectory_csv(trajectory_path) if trajectory_path else None
     with progress_bar("strip-adjust", 2 * len(inputs) + 3, unit="steps") as advance:
         clouds = []

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import click
 
-from .options import json_option, output_option, overwrite_option, positive_float
+from workstation.ops.thin import KEEP, VoxelParams
+
+from .options import RegistryChoice, field_option, json_option, output_option, overwrite_option, positive_float
 from .pipeline_out import pipeline_out_option
 
 
@@ -12,7 +14,7 @@ from .pipeline_out import pipeline_out_option
 @click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
 @output_option
 @click.option("--voxel", type=positive_float, default=None, help="Keep one point per voxel of this edge (CRS units).")
-@click.option("--keep", type=click.Choice(["first", "centroid", "center", "lowest", "highest"]), default="first",
+@field_option(VoxelParams, "keep", "--keep", type=RegistryChoice(KEEP),
               show_default=True, help="[--voxel] which point of a voxel stays: first in file order, nearest the "
                                       "centroid or the centre of the voxel, lowest or highest.")
 @click.option("--poisson", type=positive_float, default=None,
@@ -26,7 +28,7 @@ def thin(src, output, voxel, keep, poisson, pipeline_out, overwrite, as_json):
 
     from workstation.core.log import get_logger
     from workstation.io import check_outputs, format_of, read_cloud, write_cloud
-    from workstation.ops.thin import PoissonParams, VoxelParams, poisson_thin, voxel_thin
+    from workstation.ops.thin import PoissonParams, poisson_thin, voxel_thin
 
     from .options import emit_json
     from .pipeline_out import save_pipeline

@@ -4,29 +4,34 @@ from __future__ import annotations
 
 import click
 
-from .options import json_option, nonneg_float, overwrite_option, positive_float
+from workstation.ops.tile import TileParams
+
+from .options import bound, json_option, nonneg_float, overwrite_option, param_group, positive_float
 from .pipeline_out import pipeline_out_option
 
 
 @click.command("tile")
 @click.argument("inputs", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False))
 @click.option("-o", "--output", required=True, type=click.Path(file_okay=False), help="Output folder.")
-@click.option("--size", type=positive_float, required=True, help="Tile side in CRS units.")
-@click.option("--buffer", type=nonneg_float, default=0.0, show_default=True,
-              help="Also write the points this close (CRS units) outside a tile to it.")
+@param_group(
+    "given",
+    bound(TileParams, "size", "--size", type=positive_float, required=True, default=None, help="Tile side in CRS units."),
+    bound(TileParams, "buffer", "--buffer", type=nonneg_float, show_default=True,
+          help="Also write the points this close (CRS units) outside a tile to it."),
+)
 @click.option("--format", "ext", type=click.Choice(["laz", "las"]), default="laz", show_default=True,
               help="Tile file format.")
 @pipeline_out_option
 @overwrite_option
 @json_option
-def tile(inputs, output, size, buffer, ext, pipeline_out, overwrite, as_json):
+def tile(inputs, output, given, ext, pipeline_out, overwrite, as_json):
     """Cut IN... into tiles of --size aligned to multiples of it, written to FOLDER as
     <xmin>_<ymin>.laz; streamed, so any number of points fits in memory."""
     import time
 
     from workstation.core.log import get_logger
     from workstation.io import check_outputs, format_of, work_folder
-    from workstation.ops.tile import TileParams, tile_files
+    from workstation.ops.tile import tile_files
 
     from .options import emit_json
     from .pipeline_out import save_pipeline
@@ -34,7 +39,8 @@ def tile(inputs, output, size, buffer, ext, pipeline_out, overwrite, as_json):
     t0 = time.perf_counter()
     for p in inputs:
         format_of(p)
-    params = TileParams(size, buffer, "." + ext)
+    params = TileParams(**given, ext="." + ext)
+    size, buffer = given["size"], given["buffer"]
     check_outputs([pipeline_out], overwrite, inputs=inputs)
     with work_folder(output) as folder:
         counts = tile_files(inputs, folder, params, overwrite=overwrite)

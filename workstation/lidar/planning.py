@@ -158,6 +158,10 @@ def plan_flight(p: FlightParams, divergence_mrad: float | None = None) -> Flight
     )
 
 
+#: The unknowns :func:`solve_for_density` can solve for.
+SOLVABLE = ("prf", "speed", "altitude")
+
+
 def solve_for_density(target_density: float, p: FlightParams, solve: str = "prf") -> FlightParams:
     """The flight parameters that reach ``target_density`` (points/m^2 per pass).
 

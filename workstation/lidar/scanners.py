@@ -37,6 +37,8 @@ from workstation.core.errors import InvalidInputError
 from .georef import beam_direction
 
 KINDS = ("zigzag", "polygon", "palmer", "rotating", "spherical")
+#: The mechanisms of an airborne (ALS/ULS) scanner; rotating is a mobile profiler, spherical a TLS.
+AIRBORNE_KINDS = ("zigzag", "polygon", "palmer")
 
 
 @dataclass(frozen=True)

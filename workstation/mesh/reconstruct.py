@@ -27,6 +27,9 @@ from workstation.core.products import Mesh
 
 from .steps import StepRecord, Timer, import_pymeshlab, openmp_threads, passive_openmp, point_spacing
 
+#: The screened Poisson implementations of :class:`PoissonParams` (``backend``).
+POISSON_BACKENDS = ("open3d", "pymeshlab")
+
 log = get_logger(__name__)
 
 
@@ -93,7 +96,7 @@ class PoissonParams:
             raise InvalidInputError(f"depth={self.depth} out of 1..16", field="depth")
         if not 0.0 <= self.trim_quantile < 1.0:
             raise InvalidInputError(f"trim_quantile={self.trim_quantile} not in [0, 1)", field="trim_quantile")
-        if self.backend not in ("pymeshlab", "open3d"):
+        if self.backend not in POISSON_BACKENDS:
             raise InvalidInputError(f"unknown Poisson backend '{self.backend}'", "use open3d or pymeshlab",
                                     field="backend")
         if self.samples_per_node <= 0:

@@ -19,6 +19,9 @@ from workstation.core.products import Mesh
 
 from .steps import StepRecord, Timer, import_pymeshlab
 
+#: The smoothing filters of :class:`SmoothParams`.
+SMOOTH_METHODS = ("taubin", "laplacian")
+
 
 @dataclass(frozen=True)
 class DecimateParams:
@@ -89,7 +92,7 @@ class SmoothParams:
     keep_boundary: bool = True
 
     def __post_init__(self):
-        if self.method not in ("taubin", "laplacian"):
+        if self.method not in SMOOTH_METHODS:
             raise InvalidInputError(f"unknown smoothing '{self.method}'", "use taubin or laplacian", field="method")
         if self.iterations < 0:
             raise InvalidInputError("iterations must be >= 0", field="iterations")

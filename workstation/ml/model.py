@@ -72,6 +72,10 @@ def set_standardisation(model, X: np.ndarray) -> None:
         model.std.copy_(torch.as_tensor(sd, dtype=torch.float32))
 
 
+#: Where a network may run: ``auto`` (CUDA when present), ``cpu`` or ``cuda``.
+DEVICES = ("auto", "cpu", "cuda")
+
+
 def resolve_device(device: str = "auto"):
     """``torch.device`` for ``auto`` (CUDA when present), ``cpu`` or ``cuda``.
 

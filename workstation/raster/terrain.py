@@ -17,6 +17,10 @@ from workstation.core.errors import InvalidInputError
 from workstation.core.products import Raster
 
 
+#: The products of a DEM made here: :func:`hillshade`, :func:`slope`, :func:`aspect`.
+PRODUCTS = ("hillshade", "slope", "aspect")
+
+
 @dataclass(frozen=True)
 class HillshadeParams:
     """Parameters of :func:`hillshade`.
