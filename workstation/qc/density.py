@@ -41,7 +41,7 @@ class DensityAccumulator:
     strict: bool = True
 
     def __post_init__(self):
-        self._keys = np.empty(0, dtype=np.int64)
+        self._runs: list[np.ndarray] = []  # sorted unique cell keys, runs of decreasing size
         self._hull = np.empty((0, 2))
         self._too_fine = False
 
@@ -50,33 +50,66 @@ class DensityAccumulator:
         if len(xy) == 0:
             return
         x, y = xy[:, 0], xy[:, 1]  # column by column: numpy reduces (n, 2) along axis 0 much slower
+        cells = self.start((x.min(), y.min()), (x.max(), y.max()))
+        keys = sorted_unique(self.cell_keys(x, y)) if cells else None
+        self.merge(len(xy), hull_candidates(xy), keys)
+
+    def start(self, lo, hi) -> bool:
+        """Prepare to add points whose plan extent is ``lo`` (xmin, ymin) to ``hi`` (xmax,
+        ymax): the first call sets the grid origin. False when the points are to be counted
+        without cell keys (cell too fine, not strict); a cell too fine when strict raises."""
         if self.origin is None:
-            self.origin = np.floor(np.array([x.min(), y.min()]) / self.cell) * self.cell - 2**20 * self.cell
-        span = float(np.max(np.array([x.max(), y.max()]) - self.origin)) / self.cell
+            self.origin = np.floor(np.asarray(lo, dtype=np.float64) / self.cell) * self.cell - 2**20 * self.cell
+        span = float(np.max(np.asarray(hi, dtype=np.float64) - self.origin)) / self.cell
         self._too_fine |= not span < _MAX_INDEX  # the packed 64-bit cell keys would wrap around
-        self._hull = hull_points(np.vstack([self._hull, hull_candidates(xy)]))
-        if self._too_fine and not self.strict:
-            self.n += len(xy)
-            return
-        if self._too_fine:
+        if self._too_fine and self.strict:
             from workstation.core.errors import InvalidInputError
 
             raise InvalidInputError(
                 f"a density cell of {self.cell:g} CRS units makes {span:.3g} cells across the data "
                 f"(at most {_MAX_INDEX:.3g})", f"use a larger --density-cell, e.g. {self.cell * span / 2**30:.2g}",
                 field="--density-cell")
-        ij = np.floor((xy - self.origin) / self.cell).astype(np.int64)
-        keys = sorted_unique((ij[:, 0] << 32) + ij[:, 1])
-        # two sorted runs: the stable sort (timsort) merges them in linear time
-        self._keys = sorted_unique(np.concatenate([self._keys, keys]), kind="stable")
-        self.n += len(xy)
+        return not self._too_fine
+
+    def cell_keys(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """The packed cell key ``(i << 32) + j`` of each point (after :meth:`start`)."""
+        t = np.subtract(x, self.origin[0])
+        i = np.floor(np.divide(t, self.cell, out=t), out=t).astype(np.int64)
+        np.subtract(y, self.origin[1], out=t)
+        j = np.floor(np.divide(t, self.cell, out=t), out=t).astype(np.int64)
+        i <<= 32
+        i += j
+        return i
+
+    def merge(self, n: int, hull_cands: np.ndarray, keys: np.ndarray | None) -> None:
+        """Fold in ``n`` points started with :meth:`start`: ``hull_cands`` (k, 2) a superset of
+        their hull vertices, ``keys`` their sorted unique cell keys (None when :meth:`start`
+        said False)."""
+        self._hull = hull_points(np.vstack([self._hull, hull_cands]))
+        if keys is not None and not self._too_fine:
+            self._runs.append(keys)
+            # merge the last run into the one before while that one is less than twice its size:
+            # each key takes part in O(log chunks) merges, not one per chunk, and the runs stay
+            # fewer than log2 of the cell count
+            while len(self._runs) > 1 and len(self._runs[-2]) < 2 * len(self._runs[-1]):
+                last = self._runs.pop()
+                self._runs[-1] = _merge_runs(self._runs[-1], last)
+        self.n += n
+
+    def occupied_cells(self) -> int:
+        """The number of distinct occupied cells so far."""
+        while len(self._runs) > 1:
+            last = self._runs.pop()
+            self._runs[-1] = _merge_runs(self._runs[-1], last)
+        return len(self._runs[0]) if self._runs else 0
 
     def result(self) -> dict:
         """{points, occupied_cells, cell_size, occupied_area_m2, footprint_area_m2,
         density_occupied, density_footprint, nps} with densities in points/m² and NPS in
         CRS units."""
         m2 = self.metres_per_unit**2
-        occ_area = float("nan") if self._too_fine else self._keys.size * self.cell**2 * m2
+        cells = self.occupied_cells()
+        occ_area = float("nan") if self._too_fine else cells * self.cell**2 * m2
         fp_area = hull_area(self._hull) * m2
         d_occ = self.n / occ_area if occ_area > 0 else float("nan")
         d_fp = self.n / fp_area if fp_area > 0 else float("nan")
@@ -84,7 +117,7 @@ class DensityAccumulator:
         return {
             "points": int(self.n),
             "cell_size": float(self.cell),
-            "occupied_cells": int(self._keys.size),
+            "occupied_cells": int(cells),
             "occupied_area_m2": float(occ_area),
             "footprint_area_m2": float(fp_area),
             "density_occupied": float(d_occ),
@@ -92,6 +125,12 @@ class DensityAccumulator:
             "nps_m": nps_m,
             "nps": nps_m / self.metres_per_unit if np.isfinite(nps_m) else float("nan"),
         }
+
+
+def _merge_runs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The sorted unique union of two sorted unique key arrays (the stable sort, timsort,
+    merges two sorted runs in linear time)."""
+    return sorted_unique(np.concatenate([a, b]), kind="stable")
 
 
 def sorted_unique(a: np.ndarray, kind: str = "quicksort") -> np.ndarray:
@@ -107,18 +146,29 @@ def hull_candidates(xy: np.ndarray) -> np.ndarray:
     nearly every point of a survey, so Qhull sees thousands of points instead of millions."""
     if len(xy) < 64:
         return xy
-    x, y = np.ascontiguousarray(xy[:, 0]), np.ascontiguousarray(xy[:, 1])
+    return xy[outside_octagon(np.ascontiguousarray(xy[:, 0]), np.ascontiguousarray(xy[:, 1]))]
+
+
+def outside_octagon(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Which points (x, y) are not strictly inside the octagon of their extreme points along
+    x, y, x+y and x-y (see :func:`hull_candidates`)."""
     s, d = x + y, x - y
     # left, lower-left, bottom, lower-right, right, upper-right, top, upper-left: counter-clockwise
     order = [x.argmin(), s.argmin(), y.argmin(), d.argmax(), x.argmax(), s.argmax(), y.argmax(), d.argmin()]
-    poly = xy[order]  # (repeated points make edges of length 0, skipped)
-    inside = np.ones(len(xy), dtype=bool)
-    for a, b in zip(poly, np.roll(poly, -1, axis=0)):
-        edge = b - a
-        if not edge.any():
+    px, py = x[order], y[order]  # (repeated points make edges of length 0, skipped)
+    inside = np.ones(len(x), dtype=bool)
+    t, u = np.empty_like(x), np.empty_like(x)  # reused: fresh temporaries per edge cost more than the arithmetic
+    for k in range(8):
+        ex, ey = px[(k + 1) % 8] - px[k], py[(k + 1) % 8] - py[k]
+        if not (ex or ey):
             continue
-        inside &= edge[0] * (y - a[1]) - edge[1] * (x - a[0]) > 0
-    return xy[~inside]
+        np.subtract(y, py[k], out=t)  # ex * (y - py) - ey * (x - px) > 0: left of the edge
+        t *= ex
+        np.subtract(x, px[k], out=u)
+        u *= ey
+        t -= u
+        inside &= t > 0
+    return ~inside
 
 
 def hull_points(xy: np.ndarray) -> np.ndarray:

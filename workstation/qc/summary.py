@@ -1,7 +1,9 @@
 """One pass over a point cloud file: what ``ws info`` shows.
 
-Streams the file in chunks (LAS/LAZ), so memory is bounded by one chunk plus the set of
-occupied density cells, whatever the file size.
+Streams the file in chunks, so memory is bounded by one chunk plus the set of occupied
+density cells, whatever the file size. A whole LAS/LAZ file is summarised from its raw point
+records (:mod:`workstation.qc.las_stats`); other formats and selections (``bounds``,
+``resolution``, ``level``) from the clouds the readers stream.
 """
 
 from __future__ import annotations
@@ -13,9 +15,11 @@ import numpy as np
 from workstation.core.classes import class_name
 from workstation.io import copc
 from workstation.io.crs import crs_info, crs_units, crs_warnings
-from workstation.io.registry import format_of, iter_chunks
+from workstation.io.registry import _check_readable, format_of, iter_chunks
+from workstation.io.registry import _guarded as guarded
 
 from .density import DensityAccumulator
+from .las_stats import las_statistics
 
 
 class _Range:
@@ -29,6 +33,9 @@ class _Range:
         lo, hi = _col_min_max(a)
         self.lo = lo if self.lo is None else np.minimum(self.lo, lo)
         self.hi = hi if self.hi is None else np.maximum(self.hi, hi)
+
+    def __iter__(self):
+        return iter((self.lo, self.hi))
 
 
 def _col_min_max(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -59,21 +66,12 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
     """
     path = Path(path)
     fmt, _ = format_of(path)
-    stats = _ChunkStats()
-    acc = None
-    crs = info = None
-    meta = {}
-    for chunk in iter_chunks(path, chunk_size, **read_opts):
-        if acc is None:
-            crs = chunk.crs
-            meta = dict(chunk.meta)
-            info = crs_info(crs)  # once: identifying a CRS without EPSG code searches the database
-            mpu = info.metres_per_unit if info else 1.0
-            acc = DensityAccumulator(density_cell_m / mpu, mpu, strict=density_strict)
-        if chunk.n == 0:
-            continue
-        stats.add(chunk)
-        acc.add(chunk.xyz[:, :2])
+    if fmt in ("las", "laz") and all(v is None for v in read_opts.values()):
+        _check_readable(path)
+        stats, info, acc = _las_stats(path, chunk_size, density_cell_m, density_strict)
+        crs, meta = stats.crs, stats.meta
+    else:
+        stats, crs, info, meta, acc = _chunk_stats(path, chunk_size, density_cell_m, density_strict, read_opts)
     dens = acc.result() if acc is not None and stats.count else None
     lo, hi = stats.lo, stats.hi
     out = {
@@ -86,7 +84,8 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
         "units": crs_units(crs).to_dict(),
         "crs_warnings": [] if lo is None else crs_warnings(crs, (lo, hi)),
         "dimensions": {
-            k: {"dtype": stats.dtypes[k], "min": _py(r.lo), "max": _py(r.hi)} for k, r in stats.ranges.items()
+            k: {"dtype": stats.dtypes[k], "min": _py(lo_k), "max": _py(hi_k)}
+            for k, (lo_k, hi_k) in stats.ranges.items()
         },
         "classification": {str(i): int(c) for i, c in enumerate(stats.classes) if c},
         "classification_names": {str(i): class_name(i) for i, c in enumerate(stats.classes) if c},
@@ -100,6 +99,42 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
     else:
         out["format_version"] = fmt.upper()
     return out
+
+
+def _chunk_stats(path: Path, chunk_size: int, cell_m: float, strict: bool, read_opts: dict):
+    """(:class:`_ChunkStats`, CRS, CRS info, reader meta, density accumulator) of the clouds
+    :func:`workstation.io.registry.iter_chunks` streams (any format, any selection)."""
+    stats = _ChunkStats()
+    acc = None
+    crs = info = None
+    meta = {}
+    for chunk in iter_chunks(path, chunk_size, **read_opts):
+        if acc is None:
+            crs = chunk.crs
+            meta = dict(chunk.meta)
+            info = crs_info(crs)  # once: identifying a CRS without EPSG code searches the database
+            mpu = info.metres_per_unit if info else 1.0
+            acc = DensityAccumulator(cell_m / mpu, mpu, strict=strict)
+        if chunk.n == 0:
+            continue
+        stats.add(chunk)
+        acc.add(chunk.xyz[:, :2])
+    return stats, crs, info, meta, acc
+
+
+def _las_stats(path: Path, chunk_size: int, cell_m: float, strict: bool):
+    """(:class:`workstation.qc.las_stats.LasStats`, CRS info, density accumulator) of a whole
+    LAS/LAZ file, from its raw point records (:func:`workstation.qc.las_stats.las_statistics`)."""
+    made = {}
+
+    def accumulator(crs):
+        made["info"] = crs_info(crs)  # once: identifying a CRS without EPSG code searches the database
+        mpu = made["info"].metres_per_unit if made["info"] else 1.0
+        made["acc"] = DensityAccumulator(cell_m / mpu, mpu, strict=strict)
+        return made["acc"]
+
+    stats = guarded(path, las_statistics, path, chunk_size, accumulator)
+    return stats, made.get("info"), made.get("acc")
 
 
 class _ChunkStats:
