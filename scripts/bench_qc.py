@@ -9,6 +9,12 @@
   python scripts/bench_qc.py scale  TILES... [--max-points N]   ws qc over a catalog (e.g. /work/bench/c200/tiles,
                                                           made by bench_project.py catalog): seconds, points/s,
                                                           peak memory
+  python scripts/bench_qc.py project TILES... [--max-points N] [--workers 2] [--out DIR] [--no-single]
+                                                          ws run with [stages.qc] alone over the tiles (QC per
+                                                          file, swath fits per block, one merge) against ws qc
+                                                          over the same tiles (the single-task QC): wall and CPU
+                                                          seconds, peak memory per worker and per QC task kind,
+                                                          qc.json fields that differ beyond 1e-9 relative
 
 DIR for the data defaults to ../shared/data (or $WS_SHARED_DATA).
 """
@@ -105,6 +111,84 @@ def scale(args):
               "points_per_s": round(doc["points"] / dt), "peak_mb": round(peak), **_brief(doc) | {"swaths": len(doc["swaths"])}})
 
 
+def _select(tiles, max_points: int) -> list[Path]:
+    tiles = sorted(Path(t).resolve() for t in tiles)
+    if not max_points:
+        return tiles
+    from workstation.io.catalog import read_tile_info
+
+    keep, n = [], 0
+    for t in tiles:
+        if n >= max_points:
+            break
+        keep.append(t)
+        n += read_tile_info(t).point_count
+    return keep
+
+
+def _differences(a, b, path="", rel=1e-9) -> list[str]:
+    """Fields of two JSON documents that differ (numbers beyond ``rel`` relative)."""
+    import math
+
+    if isinstance(a, dict) and isinstance(b, dict):
+        out = [f"{path}/{k}" for k in sorted(set(a) ^ set(b))]
+        return out + [d for k in sorted(set(a) & set(b)) for d in _differences(a[k], b[k], f"{path}/{k}", rel)]
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [path]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in _differences(x, y, f"{path}[{i}]", rel)]
+    if isinstance(a, float) and isinstance(b, float):
+        ok = a == b or (math.isnan(a) and math.isnan(b)) or abs(a - b) <= rel * max(abs(a), abs(b))
+        return [] if ok else [path]
+    return [] if a == b else [path]
+
+
+def project(args):
+    """ws qc (one process: the single-task QC) then ws run [stages.qc] on the same tiles."""
+    tiles = _select(args.tiles, args.max_points)
+    work = Path(args.out or tempfile.mkdtemp(prefix="qcproj"))
+    (work / "tiles").mkdir(parents=True, exist_ok=True)
+    for t in tiles:
+        link = work / "tiles" / t.name
+        if not link.exists():
+            link.symlink_to(t)
+    (work / "project.toml").write_text('[inputs]\nclouds = ["tiles/*.laz"]\n[chunks]\nsize = 250.0\nbuffer = 30.0\n'
+                                       '[stages.qc]\nspec = "usgs-ql2"\n')
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if not args.no_single:
+        doc, dt, peak = ws_qc(tiles, work / "single")  # the resolved paths, as the project lists them
+        cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        emit({"bench": "qc_single_task", "files": len(tiles), "points": doc["points"], "wall_s": round(dt, 1),
+              "cpu_s": round(cpu1.ru_utime + cpu1.ru_stime - cpu0.ru_utime - cpu0.ru_stime, 1), "peak_mb": round(peak)})
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    r = subprocess.run([WS, "-q", "run", str(work / "project.toml"), "--out", str(work / "out"), "--json",
+                        "--workers", str(args.workers)], capture_output=True, text=True)
+    wall = time.perf_counter() - t0
+    cpu2 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if r.returncode != 0:
+        raise SystemExit(f"ws run failed ({r.returncode}): {r.stderr[-2000:]}")
+    tasks = json.loads((work / "out" / "run.json").read_text())["tasks"]
+    kinds: dict = {}
+    for tid, rec in tasks.items():
+        k = tid.split("/")[1] if tid.count("/") >= 1 else tid
+        e = kinds.setdefault(k, {"tasks": 0, "task_s": 0.0, "task_cpu_s": 0.0, "max_task_s": 0.0, "peak_rss_mb": 0.0})
+        e["tasks"] += 1
+        e["task_s"] = round(e["task_s"] + rec.get("seconds", 0.0), 1)
+        e["task_cpu_s"] = round(e["task_cpu_s"] + rec.get("cpu_s", 0.0), 1)
+        e["max_task_s"] = max(e["max_task_s"], rec.get("seconds", 0.0))
+        e["peak_rss_mb"] = max(e["peak_rss_mb"], rec.get("peak_rss_mb", 0.0))
+    a = json.loads((work / "out" / "qc" / "qc.json").read_text())
+    b = a if args.no_single else json.loads((work / "single" / "qc.json").read_text())
+    emit({"bench": "qc_per_chunk", "files": len(tiles), "workers": args.workers, "wall_s": round(wall, 1),
+          "cpu_s_incl_workers": round(cpu2.ru_utime + cpu2.ru_stime - cpu1.ru_utime - cpu1.ru_stime, 1),
+          "peak_rss_per_worker_mb": max(e["peak_rss_mb"] for e in kinds.values()), "by_task": kinds,
+          "fields_beyond_1e-9": [d for d in _differences(a, b) if d != "/seconds"],
+          "fields_not_bit_equal": len([d for d in _differences(a, b, rel=0) if d != "/seconds"]),
+          "state_mb": round(sum(f.stat().st_size for f in (work / "out" / ".ws-cache" / "qc").rglob("*")
+                                if f.is_file()) / 2**20, 1)})
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -117,9 +201,15 @@ def main():
     c = sub.add_parser("scale")
     c.add_argument("tiles", nargs="+")
     c.add_argument("--max-points", type=int, default=0)
+    j = sub.add_parser("project")
+    j.add_argument("tiles", nargs="+")
+    j.add_argument("--max-points", type=int, default=0)
+    j.add_argument("--workers", type=int, default=2)
+    j.add_argument("--out")
+    j.add_argument("--no-single", action="store_true", help="leave out ws qc (the single-task QC)")
     args = ap.parse_args()
     sys.path.insert(0, str(REPO))
-    {"real": real, "swath": swath, "scale": scale}[args.cmd](args)
+    {"real": real, "swath": swath, "scale": scale, "project": project}[args.cmd](args)
 
 
 if __name__ == "__main__":

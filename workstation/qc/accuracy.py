@@ -601,6 +601,25 @@ class CheckpointPass:
         self._pts = np.vstack([self._pts, pts[rows]])
         self._cap()
 
+    def state(self) -> dict:
+        """The kept points, the checkpoint each is kept for, the radii and the points seen."""
+        return {"idx": self._idx, "pts": self._pts, "radius": self._radius,
+                "seen": np.array([self.points_seen], np.int64)}
+
+    @classmethod
+    def from_states(cls, cps: Checkpoints, units: Units, states: list[dict],
+                    params: CheckpointParams = CheckpointParams()) -> "CheckpointPass":
+        """The pass over several files from the :meth:`state` of each: the kept points joined,
+        each radius the smallest, then the nearest ``max_points`` kept as one pass keeps them."""
+        p = cls(cps, units, params=params)
+        if states:
+            p._idx = np.concatenate([np.asarray(s["idx"], np.int64) for s in states])
+            p._pts = np.concatenate([np.asarray(s["pts"], float).reshape(-1, 3) for s in states])
+            p._radius = np.min([np.asarray(s["radius"]) for s in states], axis=0)
+            p.points_seen = int(sum(int(np.asarray(s["seen"]).sum()) for s in states))
+            p._cap()
+        return p
+
     def _cap(self) -> None:
         """Keep at most ``max_points`` nearest points per checkpoint, shrinking its radius."""
         counts = np.bincount(self._idx, minlength=len(self.cps))

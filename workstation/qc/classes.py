@@ -80,6 +80,8 @@ TALL_STRUCTURES = (ASPRSClass.BUILDING, ASPRSClass.WIRE_GUARD, ASPRSClass.WIRE_C
 RESERVED = (8, 12, *range(23, 64))
 _NOT_CLASSIFIED = (ASPRSClass.CREATED_NEVER_CLASSIFIED, ASPRSClass.UNCLASSIFIED)
 _S3 = np.ones((3, 3), bool)
+#: The per-file counts of pass 2.
+_FILE_COUNTS = ("below_surface", "above_surface", "deck_in_ground")
 
 
 @dataclass(frozen=True)
@@ -232,12 +234,41 @@ class ClassPass1:
         if not m.any():
             return
         g, i = self.grid, idx[m]
-        u = (xyz[m, 0] - g.x0) / g.cell - 0.5 - i % g.cols
-        v = (g.y1 - xyz[m, 1]) / g.cell - 0.5 - i // g.cols
+        u = (xyz[m, 0] - g.x0) / g.cell - 0.5 - (i % g.cols + g.col0)
+        v = (g.y1 - xyz[m, 1]) / g.cell - 0.5 - (i // g.cols + g.row0)
         np.add.at(self._g_n, i, 1)
         np.add.at(self._g_su, i, u.astype(np.float32))
         np.add.at(self._g_sv, i, v.astype(np.float32))
         np.add.at(self._g_sz, i, xyz[m, 2])
+
+    _GRIDS = ("_g_n", "_g_su", "_g_sv", "_g_sz", "_b_max", "_d_min", "_water")
+
+    def state(self) -> dict:
+        """The histogram, flags, per-file counts and this (window) grid's cell accumulators."""
+        g = self.grid
+        return {"hist": self.hist, "flags": np.array([self.flags[f] for f in FLAGS], np.int64),
+                "file_names": np.array(list(self.files), dtype=str),
+                "file_points": np.array(list(self.files.values()), np.int64),
+                "window": np.array([g.row0, g.col0, g.rows, g.cols], np.int64),
+                **{k[1:]: getattr(self, k) for k in self._GRIDS}}
+
+    @classmethod
+    def from_states(cls, grid: QCGrid, params: ClassParams, states: list[dict]) -> "ClassPass1":
+        """Pass 1 over the whole ``grid`` from the :meth:`state` of passes over windows of it
+        (files distinct): sums added, highest and lowest kept, water cells joined."""
+        p = cls(grid, params)
+        ops = {"_g_n": np.add, "_g_su": np.add, "_g_sv": np.add, "_g_sz": np.add, "_b_max": np.maximum,
+               "_d_min": np.minimum, "_water": np.logical_or}
+        for st in states:
+            r0, c0, rows, cols = (int(v) for v in st["window"])
+            p.hist += np.asarray(st["hist"], np.int64)
+            for f, v in zip(FLAGS, st["flags"]):
+                p.flags[f] += int(v)
+            p.files.update({str(k): int(v) for k, v in zip(st["file_names"], st["file_points"])})
+            for k, op in ops.items():
+                whole = getattr(p, k).reshape(grid.shape)[r0:r0 + rows, c0:c0 + cols]
+                op(whole, np.asarray(st[k[1:]]).reshape(rows, cols), out=whole)
+        return p
 
     @property
     def ground_cells(self) -> np.ndarray:
@@ -351,17 +382,22 @@ class ClassPass2:
         Lowest deck return of interior bridge-deck cells, NaN elsewhere (:meth:`ClassPass1.deck_floor`).
     water : (rows, cols) bool, optional
         Cells whose points are not tested for "below" (:meth:`ClassPass1.water_mask`).
+    any_surface : bool, optional
+        Whether the surface of the whole delivery holds a value anywhere, when ``grid`` is a
+        window of it (default: whether ``surface`` does). Without any, no point is tested.
     """
 
     def __init__(self, grid: QCGrid, surface: np.ndarray, params: ClassParams = ClassParams(), *,
-                 deck_floor: np.ndarray | None = None, water: np.ndarray | None = None):
+                 deck_floor: np.ndarray | None = None, water: np.ndarray | None = None,
+                 any_surface: bool | None = None):
         for name, a in (("surface", surface), ("deck_floor", deck_floor), ("water", water)):
             if a is not None and np.shape(a) != grid.shape:
                 raise InvalidInputError(f"has shape {np.shape(a)}, the grid {grid.shape}", field=name)
         self.grid, self.params = grid, params
-        self._dem = Raster(np.asarray(surface, np.float64), (grid.cell, 0.0, grid.x0, 0.0, -grid.cell, grid.y1))
+        x0, y1 = grid.x0 + grid.col0 * grid.cell, grid.y1 - grid.row0 * grid.cell  # a window's own corner
+        self._dem = Raster(np.asarray(surface, np.float64), (grid.cell, 0.0, x0, 0.0, -grid.cell, y1))
         self._flat = self._dem.array.ravel()
-        self._any = bool(np.isfinite(self._flat).any())
+        self._any = bool(np.isfinite(self._flat).any()) if any_surface is None else bool(any_surface)
         self._deck = None if deck_floor is None else np.asarray(deck_floor, np.float64).ravel()
         self._water = None if water is None else np.asarray(water, bool).ravel()
         self.below = np.zeros(256, np.int64)
@@ -402,6 +438,14 @@ class ClassPass2:
         self.deck_in_ground += hits
         f["deck_in_ground"] += hits
 
+    def state(self) -> dict:
+        """The counts of this pass, to add to those of the passes over the other files."""
+        names = list(self.files)
+        return {"below": self.below, "above": self.above, "tested": np.array([self.tested], np.int64),
+                "deck_in_ground": np.array([self.deck_in_ground], np.int64), "file_names": np.array(names, dtype=str),
+                "file_counts": np.array([[self.files[n][k] for k in _FILE_COUNTS] for n in names],
+                                        np.int64).reshape(-1, 3)}
+
     def _deck_hits(self, ground: np.ndarray) -> int:
         """Ground points in interior deck cells at the deck's level."""
         if self._deck is None or len(ground) == 0:
@@ -416,10 +460,31 @@ class ClassPass2:
         """Pass-2 counts: ``below_surface``, ``above_surface`` (tall-structure classes left out),
         ``below_by_class``, ``above_by_class``, ``tested`` (points with a surface under them),
         ``deck_in_ground``, ``files``."""
-        return {"below_surface": int(self.below.sum()), "above_surface": int(_high_noise(self.above)),
-                "below_by_class": _codes(self.below), "above_by_class": _codes(self.above),
-                "tested": int(self.tested), "deck_in_ground": int(self.deck_in_ground),
-                "files": {k: dict(v) for k, v in self.files.items()}}
+        return pass2_result(self.below, self.above, self.tested, self.deck_in_ground, self.files)
+
+
+def pass2_result(below: np.ndarray, above: np.ndarray, tested: int, deck_in_ground: int, files: dict) -> dict:
+    """The :meth:`ClassPass2.result` of counts (``below``/``above``: 256 per-class counts),
+    whether they come from one pass or are the sums of several passes over parts of a delivery."""
+    return {"below_surface": int(below.sum()), "above_surface": int(_high_noise(above)),
+            "below_by_class": _codes(below), "above_by_class": _codes(above),
+            "tested": int(tested), "deck_in_ground": int(deck_in_ground),
+            "files": {k: dict(v) for k, v in files.items()}}
+
+
+def pass2_merged(states: list[dict]) -> dict:
+    """:func:`pass2_result` of the :meth:`ClassPass2.state` of passes over distinct files."""
+    below, above = np.zeros(256, np.int64), np.zeros(256, np.int64)
+    tested = deck = 0
+    files: dict = {}
+    for st in states:
+        below += st["below"]
+        above += st["above"]
+        tested += int(np.asarray(st["tested"]).sum())
+        deck += int(np.asarray(st["deck_in_ground"]).sum())
+        for name, c in zip(st["file_names"], np.asarray(st["file_counts"]).reshape(-1, 3)):
+            files[str(name)] = dict(zip(_FILE_COUNTS, (int(v) for v in c)))
+    return pass2_result(below, above, tested, deck, files)
 
 
 def _high_noise(above: np.ndarray) -> int:
@@ -444,6 +509,11 @@ def class_checks(p1: ClassPass1, p2: ClassPass2 | None = None) -> dict:
         {source: counts}, ``params`` and ``criteria`` [{"name", "value", "threshold", "pass"}]
         (empty for an unclassified delivery: nothing to judge).
     """
+    return class_result(pass1_result(p1), None if p2 is None else p2.result(), p1.params)
+
+
+def pass1_result(p1: ClassPass1) -> dict:
+    """The part of :func:`class_checks` that pass 1 alone decides (histogram, buildings), JSON-ready."""
     p, hist = p1.params, p1.hist
     res = _histogram(p1)
     res.update({"cell_m": p1.grid.cell_m, "below_m": p.below_m, "above_m": p.above_m,
@@ -451,12 +521,20 @@ def class_checks(p1: ClassPass1, p2: ClassPass2 | None = None) -> dict:
                 "tested": 0, "buildings": p1.buildings(),
                 "bridge": {"deck_points": int(hist[ASPRSClass.BRIDGE_DECK]), "deck_in_ground": None},
                 "files": {s: {"points": k} for s, k in p1.files.items()}, "params": asdict(p)})
-    if p2 is not None:
-        r2 = p2.result()
+    return res
+
+
+def class_result(res1: dict, r2: dict | None, p: ClassParams) -> dict:
+    """:func:`class_checks` from the pass-1 part ``res1`` (:func:`pass1_result`) and the pass-2
+    counts ``r2`` (:func:`pass2_result`; None: pass 1 only)."""
+    import copy
+
+    res = copy.deepcopy(res1)
+    if r2 is not None:
         res["bridge"]["deck_in_ground"] = r2["deck_in_ground"]
         for s, counts in r2["files"].items():
             res["files"].setdefault(s, {"points": 0}).update(counts)
-        if hist[ASPRSClass.GROUND]:
+        if res["histogram"].get(str(int(ASPRSClass.GROUND))):
             keys = ("below_surface", "above_surface", "below_by_class", "above_by_class", "tested")
             res.update({k: r2[k] for k in keys})
     res["criteria"] = _criteria(res, p) if res["classified"] else []

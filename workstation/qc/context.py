@@ -63,6 +63,11 @@ class QCGrid:
     Cells are ``cell`` CRS units square; cell (row, col) covers
     ``x0 + col·cell <= x < x0 + (col + 1)·cell`` and ``y1 - (row + 1)·cell < y <= y1 - row·cell``
     (row 0 at the top, as a GeoTIFF). ``units`` converts lengths and areas to metres.
+
+    A *window* (:meth:`window`) is the block of rows ``row0 … row0 + rows`` and columns
+    ``col0 … col0 + cols`` of a larger grid: it keeps that grid's origin ``x0, y1`` and
+    computes a point's cell exactly as the larger grid does, then shifts it by the offsets, so
+    counts made on windows add up cell for cell to the counts on the whole grid.
     """
 
     x0: float
@@ -71,6 +76,8 @@ class QCGrid:
     rows: int
     cols: int
     units: Units
+    row0: int = 0
+    col0: int = 0
 
     @classmethod
     def over(cls, bounds, cell: float, units: Units) -> "QCGrid":
@@ -95,8 +102,8 @@ class QCGrid:
     def index(self, xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(row, col, inside) of (n, 2) plan coordinates; row/col are clipped into the grid and
         ``inside`` says which points really fall in it."""
-        col = np.floor((xy[:, 0] - self.x0) / self.cell).astype(np.int64)
-        row = np.floor((self.y1 - xy[:, 1]) / self.cell).astype(np.int64)
+        col = np.floor((xy[:, 0] - self.x0) / self.cell).astype(np.int64) - self.col0
+        row = np.floor((self.y1 - xy[:, 1]) / self.cell).astype(np.int64) - self.row0
         inside = (col >= 0) & (col < self.cols) & (row >= 0) & (row < self.rows)
         return np.clip(row, 0, self.rows - 1), np.clip(col, 0, self.cols - 1), inside
 
@@ -109,4 +116,25 @@ class QCGrid:
         """The rasterio ``Affine`` of the grid (north-up)."""
         from rasterio.transform import Affine
 
-        return Affine(self.cell, 0.0, self.x0, 0.0, -self.cell, self.y1)
+        return Affine(self.cell, 0.0, self.x0 + self.col0 * self.cell, 0.0, -self.cell, self.y1 - self.row0 * self.cell)
+
+    def window(self, r0: int, r1: int, c0: int, c1: int) -> "QCGrid":
+        """Rows ``r0:r1`` and columns ``c0:c1`` of this grid (clipped to it) as a grid of their own."""
+        r0, r1 = max(int(r0), 0), min(int(r1), self.rows)
+        c0, c1 = max(int(c0), 0), min(int(c1), self.cols)
+        return QCGrid(self.x0, self.y1, self.cell, max(r1 - r0, 0), max(c1 - c0, 0), self.units,
+                      self.row0 + r0, self.col0 + c0)
+
+    def window_over(self, box, pad: int = 1) -> "QCGrid":
+        """The window of the cells that ``box`` (xmin, ymin, xmax, ymax, CRS units) touches,
+        widened by ``pad`` cells on each side."""
+        c0 = int(np.floor((box[0] - self.x0) / self.cell)) - self.col0 - pad
+        c1 = int(np.floor((box[2] - self.x0) / self.cell)) - self.col0 + pad + 1
+        r0 = int(np.floor((self.y1 - box[3]) / self.cell)) - self.row0 - pad
+        r1 = int(np.floor((self.y1 - box[1]) / self.cell)) - self.row0 + pad + 1
+        return self.window(r0, r1, c0, c1)
+
+    @property
+    def block(self) -> tuple[slice, slice]:
+        """Where this window lies in its whole grid: (row slice, column slice)."""
+        return slice(self.row0, self.row0 + self.rows), slice(self.col0, self.col0 + self.cols)

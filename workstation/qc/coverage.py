@@ -150,6 +150,32 @@ class DensityPass:
             hull = hull_points(np.vstack([piece.hull, hull_candidates(xy[s:e])]))
             self._pieces[key] = _Piece(piece.n + int(e - s), hull)
 
+    def state(self) -> dict:
+        """The pieces (swath within file: first returns and hull) as arrays, in the order they
+        were met, and the files without swath ids or return numbers (:meth:`from_states`)."""
+        keys = list(self._pieces)
+        hulls = [self._pieces[k].hull for k in keys]
+        return {"piece_source": np.array([k[0] for k in keys], dtype=str),
+                "piece_sid": np.array([k[1] for k in keys], np.int64),
+                "piece_n": np.array([self._pieces[k].n for k in keys], np.int64),
+                "piece_len": np.array([len(h) for h in hulls], np.int64),
+                "piece_hull": np.concatenate(hulls) if hulls else np.empty((0, 2)),
+                "psid_source": np.array(list(self._psid_seen), dtype=str),
+                "psid_seen": np.array(list(self._psid_seen.values()), bool),
+                "no_returns": np.array(sorted(self._no_returns), dtype=str)}
+
+    @classmethod
+    def from_states(cls, units: Units, states: list[dict]) -> "DensityPass":
+        """The pass over several files from the :meth:`state` of each (files distinct)."""
+        p = cls(units)
+        for st in states:
+            hulls = np.split(np.asarray(st["piece_hull"]).reshape(-1, 2), np.cumsum(st["piece_len"])[:-1])
+            for src, sid, n, h in zip(st["piece_source"], st["piece_sid"], st["piece_n"], hulls):
+                p._pieces[(str(src), int(sid))] = _Piece(int(n), h)
+            p._psid_seen.update({str(k): bool(v) for k, v in zip(st["psid_source"], st["psid_seen"])})
+            p._no_returns.update(str(k) for k in st["no_returns"])
+        return p
+
     def _swaths(self) -> dict[int, dict]:
         out: dict[int, dict] = {}
         for (_, sid), piece in sorted(self._pieces.items(), key=lambda kv: kv[0][1]):
@@ -314,6 +340,30 @@ class CoveragePass:
         cls = chunk.attrs.get("classification")
         if cls is not None:
             self._water.reshape(-1)[flat[(np.asarray(cls)[keep] == ASPRSClass.WATER) & inside]] = True
+
+    def state(self) -> dict:
+        """Counts and water cells of this (window) grid, the files' hulls, points outside."""
+        return {"counts": self._counts, "water": self._water, "window": np.array(
+                    [self.grid.row0, self.grid.col0, self.grid.rows, self.grid.cols], np.int64),
+                "hull_source": np.array(list(self._hulls), dtype=str),
+                "hull_len": np.array([len(h) for h in self._hulls.values()], np.int64),
+                "hull_xy": np.concatenate(list(self._hulls.values())) if self._hulls else np.empty((0, 2)),
+                "outside": np.array([self._outside], np.int64)}
+
+    @classmethod
+    def from_states(cls, grid: QCGrid, anps_m: float, params: CoverageParams, states: list[dict]) -> "CoveragePass":
+        """The pass over the whole ``grid`` from the :meth:`state` of passes over windows of it
+        (files distinct): counts added cell by cell, water cells and hulls joined."""
+        cov = cls(grid, anps_m, params)
+        for st in states:
+            r0, c0, rows, cols = (int(v) for v in st["window"])
+            block = (slice(r0, r0 + rows), slice(c0, c0 + cols))
+            cov._counts[block] += np.asarray(st["counts"]).reshape(rows, cols)
+            cov._water[block] |= np.asarray(st["water"]).reshape(rows, cols)
+            hulls = np.split(np.asarray(st["hull_xy"]).reshape(-1, 2), np.cumsum(st["hull_len"])[:-1])
+            cov._hulls.update({str(k): h for k, h in zip(st["hull_source"], hulls)})
+            cov._outside += int(np.asarray(st["outside"]).sum())
+        return cov
 
     # -- analysis -------------------------------------------------------------------------
     def _footprint(self, filled: np.ndarray) -> np.ndarray:

@@ -5,7 +5,8 @@ bounds, counts, one CRS). Pass 1 streams every file once through the checks that
 measured beforehand; its aggregate nominal point spacing (ANPS) then sizes the grid of pass 2
 (cells of 2×ANPS, as the USGS Lidar Base Specification grids density and swath separation).
 The checks are accumulators (:mod:`workstation.qc.context`), so memory is bounded by the grids
-and one chunk, whatever the number of points.
+and one chunk, whatever the number of points. :mod:`workstation.qc.partial` runs the same checks
+file by file and merges their states into the same document (the QC stage of ``ws run``).
 """
 
 from __future__ import annotations
@@ -159,10 +160,16 @@ def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
         _stream(cat, [c for c in (cov, sw, cls2, cpp) if c is not None], params.chunk_size, advance,
                 unreadable=unreadable)
     doc = _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params)
-    doc["findings"] = _unreadable_findings(unreadable) + doc["findings"]
-    doc["maps"] = _write_maps(out_dir, cat.crs, cov, sw)
+    return finish(doc, out_dir, cat.crs, cov, sw, spec, unreadable, t0)
+
+
+def finish(doc: dict, out_dir: Path, crs, cov, sw, spec, unreadable: dict, t0: float) -> dict:
+    """The QC document completed: unreadable files' findings first, the maps written into
+    ``out_dir``, the verdict against ``spec`` and the seconds since ``t0``."""
     from .specs import verdict
 
+    doc["findings"] = _unreadable_findings(unreadable) + doc["findings"]
+    doc["maps"] = _write_maps(out_dir, crs, cov, sw)
     doc["verdict"] = verdict(spec, doc)
     doc["seconds"] = round(time.perf_counter() - t0, 2)
     return doc
@@ -186,40 +193,58 @@ def _pass1_checks(cat, units, surface_cell_m: float):
     return fmt, DensityPass(units), ClassPass1(class_grid(cat.bounds, units, cp), cp)
 
 
+def swath_params(spec):
+    """The swath check's parameters, its limits taken from the specification."""
+    from .swath import SwathParams
+
+    return SwathParams(**{k: v for k, v in (("rmsdz_limit_m", spec.rmsdz_max), ("max_dz_limit_m", spec.max_dz),
+                                            ("precision_limit_m", spec.intraswath_max)) if v is not None})
+
+
 def _pass2_checks(grid2, anps, cls1, cps, units, spec):
     """The pass-2 checks, their limits taken from the specification."""
     from .accuracy import CheckpointPass
     from .coverage import CoverageParams, CoveragePass
-    from .swath import SwathParams, SwathPass
+    from .swath import SwathPass
 
-    sp = SwathParams(**{k: v for k, v in (("rmsdz_limit_m", spec.rmsdz_max), ("max_dz_limit_m", spec.max_dz),
-                                          ("precision_limit_m", spec.intraswath_max)) if v is not None})
     cpp = CheckpointPass(cps, units) if cps is not None else None
-    return (CoveragePass(grid2, anps, CoverageParams(required_coverage=spec.coverage_min)), SwathPass(grid2, sp),
-            cls1.second_pass(), cpp)
+    return (CoveragePass(grid2, anps, CoverageParams(required_coverage=spec.coverage_min)),
+            SwathPass(grid2, swath_params(spec)), cls1.second_pass(), cpp)
 
 
 def _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params) -> dict:
-    """Assemble the QC document from the checks' results (lengths in metres)."""
-    from .classes import class_checks, class_findings
+    """Assemble the QC document from the checks (lengths in metres)."""
+    from .classes import class_checks
+
+    return document([str(t.path) for t in cat.tiles], int(cat.point_count), cat.crs, units,
+                    {k: (c.result(), [f.to_dict() for f in c.findings()]) for k, c in fmt.items()},
+                    density, [f.to_dict() for f in dens.findings()], cov, sw, class_checks(cls1, cls2), cpp, cps,
+                    params)
+
+
+def document(files, points, crs, units, fmt: dict, density: dict, density_findings: list, cov, sw, classes: dict,
+             cpp, cps, params) -> dict:
+    """The QC document from the checks' results: ``fmt`` {file: (result, findings)} and the
+    density's result and findings as dicts, the coverage and swath checks, the classification
+    result, the checkpoint pass (or None). Shared by ``ws qc`` and the chunked QC of ``ws run``."""
+    from .classes import class_findings
 
     coverage, swath = cov.result(), sw.result()
-    classes = class_checks(cls1, cls2)
     accuracy = _accuracy(cpp, params) if cpp is not None else None
     dem = _dem_accuracy(params, cps, density) if params.dem is not None else None
-    findings = [f.to_dict() for c in fmt.values() for f in c.findings()]
-    for c in (dens, cov, sw):
+    findings = [f for _, found in fmt.values() for f in found] + list(density_findings)
+    for c in (cov, sw):
         findings += [f.to_dict() for f in c.findings()]
     findings += [f.to_dict() for f in class_findings(classes)]
     if cpp is not None:
         findings += [f.to_dict() for f in getattr(cpp, "findings", lambda: [])()]
     return {
-        "files": [str(t.path) for t in cat.tiles], "points": int(cat.point_count), "crs": cat.crs,
+        "files": list(files), "points": int(points), "crs": crs,
         "units": units.to_dict(), "anpd": density.get("anpd"), "anps": density.get("anps"),
         "coverage": coverage.get("coverage"), "voids": coverage.get("voids"),
         "swaths": swath.get("swaths", []),
         "nva": dig(accuracy, "asprs2014", "nva"), "vva": dig(accuracy, "asprs2014", "vva"),
-        "format": {k: c.result() for k, c in fmt.items()},
+        "format": {k: r for k, (r, _) in fmt.items()},
         "density": density, "coverage_detail": coverage, "swath": swath, "classes": classes,
         "accuracy": accuracy, "dem_accuracy": dem, "findings": findings,
     }

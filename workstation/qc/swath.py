@@ -158,6 +158,9 @@ class SwathPass:
     grid : QCGrid
         The delivery grid, cell 2 × ANPS (the DZ ortho's cell).
     params : SwathParams
+    z0 : float, optional
+        The reference height the z sums are taken from (CRS vertical units); default the median
+        of the first chunk. Parts of one delivery checked apart share one, so that their sums add.
 
     Examples
     --------
@@ -176,14 +179,14 @@ class SwathPass:
 
     check = "swath"
 
-    def __init__(self, grid: QCGrid, params: SwathParams = SwathParams()):
+    def __init__(self, grid: QCGrid, params: SwathParams = SwathParams(), z0: float | None = None):
         self.grid, self.params = grid, params
         self._ncells = grid.rows * grid.cols
         if self._ncells * _SID >= 2**63:
             raise InvalidInputError(f"a {grid.rows} x {grid.cols} grid is too large to key per swath",
                                     "use a larger QC cell", field="cell")
         self._sums = _SparseSums(len(SUMS))
-        self._z0: float | None = None
+        self._z0: float | None = z0
         self._points = 0
         self._no_source: set[str] = set()
         self._no_returns: set[str] = set()
@@ -238,18 +241,31 @@ class SwathPass:
         """Planes, smooth cells, DZ per pair and precision per swath (cached until ``add``)."""
         if self._final is None:
             self._sums.merge()
-            keys = self._sums.keys
-            fit = _fit_all(keys, self._sums.sums, self.grid, self.params)
-            sid, cell = np.divmod(keys, self._ncells)
-            ok = np.flatnonzero(fit["smooth"])
-            i, j = _pairs(cell[ok], sid[ok])
-            i, j = ok[i], ok[j]
-            dz = fit["height"][j] - fit["height"][i]
-            self._final = {"ids": np.unique(sid), "pairs": _pair_stats(sid[i], sid[j], dz, self.params),
-                           "intraswath": _precision(sid, fit, _rough_share(sid, cell, fit)),
-                           "dz": _cell_max(cell[i], np.abs(dz)), "sum_dz2": float(np.sum(dz * dz)),
-                           "n_dz": int(dz.size)}
+            self._final = merge_fits([fit_state(self._sums.keys, self._sums.sums, self.grid, self.params)],
+                                     self.params)
         return self._final
+
+    def sums(self) -> tuple[np.ndarray, np.ndarray]:
+        """The merged (swath, cell) keys (sorted, int64) and their plane-fit sums (10, k)."""
+        self._sums.merge()
+        return self._sums.keys, self._sums.sums
+
+    def state(self) -> dict:
+        """What :meth:`from_fits` needs besides the fits: points used, files without ids or counts."""
+        return {"points": int(self._points), "no_source": sorted(self._no_source),
+                "no_returns": sorted(self._no_returns)}
+
+    @classmethod
+    def from_fits(cls, grid: QCGrid, params: SwathParams, fits: list[dict], states: list[dict]) -> "SwathPass":
+        """The check of a whole delivery from :func:`fit_state` of disjoint sets of cells and the
+        :meth:`state` of every part: its results, findings and maps are those of one pass over
+        all the points (sums of floating values aside, added in another order)."""
+        sw = cls(grid, params)
+        sw._final = merge_fits(fits, params)
+        sw._points = sum(int(s["points"]) for s in states)
+        sw._no_source = {f for s in states for f in s["no_source"]}
+        sw._no_returns = {f for s in states for f in s["no_returns"]}
+        return sw
 
     def result(self) -> dict:
         """JSON-ready figures, every length in metres.
@@ -390,17 +406,81 @@ def _window_sums(keys: np.ndarray, sums: np.ndarray, grid: QCGrid, window: int, 
     return out
 
 
-def _fit_all(keys: np.ndarray, sums: np.ndarray, grid: QCGrid, p: SwathParams, block: int = 1 << 20) -> dict:
-    """:func:`_planes` of every key's window, a block of keys at a time (the window sums are
-    the largest temporary); keeps the plane height, residual RMS and the flags."""
-    out = {"height": np.empty(keys.size), "rms": np.empty(keys.size, np.float32),
-           "fitted": np.empty(keys.size, bool), "flat": np.empty(keys.size, bool), "smooth": np.empty(keys.size, bool)}
-    for i0 in range(0, keys.size, block):
-        sl = slice(i0, min(i0 + block, keys.size))
-        fit = _planes(_window_sums(keys, sums, grid, p.window, sl), p, p.window * grid.cell_m)
+def _fit_all(keys: np.ndarray, sums: np.ndarray, grid: QCGrid, p: SwathParams, sel: np.ndarray | None = None,
+             block: int = 1 << 20) -> dict:
+    """:func:`_planes` of the window of every key (or of the keys at the positions ``sel``), a
+    block of keys at a time (the window sums are the largest temporary); keeps the plane height,
+    residual RMS and the flags."""
+    n = keys.size if sel is None else sel.size
+    out = {"height": np.empty(n), "rms": np.empty(n, np.float32),
+           "fitted": np.empty(n, bool), "flat": np.empty(n, bool), "smooth": np.empty(n, bool)}
+    for i0 in range(0, n, block):
+        sl = slice(i0, min(i0 + block, n))
+        fit = _planes(_window_sums(keys, sums, grid, p.window, sl if sel is None else sel[sl]), p,
+                      p.window * grid.cell_m)
         for k, v in out.items():
             v[sl] = fit[k]
     return out
+
+
+def fit_state(keys: np.ndarray, sums: np.ndarray, grid: QCGrid, p: SwathParams, sel: np.ndarray | None = None) -> dict:
+    """The planes of the (swath, cell) ``keys`` (sorted; those at positions ``sel``, default
+    all) reduced to what adds up over disjoint sets of cells: per pair of swaths the count,
+    sum, sum of squares and largest absolute value of DZ; per swath the residual RMS of its
+    smooth cells, its fitted cells and its rough-where-others-smooth counts; the largest
+    |DZ| per cell. ``keys`` must hold every key of the window around the selected ones.
+    Arrays only, so that it is saved as it is (:func:`merge_fits` adds them up)."""
+    sel_keys = keys if sel is None else keys[sel]
+    fit = _fit_all(keys, sums, grid, p, sel)
+    sid, cell = np.divmod(sel_keys, grid.rows * grid.cols)
+    ok = np.flatnonzero(fit["smooth"])
+    i, j = _pairs(cell[ok], sid[ok])
+    i, j = ok[i], ok[j]
+    dz = fit["height"][j] - fit["height"][i]
+    pk = sid[i] * _SID + sid[j]
+    order = np.argsort(pk, kind="stable")
+    pk, d = pk[order], dz[order]
+    start = np.flatnonzero(np.r_[True, pk[1:] != pk[:-1]]) if pk.size else np.zeros(0, np.int64)
+    red = (lambda f, v: f.reduceat(v, start)) if pk.size else (lambda f, v: np.zeros(0))
+    rough = _rough_share(sid, cell, fit)
+    ids = np.unique(sid)
+    fitted = np.bincount(np.searchsorted(ids, sid), weights=fit["fitted"], minlength=ids.size).astype(np.int64)
+    dz_cells, dz_vals = _cell_max(cell[i], np.abs(dz))
+    return {"pair": pk[start], "pair_n": np.diff(np.r_[start, pk.size]), "pair_sum": red(np.add, d),
+            "pair_sum2": red(np.add, d * d), "pair_max": red(np.maximum, np.abs(d)),
+            "ids": ids, "fitted": fitted,
+            "rough": np.array([rough.get(int(k), (0, 0)) for k in ids], np.int64).reshape(-1, 2),
+            "smooth_sid": sid[fit["smooth"]].astype(np.int32), "smooth_rms": fit["rms"][fit["smooth"]],
+            "dz_cells": dz_cells, "dz_vals": dz_vals, "sum_dz2": np.array([np.sum(dz * dz)]),
+            "n_dz": np.array([dz.size])}
+
+
+def merge_fits(fits: list[dict], p: SwathParams) -> dict:
+    """The figures of the whole delivery from :func:`fit_state` of disjoint sets of cells."""
+    cat = {k: np.concatenate([np.asarray(f[k]) for f in fits]) if fits else np.zeros(0)
+           for k in ("pair", "pair_n", "pair_sum", "pair_sum2", "pair_max", "ids", "fitted", "smooth_sid",
+                     "smooth_rms", "dz_cells", "dz_vals")}
+    rough = np.concatenate([np.asarray(f["rough"]).reshape(-1, 2) for f in fits]) if fits else np.zeros((0, 2))
+    ids = np.unique(cat["ids"]).astype(np.int64)
+    pos = np.searchsorted(ids, cat["ids"])
+    fitted = np.bincount(pos, weights=cat["fitted"], minlength=ids.size)
+    checked = np.bincount(pos, weights=rough[:, 0], minlength=ids.size)
+    n_rough = np.bincount(pos, weights=rough[:, 1], minlength=ids.size)
+    by = np.argsort(cat["smooth_sid"], kind="stable")
+    bounds = np.searchsorted(cat["smooth_sid"][by], np.r_[ids, np.iinfo(np.int64).max])
+    intra = []
+    for k, sid in enumerate(ids):  # one entry per swath
+        rms = cat["smooth_rms"][by[bounds[k]:bounds[k + 1]]]
+        intra.append({"id": int(sid), "precision_m": float(np.median(rms)) if rms.size else None,
+                      "p95_m": float(np.percentile(rms, 95)) if rms.size else None, "cells": int(rms.size),
+                      "fitted_cells": int(fitted[k]),
+                      "rough_where_others_smooth": float(n_rough[k] / checked[k]) if checked[k] else None,
+                      "cells_where_others_smooth": int(checked[k])})
+    order = np.argsort(cat["dz_cells"], kind="stable")
+    return {"ids": ids, "pairs": _pair_stats(cat, p), "intraswath": intra,
+            "dz": (cat["dz_cells"][order].astype(np.int64), cat["dz_vals"][order]),
+            "sum_dz2": float(sum(float(np.asarray(f["sum_dz2"]).sum()) for f in fits)),
+            "n_dz": int(sum(int(np.asarray(f["n_dz"]).sum()) for f in fits))}
 
 
 def _planes(w: np.ndarray, p: SwathParams, window_m: float) -> dict:
@@ -470,38 +550,23 @@ def _rough_share(sid: np.ndarray, cell: np.ndarray, fit: dict) -> dict[int, tupl
     return out
 
 
-def _pair_stats(a: np.ndarray, b: np.ndarray, dz: np.ndarray, p: SwathParams) -> list[dict]:
-    """Per pair (sorted by (a, b)): RMSDz, mean DZ, max |DZ| (m), cells, enough_cells."""
-    if dz.size == 0:
+def _pair_stats(cat: dict, p: SwathParams) -> list[dict]:
+    """Per pair (sorted by (a, b)) from the per-pair sums of :func:`fit_state`: RMSDz, mean DZ,
+    max |DZ| (m), cells, enough_cells."""
+    if cat["pair"].size == 0:
         return []
-    key = a * _SID + b
+    key = cat["pair"].astype(np.int64)
     order = np.argsort(key, kind="stable")
-    key, dz = key[order], dz[order]
+    key = key[order]
     start = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
-    cells = np.diff(np.r_[start, key.size])
-    mean = np.add.reduceat(dz, start) / cells
-    rms = np.sqrt(np.add.reduceat(dz * dz, start) / cells)
-    mx = np.maximum.reduceat(np.abs(dz), start)
+    cells = np.add.reduceat(cat["pair_n"][order].astype(np.int64), start)
+    mean = np.add.reduceat(cat["pair_sum"][order], start) / cells
+    rms = np.sqrt(np.add.reduceat(cat["pair_sum2"][order], start) / cells)
+    mx = np.maximum.reduceat(cat["pair_max"][order], start)
     need = p.min_pair_windows * p.window ** 2
     return [{"a": int(k // _SID), "b": int(k % _SID), "rmsdz": float(r), "mean_dz": float(mu), "max_abs_dz": float(x),
              "cells": int(c), "enough_cells": bool(c >= need)}
             for k, r, mu, x, c in zip(key[start], rms, mean, mx, cells)]
-
-
-def _precision(sid: np.ndarray, fit: dict, rough: dict) -> list[dict]:
-    """Per swath (``sid`` sorted, as the keys are): median and 95th percentile of its smooth
-    planes' residual RMS (m), and its share of rough cells where another swath is smooth."""
-    out = []
-    bounds = np.flatnonzero(np.r_[True, sid[1:] != sid[:-1], True]) if sid.size else np.zeros(1, np.int64)
-    for i0, i1 in zip(bounds[:-1], bounds[1:]):
-        rms = fit["rms"][i0:i1][fit["smooth"][i0:i1]]
-        checked, n_rough = rough.get(int(sid[i0]), (0, 0))
-        out.append({"id": int(sid[i0]), "precision_m": float(np.median(rms)) if rms.size else None,
-                    "p95_m": float(np.percentile(rms, 95)) if rms.size else None, "cells": int(rms.size),
-                    "fitted_cells": int(np.count_nonzero(fit["fitted"][i0:i1])),
-                    "rough_where_others_smooth": n_rough / checked if checked else None,
-                    "cells_where_others_smooth": checked})
-    return out
 
 
 def _cell_max(cell: np.ndarray, value: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
