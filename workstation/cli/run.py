@@ -8,7 +8,8 @@ from workstation.cli.options import allow_outside_option
 
 from .options import emit_json, json_option
 
-STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hillshade", "contours", "qc"]
+STAGES = ["index", "noise", "ground", "classify", "hag", "dem", "density", "hillshade", "contours", "qc", "sfm", "dense",
+          "mesh", "register"]
 
 
 @click.command()
@@ -28,8 +29,11 @@ def run(project, out, scheduler, workers, rerun_from, end_with, dry_run, as_json
 
     Chunks are read with their buffer, processed on a Dask cluster (a local one unless
     --scheduler is given) and written once; raster tiles are joined into Cloud-Optimized
-    GeoTIFF mosaics. A second run does only what changed (run.json in the output folder).
-    Exit code 0 when complete, 3 when some chunk failed (the others are written).
+    GeoTIFF mosaics. Photos are oriented, densified and meshed as one block (OUT/sfm, OUT/dense,
+    OUT/mesh); scans are registered onto a reference, one task each, and merged (OUT/register).
+    A second run does only what changed (run.json in the output folder). --end-with STAGE runs
+    STAGE and the stages before it on its branch (clouds, photos or scans). Exit code 0 when
+    complete, 3 when some chunk or scan failed (the others are written).
     """
     from workstation.pipeline.runner import RunOptions, run_project
     from workstation.pipeline.summary import print_summary

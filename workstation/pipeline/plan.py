@@ -3,7 +3,9 @@
 Stages, in the order data flows: ``index`` (each plain LAS/LAZ input binned by chunk once),
 ``points`` (the point stages on a chunk and its buffer), ``rasters`` (DEM and density tiles
 of a chunk), ``mosaic`` (one COG per product), then ``hillshade`` and ``contours`` of the
-DTM mosaic, and ``qc`` (the delivery checked as ``ws qc`` does, one streaming task). Each task lists the tasks it depends on and carries a key (see
+DTM mosaic, and ``qc`` (the delivery checked as ``ws qc`` does, file by file, then merged). Photos and scans have phases of their own: ``sfm``, ``dense``
+and ``mesh`` of the photo block (:mod:`.photos`), and ``register``, a task per scan and the
+merge (:mod:`.scans`). Each task lists the tasks it depends on and carries a key (see
 :mod:`.manifest`); the runner skips those done with the same key.
 """
 
@@ -15,7 +17,8 @@ from pathlib import Path
 from . import tasks as T
 from .manifest import Manifest, task_key
 
-PHASES = ("index", "points", "rasters", "mosaic", "hillshade", "contours", "qc")
+CLOUD_PHASES = ("index", "points", "rasters", "mosaic", "hillshade", "contours", "qc")
+PHASES = CLOUD_PHASES + ("sfm", "dense", "mesh", "register")
 
 
 @dataclass
@@ -100,21 +103,22 @@ def build_tasks(ctx: T.RunContext, plan, grid, manifest: Manifest) -> list[Task]
     mosaics = _mosaic_tasks(ctx, plan, raster_tasks)
     tasks += mosaics
     tasks += _qc_tasks(ctx, plan, list(points_of.values()), mosaics, file_hash)
-    return tasks
+    from .photos import photo_tasks
+    from .scans import scan_tasks
+
+    photo = photo_tasks(ctx, plan, manifest)
+    return tasks + photo + scan_tasks(ctx, plan, manifest, photo)
 
 
 def _qc_tasks(ctx, plan, points, mosaics, file_hash) -> list[Task]:
-    """The QC of the run's point outputs (the input tiles without point stages) and its DTM:
-    one task after them all, taking the outputs that exist."""
+    """The QC of the run's point outputs (the input tiles without point stages) and its DTM,
+    file by file and merged (:mod:`.qc_tasks`)."""
     if plan.qc is None:
         return []
+    from .qc_tasks import qc_plan
+
     dtm = next((m for m in mosaics if m.id == "mosaic/dtm"), None)
-    deps = [*points, *([dtm] if dtm else [])]
-    p = plan.params_of("qc")
-    inputs = {} if points else dict(file_hash)
-    args = (ctx, plan.qc, _point_folder(plan), dtm.args[3] if dtm else None, str(ctx.out / "qc"))
-    return [Task("qc/delivery", "qc", T.qc_task, args, [d.id for d in deps],
-                 task_key("qc", p, list(inputs.values()), [d.key for d in deps]), p, barrier=True, inputs=inputs)]
+    return qc_plan(ctx, plan, points, dtm, file_hash, _point_folder(plan), Task, T.qc_task)
 
 
 def _raster_tasks(ctx, plan, grid, points_of, input_deps, inputs_of) -> list[Task]:
@@ -162,13 +166,16 @@ def _mosaic_tasks(ctx, plan, raster_tasks) -> list[Task]:
 
 
 def forced_phases(plan, rerun_from: str | None) -> set[str]:
-    """The phases ``--rerun-from STAGE`` forces: the phase that runs STAGE and every later one."""
+    """The phases ``--rerun-from STAGE`` forces: the phase that runs STAGE and every later one
+    (a photo or scan stage: its own phase; the tasks after it run again as their inputs do)."""
     if rerun_from is None:
         return set()
+    if rerun_from in PHASES[len(CLOUD_PHASES):]:
+        return {rerun_from}
     phase = {"noise": "points", "ground": "points", "classify": "points", "hag": "points", "dem": "rasters",
              "density": "rasters", "hillshade": "hillshade", "contours": "contours", "index": "index",
              "mosaic": "mosaic", "qc": "qc"}[rerun_from]
-    later = PHASES[PHASES.index(phase):]
+    later = CLOUD_PHASES[CLOUD_PHASES.index(phase):]
     if phase in ("hillshade", "contours", "qc"):
         later = (phase,)
     return set(later)

@@ -14,8 +14,10 @@ Example
     name = "bcts"            # optional, shown in run.json and the summary
     crs = "EPSG:3005"        # optional: for tiles without a CRS; tiles with another CRS are refused
 
-    [inputs]
-    clouds = ["tiles/*.laz"] # relative to this file; LAS, LAZ or COPC
+    [inputs]                 # relative to this file; at least one of the three
+    clouds = ["tiles/*.laz"] # LAS, LAZ or COPC tiles
+    photos = "photos/"       # a folder or glob of photos, oriented as one block by [stages.sfm]
+    scans = ["scans/*.e57"]  # scanner stations (any cloud format), registered by [stages.register]
 
     [chunks]
     size = 250.0             # metres, square chunks aligned to multiples of the size
@@ -34,6 +36,12 @@ Example
     [stages.contours]        # of the DTM (ContourParams); interval in metres
     [stages.density]
     cell = 1.0               # metres; points per square metre, as a raster
+
+    [stages.sfm]             # SfMParams fields; camera = "camera.json", upright, scale_bars
+    [stages.dense]           # DenseParams fields (device, method, max_image_size ...)
+    [stages.mesh]            # MeshChainParams: method, [stages.mesh.poisson] depth ...; format, textured
+    [stages.register]        # RegisterParams fields; reference = "scan name" or to = "dense"
+    [stages.register.merge]  # MergeParams of the merged cloud (duplicate_distance, voxel_size)
 
     [dask]                   # optional; the command line wins
     workers = 2              # local cluster size (default: one per core)
@@ -55,8 +63,12 @@ from workstation.core.errors import InvalidInputError
 POINT_STAGES = ("noise", "ground", "classify", "hag")
 RASTER_STAGES = ("dem", "density")
 MOSAIC_STAGES = ("hillshade", "contours")
-USER_STAGES = POINT_STAGES + RASTER_STAGES + MOSAIC_STAGES + ("qc",)
+CLOUD_BRANCH = POINT_STAGES + RASTER_STAGES + MOSAIC_STAGES + ("qc",)
+PHOTO_STAGES = ("sfm", "dense", "mesh")
+SCAN_STAGES = ("register",)
+USER_STAGES = CLOUD_BRANCH + PHOTO_STAGES + SCAN_STAGES
 CLOUD_SUFFIXES = (".las", ".laz")
+INPUT_KEYS = ("clouds", "photos", "scans")
 
 
 @dataclass(frozen=True)
@@ -96,7 +108,11 @@ class Project:
         The project file; relative paths in it are relative to its folder.
     name : str
     clouds : tuple of Path
-        The input cloud files, sorted, from the ``[inputs] clouds`` patterns.
+        The input cloud files, sorted, from the ``[inputs] clouds`` patterns (may be empty).
+    photos : tuple of Path
+        The photos, in natural name order, from ``[inputs] photos`` (may be empty).
+    scans : tuple of Path
+        The scanner stations, sorted, from ``[inputs] scans`` (may be empty).
     crs : str or None
         The CRS the project declares (tiles without one get it; tiles with another are refused).
     chunks : ChunkSpec
@@ -113,6 +129,8 @@ class Project:
     chunks: ChunkSpec
     stages: dict = field(default_factory=dict)
     dask: dict = field(default_factory=dict)
+    photos: tuple = ()
+    scans: tuple = ()
 
     @property
     def folder(self) -> Path:
@@ -126,28 +144,65 @@ def _table(doc: dict, key: str, path: Path) -> dict:
     return value
 
 
-def _expand_clouds(patterns, folder: Path, path: Path) -> tuple:
-    """The files matching ``patterns``; each must lie in the project folder (or --allow-outside)."""
+# what each [inputs] key reads: (suffixes, the files' description, an example pattern)
+_INPUT_KINDS = {"clouds": (CLOUD_SUFFIXES, "LAS/LAZ/COPC file", '["tiles/*.laz"]'),
+                "photos": (None, "photo (png, jpg, tif ...)", '"photos/"'),
+                "scans": (None, "point cloud file (las, laz, e57, ply ...)", '["scans/*.e57"]')}
+
+
+def _suffixes(key: str) -> tuple:
+    if key == "photos":
+        from workstation.photogrammetry.calibration import IMAGE_SUFFIXES
+
+        return IMAGE_SUFFIXES
+    if key == "scans":
+        from workstation.io.registry import FORMATS
+
+        return tuple(FORMATS)
+    return CLOUD_SUFFIXES
+
+
+def _expand_clouds(patterns, folder: Path, path: Path, key: str = "clouds") -> tuple:
+    """The files of ``[inputs] key`` matching ``patterns`` (globs or folders), with the suffixes
+    that key reads; each must lie in the project folder (or --allow-outside)."""
     from workstation.io.paths import resolve_inside
 
+    _, what, example = _INPUT_KINDS[key]
+    suffixes = _suffixes(key)
     if isinstance(patterns, str):
         patterns = [patterns]
     if not isinstance(patterns, list) or not patterns or not all(isinstance(p, str) for p in patterns):
-        raise InvalidInputError("[inputs] clouds must be a pattern or a list of patterns",
-                                'for example clouds = ["tiles/*.laz"]', path=path, field="inputs.clouds")
+        raise InvalidInputError(f"[inputs] {key} must be a pattern or a list of patterns",
+                                f"for example {key} = {example}", path=path, field=f"inputs.{key}")
     found: set[Path] = set()
     for pattern in patterns:
         full = Path(pattern) if Path(pattern).is_absolute() else folder / pattern
         hits = [Path(h) for h in glob.glob(str(full), recursive=True)]
         if full.is_dir():
             hits = [p for p in full.iterdir()]
-        hits = [h for h in hits if h.is_file() and h.suffix.lower() in CLOUD_SUFFIXES]
+        hits = [h for h in hits if h.is_file() and h.suffix.lower() in suffixes]
         if not hits:
-            raise InvalidInputError(f"no LAS/LAZ/COPC file matches '{pattern}' (looked in {full.parent})",
+            raise InvalidInputError(f"no {what} matches '{pattern}' (looked in {full.parent})",
                                     "check the pattern; it is relative to the project file's folder",
-                                    path=path, field="inputs.clouds")
-        found.update(resolve_inside(h, folder, source=path, field="inputs.clouds").resolve() for h in hits)
+                                    path=path, field=f"inputs.{key}")
+        found.update(resolve_inside(h, folder, source=path, field=f"inputs.{key}").resolve() for h in hits)
+    if key == "photos":
+        from workstation.photogrammetry.calibration import natural_key
+
+        return tuple(sorted(found, key=lambda p: (natural_key(p.name), str(p))))
     return tuple(sorted(found))
+
+
+def _inputs(inputs: dict, folder: Path, path: Path) -> dict:
+    """``[inputs]`` expanded: key -> the files of that key (an empty tuple when absent)."""
+    extra = sorted(set(inputs) - set(INPUT_KEYS))
+    if extra:
+        raise InvalidInputError(f"[inputs] has no key '{extra[0]}'", "its keys are " + ", ".join(INPUT_KEYS),
+                                path=path, field=f"inputs.{extra[0]}")
+    if not inputs:
+        raise InvalidInputError("[inputs] names no input", 'add clouds = ["tiles/*.laz"], photos = "photos/" or '
+                                'scans = ["scans/*.e57"]', path=path, field="inputs")
+    return {k: _expand_clouds(inputs[k], folder, path, k) if k in inputs else () for k in INPUT_KEYS}
 
 
 KNOWN_TOP = {"project", "inputs", "chunks", "stages", "dask"}
@@ -177,13 +232,7 @@ def load_project(path) -> Project:
         raise InvalidInputError(f"unknown table(s) {', '.join(unknown)}", "the tables are " + ", ".join(sorted(KNOWN_TOP)),
                                 path=path, field=unknown[0])
     meta, inputs, chunks, stages, dask = (_table(doc, k, path) for k in ("project", "inputs", "chunks", "stages", "dask"))
-    extra = sorted(set(inputs) - {"clouds"})
-    if extra:
-        raise InvalidInputError(f"[inputs] {', '.join(extra)} is not processed by ws run yet",
-                                "ws run processes clouds; run photos through ws sfm and scans through ws register",
-                                path=path, field=f"inputs.{extra[0]}")
-    if "clouds" not in inputs:
-        raise InvalidInputError("[inputs] has no clouds", 'add clouds = ["tiles/*.laz"]', path=path, field="inputs.clouds")
+    files = _inputs(inputs, path.resolve().parent, path)
     bad_chunk = sorted(set(chunks) - {"size", "buffer"})
     if bad_chunk:
         raise InvalidInputError(f"[chunks] has no key {bad_chunk[0]}", "its keys are size and buffer (metres)",
@@ -207,9 +256,8 @@ def load_project(path) -> Project:
     crs = meta.get("crs")
     if crs is not None and not isinstance(crs, str):
         raise InvalidInputError("[project] crs must be a string such as EPSG:2950", path=path, field="project.crs")
-    return Project(path.resolve(), str(meta.get("name", path.parent.name or "project")),
-                   _expand_clouds(inputs["clouds"], path.resolve().parent, path), crs, spec,
-                   {k: dict(v) for k, v in stages.items()}, dict(dask))
+    return Project(path.resolve(), str(meta.get("name", path.parent.name or "project")), files["clouds"], crs, spec,
+                   {k: dict(v) for k, v in stages.items()}, dict(dask), files["photos"], files["scans"])
 
 
 def dataclass_from_table(cls, table: dict[str, Any], where: str, path: Path, skip=()):

@@ -85,6 +85,9 @@ def _context(project, plan, catalog, grid, out: Path) -> RunContext:
     from workstation.ground.common import crs_unit_factors
     from workstation.raster.grid import GridSpec
 
+    if catalog is None:  # photos and scans only
+        return RunContext(out, out / CACHE, project.crs, (), {}, {}, None, None, project.folder, project.photos,
+                          project.scans)
     per_unit = crs_unit_factors(catalog.crs)[0]
     b = catalog.bounds
     dem = GridSpec.from_bounds(*b, plan.dem.params.resolution / per_unit) if plan.dem else None
@@ -97,7 +100,8 @@ def _context(project, plan, catalog, grid, out: Path) -> RunContext:
     index = {str(t.path): cache / "index" / f"{t.path.stem}-{hashlib.sha1(str(t.path).encode()).hexdigest()[:10]}"
              for t in catalog.tiles if not t.copc}
     parts = {str(t.path): T.index_parts(t.point_count) for t in catalog.tiles if not t.copc}
-    return RunContext(out, cache, catalog.crs, catalog.tiles, index, parts, dem, dens, project.folder)
+    return RunContext(out, cache, catalog.crs, catalog.tiles, index, parts, dem, dens, project.folder, project.photos,
+                      project.scans)
 
 
 def prepare(project_path, options: RunOptions):
@@ -108,8 +112,8 @@ def prepare(project_path, options: RunOptions):
     if options.rerun_from is not None and options.rerun_from not in ("index",) + plan.stages:
         raise InvalidInputError(f"--rerun-from {options.rerun_from}: the project has no such stage",
                                 "use one of " + ", ".join(("index",) + plan.stages), field="rerun_from")
-    catalog = build_catalog(project.clouds, project.crs)
-    grid = chunk_grid(catalog, project.chunks.size, project.chunks.buffer)
+    catalog = build_catalog(project.clouds, project.crs) if project.clouds else None
+    grid = chunk_grid(catalog, project.chunks.size, project.chunks.buffer) if catalog else None
     out = Path(options.out).resolve() if options.out else project.folder  # workers may run elsewhere
     out.mkdir(parents=True, exist_ok=True)
     manifest = Manifest(out / "run.json")
@@ -135,8 +139,9 @@ def run_project(project_path, options: RunOptions = RunOptions(), on_progress=No
     t0 = time.perf_counter()
     project, plan, catalog, grid, ctx, manifest, tasks = prepare(project_path, options)
     todo = _todo(tasks, manifest, P.forced_phases(plan, options.rerun_from))
-    info = {"project": str(project.path), "name": project.name, "catalog": catalog.summary(),
-            "chunks": {"size": grid.size, "buffer": grid.buffer, "count": len(grid.chunks)},
+    info = {"project": str(project.path), "name": project.name, "catalog": catalog.summary() if catalog else None,
+            "chunks": {"size": grid.size, "buffer": grid.buffer, "count": len(grid.chunks)} if grid else None,
+            "photos": len(project.photos), "scans": len(project.scans),
             "stages": list(plan.stages), "versions": _versions()}
     counts = {ph: {"total": sum(t.phase == ph for t in tasks), "run": sum(t.phase == ph for t in todo)}
               for ph in P.PHASES if any(t.phase == ph for t in tasks)}
@@ -273,11 +278,9 @@ def _submit(client, t, futures, manifest, options):
     if t.phase == "mosaic":  # the tiles that exist once every raster task has ended
         ctx, grid, product, out, meta = args
         args = (ctx, grid, P.tile_paths(manifest, t.deps, product), out, meta)
-    if t.phase == "qc":  # the point outputs that exist once every point task has ended
-        ctx, stage, folder, dtm, out = args
-        clouds = [p for p in manifest.outputs_of(t.deps) if p.endswith(".laz")] if folder else [
-            str(x.path) for x in ctx.tiles]
-        args = (ctx, stage, sorted(clouds), dtm if dtm and Path(dtm).exists() else None, out)
+    if t.phase == "register" and t.barrier:  # the scans registered once every scan task has ended
+        out, stage, names, _ = args
+        args = (out, stage, names, sorted(p for p in manifest.outputs_of(t.deps) if p.endswith(".json")))
     deps = [futures[d] for d in t.deps if d in futures and not t.barrier]
     fut = client.submit(t.func, *args, *deps, key=f"{t.id}|{t.key[:12]}", pure=False, retries=options.retries)
     futures[t.id] = fut

@@ -50,6 +50,8 @@ class RunContext:
         The one grid of every DEM tile and mosaic.
     density_grid : GridSpec or None
     project_folder : Path
+    photos, scans : tuple of Path
+        The project's photos and scans (:mod:`.photos`, :mod:`.scans`).
     """
 
     out: Path
@@ -61,6 +63,8 @@ class RunContext:
     dem_grid: object = None
     density_grid: object = None
     project_folder: Path = Path(".")
+    photos: tuple = ()
+    scans: tuple = ()
 
 
 def _elapsed(t0: float) -> float:
@@ -340,17 +344,18 @@ def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dic
 
 
 # ----------------------------------------------------------------------------- quality control
-def qc_task(ctx: RunContext, stage, clouds: list, dtm: str | None, out: str) -> dict:
-    """``ws qc`` over the run's point outputs (or its inputs) and its DTM, into ``out``."""
-    from workstation.qc.run import QCParams, write_qc
+def qc_task(ctx: RunContext, stage, dtm: str | None, out: str, *upstream) -> dict:
+    """The QC report of the run (``ws qc`` of its point files and DTM) into ``out``, merged from
+    the partial states of the QC tasks (:mod:`.qc_tasks`)."""
+    from workstation.qc.partial import merge_report
 
-    t0 = time.perf_counter()
-    if not clouds:
-        raise StageError("qc", "no point file to check", "check the earlier stages' errors")
-    cps = None if stage.checkpoints is None else ctx.project_folder / stage.checkpoints
-    params = QCParams(spec=stage.spec, checkpoints=cps, checkpoint_rmse_m=float(stage.checkpoint_rmse),
-                      dem=Path(dtm) if dtm else None)
-    doc = write_qc(clouds, out, params, overwrite=True)
+    from .qc_tasks import qc_params, state_root
+
+    t0, c0 = time.perf_counter(), time.process_time()
+    params = qc_params(ctx, stage, dtm if dtm and Path(dtm).exists() else None)
+    doc = merge_report(state_root(ctx), params, Path(out), overwrite=True)
     outs = [str(p) for p in sorted(Path(out).iterdir()) if p.is_file()]
-    return {"points": doc["points"], "spec": doc["verdict"]["spec"], "pass": doc["verdict"]["pass"],
-            "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": outs}
+    return {"points": 0, "checked_points": doc["points"], "spec": doc["verdict"]["spec"],
+            "pass": doc["verdict"]["pass"],
+            "seconds": _elapsed(t0), "cpu_s": round(time.process_time() - c0, 3), "peak_rss_mb": _peak_rss_mb(),
+            "outputs": outs}
