@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import json_option, output_option, overwrite_option
+from .options import json_option, output_option, overwrite_option, read_options
 from .pipeline_out import pipeline_out_option
 
 
@@ -19,10 +19,12 @@ from .pipeline_out import pipeline_out_option
 @click.option("--polygon-crs", default=None,
               help="CRS of the polygons when the file does not say (default: the cloud's); they are moved into the cloud's CRS.")
 @click.option("--invert", is_flag=True, help="Keep the points outside instead (PDAL's outside).")
+@read_options(with_bounds=False)
 @pipeline_out_option
 @overwrite_option
 @json_option
-def crop(src, output, bounds, polygon_path, layer, polygon_crs, invert, pipeline_out, overwrite, as_json):
+def crop(src, output, bounds, polygon_path, layer, polygon_crs, invert, read_opts, pipeline_out, overwrite,
+         as_json):
     """Crop IN to a box or polygons and write OUT, streamed chunk by chunk (bounded memory)."""
     import time
 
@@ -54,12 +56,14 @@ def crop(src, output, bounds, polygon_path, layer, polygon_crs, invert, pipeline
             polygons = PolygonSet(polygons.polygons, polygon_crs)
     params = CropParams(bounds=parse_bounds(bounds) if bounds else None, polygons=polygons, invert=invert)
     total, kept = stream_select(src, output, lambda c: crop_mask(c, params), stage="crop", overwrite=overwrite,
-                                hint="check that the area overlaps the data (ws info) and is in its CRS (--polygon-crs)")
+                                hint="check that the area overlaps the data (ws info) and is in its CRS (--polygon-crs)",
+                                read_opts=read_opts)
     if pipeline_out:
         from workstation.ops import pdal
 
         layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
-        save_pipeline(pipeline_out, [pdal.reader(src), pdal.crop_stage(params.bounds, polygons, invert),
+        save_pipeline(pipeline_out, [*pdal.read_stages([src], read_opts),
+                                     pdal.crop_stage(params.bounds, polygons, invert),
                                      pdal.writer(output, layout)], overwrite, [src])
     dt = time.perf_counter() - t0
     get_logger(__name__).info("kept %d of %d points in %.2f s", kept, total, dt)

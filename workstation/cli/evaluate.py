@@ -8,7 +8,7 @@ from workstation.ground.evaluate import evaluate_clouds
 
 from .options import emit_json, json_option
 from .options import fraction, nonneg_float
-from .options import IntTuple, bound, field_option, param_group
+from .options import IntTuple, bound, field_option, param_group, read_options
 
 
 @click.command()
@@ -29,13 +29,15 @@ from .options import IntTuple, bound, field_option, param_group
                    "(e.g. 2,9,11 for simulated truth with water and roads).")
 @click.option("--pred-columns", default=None, help="Column spec when PRED is a text file (must hold classification).")
 @click.option("--overwrite", is_flag=True, help="Replace the plots in --plot-dir if they exist.")
+@read_options
 @json_option
-def evaluate(pred, ref, given, plot_dir, ground_classes, pred_columns, overwrite, as_json):
+def evaluate(pred, ref, given, plot_dir, ground_classes, pred_columns, overwrite, read_opts, as_json):
     """Compare the classes of PRED with a reference (points matched by order or coordinates).
 
     Prints Type I (ground rejected), Type II (object accepted), total error and Cohen's kappa
     as in the ISPRS filter test (Sithole & Vosselman 2004), and per-class precision, recall
-    and F1. With --json the rates are fractions.
+    and F1. With --json the rates are fractions. --bounds keeps the points inside the box in
+    both clouds; --resolution/--level read a coarser PRED (a COPC file), matched by coordinates.
     """
     from pathlib import Path
 
@@ -49,8 +51,8 @@ def evaluate(pred, ref, given, plot_dir, ground_classes, pred_columns, overwrite
         plots = [Path(plot_dir) / "errors_plan.png", Path(plot_dir) / "confusion.png"]
         if Path(plot_dir).is_dir():
             check_outputs(plots, overwrite, inputs=[pred, ref])
-    pc = read_cloud(pred, **({"columns": pred_columns} if pred_columns else {}))
-    rc = read_reference(ref)
+    pc = read_cloud(pred, **read_opts, **({"columns": pred_columns} if pred_columns else {}))
+    rc = read_reference(ref, bounds=read_opts["bounds"])
     ev, pi, ri = evaluate_clouds(pc, rc, **given, ground_classes=gcls)
     files = {}
     if plot_dir:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import json_option, output_option, overwrite_option
+from .options import json_option, output_option, overwrite_option, read_options
 from .pipeline_out import pipeline_out_option
 
 
@@ -13,10 +13,11 @@ from .pipeline_out import pipeline_out_option
 @output_option
 @click.option("--expr", "expression", required=True,
               help='PDAL expression, e.g. "Classification == 2 && ReturnNumber == 1" (== != < <= > >= && || ! + - * / ( )).')
+@read_options
 @pipeline_out_option
 @overwrite_option
 @json_option
-def filter_cmd(src, output, expression, pipeline_out, overwrite, as_json):
+def filter_cmd(src, output, expression, read_opts, pipeline_out, overwrite, as_json):
     """Keep the points of IN for which the expression holds; write OUT, streamed chunk by chunk.
 
     Dimension names as PDAL spells them (X Y Z Intensity ReturnNumber NumberOfReturns
@@ -39,12 +40,13 @@ def filter_cmd(src, output, expression, pipeline_out, overwrite, as_json):
     check_outputs([output, pipeline_out], overwrite, inputs=[src])
     mask = compile_expression(expression)  # a syntax error stops here, before any reading
     total, kept = stream_select(src, output, mask, stage="filter", overwrite=overwrite,
-                                hint="check the dimension values with ws info")
+                                hint="check the dimension values with ws info", read_opts=read_opts)
     if pipeline_out:
         from workstation.ops import pdal
 
         layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
-        save_pipeline(pipeline_out, [pdal.reader(src), {"type": "filters.expression", "expression": expression},
+        save_pipeline(pipeline_out, [*pdal.read_stages([src], read_opts),
+                                     {"type": "filters.expression", "expression": expression},
                                      pdal.writer(output, layout)], overwrite, [src])
     dt = time.perf_counter() - t0
     get_logger(__name__).info("kept %d of %d points in %.2f s", kept, total, dt)

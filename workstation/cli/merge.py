@@ -9,7 +9,7 @@ import click
 import numpy as np
 
 from workstation.cli.options import emit_json, json_option, output_option, overwrite_option
-from workstation.cli.options import RegistryChoice, field_option, positive_float
+from workstation.cli.options import RegistryChoice, field_option, positive_float, read_options
 from workstation.cli.pipeline_out import pipeline_out_option, save_pipeline
 from workstation.io.textfile import read_text
 from workstation.ops.merge import SOURCE_IDS, merge_files
@@ -30,15 +30,18 @@ def read_poses(path, n: int) -> list[np.ndarray]:
     return poses
 
 
-def _save_merge_pipeline(path, inputs, output, overwrite) -> None:
-    """readers..., filters.merge, writer (plain merges; poses and thinning have no PDAL stage here)."""
+def _save_merge_pipeline(path, inputs, output, overwrite, read_opts=None) -> None:
+    """readers..., filters.merge, writer (plain merges; poses and thinning have no PDAL stage here);
+    the readers query what ``read_opts`` selects (:func:`workstation.ops.pdal.read_stages`)."""
     if path:
         from workstation.io import format_of
         from workstation.ops import pdal
 
         layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
-        save_pipeline(path, [*[pdal.reader(p) for p in inputs], {"type": "filters.merge"},
-                             pdal.writer(output, layout)], overwrite, inputs)
+        stages = pdal.read_stages(inputs, read_opts)
+        if len(inputs) == 1:  # read_stages merges several inputs only
+            stages.insert(1, {"type": "filters.merge"})
+        save_pipeline(path, [*stages, pdal.writer(output, layout)], overwrite, inputs)
 
 
 @click.command("merge")
@@ -57,11 +60,12 @@ def _save_merge_pipeline(path, inputs, output, overwrite) -> None:
               help="point_source_id of the output: keep the inputs' (flight lines, as PDAL's filters.merge), the "
                    "input number 1, 2, ..., or auto: keep them when an input has non-zero ids (always the input "
                    "number with --poses, --register, --voxel-size or --duplicate-distance).")
+@read_options
 @pipeline_out_option
 @overwrite_option
 @json_option
-def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplicate_distance, source_ids, pipeline_out,
-          overwrite, as_json):
+def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplicate_distance, source_ids, read_opts,
+          pipeline_out, overwrite, as_json):
     """Merge clouds IN... into OUT: union of attributes and point formats, the finest LAS scales.
 
     Without poses, registration or thinning the files are concatenated chunk by chunk (bounded
@@ -76,8 +80,8 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         raise InvalidInputError("--poses-out writes the poses of --register; add --register")
     check_outputs([output, poses_out, pipeline_out], overwrite, inputs=[*inputs, *([poses_path] if poses_path else [])])
     if not (poses_path or do_register or voxel_size or duplicate_distance):
-        summary = merge_files(list(inputs), output, source_ids=source_ids, overwrite=overwrite)
-        _save_merge_pipeline(pipeline_out, inputs, output, overwrite)
+        summary = merge_files(list(inputs), output, source_ids=source_ids, overwrite=overwrite, read_opts=read_opts)
+        _save_merge_pipeline(pipeline_out, inputs, output, overwrite, read_opts)
         from workstation.cli.summary import count, emit_summary
 
         emit_summary("merge", f"{count(summary['points'], 'points')} from {count(len(inputs), 'clouds')}",
@@ -86,7 +90,7 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
         if as_json:
             emit_json({"output": str(output), "inputs": len(inputs), **summary})
         return
-    clouds = [read_cloud(p) for p in inputs]
+    clouds = [read_cloud(p, **read_opts) for p in inputs]
     poses = read_poses(poses_path, len(clouds)) if poses_path else None
     summary = {}
     if do_register:
@@ -106,7 +110,7 @@ def merge(inputs, output, poses_path, do_register, poses_out, voxel_size, duplic
 
     emit_summary("merge", f"{count(merged.n, 'points')} from {count(len(inputs), 'clouds')}", [output, poses_out],
                  details=[f"{len(merged.dims)} attributes", "registered" if do_register else ""])
-    _save_merge_pipeline(pipeline_out, inputs, output, overwrite)
+    _save_merge_pipeline(pipeline_out, inputs, output, overwrite, read_opts)
     if as_json:
         emit_json({"output": str(output), "points": merged.n, "inputs": len(inputs),
                    "attributes": merged.dims, **summary})

@@ -126,11 +126,13 @@ def _parse_bounds(ctx, param, value):
     return b
 
 
-def read_options(func=None, *, resolution_flag: str = "--resolution"):
+def read_options(func=None, *, resolution_flag: str = "--resolution", with_bounds: bool = True):
     """Add ``--bounds``, ``--resolution`` and ``--level`` to a command that reads one point cloud
     and pass them on as one dict parameter ``read_opts`` for :func:`workstation.io.read_cloud`
     (``read_cloud(src, **read_opts)``). ``resolution_flag`` renames ``--resolution`` for a command
-    that already has one (``ws dem --resolution`` is the cell size)."""
+    that already has one (``ws dem --resolution`` is the cell size); ``with_bounds=False`` leaves
+    out ``--bounds`` for a command whose own ``--bounds`` means something else (``ws crop``), so
+    ``read_opts["bounds"]`` is then None."""
     import functools
 
     def decorate(f):
@@ -139,7 +141,7 @@ def read_options(func=None, *, resolution_flag: str = "--resolution"):
             kw["read_opts"] = {"bounds": read_bounds, "resolution": read_resolution, "level": read_level}
             return f(*args, **kw)
 
-        for opt in (
+        opts = (
             click.option("--level", "read_level", type=nonneg_int, default=None,
                          help="COPC only: read octree levels 0..LEVEL (0 is the root), a coarser cloud."),
             click.option(resolution_flag, "read_resolution", type=positive_float, default=None,
@@ -148,7 +150,8 @@ def read_options(func=None, *, resolution_flag: str = "--resolution"):
                          metavar="XMIN,YMIN,XMAX,YMAX[,ZMIN,ZMAX]",
                          help="Read only the points inside this box (CRS units, inclusive): a COPC file is "
                               "queried through its octree, a LAS/LAZ file streamed and filtered."),
-        ):
+        )
+        for opt in opts if with_bounds else opts[:2]:
             wrapper = opt(wrapper)
         return wrapper
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from .options import emit_json, json_option, overwrite_option
+from .options import emit_json, json_option, overwrite_option, read_options
 
 
 @click.command()
@@ -24,9 +24,10 @@ from .options import emit_json, json_option, overwrite_option
 @click.option("--port", type=click.IntRange(0, 65535), default=8000, show_default=True,
               help="Port of --serve (0 picks a free one).")
 @click.option("--host", default="127.0.0.1", show_default=True, help="Address --serve listens on.")
+@read_options
 @overwrite_option
 @json_option
-def publish(inputs, output, title, preview_size, tiles3d, serve, port, host, overwrite, as_json):
+def publish(inputs, output, title, preview_size, tiles3d, serve, port, host, read_opts, overwrite, as_json):
     """Publish INPUTS (work or product folders, or cloud/raster files) as a static web site.
 
     LAS/LAZ clouds become COPC files streamed by level of detail; hillshade, DTM and ortho
@@ -34,7 +35,8 @@ def publish(inputs, output, title, preview_size, tiles3d, serve, port, host, ove
     folder works on any static web server that supports HTTP Range requests, with no network
     access (the JavaScript is vendored, with its licences, in SITE/viewer/). With --3d-tiles,
     clouds and meshes are also written as 3D Tiles tilesets for CesiumJS and other 3D Tiles
-    viewers.
+    viewers. --bounds/--resolution/--level publish only the points they select from each cloud
+    (not with --3d-tiles, whose tilesets are built from the whole clouds).
     """
     from workstation.cli.summary import count, emit_summary
     from workstation.publish.site import PublishParams, publish_site
@@ -43,8 +45,11 @@ def publish(inputs, output, title, preview_size, tiles3d, serve, port, host, ove
         if not (serve and len(inputs) == 1 and (Path(inputs[0]) / "site.json").is_file()):
             raise click.UsageError("give -o SITE (or --serve with a published site as the only input)")
         return _serve(Path(inputs[0]), host, port)
+    if tiles3d and any(v is not None for v in read_opts.values()):
+        raise click.UsageError("--3d-tiles tiles the whole clouds: leave out --bounds, --resolution and --level")
     res = publish_site(list(inputs), output, overwrite=overwrite,
-                       params=PublishParams(title=title, preview_px=preview_size, tiles3d=tiles3d))
+                       params=PublishParams(title=title, preview_px=preview_size, tiles3d=tiles3d,
+                                                           read_opts=read_opts))
     doc = res.doc
     emit_summary("publish", f"{count(res.points, 'points')} in {count(len(doc['clouds']), 'clouds')}", res.site / "index.html",
                  res.seconds, details=[count(len(doc["rasters"]), "rasters"), count(len(doc["cameras"]), "cameras"),

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from .options import emit_json, json_option, nonneg_length, overwrite_option, positive_length
+from .options import emit_json, json_option, nonneg_length, overwrite_option, positive_length, read_options
 
 
 @click.command("qc")
@@ -22,9 +22,10 @@ from .options import emit_json, json_option, nonneg_length, overwrite_option, po
 @click.option("--surface-cell", type=positive_length, default=None,
               help="Cell of the ground surface the classification checks use, metres (default: 1 m or "
                    "twice the mean point spacing, the larger).")
+@read_options
 @overwrite_option
 @json_option
-def qc(inputs, output, spec, checkpoints, checkpoint_rmse, dem, surface_cell, overwrite, as_json):
+def qc(inputs, output, spec, checkpoints, checkpoint_rmse, dem, surface_cell, read_opts, overwrite, as_json):
     """Check a delivery (LAS/LAZ/COPC tiles) as lasvalidate, lasoverlap and lascontrol do, against a
     USGS quality level or an ASPRS accuracy class: format, density and voids, swath separation,
     absolute accuracy, DEM accuracy and classification. Writes an HTML report with maps; the exit
@@ -38,7 +39,7 @@ def qc(inputs, output, spec, checkpoints, checkpoint_rmse, dem, surface_cell, ov
     get_spec(spec)  # an unknown name fails before any point is read
     params = QCParams(spec=spec, checkpoints=Path(checkpoints) if checkpoints else None,
                       checkpoint_rmse_m=float(checkpoint_rmse), dem=Path(dem) if dem else None,
-                      surface_cell_m=surface_cell)
+                      surface_cell_m=surface_cell, read_opts=read_opts)
     t0 = time.perf_counter()
     doc = write_qc(inputs, output, params, overwrite=overwrite)
     _summary(doc, output, time.perf_counter() - t0)

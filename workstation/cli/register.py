@@ -15,7 +15,7 @@ from workstation.cli.options import (
     overwrite_option,
 )
 from workstation.cli.options import fraction, positive_float
-from workstation.cli.options import RegistryChoice, bound, field_option, param_group
+from workstation.cli.options import RegistryChoice, bound, field_option, param_group, read_options
 from workstation.io.textfile import read_text
 from workstation.registration.icp import ICP_METHODS, KERNELS, ICPParams
 from workstation.registration.register import METHODS, RegisterParams
@@ -99,13 +99,15 @@ def write_matrix(result, tmp: Path) -> None:
                             help="Smallest accepted overlap (share of source points with a correspondence)."))
 @click.option("--matrix-out", type=click.Path(dir_okay=False), default=None,
               help="Also write the result: .json (all fields) or text (the 4x4 matrix).")
+@read_options
 @overwrite_option
 @json_option
-def register(source, target, output, method, icp, given, init_path, pairs_path, with_scale, matrix_out, overwrite,
-             as_json):
+def register(source, target, output, method, icp, given, init_path, pairs_path, with_scale, matrix_out, read_opts,
+             overwrite, as_json):
     """Register SOURCE onto TARGET and write the transformed SOURCE to OUT.
 
-    The transform maps SOURCE coordinates into TARGET's frame. A result with too little overlap
+    The transform maps SOURCE coordinates into TARGET's frame. --bounds/--resolution/--level
+    select the points read from both clouds (the moved SOURCE written holds only those). A result with too little overlap
     or no convergence is an error (exit 1) with a hint, not a silently wrong matrix.
     """
     import time
@@ -119,8 +121,8 @@ def register(source, target, output, method, icp, given, init_path, pairs_path, 
     inputs = [source, target, *(p for p in (init_path, pairs_path) if p)]
     check_outputs([output, matrix_out], overwrite, inputs=inputs)
     t0 = time.perf_counter()
-    src = read_cloud(source)
-    tgt = read_cloud(target)
+    src = read_cloud(source, **read_opts)
+    tgt = read_cloud(target, **read_opts)
     init = read_matrix(init_path) if init_path else None
     pair_fit = None
     if pairs_path:

@@ -7,7 +7,7 @@ import click
 from workstation.adjust import AdjustParams, PatchParams
 
 from .options import emit_json, float_triple, json_option, overwrite_option, positive_float
-from .options import bound, field_default, param_group
+from .options import bound, field_default, param_group, read_options
 
 
 def _triple(cls, field: str) -> str:
@@ -30,7 +30,8 @@ def _estimate(ctx, param, value):
 @click.command("strip-adjust")
 @click.argument("inputs", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False))
 @click.option("-o", "--output", "out_dir", required=True, type=click.Path(file_okay=False),
-              help="Output folder: the adjusted clouds (input names), strip_adjust.json, DZ images before/after.")
+              help="Output folder: the adjusted clouds (input names, .laz for a .copc.laz), strip_adjust.json, "
+                   "DZ images before/after.")
 @click.option("--trajectory", "trajectory_path", type=click.Path(exists=True, dir_okay=False), default=None,
               help="Trajectory CSV (gps_time, easting, northing, height, roll_deg, pitch_deg, heading_deg), "
                    "as ws simulate writes: enables the rigorous model.")
@@ -55,9 +56,10 @@ def _estimate(ctx, param, value):
     bound(PatchParams, "noise_m", "--noise", type=positive_float,
           help="1-sigma point noise along the surface normal in metres (default: estimated from the data)."),
 )
+@read_options
 @overwrite_option
 @json_option
-def strip_adjust(inputs, out_dir, trajectory_path, estimate, given, patches, overwrite, as_json):
+def strip_adjust(inputs, out_dir, trajectory_path, estimate, given, patches, read_opts, overwrite, as_json):
     """Estimate and remove the systematic misalignment between overlapping flight lines.
 
     Planar patches seen by two strips (point_source_id) give plane-to-plane distances; without a
@@ -88,7 +90,7 @@ def strip_adjust(inputs, out_dir, trajectory_path, estimate, given, patches, ove
     with progress_bar("strip-adjust", 2 * len(inputs) + 3, unit="steps") as advance:
         clouds = []
         for p in inputs:
-            clouds.append(read_cloud(p))
+            clouds.append(read_cloud(p, **read_opts))
             advance(1)
         xyz, attrs = _joined(clouds, inputs)
         res = estimate_corrections(xyz, attrs, params, nav)
@@ -116,7 +118,7 @@ def _check_output(out, inputs, overwrite) -> None:
 
     from workstation.core.errors import InvalidInputError, OutputExistsError
 
-    names = [Path(p).name for p in inputs]
+    names = [_out_name(p) for p in inputs]
     if len(set(names)) != len(names):
         raise InvalidInputError("two inputs have the same file name", "the outputs are named after the inputs")
     if out.exists() and not overwrite:
@@ -125,16 +127,24 @@ def _check_output(out, inputs, overwrite) -> None:
         raise InvalidInputError("the output folder holds an input", "write the adjusted clouds elsewhere", path=out)
 
 
+def _out_name(path) -> str:
+    """The name of an adjusted cloud: the input's, but ``.laz`` for a ``.copc.laz`` input (the
+    adjusted points are written as plain LAZ, which a COPC name would misrepresent)."""
+    from pathlib import Path
+
+    name = Path(path).name
+    return name[: -len(".copc.laz")] + ".laz" if name.lower().endswith(".copc.laz") else name
+
+
 def _write(out, inputs, clouds, new_xyz, passes, report, model, overwrite, t0, advance) -> None:
     """The adjusted clouds (input names, every attribute), the DZ images and strip_adjust.json,
     all in a folder built beside ``out`` and swapped in (all or nothing)."""
     import json
     import time
-    from pathlib import Path
 
     from workstation.io import atomic_dir, write_cloud
 
-    names = [Path(p).name for p in inputs]
+    names = [_out_name(p) for p in inputs]
     with atomic_dir(out, overwrite=overwrite) as tmp:
         start = 0
         for name, c in zip(names, clouds):

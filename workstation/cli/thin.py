@@ -7,6 +7,7 @@ import click
 from workstation.ops.thin import KEEP, VoxelParams
 
 from .options import RegistryChoice, field_option, json_option, output_option, overwrite_option, positive_float
+from .options import read_options
 from .pipeline_out import pipeline_out_option
 
 
@@ -19,10 +20,11 @@ from .pipeline_out import pipeline_out_option
                                       "centroid or the centre of the voxel, lowest or highest.")
 @click.option("--poisson", type=positive_float, default=None,
               help="Poisson-disk radius (CRS units): no two kept points closer (PDAL filters.sample).")
+@read_options
 @pipeline_out_option
 @overwrite_option
 @json_option
-def thin(src, output, voxel, keep, poisson, pipeline_out, overwrite, as_json):
+def thin(src, output, voxel, keep, poisson, read_opts, pipeline_out, overwrite, as_json):
     """Thin IN by voxels or Poisson disks; write OUT. Kept points keep every attribute; deterministic."""
     import time
 
@@ -39,14 +41,14 @@ def thin(src, output, voxel, keep, poisson, pipeline_out, overwrite, as_json):
     format_of(src)
     format_of(output)
     check_outputs([output, pipeline_out], overwrite, inputs=[src])
-    cloud = read_cloud(src)
+    cloud = read_cloud(src, **read_opts)
     out = voxel_thin(cloud, VoxelParams(voxel, keep)) if voxel else poisson_thin(cloud, PoissonParams(poisson))
     write_cloud(out, output, overwrite=overwrite, inputs=[src])
     if pipeline_out:
         from workstation.ops import pdal
 
         layout = pdal.las_layout(output) if format_of(output)[0] in ("las", "laz") else None
-        save_pipeline(pipeline_out, [pdal.reader(src), *pdal.thin_stages(voxel, keep, poisson),
+        save_pipeline(pipeline_out, [*pdal.read_stages([src], read_opts), *pdal.thin_stages(voxel, keep, poisson),
                                      pdal.writer(output, layout)], overwrite, [src])
     dt = time.perf_counter() - t0
     get_logger(__name__).info("kept %d of %d points in %.2f s", out.n, cloud.n, dt)

@@ -6,7 +6,7 @@ import click
 
 from workstation.ops.tile import TileParams
 
-from .options import bound, json_option, nonneg_float, overwrite_option, param_group, positive_float
+from .options import bound, json_option, nonneg_float, overwrite_option, param_group, positive_float, read_options
 from .pipeline_out import pipeline_out_option
 
 
@@ -21,10 +21,11 @@ from .pipeline_out import pipeline_out_option
 )
 @click.option("--format", "ext", type=click.Choice(["laz", "las"]), default="laz", show_default=True,
               help="Tile file format.")
+@read_options
 @pipeline_out_option
 @overwrite_option
 @json_option
-def tile(inputs, output, given, ext, pipeline_out, overwrite, as_json):
+def tile(inputs, output, given, ext, read_opts, pipeline_out, overwrite, as_json):
     """Cut IN... into tiles of --size aligned to multiples of it, written to FOLDER as
     <xmin>_<ymin>.laz; streamed, so any number of points fits in memory."""
     import time
@@ -43,11 +44,11 @@ def tile(inputs, output, given, ext, pipeline_out, overwrite, as_json):
     size, buffer = given["size"], given["buffer"]
     check_outputs([pipeline_out], overwrite, inputs=inputs)
     with work_folder(output) as folder:
-        counts = tile_files(inputs, folder, params, overwrite=overwrite)
+        counts = tile_files(inputs, folder, params, overwrite=overwrite, read_opts=read_opts)
     if pipeline_out:
         from workstation.ops import pdal
 
-        stages = [pdal.reader(p) for p in inputs] + ([{"type": "filters.merge"}] if len(inputs) > 1 else [])
+        stages = pdal.read_stages(inputs, read_opts)
         stages.append({"type": "filters.splitter", "length": size, "origin_x": 0.0, "origin_y": 0.0, "buffer": buffer})
         # PDAL numbers the tiles (#); ws names them by their lower-left corner
         stages.append(pdal.writer(f"{output}/tile_#.{ext}", None))

@@ -337,17 +337,27 @@ def reference_classes(cloud: Cloud) -> np.ndarray:
                             "give a classified LAS/LAZ or an ISPRS text file (x y z label)")
 
 
-def read_reference(path) -> Cloud:
+def read_reference(path, bounds=None) -> Cloud:
     """Read a reference cloud: LAS/LAZ (classification) or an ISPRS text sample (x y z label).
 
-    Text files are read as four columns ``x y z label`` (label 0 ground, 1 object).
+    Text files are read as four columns ``x y z label`` (label 0 ground, 1 object). With
+    ``bounds`` (xmin, ymin, xmax, ymax[, zmin, zmax]) only the points inside, inclusive.
     """
     p = Path(path)
     if p.suffix.lower() in (".txt", ".csv", ".xyz", ".pts"):
-        return read_isprs_text(p)
+        c = read_isprs_text(p)
+        if bounds is None:
+            return c
+        b = np.asarray(bounds, dtype=np.float64)
+        half = len(b) // 2
+        inside = np.all((c.xyz[:, :half] >= b[[0, 1, 4][:half]]) & (c.xyz[:, :half] <= b[[2, 3, 5][:half]]), axis=1)
+        if not inside.any():
+            raise InvalidInputError("no reference points inside --bounds", "compare the box with the file's bounds",
+                                    path=p, field="--bounds")
+        return c[inside]
     from workstation.io import read_cloud
 
-    return read_cloud(p)
+    return read_cloud(p, bounds=bounds)
 
 
 def read_isprs_text(path) -> Cloud:

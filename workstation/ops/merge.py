@@ -40,18 +40,21 @@ def _template(firsts: list[Cloud], number_inputs: bool) -> Cloud:
 
 
 def merge_files(inputs, output, *, source_ids: str = "auto", overwrite: bool = False, chunk_size: int = CHUNK,
-                **write_opts) -> dict:
+                read_opts: dict | None = None, **write_opts) -> dict:
     """Concatenate the points of ``inputs`` into ``output`` chunk by chunk; returns a summary.
 
     Parameters
     ----------
     source_ids : {"auto", "input", "keep"}
         What ``point_source_id`` becomes (see the module docstring).
+    read_opts : dict, optional
+        ``bounds``/``resolution``/``level``: the points read from each input
+        (:func:`~workstation.ops.stream.input_chunks`).
     """
     if source_ids not in SOURCE_IDS:
         raise InvalidInputError(f"unknown source id rule '{source_ids}'", f"one of {', '.join(SOURCE_IDS)}",
                                 field="source_ids")
-    streams = [input_chunks(p, chunk_size) for p in inputs]
+    streams = [input_chunks(p, chunk_size, **(read_opts or {})) for p in inputs]
     firsts = [next(it, None) for it in streams]  # each input is read once: its first chunk is kept
     if any(f is None for f in firsts):
         raise InvalidInputError("has no points", path=inputs[[f is None for f in firsts].index(True)])

@@ -33,11 +33,29 @@ def is_las(path) -> bool:
 
 def input_chunks(path, chunk_size: int = CHUNK, **read_opts) -> Iterator[Cloud]:
     """The points of ``path`` as clouds of at most ``chunk_size`` points (LAS/LAZ streamed;
-    other formats read whole, as one chunk, so the first chunk's bounds are the file's)."""
-    if is_las(path) and not read_opts:
+    other formats read whole, as one chunk, so the first chunk's bounds are the file's).
+
+    ``bounds``/``resolution``/``level`` (None = not given) select points as
+    :func:`workstation.io.read_cloud` does: a LAS/LAZ file is streamed and filtered chunk by
+    chunk, a COPC file queried through its octree. Chunks left empty by the selection are
+    skipped; a ``bounds`` holding no point of the file is an :class:`InvalidInputError`.
+    """
+    sel = {k: v for k, v in read_opts.items() if v is not None}
+    if not is_las(path):
+        yield read_cloud(path, **sel)
+        return
+    if not sel:
         yield from iter_chunks(path, chunk_size)
-    else:
-        yield read_cloud(path, **read_opts)
+        return
+    found = False
+    for chunk in iter_chunks(path, chunk_size, **sel):
+        if chunk.n:
+            found = True
+            yield chunk
+    if not found and sel.get("bounds") is not None:
+        raise InvalidInputError(f"no points inside --bounds {','.join(f'{v:g}' for v in sel['bounds'])}",
+                                "compare the box with the file's bounds (ws info --summary FILE)", path=path,
+                                field="--bounds")
 
 
 def input_bounds(path) -> tuple[np.ndarray, np.ndarray] | None:
@@ -100,14 +118,16 @@ def cloud_sink(path, template: Cloud, *, overwrite: bool = False, inputs=(), bou
 
 
 def stream_select(src, output, select: Callable[[Cloud], np.ndarray], *, stage: str, overwrite: bool = False,
-                  chunk_size: int = CHUNK, hint: str = "", **write_opts) -> tuple[int, int]:
-    """Write the points of ``src`` for which ``select(chunk)`` is True to ``output``, chunk by chunk.
+                  chunk_size: int = CHUNK, hint: str = "", read_opts: dict | None = None,
+                  **write_opts) -> tuple[int, int]:
+    """Write the points of ``src`` for which ``select(chunk)`` is True to ``output``, chunk by chunk
+    (``read_opts``: the ``bounds``/``resolution``/``level`` selection of :func:`input_chunks`).
 
     Returns (points read, points written). Raises :class:`StageError` when no point is
     selected (the output is then not written), as PDAL users would otherwise find an empty
     file only later.
     """
-    chunks = input_chunks(src, chunk_size)
+    chunks = input_chunks(src, chunk_size, **(read_opts or {}))
     first = next(chunks, None)
     if first is None:
         raise InvalidInputError("has no points", path=src)

@@ -94,13 +94,15 @@ def tile_memberships(xy: np.ndarray, size: float, buffer: float = 0.0):
             yield idx, ix[idx] + dx, iy[idx] + dy
 
 
-def occupied_tiles(inputs, params: TileParams, chunk_size: int) -> tuple[list, tuple[float, float]]:
+def occupied_tiles(inputs, params: TileParams, chunk_size: int, read_opts: dict | None = None
+                   ) -> tuple[list, tuple[float, float]]:
     """The tiles that receive at least one point (buffer included) and the z range of all the
-    points, from one streamed pass: the cost follows the points, not the bounding box."""
+    points, from one streamed pass: the cost follows the points, not the bounding box
+    (``read_opts``: the point selection of :func:`~workstation.ops.stream.input_chunks`)."""
     keys: set = set()
     zlo, zhi = np.inf, -np.inf
     for src in inputs:
-        for chunk in input_chunks(src, chunk_size):
+        for chunk in input_chunks(src, chunk_size, **(read_opts or {})):
             zlo, zhi = min(zlo, float(chunk.xyz[:, 2].min())), max(zhi, float(chunk.xyz[:, 2].max()))
             for _, ix, iy in tile_memberships(chunk.xyz[:, :2], params.size, params.buffer):
                 keys.update(map(tuple, np.unique(np.column_stack([ix, iy]), axis=0).tolist()))
@@ -132,16 +134,18 @@ class _Tiles:
         sink.write(cloud)
 
 
-def _schema(inputs, chunk_size: int) -> Cloud | None:
+def _schema(inputs, chunk_size: int, read_opts: dict | None = None) -> Cloud | None:
     """An empty cloud with the union of the inputs' attributes (None for a single input)."""
     if len(inputs) < 2:
         return None
-    firsts = [next(input_chunks(p, chunk_size), None) for p in inputs]
+    firsts = [next(input_chunks(p, chunk_size, **(read_opts or {})), None) for p in inputs]
     return concatenate([f[:1] for f in firsts if f is not None], check_crs=False)[:0]
 
 
-def tile_files(inputs, folder, params: TileParams, *, overwrite: bool = False, chunk_size: int = CHUNK) -> dict:
+def tile_files(inputs, folder, params: TileParams, *, overwrite: bool = False, chunk_size: int = CHUNK,
+               read_opts: dict | None = None) -> dict:
     """Tile the inputs into ``folder`` (which must exist); returns {tile name: points written}.
+    ``read_opts`` ({bounds, resolution, level}) selects the points read from every input.
 
     Raises
     ------
@@ -152,20 +156,20 @@ def tile_files(inputs, folder, params: TileParams, *, overwrite: bool = False, c
     """
     folder = Path(folder)
     inputs = [Path(p) for p in inputs]
-    cands, zrange = occupied_tiles(inputs, params, chunk_size)
+    cands, zrange = occupied_tiles(inputs, params, chunk_size, read_opts)
     if not overwrite:
         for ix, iy in cands:
             path = folder / (tile_name(ix, iy, params.size) + params.ext)
             if path.exists():
                 raise OutputExistsError(path)
-    schema = _schema(inputs, chunk_size)
+    schema = _schema(inputs, chunk_size, read_opts)
     counts: dict[str, int] = {}
     for g in range(0, len(cands), MAX_OPEN):
         group = set(cands[g:g + MAX_OPEN])
         tiles = _Tiles(folder, params, overwrite, inputs, zrange)
         with tiles.stack:
             for src in inputs:
-                for chunk in input_chunks(src, chunk_size):
+                for chunk in input_chunks(src, chunk_size, **(read_opts or {})):
                     _tile_chunk(chunk if schema is None else concatenate([schema, chunk], check_crs=False),
                                 params, group, tiles)
         counts.update({tile_name(k[0], k[1], params.size): s.count for k, s in tiles.sinks.items()})

@@ -79,6 +79,9 @@ class PublishParams:
     tiles3d : bool
         Also write a 3D Tiles tileset per cloud and mesh in ``SITE/3dtiles/NAME/``
         (:func:`workstation.publish.tiles3d.publish_tilesets`, same octree as the COPC).
+    read_opts : dict or None
+        ``bounds``/``resolution``/``level`` (None = not given): publish only the points they
+        select from each cloud (:func:`workstation.ops.stream.input_chunks`).
     """
 
     title: str | None = None
@@ -87,6 +90,7 @@ class PublishParams:
     chunk_points: int = 2_000_000
     copc: object | None = None
     tiles3d: bool = False
+    read_opts: dict | None = None
 
     def __post_init__(self):
         if self.preview_px < 16:
@@ -229,15 +233,17 @@ def _percentiles(hist: np.ndarray, qs) -> list[float]:
 
 
 def _to_copc(src: Path, dst: Path, params: PublishParams) -> dict:
-    """Copy a COPC file, or convert a LAS/LAZ file to COPC with the package's writer
-    (:func:`workstation.publish.copc.write_copc_chunks`, streaming chunks of
-    ``params.chunk_points``); the statistics of :func:`cloud_stats`, gathered on the way."""
+    """Copy a COPC file, or convert a LAS/LAZ file (or the points ``params.read_opts`` selects
+    from any cloud) to COPC with the package's writer (:func:`workstation.publish.copc.write_copc_chunks`,
+    streaming chunks of ``params.chunk_points``); the statistics of :func:`cloud_stats`, gathered
+    on the way."""
     import laspy
 
-    from workstation.io import iter_chunks
     from workstation.io.copc import is_copc
+    from workstation.ops.stream import input_chunks
 
-    if is_copc(src):
+    sel = {k: v for k, v in (params.read_opts or {}).items() if v is not None}
+    if is_copc(src) and not sel:
         shutil.copyfile(src, dst)
         return cloud_stats(dst, params.chunk_points)
     from workstation.publish.copc import CopcParams, write_copc_chunks
@@ -245,7 +251,8 @@ def _to_copc(src: Path, dst: Path, params: PublishParams) -> dict:
     with laspy.open(str(src)) as f:
         bounds = (np.asarray(f.header.mins), np.asarray(f.header.maxs))
     acc = _Stats()
-    write_copc_chunks(acc.tap(iter_chunks(src, params.chunk_points)), dst, params.copc or CopcParams(), bounds=bounds)
+    write_copc_chunks(acc.tap(input_chunks(src, params.chunk_points, **sel)), dst, params.copc or CopcParams(),
+                      bounds=bounds)
     with laspy.open(str(dst)) as f:
         h = f.header
         return {"points": int(h.point_count), "bounds": [*map(float, h.mins), *map(float, h.maxs)], **acc.result()}

@@ -20,7 +20,7 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
-from workstation.io.registry import format_of, iter_chunks
+from workstation.io.registry import check_selection, format_of, iter_chunks
 
 from .context import QCGrid
 from .specs import dig
@@ -48,6 +48,9 @@ class QCParams:
         1 m and twice the header's mean point spacing.
     chunk_size : int
         Points read at a time.
+    read_opts : dict or None
+        ``bounds``/``resolution``/``level`` (None = not given): check only the points they
+        select (:func:`workstation.io.iter_chunks`); the coverage grid is then cut to ``bounds``.
     """
 
     spec: str = "usgs-ql2"
@@ -56,6 +59,7 @@ class QCParams:
     dem: Path | None = None
     surface_cell_m: float | None = None
     chunk_size: int = 2_000_000
+    read_opts: dict | None = None
 
 
 def _catalog(paths):
@@ -74,14 +78,19 @@ def _units(crs):
     return crs_units(crs)
 
 
-def _coverage_grid(cat, anps_m: float, units) -> QCGrid:
-    """The 2×ANPS grid over the catalog (:func:`workstation.qc.coverage.coverage_grid`), refused
-    when it would not fit in memory (the extent is then too large for its spacing: check it in pieces)."""
+def _coverage_grid(cat, anps_m: float, units, bounds=None) -> QCGrid:
+    """The 2×ANPS grid over the catalog (:func:`workstation.qc.coverage.coverage_grid`), cut to
+    ``bounds`` (xmin, ymin, xmax, ymax[, ...]) when given, refused when it would not fit in memory
+    (the extent is then too large for its spacing: check it in pieces)."""
     from workstation.core.budget import check_grid
 
     from .coverage import coverage_grid
 
-    g = coverage_grid(cat.bounds, anps_m, units)
+    box = cat.bounds
+    if bounds is not None:
+        x0, y0, x1, y1 = cat.bounds
+        box = (max(x0, bounds[0]), max(y0, bounds[1]), min(x1, bounds[2]), min(y1, bounds[3]))
+    g = coverage_grid(box, anps_m, units)
     check_grid(g.rows, g.cols, what="2×ANPS coverage grid", option="INPUT extent", bytes_per_cell=64.0,
                path=", ".join(t.path.name for t in cat.tiles[:3]))
     return g
@@ -94,11 +103,12 @@ def _header_spacing_m(cat, units) -> float:
     return math.sqrt(area / max(cat.point_count, 1))
 
 
-def _stream(cat, checks, chunk_size: int, advance, per_file=None, unreadable=None) -> None:
+def _stream(cat, checks, chunk_size: int, advance, per_file=None, unreadable=None, read_opts=None) -> None:
     """Feed every chunk of every file to ``checks`` (``add(chunk, source)``) and to the file's
     own check in ``per_file`` ({path: check with ``add(chunk)``}). A file whose points cannot be
     read (a header count the data does not hold) is recorded in ``unreadable`` ({path: reason})
-    and left out; the other files go on."""
+    and left out; the other files go on. ``read_opts`` selects the points read (chunks it leaves
+    empty are skipped)."""
     unreadable = {} if unreadable is None else unreadable
     for t in cat.tiles:
         src = str(t.path)
@@ -106,7 +116,9 @@ def _stream(cat, checks, chunk_size: int, advance, per_file=None, unreadable=Non
             continue
         own = (per_file or {}).get(src)
         try:
-            for chunk in iter_chunks(t.path, chunk_size):
+            for chunk in iter_chunks(t.path, chunk_size, **(read_opts or {})):
+                if chunk.n == 0:
+                    continue
                 if own is not None:
                     own.add(chunk)
                 for c in checks:
@@ -147,19 +159,28 @@ def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
     surface_cell = params.surface_cell_m or max(1.0, 2.0 * _header_spacing_m(cat, units))
     fmt, dens, cls1 = _pass1_checks(cat, units, surface_cell)
     unreadable: dict = {}
+    sel = {k: v for k, v in (params.read_opts or {}).items() if v is not None}
+    for p in paths:  # a --level on a non-COPC file is a usage mistake, not an unreadable file
+        check_selection(p, **sel)
+    read = []  # points of each chunk read in pass 1 (the selection's count when one is given)
     with progress_bar("qc pass 1 of 2", cat.point_count, "points") as advance:
-        _stream(cat, [dens, cls1], params.chunk_size, advance, per_file=fmt, unreadable=unreadable)
+        _stream(cat, [dens, cls1], params.chunk_size, lambda n: (read.append(n), advance(n)), per_file=fmt,
+                unreadable=unreadable, read_opts=sel)
+    if sel.get("bounds") is not None and sum(read) == 0:
+        raise InvalidInputError(f"no points inside --bounds {','.join(f'{v:g}' for v in sel['bounds'])}",
+                                "compare the box with the files' bounds (ws info --summary FILE)", field="--bounds")
     density = dens.result()
     anps = density.get("anps")
     if not anps or not np.isfinite(anps):
         raise InvalidInputError("no first returns to measure the point spacing", "check the return numbers",
                                 path=paths[0], field="return_number")
-    grid2 = _coverage_grid(cat, anps, units)
+    grid2 = _coverage_grid(cat, anps, units, sel.get("bounds"))
     cov, sw, cls2, cpp = _pass2_checks(grid2, anps, cls1, cps, units, spec)
     with progress_bar("qc pass 2 of 2", cat.point_count, "points") as advance:
         _stream(cat, [c for c in (cov, sw, cls2, cpp) if c is not None], params.chunk_size, advance,
-                unreadable=unreadable)
-    doc = _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params)
+                unreadable=unreadable, read_opts=sel)
+    doc = _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params,
+                    points=sum(read) if sel else None)
     return finish(doc, out_dir, cat.crs, cov, sw, spec, unreadable, t0)
 
 
@@ -212,11 +233,13 @@ def _pass2_checks(grid2, anps, cls1, cps, units, spec):
             SwathPass(grid2, swath_params(spec)), cls1.second_pass(), cpp)
 
 
-def _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params) -> dict:
-    """Assemble the QC document from the checks (lengths in metres)."""
+def _document(cat, units, fmt, dens, density, cov, sw, cls1, cls2, cpp, cps, params, points=None) -> dict:
+    """Assemble the QC document from the checks (lengths in metres); ``points`` replaces the
+    headers' point count when a selection was read."""
     from .classes import class_checks
 
-    return document([str(t.path) for t in cat.tiles], int(cat.point_count), cat.crs, units,
+    points = cat.point_count if points is None else points
+    return document([str(t.path) for t in cat.tiles], int(points), cat.crs, units,
                     {k: (c.result(), [f.to_dict() for f in c.findings()]) for k, c in fmt.items()},
                     density, [f.to_dict() for f in dens.findings()], cov, sw, class_checks(cls1, cls2), cpp, cps,
                     params)
