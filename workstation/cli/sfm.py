@@ -88,8 +88,9 @@ def sfm(images, workdir, camera_file, given, gcp_file, gcp_adjustment, crs, no_p
         wd = Path(workdir)
         out = result.to_dict()
         from workstation.io import write_cloud
+        from workstation.photogrammetry.scale import level_and_scale_model
 
-        cloud, frame = _upright_and_scale(result, wd, upright, bars, sigma_px)
+        cloud, frame = level_and_scale_model(result, wd, upright, bars, sigma_px)
         out.update(frame)
         write_cloud(cloud, wd / "sparse.ply", overwrite=True)
         out["sparse_cloud"] = str(wd / "sparse.ply")
@@ -170,24 +171,6 @@ def _densify(wd: Path, images, device: str, overwrite: bool) -> dict:
     write_dense_record(wd, images, dense_params, dense_summary)
     click.echo(f"dense: {dense_summary['points']} points ({dense_summary['device']}) -> {dense_summary['fused']}", err=True)
     return dense_summary
-
-
-def _upright_and_scale(result, wd: Path, upright: bool, bars: list, sigma_px: float):
-    """Level and scale the model (:func:`workstation.photogrammetry.scale.upright_and_scale`)
-    before anything reads it: sparse/0 is rewritten in the new frame, so georef, dense and mesh
-    all start from it. Returns the sparse cloud in that frame and the record's "upright",
-    "scale" (and "similarity") entries."""
-    from workstation.photogrammetry.scale import upright_and_scale
-
-    frame = upright_and_scale(result.reconstruction, upright=upright, bars=bars, sigma_px=sigma_px)
-    if frame.similarity is None:
-        return result.cloud, frame.summary
-    from workstation.interop.pycolmap import apply_similarity, import_pycolmap, write_model
-
-    model = import_pycolmap().Reconstruction(str(wd / "sparse" / "0"))
-    apply_similarity(model, frame.similarity)
-    write_model(model, wd / "sparse" / "0")
-    return frame.apply_cloud(result.cloud), frame.summary
 
 
 def _record(out: dict, images, camera_file, gcp_file, params, gcp_adjustment: str, crs, sigma_px: float, wd: Path) -> dict:

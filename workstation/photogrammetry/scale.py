@@ -413,3 +413,23 @@ __all__ = [
     "scale_reconstruction",
     "upright_and_scale",
 ]
+
+
+def level_and_scale_model(result, workdir, upright: bool, bars: Sequence[ScaleBar], sigma_px: float):
+    """Level and scale an SfM result in its work folder (:func:`upright_and_scale`) before
+    anything reads it: ``workdir/sparse/0`` is rewritten in the new frame, so georeferencing,
+    dense matching and meshing all start from it. Returns the sparse cloud in that frame and
+    the summary entries of the record ("upright", "scale", "similarity")."""
+    from pathlib import Path
+
+    from workstation.interop.pycolmap import apply_similarity, import_pycolmap, write_model
+
+    frame = upright_and_scale(result.reconstruction, upright=upright, bars=bars, sigma_px=sigma_px)
+    if frame.similarity is None:
+        return result.cloud, frame.summary
+    sparse = Path(workdir) / "sparse" / "0"
+    model = import_pycolmap().Reconstruction(str(sparse))
+    apply_similarity(model, frame.similarity)
+    write_model(model, sparse)
+    return frame.apply_cloud(result.cloud), frame.summary
+

@@ -65,19 +65,12 @@ def _link_photos(photos: list, folder: Path) -> None:
 
 
 def _upright_and_scale(result, workdir: Path, stage):
-    """Level and scale the model as ``ws sfm`` does (before anything reads it): sparse/0 is
-    rewritten in the new frame; returns the sparse cloud in it and the record's entries."""
-    from workstation.interop.pycolmap import apply_similarity, import_pycolmap, write_model
-    from workstation.photogrammetry.scale import parse_scale_bar, parse_scale_distance, upright_and_scale
+    """Level and scale the model as ``ws sfm`` does, with the stage's upright flag, scale bars
+    and distances (:func:`workstation.photogrammetry.scale.level_and_scale_model`)."""
+    from workstation.photogrammetry.scale import level_and_scale_model, parse_scale_bar, parse_scale_distance
 
     bars = [parse_scale_bar(t) for t in stage.scale_bars] + [parse_scale_distance(t) for t in stage.scale_distances]
-    frame = upright_and_scale(result.reconstruction, upright=stage.upright, bars=bars, sigma_px=stage.sigma_px)
-    if frame.similarity is None:
-        return result.cloud, frame.summary
-    model = import_pycolmap().Reconstruction(str(workdir / "sparse" / "0"))
-    apply_similarity(model, frame.similarity)
-    write_model(model, workdir / "sparse" / "0")
-    return frame.apply_cloud(result.cloud), frame.summary
+    return level_and_scale_model(result, workdir, stage.upright, bars, stage.sigma_px)
 
 
 def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
