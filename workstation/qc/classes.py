@@ -155,6 +155,35 @@ class ClassParams:
                 raise InvalidInputError(f"must be zero or positive, got {v!r}", field=name)
 
 
+#: Cells per side of the blocks the ground surface is triangulated in, and of the margin of
+#: neighbouring cells each block is triangulated with (:func:`blocked_tin`).
+SURFACE_BLOCK, SURFACE_MARGIN = 512, 128
+
+
+def blocked_tin(du, dv, z, valid, block: int = SURFACE_BLOCK, margin: int = SURFACE_MARGIN) -> np.ndarray:
+    """:func:`workstation.raster.grid.tin_surface` computed block by block, each block with
+    ``margin`` cells of its neighbours, so that its memory (a Delaunay of the void rims, some
+    hundred bytes a cell) is bounded by the block, not by the survey. Equal to the whole-grid
+    surface wherever the triangles filling a void lie within the margin; a void wider than the
+    margin is filled from the rim points the block sees (it is only a reference height for the
+    class checks)."""
+    from workstation.raster.grid import tin_surface
+
+    R, C = z.shape
+    if R <= block + 2 * margin and C <= block + 2 * margin:
+        return tin_surface(du, dv, z, valid)
+    out = np.full((R, C), np.nan)
+    for r0 in range(0, R, block):
+        for c0 in range(0, C, block):
+            ra, rb, ca, cb = max(r0 - margin, 0), min(r0 + block + margin, R), max(c0 - margin, 0), min(c0 + block + margin, C)
+            win = (slice(ra, rb), slice(ca, cb))
+            if not valid[win].any():
+                continue
+            part = tin_surface(du[win], dv[win], z[win], valid[win])
+            out[r0:r0 + block, c0:c0 + block] = part[r0 - ra:r0 - ra + block, c0 - ca:c0 - ca + block]
+    return out
+
+
 def class_grid(bounds, units, params: ClassParams = ClassParams()) -> QCGrid:
     """The :class:`QCGrid` of ``params.cell_m`` metres (in CRS units) over ``bounds``
     (xmin, ymin, xmax, ymax) in CRS units; refuses a grid that would not fit in memory."""
@@ -280,13 +309,11 @@ class ClassPass1:
         TIN of the ground centroid of each cell (the centroid's height in the cells of the
         hull's rim that no triangle reaches), NaN outside the hull of the ground cells."""
         if self._surface is None:
-            from workstation.raster.grid import tin_surface
-
             shape, valid = self.grid.shape, self._g_n > 0
             c = np.maximum(self._g_n, 1)
             du, dv = (self._g_su / c).reshape(shape), (self._g_sv / c).reshape(shape)
             z = np.where(valid, self._g_sz / c, np.nan).reshape(shape)
-            tin = tin_surface(du.astype(np.float64), dv.astype(np.float64), z, valid.reshape(shape))
+            tin = blocked_tin(du.astype(np.float64), dv.astype(np.float64), z, valid.reshape(shape))
             self._surface = np.where(np.isnan(tin), z, tin)  # the hull's rim: the cell's centroid
         return self._surface
 
