@@ -7,10 +7,14 @@ from __future__ import annotations
 
 import json
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+sys.path.insert(0, str(Path(__file__).parents[1] / "registration"))
+from regutil import block_mesh  # noqa: E402
 
 from workstation.core.errors import InvalidInputError
 from workstation.io import read_cloud
@@ -44,15 +48,7 @@ def block_points(n: int, seed: int) -> np.ndarray:
     """``n`` points on a built-up block (ground 80 m x 60 m, six buildings, a tower), 3 mm noise."""
     import trimesh
 
-    T = trimesh.transformations.translation_matrix
-    parts = [trimesh.creation.box(extents=(80, 60, 0.2), transform=T((40, 30, -0.1)))]
-    for (x, y, lx, ly, h, yaw) in [(15, 12, 10, 7, 8, 0.0), (32, 10, 6, 12, 12, 0.3), (50, 14, 14, 6, 6, -0.2),
-                                   (20, 40, 8, 12, 15, 0.1), (45, 42, 10, 10, 9, 0.6), (62, 30, 6, 16, 5, 0.0)]:
-        M = trimesh.transformations.rotation_matrix(yaw, (0, 0, 1))
-        M[:3, 3] = (x, y, h / 2)
-        parts.append(trimesh.creation.box(extents=(lx, ly, h), transform=M))
-    parts.append(trimesh.creation.cylinder(radius=1.5, height=20, transform=T((36, 27, 10))))
-    pts, _ = trimesh.sample.sample_surface(trimesh.util.concatenate(parts), n, seed=seed)
+    pts, _ = trimesh.sample.sample_surface(block_mesh(), n, seed=seed)
     return pts + np.random.default_rng(seed).normal(0, 0.003, pts.shape)
 
 
