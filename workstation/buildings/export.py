@@ -1,4 +1,5 @@
-"""Exports of building models: CityJSON 2.0, GeoJSON footprints and roof faces, glTF (GLB).
+"""Exports of building models: CityJSON 2.0, GeoJSON footprints and roof faces, glTF (GLB),
+Wavefront OBJ (with an MTL of one material per semantic surface), and reading given footprints.
 
 CityJSON follows the 2.0 specification (https://www.cityjson.org/specs/2.0.1/): integer
 vertices with a ``transform``, one ``Building`` per model with a LoD1.2 ``Solid`` and a LoD2.2
@@ -9,8 +10,6 @@ and consistently oriented: each directed edge used once and its reverse once).
 """
 
 from __future__ import annotations
-
-import json
 
 import numpy as np
 
@@ -96,7 +95,7 @@ def cityjson_document(models: list, solar: list, crs=None) -> dict:
     """CityJSON 2.0 document of building models (LoD1.2 and LoD2.2 per building)."""
     allv = np.vstack([s.vertices for m in models for s in [m.lod1, *m.lod2]])
     lo, hi = allv.min(axis=0), allv.max(axis=0)
-    translate = np.floor(lo)
+    translate = model_origin(models)
     verts = _Vertices(translate)
     objects = {}
     for m, sol in zip(models, solar):
@@ -247,26 +246,93 @@ def glb_scene(models: list):
     return scene
 
 
-def read_footprints(path) -> list:
-    """Outer rings (list of (k, 2) arrays) of the Polygon / MultiPolygon features of a GeoJSON file."""
+def read_footprints(path, cloud_crs=None) -> list:
+    """Outer rings (list of (k, 2) arrays, closing vertex dropped) of the polygons of a GeoJSON
+    (.geojson, .json) or GeoPackage (.gpkg, its first feature table) file, read by
+    :func:`workstation.ops.vector.read_polygons`. When the file and ``cloud_crs`` both name a
+    CRS they must be the same one."""
     from pathlib import Path
 
+    from workstation.ops.vector import read_polygons
+
     p = Path(path)
-    if p.suffix.lower() not in (".geojson", ".json"):
-        raise InvalidInputError("footprints must be GeoJSON (.geojson or .json)", "convert with ogr2ogr -f GeoJSON", path=p)
-    try:
-        doc = json.loads(p.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise InvalidInputError(f"cannot read GeoJSON: {exc}", path=p) from None
-    feats = doc.get("features", [doc] if doc.get("type") == "Feature" else [])
+    if p.suffix.lower() not in (".geojson", ".json", ".gpkg"):
+        raise InvalidInputError("footprints must be GeoJSON (.geojson, .json) or GeoPackage (.gpkg)",
+                                "convert with ogr2ogr -f GPKG", path=p)
+    polys = read_polygons(p)
+    if polys.crs and cloud_crs and not _same_crs(polys.crs, cloud_crs):
+        raise InvalidInputError(f"footprints are in {polys.crs} but the cloud is in {cloud_crs}",
+                                f"reproject them, e.g. ogr2ogr -t_srs {cloud_crs}", path=p)
     rings = []
-    for f in feats:
-        g = (f or {}).get("geometry") or {}
-        polys = [g.get("coordinates")] if g.get("type") == "Polygon" else g.get("coordinates", []) if g.get("type") == "MultiPolygon" else []
-        for poly in polys:
-            if poly and len(poly[0]) >= 4:
-                r = np.asarray(poly[0], float)[:, :2]
-                rings.append(r[:-1] if np.allclose(r[0], r[-1]) else r)
+    for poly in polys.polygons:
+        r = np.asarray(poly.exterior, float)[:, :2]
+        r = r[:-1] if len(r) > 1 and np.allclose(r[0], r[-1]) else r
+        if len(r) >= 3:
+            rings.append(r)
     if not rings:
-        raise InvalidInputError("no Polygon or MultiPolygon features", path=p)
+        raise InvalidInputError("no polygon with three or more vertices", path=p)
     return rings
+
+
+def _same_crs(a, b) -> bool:
+    """Whether two CRS descriptions name the same CRS (pyproj when it can parse both)."""
+    try:
+        from pyproj import CRS
+
+        return CRS.from_user_input(str(a)) == CRS.from_user_input(str(b))
+    except Exception:
+        return str(a).upper() == str(b).upper()
+
+
+MTL = {"RoofSurface": (0.78, 0.27, 0.24), "WallSurface": (0.92, 0.90, 0.86), "GroundSurface": (0.35, 0.35, 0.35)}
+
+
+def model_origin(models: list) -> np.ndarray:
+    """Local origin (m) shared by the CityJSON ``transform.translate`` and the OBJ files: the
+    floor of the lowest corner of every model's vertices."""
+    return np.floor(np.vstack([s.vertices for m in models for s in [m.lod1, *m.lod2]]).min(axis=0))
+
+
+def mtl_text() -> str:
+    """Wavefront material library: one diffuse material per semantic surface type."""
+    out = ["# ws buildings: materials by CityJSON semantic surface"]
+    for name, (r, g, b) in MTL.items():
+        out += [f"newmtl {name}", f"Kd {r:.3f} {g:.3f} {b:.3f}", "Ka 0.000 0.000 0.000", "illum 1", ""]
+    return "\n".join(out)
+
+
+def obj_text(models: list, lod: str = "2.2", mtl_name: str = "buildings.mtl", crs=None) -> str:
+    """Wavefront OBJ of the LoD2.2 (``lod='2.2'``) or LoD1.2 (``'1.2'``) models: one object
+    ``building_<id>`` per building (``building_<id>_part<k>`` per LoD2.2 part), triangles
+    (as in the glTF) grouped by ``usemtl RoofSurface|WallSurface|GroundSurface``, vertices shared
+    within each solid so every shell stays closed. Vertices are in a local frame to 1 mm: add the
+    origin written in the ``# origin`` comment (:func:`model_origin`) for absolute coordinates."""
+    import io
+
+    from .models import triangulate
+
+    if lod not in ("1.2", "2.2"):
+        raise InvalidInputError(f"OBJ level of detail must be '1.2' or '2.2', not {lod!r}", field="lod")
+    origin = model_origin(models)
+    buf = io.StringIO()
+    buf.write(f"# ws buildings LoD{lod}\n# origin {origin[0]:.3f} {origin[1]:.3f} {origin[2]:.3f}\n")
+    if crs:
+        buf.write(f"# crs {crs}\n")
+    buf.write(f"mtllib {mtl_name}\n")
+    base = 1
+    for m in models:
+        solids = [m.lod1] if lod == "1.2" else m.lod2
+        for k, s in enumerate(solids):
+            tris, owner = triangulate(s)
+            sem = np.array(s.semantics, dtype=object)[owner]
+            order = np.argsort(sem.astype(str), kind="stable")
+            tris, sem = tris[order] + base, sem[order]
+            name = f"building_{m.id}" if len(solids) == 1 else f"building_{m.id}_part{k}"
+            buf.write(f"o {name}\n")
+            np.savetxt(buf, s.vertices - origin, fmt="v %.3f %.3f %.3f")
+            starts = np.flatnonzero(np.r_[True, sem[1:] != sem[:-1]])
+            for a, b in zip(starts, [*starts[1:], len(sem)]):
+                buf.write(f"usemtl {sem[a]}\n")
+                np.savetxt(buf, tris[a:b], fmt="f %d %d %d")
+            base += len(s.vertices)
+    return buf.getvalue()

@@ -36,6 +36,8 @@ class BuildingsParams:
         Cell of the DTM gridded from the ground points (m).
     dsm_cell : float or None
         Cell of the DSM used for shading (m); None uses the nominal point spacing (at least 0.5 m).
+    solar_map_cell : float or None
+        Cell of the roof solar map (m, :func:`solar_map`); None skips the map.
     """
 
     building_class: int = int(ASPRSClass.BUILDING)
@@ -46,6 +48,7 @@ class BuildingsParams:
     solar: SolarParams | None = field(default_factory=SolarParams)
     dtm_cell: float = 1.0
     dsm_cell: float | None = None
+    solar_map_cell: float | None = 0.5
 
 
 @dataclass(frozen=True)
@@ -67,6 +70,8 @@ class BuildingsResult:
         How footprints and points agree: ``building_points_outside`` (share of building points
         in no footprint, 0-1) and ``footprints_without_points`` (count), given footprints
         checked against the cloud.
+    solar_map : (array (rows, cols) float32, transform tuple) or None
+        Roof solar map of :func:`solar_map` (NaN off the roofs), None when solar or the map is skipped.
     """
 
     models: list
@@ -75,6 +80,7 @@ class BuildingsResult:
     timings: dict
     spacing: float
     coverage: dict = field(default_factory=dict)
+    solar_map: tuple | None = None
 
 
 def ground_dtm(xyz: np.ndarray, cell: float):
@@ -146,8 +152,13 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
                     100 * coverage["building_points_outside"])
     models = _models(bxyz, owner, fps, xyz, cls, params, spacing, t)
     solar = _solar(models, xyz, params, spacing, t)
+    smap = None
+    if params.solar is not None and params.solar_map_cell and any(m.roofs for m in models):
+        t2 = time.perf_counter()
+        smap = solar_map(models, xyz, params.solar, spacing, params.solar_map_cell, params.dsm_cell)
+        t["solar_map_s"] = time.perf_counter() - t2
     t["total_s"] = time.perf_counter() - t0
-    return BuildingsResult(models, solar, source, t, spacing, coverage)
+    return BuildingsResult(models, solar, source, t, spacing, coverage, smap)
 
 
 def _models(bxyz, owner, fps, xyz, cls, params, spacing, t):
@@ -211,6 +222,8 @@ def _face_samples(faces, cell):
     itself: (points (s, 3), face index (s,))."""
     import shapely
 
+    from .solar import self_shading_lift
+
     pts, owner = [], []
     for i, f in enumerate(faces):
         poly = shapely.Polygon(f.polygon)
@@ -222,7 +235,32 @@ def _face_samples(faces, cell):
         if not len(xy):
             rp = poly.representative_point()
             xy = np.array([[rp.x, rp.y]])
-        lift = np.sqrt(2) * cell * np.hypot(f.normal[0], f.normal[1]) / max(f.normal[2], 1e-3) + 0.05
-        pts.append(np.column_stack([xy, f.z(xy) + lift]))
+        pts.append(np.column_stack([xy, f.z(xy) + self_shading_lift(f.normal, cell)]))
         owner.append(np.full(len(xy), i))
     return np.vstack(pts), np.concatenate(owner)
+
+
+def solar_map(models: list, xyz: np.ndarray, solar: SolarParams, spacing: float, cell: float = 0.5,
+              dsm_cell: float | None = None):
+    """Raster of the annual clear-sky irradiation (kWh/m^2/year) of every roof cell seen from
+    above, each cell shaded by its own DSM horizon (the per-face computation of
+    :func:`reconstruct_buildings` run at each cell centre), NaN off the roofs.
+
+    Returns (array (rows, cols) float32, transform (a, b, c, d, e, f) of its upper-left corner)."""
+    from .solar import build_dsm, horizon_angles, plane_irradiation, roof_cells, self_shading_lift
+
+    if not cell > 0:
+        raise InvalidInputError(f"solar map cell must be positive, got {cell}", field="solar_cell")
+    faces = [f for m in models for f in m.roofs]
+    if not faces:
+        raise StageError("buildings", "no roof faces for the solar map")
+    dcell = dsm_cell or max(spacing, 0.5)
+    rows, cols, pts, owner, shape, (x0, y1) = roof_cells([f.polygon for f in faces], [f.z for f in faces], cell)
+    normals = np.array([f.normal for f in faces])
+    lift = np.array([self_shading_lift(n, dcell) for n in normals])
+    pts = pts + np.column_stack([np.zeros((len(pts), 2)), lift[owner]])
+    dsm, origin = build_dsm(np.asarray(xyz, float), dcell)
+    hor = horizon_angles(dsm, origin, dcell, pts, solar.sectors, solar.max_distance)
+    out = np.full(shape, np.nan, np.float32)
+    out[rows, cols] = plane_irradiation(normals[owner], hor, solar)
+    return out, (cell, 0.0, x0, 0.0, -cell, y1)

@@ -1,5 +1,6 @@
-"""`ws buildings IN -o OUT_DIR [--footprints GEOJSON]`: footprints, roof planes, LoD1.2/LoD2.2
-models (CityJSON, glTF) and rooftop solar potential of the buildings of a classified cloud."""
+"""`ws buildings IN -o OUT_DIR [--footprints GEOJSON|GPKG]`: footprints, roof planes, LoD1.2/LoD2.2
+models (CityJSON, glTF, OBJ) and rooftop solar potential (per face, and a roof map GeoTIFF) of
+the buildings of a classified cloud."""
 
 from __future__ import annotations
 
@@ -12,15 +13,20 @@ from .options import emit_json, json_option, overwrite_option, read_options
 from .options import FiniteFloatRange, positive_float
 from .options import bound, param_group
 
-OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildings.glb")
+OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildings.glb", "buildings_lod22.obj",
+           "buildings_lod12.obj", "buildings.mtl")
+SOLAR_MAP = "solar_roofs.tif"
+NODATA = -9999.0
 
 
 @click.command()
 @click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
 @click.option("-o", "--output", "out_dir", required=True, type=click.Path(file_okay=False),
-              help="Output folder (footprints.geojson, roofs.geojson, buildings.city.json, buildings.glb).")
+              help="Output folder (footprints.geojson, roofs.geojson, buildings.city.json, buildings.glb, "
+                   "buildings_lod22.obj, buildings_lod12.obj with buildings.mtl, solar_roofs.tif).")
 @click.option("--footprints", "footprints_path", default=None, type=click.Path(dir_okay=False, exists=True),
-              help="Building outlines (GeoJSON polygons, in the cloud's CRS) used instead of tracing them.")
+              help="Building outlines (polygons of a GeoJSON or GeoPackage file, in the cloud's CRS) used "
+                   "instead of tracing them.")
 @click.option("--classify", "run_classifier", is_flag=True,
               help="Classify the cloud first with the shipped point classifier (else class 6 is taken as given).")
 @param_group(
@@ -39,14 +45,20 @@ OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildi
     bound(SolarParams, "linke_turbidity", "--linke-turbidity", type=positive_float, show_default=True,
           help="Linke turbidity factor of the clear-sky model (ESRA); 3-4 is typical in central Europe."),
 )
-@click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null).")
+@param_group(
+    "maps",
+    bound(BuildingsParams, "solar_map_cell", "--solar-cell", show_default=True, type=positive_float,
+          help="Cell (m) of the roof solar map solar_roofs.tif (kWh/m2/year per cell, each shaded by the DSM)."),
+)
+@click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null, no solar_roofs.tif).")
 @overwrite_option
 @read_options
 @json_option
-def buildings(src, out_dir, footprints_path, run_classifier, classes, site, no_solar, overwrite, read_opts, as_json):
+def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps, no_solar, overwrite, read_opts, as_json):
     """Model the buildings of IN: roof planes (region growing + RANSAC), footprints (traced and
-    regularised, or --footprints), LoD1.2 blocks and LoD2.2 roofs (closed solids), and the
-    clear-sky annual irradiation of every roof face shaded by the DSM."""
+    regularised, or --footprints), LoD1.2 blocks and LoD2.2 roofs (closed solids, as CityJSON,
+    glTF and OBJ), and the clear-sky annual irradiation of every roof face shaded by the DSM,
+    also mapped per roof cell in solar_roofs.tif."""
     import time
     from pathlib import Path
 
@@ -58,15 +70,15 @@ def buildings(src, out_dir, footprints_path, run_classifier, classes, site, no_s
 
     t0 = time.perf_counter()
     out = Path(out_dir)
-    paths = [out / name for name in OUTPUTS]
+    paths = [out / name for name in OUTPUTS] + ([] if no_solar else [out / SOLAR_MAP])
     if out.is_dir():
         check_outputs(paths, overwrite, inputs=[src])
+    cloud = read_cloud(src, **read_opts)
     footprints = None
     if footprints_path:
         from workstation.buildings.export import read_footprints
 
-        footprints = read_footprints(footprints_path)
-    cloud = read_cloud(src, **read_opts)
+        footprints = read_footprints(footprints_path, cloud.crs)
     if run_classifier:
         from workstation.ml.classifier import PointClassifier
 
@@ -77,7 +89,7 @@ def buildings(src, out_dir, footprints_path, run_classifier, classes, site, no_s
 
         raise InvalidInputError("has no classification", "pass --classify or classify it with ws classify", path=src)
     solar = None if no_solar else _solar_params(cloud, site)
-    params = BuildingsParams(**classes, solar=solar)
+    params = BuildingsParams(**classes, **maps, solar=solar)
     with doing(f"modelling the buildings of {src}"):
         result = reconstruct_buildings(cloud.xyz, np.asarray(cloud.attrs["classification"]), params, footprints)
     with work_folder(out):
@@ -119,7 +131,8 @@ def _site_from_crs(cloud):
 def _write(result, paths, crs, overwrite, src):
     import json
 
-    from workstation.buildings.export import cityjson_document, footprints_geojson, glb_scene, roofs_geojson
+    from workstation.buildings.export import (cityjson_document, footprints_geojson, glb_scene, mtl_text, obj_text,
+                                              roofs_geojson)
     from workstation.io import atomic_path
 
     docs = [footprints_geojson(result.models, crs), roofs_geojson(result.models, result.solar_kwh_m2_year, crs),
@@ -129,6 +142,18 @@ def _write(result, paths, crs, overwrite, src):
             tmp.write_text(json.dumps(doc, separators=(",", ":"), allow_nan=False), encoding="utf-8")
     with atomic_path(paths[3], overwrite, inputs=[src]) as tmp:
         tmp.write_bytes(glb_scene(result.models).export(file_type="glb"))
+    for lod, path in (("2.2", paths[4]), ("1.2", paths[5])):
+        with atomic_path(path, overwrite, inputs=[src]) as tmp:
+            tmp.write_text(obj_text(result.models, lod, paths[6].name, crs), encoding="utf-8")
+    with atomic_path(paths[6], overwrite, inputs=[src]) as tmp:
+        tmp.write_text(mtl_text(), encoding="utf-8")
+    if result.solar_map is not None:
+        from workstation.core.products import Raster
+        from workstation.io.geotiff import write_raster
+
+        arr, transform = result.solar_map
+        write_raster(Raster(arr, transform, crs, NODATA, {"kind": "solar_roofs", "units": "kWh/m2/year"}),
+                     paths[7], overwrite=overwrite, inputs=[src])
 
 
 def _report(src, out, result, solar, seconds, as_json, paths):
@@ -145,7 +170,11 @@ def _report(src, out, result, solar, seconds, as_json, paths):
                   f"footprints from {result.footprint_source}"])
     if as_json:
         sol = np.concatenate(result.solar_kwh_m2_year) if faces else np.zeros(0)
-        emit_json({"input": src, "output": str(out), "files": [str(p) for p in paths],
+        from workstation.buildings.export import model_origin
+
+        files = [str(p) for p in paths if p.name != SOLAR_MAP or result.solar_map is not None]
+        emit_json({"input": src, "output": str(out), "files": files,
+                   "local_origin": model_origin(result.models).tolist(),
                    "buildings": len(result.models), "roof_faces": faces, "roof_types": kinds,
                    "footprint_source": result.footprint_source, "point_spacing_m": result.spacing,
                    "coverage": result.coverage,

@@ -46,7 +46,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "qc": ("workstation.cli.qc:qc", "Check a LiDAR delivery against USGS QL0-QL3 or ASPRS classes: format, density, voids, swath DZ, NVA/VVA."),
     "publish": ("workstation.cli.publish:publish", "Publish products as a static web viewer (COPC streamed by level of detail, maps, cameras); --serve."),
     "strip-adjust": ("workstation.cli.strip_adjust:strip_adjust", "Boresight calibration and strip adjustment of overlapping ALS flight lines."),
-    "buildings": ("workstation.cli.buildings:buildings", "Roof planes, footprints, LoD1.2/LoD2.2 models (CityJSON, glTF) and rooftop solar potential."),
+    "buildings": ("workstation.cli.buildings:buildings", "Roof planes, footprints, LoD1.2/LoD2.2 models (CityJSON, glTF, OBJ) and rooftop solar potential (per face and a roof map)."),
     "dense": ("workstation.cli.dense:dense", "Dense cloud from an SfM workdir: depth maps (CPU semi-global matching or plane sweep, CUDA PatchMatch) and fusion."),
 }
 
