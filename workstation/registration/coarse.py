@@ -45,6 +45,10 @@ class CoarseParams:
         Number of best-connected matches the clique search starts from.
     max_matches : int
         Cap on the matches of the clique graph (memory is ``max_matches**2`` bytes).
+    clique_hypotheses : int
+        Distinct clique transforms (best first) returned in ``meta["hypotheses"]`` for the
+        ``auto`` method to verify; a repetitive scene (parallel walls, flat ground) can give a
+        wrong pose more consistent matches than the right one.
     """
 
     ransac_iterations: int = 100_000
@@ -52,6 +56,7 @@ class CoarseParams:
     seed: int = 0
     clique_seeds: int = 40
     max_matches: int = 4000
+    clique_hypotheses: int = 24
 
 
 def _result(T, fitness, rmse, n_corr, method, **meta) -> RegistrationResult:
@@ -151,7 +156,7 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
     del ds, dt
     np.fill_diagonal(A, False)
     deg = A.sum(axis=1)
-    best = (-1, np.eye(4), 0)
+    found = []  # (score, T, clique size) of every seed's clique
     for seed in np.argsort(-deg)[: params.clique_seeds]:
         if deg[seed] < 2:
             break
@@ -168,19 +173,40 @@ def clique_registration(src: Prepared, tgt: Prepared, params: CoarseParams = Coa
         R, t, sc = umeyama(cs[clique], ct[clique], with_scale=with_scale)
         T = make_transform(R, t, sc)
         score = int((np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d).sum())
-        if score > best[0]:
-            best = (score, T, len(clique))
-    score, T, size = best
-    if score < 3:
+        found.append((score, T, len(clique)))
+    found = [f for f in found if f[0] >= 3]
+    if not found:
         return _result(np.eye(4), 0.0, float("nan"), 0, "clique", matches=int(m))
+    fits = _distinct([_refit(cs, ct, f[1], d, with_scale) + (f[2],) for f in found], d)
+    fits = fits[: max(1, params.clique_hypotheses)]
+    T, rmse, n_inl, sc, size = fits[0]
+    fit = _point_fitness(ps, pt, T, d)
+    log.info("clique: %d mutual matches, clique %d, %d inlier matches, fitness %.3f", m, size, n_inl, fit)
+    out = _result(T, fit, rmse, n_inl, "clique", matches=int(m), clique=int(size),
+                  hypotheses=[f[0] for f in fits], hypothesis_matches=[f[2] for f in fits])
+    return replace(out, scale=float(sc)) if with_scale else out
+
+
+def _refit(cs: np.ndarray, ct: np.ndarray, T: np.ndarray, d: float, with_scale: bool):
+    """Umeyama refit of ``T`` on the matches it explains within ``d``: (transform, RMSE, inlier count, scale)."""
     inl = np.linalg.norm(apply_transform(T, cs) - ct, axis=1) < d
     R, t, sc = umeyama(cs[inl], ct[inl], with_scale=with_scale)
     T = make_transform(R, t, sc)
     res = np.linalg.norm(apply_transform(T, cs[inl]) - ct[inl], axis=1)
-    fit = _point_fitness(ps, pt, T, d)
-    log.info("clique: %d mutual matches, clique %d, %d inlier matches, fitness %.3f", m, size, int(inl.sum()), fit)
-    out = _result(T, fit, float(np.sqrt(np.mean(res**2))), int(inl.sum()), "clique", matches=int(m), clique=int(size))
-    return replace(out, scale=float(sc)) if with_scale else out
+    return T, float(np.sqrt(np.mean(res**2))), int(inl.sum()), sc
+
+
+def _distinct(fits: list, d: float, angle_deg: float = 5.0) -> list:
+    """The ``(T, rmse, inliers, scale, size)`` fits by decreasing inlier count, dropping each
+    one within ``angle_deg`` of rotation and ``3 * d`` of translation of a better one kept."""
+    kept = []
+    for f in sorted(fits, key=lambda f: -f[2]):
+        R = f[0][:3, :3] / f[3]
+        same = [np.degrees(np.arccos(np.clip((np.trace(R @ k[0][:3, :3].T / k[3]) - 1) / 2, -1, 1))) < angle_deg
+                and np.linalg.norm(f[0][:3, 3] - k[0][:3, 3]) < 3.0 * d for k in kept]
+        if not any(same):
+            kept.append(f)
+    return kept
 
 
 def _point_fitness(ps: np.ndarray, pt: np.ndarray, T: np.ndarray, d: float) -> float:

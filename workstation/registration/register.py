@@ -6,15 +6,20 @@ coarse alignment from FPFH features unless an initial transform is given, refine
 ICP, checks the result and returns a :class:`RegistrationResult` whose transform maps source
 coordinates into the target's frame (world units, origin already put back).
 
-``method="auto"`` runs two global estimators that fail differently, the max-clique estimator
-and FPFH + RANSAC (and Fast Global Registration when both look poor), scores each candidate by
-a short point-to-plane ICP on the downsampled clouds and keeps the best. This is the
-"several hypotheses verified by ICP" strategy recommended when single RANSAC runs are
+``method="auto"`` runs global estimators that fail differently, the max-clique estimator
+(its distinct cliques, not only the best) and FPFH + RANSAC (and Fast Global Registration when
+all look poor), refines each hypothesis by a short point-to-plane ICP on the downsampled clouds
+and keeps the one whose surfaces agree best in both directions (:func:`consistency`). This is
+the "several hypotheses verified by ICP" strategy recommended when single RANSAC runs are
 unreliable (e.g. Choi, Zhou & Koltun 2015, "Robust reconstruction of indoor scenes", CVPR).
+Scoring by overlap alone is not enough on scenes dominated by flat ground: a pose turned by
+150-180 degrees lays one ground onto the other over a larger area than the right pose of a
+partly overlapping pair. When a distinct runner-up scores nearly as well, ``meta["ambiguous"]``
+is set and a warning logged.
 
-Known limit: scenes made only of flat boxes (walls, flat roofs, flat ground) give FPFH too few
-distinctive matches; a wrong alignment there can pass the overlap and plane checks. Give an
-initial transform (``init``) or point pairs for such scenes.
+Known limit: scenes made only of flat boxes (walls, flat roofs, flat ground) give FPFH few
+distinctive matches; when no hypothesis is right, a wrong alignment can still pass the overlap
+and plane checks. Give an initial transform (``init``) or point pairs for such scenes.
 """
 
 from __future__ import annotations
@@ -39,6 +44,9 @@ log = get_logger(__name__)
 
 METHODS = ("auto", "fpfh_ransac", "fgr", "clique", "icp", "similarity")
 STAGE = "register"
+#: Consistency (:func:`consistency`) difference under which two distinct coarse poses are
+#: reported as ambiguous.
+AMBIGUOUS_MARGIN = 0.02
 
 
 @dataclass(frozen=True)
@@ -174,7 +182,9 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     -------
     RegistrationResult
         ``transform`` maps source coordinates into the target frame; ``meta`` holds the voxel
-        size, the coarse method chosen, candidate scores and timings (seconds).
+        size, the coarse method chosen, candidate scores (``coarse_candidates``: verified
+        fitness, ``coarse_consistency``), ``ambiguous`` when two distinct coarse poses scored
+        alike, and timings (seconds).
 
     Raises
     ------
@@ -340,12 +350,20 @@ def _with_information(res: RegistrationResult, src, tgt, d: float) -> Registrati
 
 
 def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, dict]:
-    """Coarse transform (local frame) and what was tried."""
+    """Coarse transform (local frame) and what was tried.
+
+    ``auto``: every hypothesis (the clique estimator's distinct cliques, then RANSAC and FGR
+    while the best looks poor) is refined by a short ICP and scored by :func:`consistency`,
+    which, unlike the overlap alone, penalises surfaces of either cloud landing near the other
+    but off its surface. The best is kept; ``meta["ambiguous"]`` is set when a distinct
+    runner-up scores within ``AMBIGUOUS_MARGIN`` of it. Only hypotheses whose verified fitness
+    reaches half the best one's (and ``params.min_fitness``) are ranked."""
     if method != "auto":
         r = COARSE_METHODS[method](ps, pt, params.coarse)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
     quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
-    cands = []
+    voxel = ps.radii.voxel
+    cands = []  # (name, fitness, transform, score)
     for name in ("clique", "fpfh_ransac", "fgr"):
         # a hypothesis explaining this share of the downsampled source is accepted as is
         if cands and max(c[1] for c in cands) >= max(0.4 if name == "fpfh_ransac" else 0.5, params.min_fitness):
@@ -355,13 +373,63 @@ def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, di
         except RuntimeError as e:  # Open3D raises RuntimeError on degenerate input
             log.info("coarse %s failed: %s", name, e)
             continue
-        q = refine(ps.down, pt.down, ps.radii.voxel, r.transform, quick)
-        cands.append((name, float(q.fitness), q.transform))
-        log.info("coarse %s: verified fitness %.3f", name, q.fitness)
+        for k, T in enumerate(r.meta.get("hypotheses", [r.transform])):
+            q = refine(ps.down, pt.down, voxel, T, quick)
+            score = consistency(ps.down, pt.down, q.transform, voxel)
+            cands.append((name if k == 0 else f"{name}_{k}", float(q.fitness), q.transform, score))
+            log.info("coarse %s hypothesis %d: verified fitness %.3f, consistency %.3f", name, k, q.fitness, score)
     if not cands:
         raise StageError(STAGE, "no coarse alignment could be computed", "check that both clouds overlap")
-    best = max(cands, key=lambda c: c[1])
-    return best[2], {"coarse_method": best[0], "coarse_candidates": {c[0]: c[1] for c in cands}}
+    # a pose barely touching the other cloud has neither agreement nor conflict: rank only the
+    # hypotheses that explain at least half the best overlap (and the accepted minimum)
+    least = min(max(c[1] for c in cands), max(params.min_fitness, 0.5 * max(c[1] for c in cands)))
+    order = sorted((c for c in cands if c[1] >= least), key=lambda c: -c[3])
+    best = order[0]
+    meta = {"coarse_method": best[0], "coarse_candidates": {c[0]: c[1] for c in cands},
+            "coarse_consistency": {c[0]: round(c[3], 4) for c in cands}}
+    rival = next((c for c in order[1:] if _distinct_pose(c[2], best[2], voxel)), None)
+    if rival is not None and rival[3] >= best[3] - AMBIGUOUS_MARGIN:
+        meta["ambiguous"] = {"runner_up": rival[0], "score": round(rival[3], 4), "best_score": round(best[3], 4)}
+        log.warning("ambiguous coarse alignment: %s scores %.3f, %s %.3f (two distinct poses fit alike)",
+                    best[0], best[3], rival[0], rival[3])
+    return best[2], meta
+
+
+def _distinct_pose(A: np.ndarray, B: np.ndarray, voxel: float) -> bool:
+    """Whether two transforms differ by more than 2 degrees or 2 voxels."""
+    R = A[:3, :3] @ B[:3, :3].T
+    angle = np.degrees(np.arccos(np.clip((np.trace(R) - 1) / 2, -1, 1)))
+    return bool(angle > 2.0 or np.linalg.norm(A[:3, 3] - B[:3, 3]) > 2.0 * voxel)
+
+
+def consistency(src, tgt, T: np.ndarray, voxel: float) -> float:
+    """Agreement of two clouds (Open3D, with normals) under ``T``, averaged over both directions.
+
+    In each direction a point *agrees* when a point of the other cloud lies within
+    ``1.5 * voxel`` and it lies within ``0.1 * voxel`` of that point's tangent plane; it
+    *conflicts* when the other cloud comes within ``5 * voxel`` but it does not agree (a wall
+    landing beside a wall or on open ground: surfaces that should coincide do not). The score
+    is (agreeing - conflicting) / points. Overlap alone favours a wrong pose that lays two
+    large flat grounds onto each other over a right one with a smaller true overlap; the
+    conflicts, from the buildings that then stand where the other cloud has none, do not."""
+    from scipy.spatial import cKDTree
+
+    from .transforms import apply_transform
+
+    a = apply_transform(T, np.asarray(src.points))
+    b = np.asarray(tgt.points)
+    na = np.asarray(src.normals) @ T[:3, :3].T
+    nb = np.asarray(tgt.normals)
+    scores = []
+    for x, y, ny in ((a, b, nb), (b, a, na)):
+        dist, j = cKDTree(y).query(x, distance_upper_bound=5.0 * voxel, workers=-1)
+        near = dist < 1.5 * voxel
+        jj = np.minimum(j, y.shape[0] - 1)
+        on_plane = np.abs(np.einsum("ij,ij->i", ny[jj], x - y[jj])) < 0.1 * voxel
+        agree = near & on_plane
+        conflict = np.isfinite(dist) & ~agree
+        scores.append((agree.sum() - conflict.sum()) / max(x.shape[0], 1))
+    return float(np.mean(scores))
 
 
 def check_result(res: RegistrationResult, voxel: float, params: RegisterParams) -> None:
