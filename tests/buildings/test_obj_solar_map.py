@@ -165,31 +165,10 @@ def test_cli_writes_obj_and_solar_map(tmp_path, capsys):
 
 
 def _gpkg(path, rings, srs_id):
-    """A minimal GeoPackage (the required tables, one polygon layer) as GDAL writes them:
-    geometry blobs with the 'GP' header and an xy envelope before little-endian WKB."""
-    import sqlite3
-    import struct
+    """Footprint rings (k, 2) as a GeoPackage layer 'houses' (each ring closed)."""
+    from gpkg_synth import write_gpkg
 
-    con = sqlite3.connect(path)
-    con.executescript("""
-        CREATE TABLE gpkg_spatial_ref_sys (srs_name TEXT, srs_id INTEGER PRIMARY KEY, organization TEXT,
-            organization_coordsys_id INTEGER, definition TEXT, description TEXT);
-        CREATE TABLE gpkg_contents (table_name TEXT PRIMARY KEY, data_type TEXT, identifier TEXT, srs_id INTEGER);
-        CREATE TABLE gpkg_geometry_columns (table_name TEXT, column_name TEXT, geometry_type_name TEXT,
-            srs_id INTEGER, z INTEGER, m INTEGER);
-        CREATE TABLE houses (fid INTEGER PRIMARY KEY, geom BLOB);""")
-    con.execute("INSERT INTO gpkg_spatial_ref_sys VALUES ('utm', ?, 'EPSG', ?, '', '')", (srs_id, srs_id))
-    con.execute("INSERT INTO gpkg_contents VALUES ('houses', 'features', 'houses', ?)", (srs_id,))
-    con.execute("INSERT INTO gpkg_geometry_columns VALUES ('houses', 'geom', 'POLYGON', ?, 0, 0)", (srs_id,))
-    for r in rings:
-        r = np.vstack([r, r[:1]])
-        header = b"GP" + bytes([0, 0b011]) + struct.pack("<i", srs_id) + struct.pack(
-            "<4d", r[:, 0].min(), r[:, 0].max(), r[:, 1].min(), r[:, 1].max())
-        wkb = struct.pack("<BII", 1, 3, 1) + struct.pack("<I", len(r)) + np.asarray(r, "<f8").tobytes()
-        con.execute("INSERT INTO houses (geom) VALUES (?)", (header + wkb,))
-    con.commit()
-    con.close()
-    return path
+    return write_gpkg(path, [[np.vstack([r, r[:1]])] for r in rings], srs_id, layer="houses")
 
 
 def test_cli_uses_footprints_from_a_geopackage_and_checks_its_crs(tmp_path, capsys):

@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import json
-import sqlite3
-import struct
 
 import numpy as np
 import pytest
@@ -16,6 +14,8 @@ from workstation.io import read_cloud, write_cloud
 from workstation.ops.crop import CropParams, crop, crop_mask, parse_bounds
 from workstation.ops.stream import stream_select
 from workstation.ops.vector import read_polygons
+
+from gpkg_synth import write_gpkg  # noqa: E402 (tests/ is on the path, as for copc_synth)
 
 SQUARE = [[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]
 HOLE = [[4, 4], [6, 4], [6, 6], [4, 6], [4, 4]]
@@ -36,36 +36,6 @@ def _geojson(path, rings_list, crs=None):
     if crs:
         doc["crs"] = {"type": "name", "properties": {"name": crs}}
     path.write_text(json.dumps(doc))
-    return path
-
-
-def _wkb_polygon(rings) -> bytes:
-    out = struct.pack("<BII", 1, 3, len(rings))
-    for r in rings:
-        out += struct.pack("<I", len(r)) + np.asarray(r, "<f8").tobytes()
-    return out
-
-
-def _gpkg(path, polygons, srs_id=32632):
-    """A minimal GeoPackage: the three required tables and one polygon layer 'zones'."""
-    con = sqlite3.connect(path)
-    con.executescript("""
-        CREATE TABLE gpkg_spatial_ref_sys (srs_name TEXT, srs_id INTEGER PRIMARY KEY, organization TEXT,
-            organization_coordsys_id INTEGER, definition TEXT, description TEXT);
-        CREATE TABLE gpkg_contents (table_name TEXT PRIMARY KEY, data_type TEXT, identifier TEXT, srs_id INTEGER);
-        CREATE TABLE gpkg_geometry_columns (table_name TEXT, column_name TEXT, geometry_type_name TEXT,
-            srs_id INTEGER, z INTEGER, m INTEGER);
-        CREATE TABLE zones (fid INTEGER PRIMARY KEY, geom BLOB);""")
-    con.execute("INSERT INTO gpkg_spatial_ref_sys VALUES ('utm', ?, 'EPSG', ?, '', '')", (srs_id, srs_id))
-    con.execute("INSERT INTO gpkg_contents VALUES ('zones', 'features', 'zones', ?)", (srs_id,))
-    con.execute("INSERT INTO gpkg_geometry_columns VALUES ('zones', 'geom', 'POLYGON', ?, 0, 0)", (srs_id,))
-    for rings in polygons:  # header: GP, version 0, flags (little endian, envelope xy = 1), srs id, envelope
-        env = np.asarray(rings[0], float)
-        header = b"GP" + bytes([0, 0b011]) + struct.pack("<i", srs_id) + struct.pack(
-            "<4d", env[:, 0].min(), env[:, 0].max(), env[:, 1].min(), env[:, 1].max())
-        con.execute("INSERT INTO zones (geom) VALUES (?)", (header + _wkb_polygon(rings),))
-    con.commit()
-    con.close()
     return path
 
 
@@ -93,7 +63,7 @@ def test_polygon_with_hole_and_multipolygon_geojson(tmp_path):
 
 def test_geopackage_layer_and_polygon_crs(tmp_path):
     c = _grid()
-    gpkg = _gpkg(tmp_path / "z.gpkg", [[SQUARE, HOLE]])
+    gpkg = write_gpkg(tmp_path / "z.gpkg", [[SQUARE, HOLE]])
     polys = read_polygons(gpkg, layer="zones")
     assert polys.crs == "EPSG:32632" and len(polys.polygons[0].holes) == 1
     assert crop_mask(c, CropParams(polygons=polys)).sum() == 400 - 16
