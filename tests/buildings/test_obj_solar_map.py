@@ -11,7 +11,8 @@ from workstation.buildings import synth
 from workstation.buildings.export import cityjson_document, glb_scene, model_origin, mtl_text, obj_text
 from workstation.buildings.models import triangulate
 from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings, solar_map
-from workstation.buildings.solar import SolarParams, roof_cells
+from workstation.buildings.solar import SolarParams, roof_cells, solar_map_png
+from workstation.core.errors import InvalidInputError, OutputExistsError
 from workstation.cli.main import main
 from workstation.core.cloud import Cloud
 from workstation.io import write_cloud
@@ -153,6 +154,8 @@ def test_cli_writes_obj_and_solar_map(tmp_path, capsys):
     assert main(["buildings", str(tmp_path / "in.laz"), "-o", str(out), "--solar-cell", "1", "--json"]) == 0
     info = json.loads(capsys.readouterr().out)
     assert str(out / "solar_roofs.tif") in info["files"] and str(out / "buildings_lod22.obj") in info["files"]
+    assert str(out / "solar_roofs.png") in info["files"]
+    assert (out / "solar_roofs.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     origin = info["local_origin"]
     assert (out / "buildings_lod22.obj").read_text().splitlines()[1] == "# origin " + " ".join(f"{v:.3f}" for v in origin)
     assert "newmtl RoofSurface" in (out / "buildings.mtl").read_text()
@@ -162,6 +165,35 @@ def test_cli_writes_obj_and_solar_map(tmp_path, capsys):
         x, y = src.xy(*np.unravel_index(int(np.argmax(~a.mask)), a.shape))
         assert 500020 < x < 500040 and 5300020 < y < 5300040
         assert 500 < a.min() and a.max() < 2600  # clear sky at 48 N
+
+
+def _inferno_hits(img: np.ndarray, values) -> list:
+    """How many pixels of an RGB image lie within 6 levels of the inferno colour of each value (0-1)."""
+    from matplotlib import colormaps
+
+    rgb = img[..., :3].reshape(-1, 3).astype(int)
+    cols = np.round(np.asarray(colormaps["inferno"](np.asarray(values, float)))[:, :3] * 255).astype(int)
+    return [int((np.abs(rgb - c).max(axis=1) <= 6).sum()) for c in cols]
+
+
+def test_solar_map_png_colours_cells_by_value_with_a_colour_bar(tmp_path):
+    from PIL import Image
+
+    arr = np.full((60, 100), np.nan, np.float32)
+    arr[10:50, 10:50] = 900.0  # a north roof
+    arr[10:50, 50:90] = 1500.0  # a south roof
+    path = solar_map_png(arr, (0.5, 0.0, 500000.0, 0.0, -0.5, 5300030.0), tmp_path / "solar_roofs.png")
+    img = np.asarray(Image.open(path).convert("RGB"))
+    assert img.shape[0] > 200 and img.shape[1] > 300
+    low, high, mid = _inferno_hits(img, [0.0, 1.0, 0.5])
+    assert low > 2000 and high > 2000  # each roof in the colour of its value
+    assert mid > 0  # only the colour bar holds the colours between them
+    white = (img == 255).all(axis=2).sum()
+    assert white > 0.2 * img.shape[0] * img.shape[1]  # cells off the roofs and the margins stay white
+    with pytest.raises(OutputExistsError):
+        solar_map_png(arr, (0.5, 0.0, 500000.0, 0.0, -0.5, 5300030.0), path)  # exists, no overwrite
+    with pytest.raises(InvalidInputError, match="no roof cells"):
+        solar_map_png(np.full((4, 4), np.nan), (0.5, 0.0, 0.0, 0.0, -0.5, 0.0), tmp_path / "empty.png")
 
 
 def _gpkg(path, rings, srs_id):

@@ -15,6 +15,12 @@
   reduced by the sky view of the DSM horizon, ground reflection with albedo 0.2.
 * Shading: the horizon of each roof face (36 azimuth sectors) traced through the DSM of all
   points, as r.sun and SAGA do; the beam counts only while the sun is above it.
+* Checked against PVGIS 5 (European Commission JRC), "Daily radiation" tool: its clear-sky global
+  irradiance on a fixed plane, Gcs(i), for a 35-degree south-facing plane at 51.64 N 0.51 W (the
+  monthly mean-day profiles archived in github.com/michaelstreeter101/solar_farm, files
+  Dailydata_51.640_-0.510_SA_<month>_35deg_0deg.json), summed over the year, is compared with
+  :func:`plane_irradiation` for the same unshaded plane (tests/buildings/test_solar.py). Both
+  are clear-sky quantities; PVGIS varies TL by month where this module keeps one value.
 """
 
 from __future__ import annotations
@@ -295,3 +301,44 @@ def self_shading_lift(normal: np.ndarray, dsm_cell: float) -> float:
     """Height (m) above a roof face at which its horizon is traced, so the face's own DSM
     roughness over one cell diagonal does not shade it."""
     return float(math.sqrt(2) * dsm_cell * math.hypot(normal[0], normal[1]) / max(normal[2], 1e-3) + 0.05)
+
+
+MAX_PREVIEW_PIXELS = 2000  # longest side of the solar map preview image (cells)
+
+
+def solar_map_png(array: np.ndarray, transform, path, overwrite: bool = False, inputs=(), dpi: int = 120):
+    """Write a PNG preview of a roof solar map (:func:`workstation.buildings.pipeline.solar_map`):
+    cells coloured by annual irradiation (kWh/m^2/year, ``inferno`` from the map's lowest to its
+    highest cell) with a colour bar, axes in the map's coordinates (m), cells off the roofs (NaN)
+    left white. Maps longer than :data:`MAX_PREVIEW_PIXELS` cells on a side are shown at every
+    k-th cell. ``transform`` is the map's (a, b, c, d, e, f) with ``c, f`` its upper-left corner;
+    the file is written atomically (``overwrite``, ``inputs`` as :func:`workstation.io.atomic_path`)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.io import atomic_path
+
+    a = np.asarray(array, float)
+    if a.ndim != 2 or not np.isfinite(a).any():
+        raise InvalidInputError("the solar map has no roof cells to draw", field="solar_map")
+    step = max(1, -(-max(a.shape) // MAX_PREVIEW_PIXELS))
+    a = a[::step, ::step]
+    cw, ch = transform[0] * step, transform[4] * step
+    x0, y1 = transform[2], transform[5]
+    extent = (x0, x0 + cw * a.shape[1], y1 + ch * a.shape[0], y1)
+    width = 8.0
+    height = float(np.clip(width * a.shape[0] / max(a.shape[1], 1), 3.0, 12.0)) + 0.8
+    fig = Figure(figsize=(width + 1.6, height))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    im = ax.imshow(np.ma.masked_invalid(a), extent=extent, cmap="inferno", interpolation="nearest",
+                   vmin=float(np.nanmin(a)), vmax=float(np.nanmax(a)))
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.ticklabel_format(useOffset=False, style="plain")
+    ax.set_title("Roof solar potential (clear-sky annual irradiation)")
+    fig.colorbar(im, ax=ax, label="kWh/m²/year", shrink=0.9)
+    with atomic_path(path, overwrite=overwrite, inputs=inputs) as tmp:
+        fig.savefig(tmp, format="png", dpi=dpi, bbox_inches="tight")
+    return path

@@ -1,8 +1,11 @@
 """Analytic buildings with known roofs for tests and benchmarks (numpy only).
 
-Each :class:`SynthBuilding` is a rectangle (or an L) in a local frame (u along the length, v
+Each :class:`SynthBuilding` is a rectangle, an L or a T in a local frame (u along the length, v
 along the width) rotated by ``yaw`` about its centre, with a roof given in closed form, so
-footprints, roof planes (tilt, azimuth) and roof heights are known exactly. :func:`district`
+footprints, roof planes (tilt, azimuth) and roof heights are known exactly. The roofs of
+:data:`COMPLEX_KINDS` are unions of gabled wings (:class:`Wing`): each wing is a gabled prism over
+its own rectangle and the roof is their upper envelope, so where two wings cross their slopes meet
+in valleys, and a small wing standing on a slope is a dormer with vertical front and cheek walls. :func:`district`
 lays out a grid of them on a gently sloping ground and samples airborne-like points (uniform
 positions at a given density, Gaussian noise along z), classified ground (2) and building (6).
 """
@@ -14,6 +17,49 @@ from dataclasses import dataclass
 import numpy as np
 
 KINDS = ("flat", "shed", "gabled", "hipped", "multilevel", "lshape")
+COMPLEX_KINDS = ("cross_l", "cross_t", "dormer")
+
+
+@dataclass(frozen=True)
+class Wing:
+    """A gabled prism of a composite roof, in the building's local frame (metres).
+
+    Attributes
+    ----------
+    u0, u1, v0, v1 : float
+        Its rectangle.
+    along_u : bool
+        Ridge parallel to u (else parallel to v).
+    ridge : float
+        Ridge position across it (v when ``along_u``, else u).
+    half_width : float
+        Horizontal distance from the ridge to its eaves.
+    eave : float
+        Eave height above the building's eaves.
+    slope : float
+        Rise per metre of both its roof planes.
+    """
+
+    u0: float
+    u1: float
+    v0: float
+    v1: float
+    along_u: bool
+    ridge: float
+    half_width: float
+    eave: float
+    slope: float
+
+    def z(self, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+        """Height above the building's eaves at (u, v); -inf outside its rectangle."""
+        across = v if self.along_u else u
+        z = self.eave + self.slope * (self.half_width - np.abs(across - self.ridge))
+        inside = (u >= self.u0) & (u <= self.u1) & (v >= self.v0) & (v <= self.v1)
+        return np.where(inside, z, -np.inf)
+
+    def gradients(self) -> list:
+        """Local gradients (dz/du, dz/dv) of its two planes."""
+        return [(0.0, self.slope), (0.0, -self.slope)] if self.along_u else [(self.slope, 0.0), (-self.slope, 0.0)]
 
 
 @dataclass(frozen=True)
@@ -24,7 +70,11 @@ class SynthBuilding:
     ----------
     kind : str
         One of ``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` (two flat parts, the
-        part u > 0.1 length is 3 m higher) and ``lshape`` (flat roof, quadrant u > 0, v > 0 cut).
+        part u > 0.1 length is 3 m higher), ``lshape`` (flat roof, quadrant u > 0, v > 0 cut),
+        or one of the wing roofs of :meth:`wings`: ``cross_l`` (the L of ``lshape`` with a gabled
+        wing along each leg, crossing in the corner), ``cross_t`` (a T: a gabled bar with a lower
+        gabled stem whose ridge ends on the bar's slope) and ``dormer`` (a gabled roof with a
+        gabled dormer on its v < 0 slope).
     center : (float, float)
         Centre (m, absolute).
     length, width : float
@@ -34,7 +84,8 @@ class SynthBuilding:
     eave : float
         Eave height above ``ground`` (m).
     rise : float
-        Ridge height above the eaves (m) for sloped roofs.
+        Ridge height above the eaves (m) for sloped roofs; for the wing roofs, the pitch is that
+        of a ``gabled`` roof of the same width (slope ``rise / (width / 2)``).
     ground : float
         Ground height at the centre (m).
     """
@@ -57,11 +108,41 @@ class SynthBuilding:
         c, s = np.cos(self.yaw), np.sin(self.yaw)
         return np.column_stack([uv[:, 0] * c - uv[:, 1] * s, uv[:, 0] * s + uv[:, 1] * c]) + np.asarray(self.center, float)
 
+    def wings(self) -> list:
+        """The gabled wings of a ``cross_l``, ``cross_t`` or ``dormer`` roof (empty otherwise).
+
+        ``cross_l``: a wing along u over v < 0 and one along v over u < 0, each with its ridge
+        on its centre line; they cross in the corner square. ``cross_t``: a bar along u over the
+        v > b - 0.6 w strip (w the width) and a stem along v, 0.9 times as wide, from v = -b to the
+        bar's ridge line (never above it). ``dormer``: the whole-rectangle gable and, on its
+        v < 0 slope at u = -a / 4, a wing along v as wide as a quarter of the length (2.5-4 m),
+        its front 0.2 b from the eave, eaves 0.45 and ridge 0.8 of the main rise up."""
+        a, b = self.length / 2, self.width / 2
+        s = self.rise / b
+        if self.kind == "cross_l":
+            return [Wing(-a, a, -b, 0.0, True, -b / 2, b / 2, 0.0, s),
+                    Wing(-a, 0.0, -b, b, False, -a / 2, a / 2, 0.0, s)]
+        if self.kind == "cross_t":
+            wb = 0.6 * self.width
+            c = 0.45 * wb
+            return [Wing(-a, a, b - wb, b, True, b - wb / 2, wb / 2, 0.0, s),
+                    Wing(-c, c, -b, b - wb / 2, False, 0.0, c, 0.0, s)]
+        if self.kind == "dormer":
+            wd = float(np.clip(self.length / 4, 2.5, 4.0))
+            ud = -a / 4
+            return [Wing(-a, a, -b, b, True, 0.0, b, 0.0, s),
+                    Wing(ud - wd / 2, ud + wd / 2, -0.8 * b, 0.0, False, ud, wd / 2, 0.45 * self.rise,
+                         0.35 * self.rise / (wd / 2))]
+        return []
+
     def footprint(self) -> np.ndarray:
         """(k, 2) counter-clockwise outline (m, absolute)."""
         a, b = self.length / 2, self.width / 2
-        if self.kind == "lshape":
+        if self.kind in ("lshape", "cross_l"):
             uv = np.array([[-a, -b], [a, -b], [a, 0], [0, 0], [0, b], [-a, b]])
+        elif self.kind == "cross_t":
+            yb, c = b - 0.6 * self.width, 0.27 * self.width
+            uv = np.array([[-c, -b], [c, -b], [c, yb], [a, yb], [a, b], [-a, b], [-a, yb], [-c, yb]])
         else:
             uv = np.array([[-a, -b], [a, -b], [a, b], [-a, b]])
         return self.to_world(uv)
@@ -70,8 +151,10 @@ class SynthBuilding:
         uv = self.to_local(xy)
         a, b = self.length / 2, self.width / 2
         m = (np.abs(uv[:, 0]) <= a) & (np.abs(uv[:, 1]) <= b)
-        if self.kind == "lshape":
+        if self.kind in ("lshape", "cross_l"):
             m &= ~((uv[:, 0] > 0) & (uv[:, 1] > 0))
+        elif self.kind == "cross_t":
+            m &= (uv[:, 1] >= b - 0.6 * self.width) | (np.abs(uv[:, 0]) <= 0.27 * self.width)
         return m
 
     def roof_z(self, xy: np.ndarray) -> np.ndarray:
@@ -91,6 +174,8 @@ class SynthBuilding:
             z = base + np.minimum(self.rise * (1 - np.abs(v) / b), slope * (a - np.abs(u)))
         elif self.kind == "multilevel":
             z = base + np.where(u > 0.1 * self.length, 3.0, 0.0)
+        elif self.kind in COMPLEX_KINDS:
+            z = base + np.max([w.z(u, v) for w in self.wings()], axis=0)
         else:
             raise ValueError(f"unknown kind {self.kind}")
         return np.where(self.inside(xy), z, np.nan)
@@ -98,9 +183,12 @@ class SynthBuilding:
     def roof_gradients(self) -> np.ndarray:
         """(p, 2) world gradients (dz/dx, dz/dy) of the true roof planes."""
         a, b = self.length / 2, self.width / 2
-        g = {"flat": [(0, 0)], "lshape": [(0, 0)], "multilevel": [(0, 0)], "shed": [(0, self.rise / (2 * b))],
-             "gabled": [(0, -self.rise / b), (0, self.rise / b)],
-             "hipped": [(0, -self.rise / b), (0, self.rise / b), (-self.rise / b, 0), (self.rise / b, 0)]}[self.kind]
+        if self.kind in COMPLEX_KINDS:
+            g = list(dict.fromkeys(gr for w in self.wings() for gr in w.gradients()))
+        else:
+            g = {"flat": [(0, 0)], "lshape": [(0, 0)], "multilevel": [(0, 0)], "shed": [(0, self.rise / (2 * b))],
+                 "gabled": [(0, -self.rise / b), (0, self.rise / b)],
+                 "hipped": [(0, -self.rise / b), (0, self.rise / b), (-self.rise / b, 0), (self.rise / b, 0)]}[self.kind]
         c, s = np.cos(self.yaw), np.sin(self.yaw)
         gl = np.array(g, float)  # (du, dv) -> world
         return np.column_stack([gl[:, 0] * c - gl[:, 1] * s, gl[:, 0] * s + gl[:, 1] * c])
@@ -180,9 +268,11 @@ def model_roof_z(model, xy: np.ndarray) -> np.ndarray:
 def evaluate(models: list, buildings: list, grid: float = 0.25) -> list[dict]:
     """Compare models with the analytic buildings: per true building, the best-overlapping
     model's footprint IoU, roof-plane tilt and azimuth errors (degrees; each true sloped plane
-    against the model face with the nearest normal) and the roof RMS (m) over a ``grid`` (m)
-    inside both footprints."""
+    against the model face with the nearest normal), the roof RMS (m) over a ``grid`` (m)
+    inside both footprints and whether all of that model's LoD2.2 solids are watertight."""
     import shapely
+
+    from .models import is_watertight
 
     polys = [shapely.Polygon(m.footprint) for m in models]
     tree = shapely.STRtree(polys)
@@ -195,7 +285,8 @@ def evaluate(models: list, buildings: list, grid: float = 0.25) -> list[dict]:
             continue
         j = max(cand, key=lambda k: polys[k].intersection(T).area)
         m, P = models[j], polys[j]
-        row = {"kind": b.kind, "found": True, "iou": P.intersection(T).area / P.union(T).area, "roof_type": m.roof_type}
+        row = {"kind": b.kind, "found": True, "iou": P.intersection(T).area / P.union(T).area, "roof_type": m.roof_type,
+               "watertight": all(is_watertight(s) for s in m.lod2)}
         ta = b.true_tilt_azimuth()
         normals = np.array([f.normal for f in m.roofs])
         tilt_err, az_err = [], []

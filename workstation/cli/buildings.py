@@ -16,6 +16,7 @@ from .options import bound, param_group
 OUTPUTS = ("footprints.geojson", "roofs.geojson", "buildings.city.json", "buildings.glb", "buildings_lod22.obj",
            "buildings_lod12.obj", "buildings.mtl")
 SOLAR_MAP = "solar_roofs.tif"
+SOLAR_PNG = "solar_roofs.png"
 NODATA = -9999.0
 
 
@@ -23,7 +24,8 @@ NODATA = -9999.0
 @click.argument("src", metavar="IN", type=click.Path(dir_okay=False))
 @click.option("-o", "--output", "out_dir", required=True, type=click.Path(file_okay=False),
               help="Output folder (footprints.geojson, roofs.geojson, buildings.city.json, buildings.glb, "
-                   "buildings_lod22.obj, buildings_lod12.obj with buildings.mtl, solar_roofs.tif).")
+                   "buildings_lod22.obj, buildings_lod12.obj with buildings.mtl, solar_roofs.tif with its preview "
+                   "solar_roofs.png).")
 @click.option("--footprints", "footprints_path", default=None, type=click.Path(dir_okay=False, exists=True),
               help="Building outlines (polygons of a GeoJSON or GeoPackage file, in the cloud's CRS) used "
                    "instead of tracing them.")
@@ -50,7 +52,7 @@ NODATA = -9999.0
     bound(BuildingsParams, "solar_map_cell", "--solar-cell", show_default=True, type=positive_float,
           help="Cell (m) of the roof solar map solar_roofs.tif (kWh/m2/year per cell, each shaded by the DSM)."),
 )
-@click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null, no solar_roofs.tif).")
+@click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null, no solar_roofs.tif or .png).")
 @overwrite_option
 @read_options
 @json_option
@@ -70,7 +72,7 @@ def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps
 
     t0 = time.perf_counter()
     out = Path(out_dir)
-    paths = [out / name for name in OUTPUTS] + ([] if no_solar else [out / SOLAR_MAP])
+    paths = [out / name for name in OUTPUTS] + ([] if no_solar else [out / SOLAR_MAP, out / SOLAR_PNG])
     if out.is_dir():
         check_outputs(paths, overwrite, inputs=[src])
     cloud = read_cloud(src, **read_opts)
@@ -154,6 +156,9 @@ def _write(result, paths, crs, overwrite, src):
         arr, transform = result.solar_map
         write_raster(Raster(arr, transform, crs, NODATA, {"kind": "solar_roofs", "units": "kWh/m2/year"}),
                      paths[7], overwrite=overwrite, inputs=[src])
+        from workstation.buildings.solar import solar_map_png
+
+        solar_map_png(arr, transform, paths[8], overwrite=overwrite, inputs=[src])
 
 
 def _report(src, out, result, solar, seconds, as_json, paths):
@@ -172,7 +177,7 @@ def _report(src, out, result, solar, seconds, as_json, paths):
         sol = np.concatenate(result.solar_kwh_m2_year) if faces else np.zeros(0)
         from workstation.buildings.export import model_origin
 
-        files = [str(p) for p in paths if p.name != SOLAR_MAP or result.solar_map is not None]
+        files = [str(p) for p in paths if p.name not in (SOLAR_MAP, SOLAR_PNG) or result.solar_map is not None]
         emit_json({"input": src, "output": str(out), "files": files,
                    "local_origin": model_origin(result.models).tolist(),
                    "buildings": len(result.models), "roof_faces": faces, "roof_types": kinds,
