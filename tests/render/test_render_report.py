@@ -69,10 +69,11 @@ def test_report_is_self_contained_with_every_section(report_html):
     imgs = re.findall(r'src="data:image/png;base64,([^"]+)"', text)
     # cloud render + class histogram + mesh render + confusion matrix + hillshade
     assert len(imgs) == 5
+    assert text.index('<section id="summary"') < text.index("<img")  # the summary page comes first
     for b in imgs:
         im = Image.open(io.BytesIO(base64.b64decode(b)))
         assert im.size[0] > 50 and im.size[1] > 50
-    assert not re.search(r'(src|href)="(?!data:)', text)  # no external file
+    assert not re.search(r'(src|href)="(?!data:|#)', text)  # no external file (links inside the page only)
     for needle in ("ground", "cloth_resolution", "mesh.ply", "cloud.las", "dtm.tif", "kappa", "2500"):
         assert needle in text
 

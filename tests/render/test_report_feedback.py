@@ -60,7 +60,8 @@ def _figure(page, caption_start):
 
 def test_no_json_folder_still_has_stages(page):
     assert "No JSON records found" not in page and "No records found" not in page
-    sec = page.split("<h2>Stages and figures</h2>")[1].split("<h2>")[0]
+    sec = page.split('<section id="appendix">')[1].split("</section>")[0]  # the records, collapsed
+    assert "<summary>Stages and figures" in sec
     assert "dtm.tif" in sec and "tin" in sec and "relief.tif" in sec and "hillshade" in sec
 
 
@@ -118,6 +119,9 @@ def test_raster_kind_rules(tmp_path):
     assert raster_kind(Path("slope.tif"), {}) == "slope"
     assert raster_kind(Path("dod_errors.tif"), {}) == "error"
     assert raster_kind(Path("dsm.tif"), {}, "float32", -9999) == "elevation"
+    assert raster_kind(Path("o.tif"), {"kind": "ortho"}) == raster_kind(Path("site_ortho.tif"), {}) == "image"
+    assert raster_kind(Path("density.tif"), {"kind": "qc"}) == raster_kind(Path("d.tif"), {"kind": "density"}) == "density"
+    assert raster_kind(Path("voids.tif"), {"kind": "qc"}) == "map"
 
 
 def test_hillshade_png_preview_is_enlarged(tmp_path):

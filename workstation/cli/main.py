@@ -31,7 +31,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "demo": ("workstation.cli.demo:demo", "Run every stage on a generated synthetic scene."),
     "mesh": ("workstation.cli.mesh:mesh", "Mesh a cloud (screened Poisson, ball pivoting, 2.5D Delaunay) with MeshLab filters."),
     "render": ("workstation.cli.render:render", "Render a cloud or mesh off-screen to PNG (or a turntable GIF)."),
-    "report": ("workstation.cli.report:report", "Self-contained HTML report of a work folder: stages, figures, renders, plots."),
+    "report": ("workstation.cli.report:report", "Quality report of a work folder (HTML or PDF): summary, accuracies, QC verdict, figures."),
     "train": ("workstation.cli.train:train", "Train the point classifier on simulated LiDAR (recipe TOML)."),
     "classify": ("workstation.cli.classify:classify", "Classify points (ground, vegetation, building, water, other, noise)."),
     "simulate": ("workstation.cli.simulate:simulate", "Simulate ALS/ULS/MLS/TLS LiDAR of a labelled synthetic scene."),

@@ -1,4 +1,4 @@
-"""`ws report WORKDIR -o report.html`: one self-contained page of a work folder."""
+"""`ws report WORKDIR -o report.html|report.pdf`: the quality report of a work folder."""
 
 from __future__ import annotations
 
@@ -24,6 +24,9 @@ def _size(ctx, param, value):
 @click.command()
 @click.argument("workdir", type=click.Path(exists=True, file_okay=False))
 @output_option
+@click.option("--pdf", is_flag=True,
+              help="Also print the .html report to a PDF beside it (same name, .pdf) with headless Chromium; "
+                   "-o report.pdf writes the PDF alone.")
 @param_group(
     "given",
     bound(ReportParams, "render_size", "--render-size", callback=_size, show_default=True,
@@ -34,18 +37,28 @@ def _size(ctx, param, value):
 )
 @overwrite_option
 @json_option
-def report(workdir, output, given, overwrite, as_json):
-    """Write an HTML report of WORKDIR: products, stage parameters and timings, renders and plots."""
+def report(workdir, output, pdf, given, overwrite, as_json):
+    """Write the quality report of WORKDIR as one self-contained HTML page (-o X.html) or a PDF
+    (-o X.pdf, printed by headless Chromium).
+
+    The summary comes first: what was processed (clouds and points, photos, rasters, inputs,
+    CRS, area, dates), the key accuracies found in the folder's records (SfM reprojection error
+    and registered images, GCP and check point RMSE, registration RMSE, ground-evaluation
+    errors, DTM RMSE, classification F1) and the verdict of a `ws qc` result in the folder.
+    Then previews (ortho, hillshades, DTM, density, renders), SfM figures (reprojection error
+    histogram, cameras over the sparse cloud, GCP residuals), registration residuals, ground
+    results and evaluations, clouds and meshes; the JSON records are in a collapsed appendix.
+    """
     import time
 
     from workstation.render.report import write_report
 
     t0 = time.perf_counter()
-    out = write_report(workdir, output, overwrite=overwrite, params=ReportParams(**given))
+    outs = write_report(workdir, output, overwrite=overwrite, params=ReportParams(**given), pdf=pdf)
     from workstation.cli.summary import emit_summary
 
-    emit_summary("report", f"work folder {workdir}", out, time.perf_counter() - t0,
-                 details=f"{out.stat().st_size / 1e6:.1f} MB")
+    emit_summary("report", f"work folder {workdir}", outs, time.perf_counter() - t0,
+                 details=", ".join(f"{p.name} {p.stat().st_size / 1e6:.1f} MB" for p in outs))
     if as_json:
-        emit_json({"workdir": workdir, "output": str(out), "bytes": out.stat().st_size,
-                   "seconds": time.perf_counter() - t0})
+        emit_json({"workdir": workdir, "output": str(outs[0]), "files": [str(p) for p in outs],
+                   "bytes": sum(p.stat().st_size for p in outs), "seconds": time.perf_counter() - t0})

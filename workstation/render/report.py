@@ -1,15 +1,27 @@
-"""One self-contained HTML page for a work folder: inputs, stages, figures, renders and plots.
+"""The quality report of a work folder: one self-contained HTML page (or its PDF) a client reads.
 
 Everything is inlined (images as base64 PNG, no scripts, no external files), so the page can
-be mailed or archived. Sections, in order: products found (clouds, meshes, rasters, JSON),
-steps (the work folder's stage records of ``ws sfm``, ``dense``, ``mesh``, ``colorize``,
-``ortho``, in the order they ran, with their inputs and outputs), stages (from ``run.json``, other ``*.json`` records, the clouds' ``history`` and the rasters'
-own metadata, so a folder of plain ``ws`` outputs without any JSON still has its stages), ground
-results (ground share of each ground-classified cloud, and the points a filter changed against
-the cloud it came from), renders of clouds (top view, with a legend of the classes present
-beside the image, not over it) and meshes (iso view), plots (class histograms, confusion
-matrices found in JSON files, elevation rasters as hillshades with a tint, hillshades in grey,
-slope and aspect, error maps), and the PNG images already in the folder.
+be mailed or archived. Sections, in order:
+
+* summary (:mod:`.report_summary`): the ``ws qc`` verdict when the folder holds one, what was
+  processed, the key accuracies found in the records, the list of sections and figures;
+* previews: rasters (ortho in colour, hillshades in grey, elevations as hillshades with a
+  tint, density, slope, aspect, error maps) and the PNG images already in the folder;
+* photogrammetry (:mod:`.report_sfm`): per SfM work folder the reprojection-error histogram
+  and the cameras over the sparse cloud; GCP and check point residuals;
+* registration (:mod:`.report_checks`): residuals of each registration record;
+* ground: ground share of each ground-classified cloud and the points a filter changed
+  against the cloud it came from, ground evaluations, confusion matrices found in JSON files;
+* clouds (top view, with a legend of the classes present beside the image, not over it, and
+  the class histogram) and meshes (iso view);
+* steps: the work folder's stage records of ``ws sfm``, ``dense``, ``mesh``, ``colorize``,
+  ``ortho``, in the order they ran, with their inputs and outputs;
+* appendix, collapsed: the products, the stages and figures of ``run.json`` and the other JSON
+  records, the clouds' ``history`` and the rasters' own metadata (so a folder of plain ``ws``
+  outputs without any JSON still has its stages).
+
+:func:`write_report` writes the page, or prints it to PDF with headless Chromium
+(:mod:`.report_pdf`).
 """
 
 from __future__ import annotations
@@ -32,6 +44,7 @@ from .html import fmt as _fmt
 from .html import img as _img
 from .html import png_b64 as _png_b64
 from .html import table as _table
+from .report_rasters import _plot_raster, _preview_rasters, _raster_meta, hillshade, raster_kind  # noqa: F401
 
 log = get_logger(__name__)
 
@@ -217,116 +230,6 @@ def _plot_class_histogram(codes: np.ndarray, title: str) -> str:
     return _fig_b64(fig)
 
 
-def hillshade(z: np.ndarray, cell: float, azimuth_deg: float = 315.0, altitude_deg: float = 45.0) -> np.ndarray:
-    """Hillshade (rows, cols) in [0, 1] of an elevation grid (Horn's gradient via numpy).
-
-    Parameters
-    ----------
-    z : (rows, cols) float, NaN for no data
-    cell : float
-        Cell size in the elevation's units.
-    """
-    z = np.asarray(z, dtype=np.float64)
-    zf = np.where(np.isfinite(z), z, np.nanmean(z) if np.isfinite(z).any() else 0.0)
-    gy, gx = np.gradient(zf, cell)
-    slope = np.arctan(np.hypot(gx, gy))
-    aspect = np.arctan2(-gx, gy)
-    az, alt = np.radians(360.0 - azimuth_deg + 90.0), np.radians(altitude_deg)
-    hs = np.sin(alt) * np.cos(slope) + np.cos(alt) * np.sin(slope) * np.cos(az - aspect)
-    return np.where(np.isfinite(z), np.clip(hs, 0, 1), np.nan)
-
-
-def raster_kind(path: Path, meta: dict | None = None, dtype=None, nodata=None) -> str:
-    """What a GeoTIFF holds: ``"hillshade"`` (0-255 shading), ``"slope"``, ``"aspect"``,
-    ``"error"``, ``"image"`` (several bands) or ``"elevation"`` (DSM, DTM, CHM, anything else).
-
-    The ``kind`` written in the file's metadata by ``ws`` decides; without it, the name
-    (``hillshade``, ``shade``, ``_hs``; ``slope``; ``aspect``; ``error``, ``diff``...) and an
-    8-bit single band with nodata 0 (how ``ws hillshade`` writes one).
-    """
-    kind = str((meta or {}).get("kind", "")).lower()
-    if kind in ("hillshade", "slope", "aspect"):
-        return kind
-    if kind in ("dsm", "dtm", "chm", "dem"):
-        return "elevation"
-    name = path.stem.lower()
-    if any(w in name for w in ("error", "diff", "residual", "dod")):
-        return "error"
-    if "shade" in name or name.endswith("_hs") or name == "hs":
-        return "hillshade"
-    for k in ("slope", "aspect"):
-        if k in name:
-            return k
-    if dtype is not None and np.dtype(dtype) == np.uint8 and nodata == 0:
-        return "hillshade"
-    return "elevation"
-
-
-def _plot_raster(path: Path) -> tuple[str, str] | None:
-    """(caption, b64 png) for a GeoTIFF: hillshades in grey (0-255 shading, never tinted),
-    elevations as a hillshade with an elevation tint, slope and aspect with their scales,
-    diverging map for errors."""
-    try:
-        import rasterio
-    except ImportError:  # pragma: no cover - declared dependency
-        return None
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from workstation.io.geotiff import META_TAG
-
-    with rasterio.open(path) as ds:
-        a = ds.read(1, masked=True).astype(np.float64).filled(np.nan)
-        cell = abs(ds.transform.a) or 1.0
-        bands = ds.count
-        dtype, nodata = ds.dtypes[0], ds.nodata
-        try:
-            meta = json.loads(ds.tags().get(META_TAG) or "{}")
-        except ValueError:
-            meta = {}
-    kind = "image" if bands > 1 else raster_kind(path, meta if isinstance(meta, dict) else {}, dtype, nodata)
-    fig, ax = plt.subplots(figsize=(6, 6 * a.shape[0] / max(a.shape[1], 1) + 0.5))
-    if kind == "hillshade":
-        ax.imshow(a, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
-        cap = f"{path.name}: hillshade (grey, 0-255)"
-    elif kind in ("slope", "aspect"):
-        im = ax.imshow(a, cmap="magma" if kind == "slope" else "twilight",
-                       vmin=0, vmax=90 if kind == "slope" else 360, interpolation="nearest")
-        fig.colorbar(im, ax=ax, shrink=0.7, label=f"{kind} (degrees)")
-        cap = f"{path.name}: {kind}"
-    elif kind == "error":
-        lim = np.nanpercentile(np.abs(a), 98) if np.isfinite(a).any() else 1.0
-        im = ax.imshow(a, cmap="RdBu_r", vmin=-lim, vmax=lim)
-        fig.colorbar(im, ax=ax, shrink=0.7, label="error")
-        cap = f"{path.name}: error map"
-    elif kind == "image":
-        ax.imshow(a, cmap="gray")
-        cap = f"{path.name}: band 1 of {bands}"
-    else:
-        ax.imshow(hillshade(a, cell), cmap="gray", vmin=0, vmax=1)
-        im = ax.imshow(a, cmap="terrain", alpha=0.45)
-        fig.colorbar(im, ax=ax, shrink=0.7, label="elevation")
-        cap = f"{path.name}: hillshade (315°/45°) with elevation tint"
-    ax.set_axis_off()
-    return cap, _fig_b64(fig)
-
-
-def _raster_meta(path: Path) -> dict:
-    """The ``ws`` metadata of a GeoTIFF ({} when none or unreadable)."""
-    try:
-        import rasterio
-
-        from workstation.io.geotiff import META_TAG
-
-        with rasterio.open(path) as ds:
-            meta = json.loads(ds.tags().get(META_TAG) or "{}")
-    except Exception:  # noqa: BLE001 - a report shows what it can read
-        return {}
-    return meta if isinstance(meta, dict) else {}
-
-
 def _class_legend_figure(img: np.ndarray, codes: np.ndarray, title: str) -> str:
     """The render ``img`` with a legend of the classes present in ``codes`` (with their point
     counts) beside it, outside the image, so it never covers the cloud."""
@@ -396,7 +299,59 @@ table{border-collapse:collapse;margin:.5em 0;font-size:.85em}td,th{border:1px so
 text-align:left;vertical-align:top;max-width:520px;overflow-wrap:anywhere}th{background:#f3f3f3}
 figure{display:inline-block;margin:.5em;vertical-align:top}figcaption{font-size:.85em;color:#555}
 img{max-width:100%;border:1px solid #ddd}.note{color:#777;font-size:.85em}
+.verdict{font-size:1.2em}.pass{color:#060;font-weight:bold}.fail{color:#b00;font-weight:bold}
+.toc{font-size:.9em}.toc ul{color:#555}details{margin:.4em 0}summary{cursor:pointer;font-weight:600}
+@page{size:A4;margin:14mm}
+@media print{body{margin:0;max-width:none}section.summary{break-after:page}figure,table{break-inside:avoid}
+h2{break-after:avoid}img{max-width:100%}}
 """
+
+
+@dataclass
+class _Gathered:
+    """What the report reads of a work folder once: files found, records parsed, clouds read,
+    SfM models read."""
+
+    root: Path
+    jsons: list
+    clouds: list
+    meshes: list
+    rasters: list
+    docs: dict
+    notes: list
+    steps: list
+    prod_rows: list
+    cloud_cache: dict
+    sfm: list
+
+
+def _gather(root: Path, params: ReportParams) -> _Gathered:
+    """Find the products, parse the JSON records, read the clouds and the SfM models."""
+    from workstation.render.load import is_mesh_file
+
+    jsons = _find(root, (".json",), params.max_depth)
+    clouds = [p for p in _find(root, CLOUD_EXT, params.max_depth) if not is_mesh_file(p)]
+    meshes = [p for p in _find(root, CLOUD_EXT + MESH_EXT, params.max_depth) if is_mesh_file(p)]
+    rasters = _find(root, RASTER_EXT, params.max_depth)
+    docs, notes = _read_records(jsons)
+    prod_rows, cloud_cache = _product_records(rasters[: params.max_files], clouds[: params.max_files], root)
+    return _Gathered(root, jsons, clouds, meshes, rasters, docs, notes, work_steps(docs, root), prod_rows,
+                     cloud_cache, _sfm_models(root, docs, params))
+
+
+def _sfm_models(root: Path, docs: dict, params: ReportParams) -> list:
+    """The SfM work folders' models (:class:`~workstation.render.report_sfm.SfMModel`), or
+    (folder, exception) for a model that cannot be read."""
+    from .report_sfm import find_sfm_folders, read_sfm_model
+
+    out = []
+    for folder in find_sfm_folders(root, params.max_depth)[: params.max_files]:
+        rec = docs.get(folder / "summary.json")
+        try:
+            out.append(read_sfm_model(folder, rec if isinstance(rec, dict) and rec.get("stage") == "sfm" else None))
+        except Exception as e:  # noqa: BLE001 - a report lists what it cannot read and goes on
+            out.append((folder, e))
+    return out
 
 
 def build_report(workdir, params: ReportParams = ReportParams()) -> str:
@@ -407,50 +362,88 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
     InvalidInputError
         When ``workdir`` is not a folder.
     """
-    from workstation.render.load import is_mesh_file
+    from .report_summary import summary_section
 
     root = Path(workdir)
     if not root.is_dir():
         raise InvalidInputError("not a folder", "give the work folder of a run", path=root)
-    parts = [f"<h1>Report: {html.escape(root.resolve().name)}</h1>",
-             f'<p class="note">{html.escape(str(root.resolve()))} — generated '
-             f'{_dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}</p>']
-    jsons = _find(root, (".json",), params.max_depth)
-    clouds = [p for p in _find(root, CLOUD_EXT, params.max_depth) if not is_mesh_file(p)]
-    meshes = [p for p in _find(root, CLOUD_EXT + MESH_EXT, params.max_depth) if is_mesh_file(p)]
-    rasters = _find(root, RASTER_EXT, params.max_depth)
-
-    # products
-    rows = [(str(p.relative_to(root)), kind, f"{p.stat().st_size / 1e6:.2f} MB")
-            for kind, lst in (("cloud", clouds), ("mesh", meshes), ("raster", rasters), ("record", jsons)) for p in lst]
-    parts.append("<h2>Products</h2>" + (_table(rows, ("file", "kind", "size")) if rows else "<p>No products found.</p>"))
-
-    # the work folder's steps (stage records), then run.json and other records
-    docs, stage_html = _read_records(jsons)
-    steps = work_steps(docs, root)
-    if steps:
-        parts.append("<h2>Steps</h2>" + _table(steps, ("stage", "finished", "seconds", "record", "inputs", "outputs")))
-    stage_html += _records_html(docs, root)
-    prod_rows, cloud_cache = _product_records(rasters[: params.max_files], clouds[: params.max_files], root)
-    if prod_rows:
-        stage_html.append("<h3>Records in the products</h3>" + _table(prod_rows, ("file", "stage", "seconds", "parameters and figures")))
-    parts.append("<h2>Stages and figures</h2>" + ("".join(stage_html) or
-                 "<p>No records found: no run.json or other JSON in the folder, and no product carries its "
-                 "stage's metadata or history.</p>"))
-
-    ground_rows = _ground_rows([(p, c) for p, c in cloud_cache.items() if not isinstance(c, Exception)], root)
-    if ground_rows:
-        parts.append("<h2>Ground</h2>" + _table(ground_rows, ("cloud", "points", "ground points", "ground",
-                                                              "unclassified (1)", "ground before", "class changed",
-                                                              "stage")))
-    parts.append("<h2>Clouds</h2>" + ("".join(_clouds_html(clouds[: params.max_files], cloud_cache, root, params))
-                                      or "<p>No clouds found.</p>"))
-    parts.append("<h2>Meshes</h2>" + ("".join(_meshes_html(meshes[: params.max_files], root, params))
-                                      or "<p>No meshes found.</p>"))
-    parts.extend(_rasters_and_images_html(root, rasters, params))
+    g = _gather(root, params)
+    sections = _sections(g, params)
+    summary = summary_section(g, sections, lambda p: _raster_meta(p).get("kind", ""))
+    name = html.escape(root.resolve().name)
+    head = (f"<h1>Quality report: {name}</h1>"
+            f'<p class="note">{html.escape(str(root.resolve()))} — generated '
+            f'{_dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}</p>')
+    body = "\n".join(f'<section id="{a}"><h2>{html.escape(t)}</h2>{h}</section>' for a, t, h in sections)
     return ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
-            f"<title>Report: {html.escape(root.resolve().name)}</title><style>{CSS}</style></head><body>"
-            + "\n".join(parts) + "</body></html>\n")
+            f"<title>Quality report: {name}</title><style>{CSS}</style></head><body>"
+            + head + summary + body + "</body></html>\n")
+
+
+def _sections(g: _Gathered, params: ReportParams) -> list[tuple[str, str, str]]:
+    """(anchor, title, html) of the report's sections after the summary, the empty ones left
+    out: previews, photogrammetry, registration, ground, clouds, meshes, the steps (the stage
+    records in the order they ran), then the appendix."""
+    from .report_checks import find_all, registration_html
+    from .report_sfm import georef_html, sfm_html
+
+    root = g.root
+    ground = _ground_section(g)
+    out = [("previews", "Previews", "".join(_previews_html(root, g.rasters, params))),
+           ("photogrammetry", "Photogrammetry", "".join(sfm_html(g.sfm, root) + georef_html(g.docs, root))),
+           ("registration", "Registration", "".join(registration_html(find_all(g.docs, "registration"), root))),
+           ("ground", "Ground", ground),
+           ("clouds", "Clouds", "".join(_clouds_html(g.clouds[: params.max_files], g.cloud_cache, root, params))),
+           ("meshes", "Meshes", "".join(_meshes_html(g.meshes[: params.max_files], root, params))),
+           ("steps", "Steps", _table(g.steps, ("stage", "finished", "seconds", "record", "inputs", "outputs"))
+            if g.steps else "")]
+    out = [s for s in out if s[2]]
+    return out + [("appendix", "Appendix: records", _appendix_html(g))]
+
+
+def _ground_section(g: _Gathered) -> str:
+    """The ground results (each ground-classified cloud), the ground evaluations and the
+    confusion matrices of the other records."""
+    from .report_checks import find_all, ground_eval_html
+
+    def confusion_html(doc, where: str) -> str:
+        cm = _confusion(doc)
+        return "" if cm is None else _img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({where})"),
+                                          f"Confusion matrix from {where}")
+
+    rows = _ground_rows([(p, c) for p, c in g.cloud_cache.items() if not isinstance(c, Exception)], g.root)
+    parts = [_table(rows, ("cloud", "points", "ground points", "ground", "unclassified (1)", "ground before",
+                           "class changed", "stage"))] if rows else []
+    evals = find_all(g.docs, "ground_eval")
+    if evals:
+        parts.append("<h3>Evaluation against a reference</h3>")
+        parts += ground_eval_html(evals, g.root, confusion_html)
+    done = {p for p, _, _ in evals}
+    parts += [confusion_html(doc, str(p.relative_to(g.root))) for p, doc in g.docs.items() if p not in done]
+    return "".join(parts)
+
+
+def _appendix_html(g: _Gathered) -> str:
+    """The records, collapsed: products, the JSON records' stage tables and figures, the
+    products' own records."""
+    root = g.root
+    rows = [(str(p.relative_to(root)), kind, f"{p.stat().st_size / 1e6:.2f} MB")
+            for kind, lst in (("cloud", g.clouds), ("mesh", g.meshes), ("raster", g.rasters), ("record", g.jsons))
+            for p in lst]
+
+    def fold(title: str, body: str) -> str:
+        return f"<details><summary>{html.escape(title)}</summary>{body}</details>"
+
+    parts = [fold(f"Products ({len(rows)} files)", _table(rows, ("file", "kind", "size")) if rows
+                  else "<p>No products found.</p>")]
+    recs = g.notes + _records_html(g.docs, root)
+    if g.prod_rows:
+        recs.append("<h3>Records in the products</h3>" + _table(g.prod_rows, ("file", "stage", "seconds",
+                                                                                "parameters and figures")))
+    parts.append(fold(f"Stages and figures ({len(g.docs)} JSON records)", "".join(recs) or
+                      "<p>No records found: no run.json or other JSON in the folder, and no product carries its "
+                      "stage's metadata or history.</p>"))
+    return "".join(parts)
 
 
 def _read_records(jsons: list[Path]) -> tuple[dict, list[str]]:
@@ -465,8 +458,7 @@ def _read_records(jsons: list[Path]) -> tuple[dict, list[str]]:
 
 
 def _records_html(docs: dict, root: Path) -> list[str]:
-    """Per JSON record: its stage rows, its other figures (flattened, folded) and the plot of
-    a confusion matrix when it holds one."""
+    """Per JSON record: its stage rows and its other figures (flattened, folded)."""
     out = []
     for p, doc in docs.items():
         srows = _stage_rows(doc)
@@ -478,10 +470,6 @@ def _records_html(docs: dict, root: Path) -> list[str]:
         if flat:
             out.append(title + f"<details><summary>{len(flat)} figures</summary>"
                        + _table(flat, ("figure", "value")) + "</details>")
-        cm = _confusion(doc)
-        if cm is not None:
-            out.append(_img(_plot_confusion(cm[0], cm[1], f"Confusion matrix ({p.name})"),
-                            f"Confusion matrix from {p.name}"))
     return out
 
 
@@ -582,37 +570,66 @@ def _meshes_html(meshes: list[Path], root: Path, params: ReportParams) -> list[s
     return out
 
 
-def _rasters_and_images_html(root: Path, rasters: list[Path], params: ReportParams) -> list[str]:
-    """The "Rasters" section (a plot per raster, a note for an unreadable one) and the "Images
-    in the folder" section (PNGs up to 2 MB embedded as they are), each only when not empty."""
-    sections = []
-    raster_html = []
-    for p in rasters[: params.max_files]:
+def _previews_html(root: Path, rasters: list[Path], params: ReportParams) -> list[str]:
+    """Previews: a plot per raster (ortho, hillshade, DTM, density...; a note for an
+    unreadable one), then the PNG images of the folder (renders, plots; up to 2 MB, embedded as
+    they are; not the photos in an ``images`` folder)."""
+    out = []
+    for p in _preview_rasters(root, rasters, params.max_files):
         try:
             r = _plot_raster(p)
         except Exception as e:  # noqa: BLE001
-            raster_html.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
+            out.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
             continue
         if r:
-            raster_html.append(_img(r[1], r[0]))
-    if raster_html:
-        sections.append("<h2>Rasters</h2>" + "".join(raster_html))
-    pngs = [p for p in _find(root, (".png",), params.max_depth) if p.stat().st_size <= 2_000_000]
-    if pngs:
-        sections.append("<h2>Images in the folder</h2>" + "".join(
-            _img(base64.b64encode(p.read_bytes()).decode("ascii"), str(p.relative_to(root)))
-            for p in pngs[: params.max_files]))
-    return sections
+            out.append(_img(r[1], r[0]))
+    pngs = [p for p in _find(root, (".png",), params.max_depth) if p.stat().st_size <= 2_000_000
+            and "images" not in p.relative_to(root).parts[:-1]]  # the photos of an SfM folder are inputs
+    out += [_img(base64.b64encode(p.read_bytes()).decode("ascii"), str(p.relative_to(root)))
+            for p in pngs[: params.max_files]]
+    return out
 
 
-def write_report(workdir, output, overwrite: bool = False, params: ReportParams = ReportParams()) -> Path:
-    """Build the report of ``workdir`` and write it atomically to ``output`` (.html)."""
+def write_report(workdir, output, overwrite: bool = False, params: ReportParams = ReportParams(),
+                 pdf: bool = False) -> list[Path]:
+    """Build the report of ``workdir`` and write it atomically to ``output``: an .html page,
+    or a .pdf printed by headless Chromium (:mod:`workstation.render.report_pdf`). With
+    ``pdf`` an .html ``output`` also gets its PDF beside it (same name, .pdf). Returns the
+    files written.
+
+    Raises
+    ------
+    InvalidInputError
+        When ``output`` is neither .html nor .pdf.
+    MissingDependencyError
+        When a PDF is asked for and Chromium is not found (checked before the report is built).
+    """
     from workstation.io import atomic_path
+    from workstation.io.atomic import check_outputs
+
+    from .report_pdf import print_to_pdf, require_chromium
 
     out = Path(output)
-    if out.suffix.lower() not in (".html", ".htm"):
-        raise InvalidInputError("the report must be an .html file", path=out)
+    suffix = out.suffix.lower()
+    if suffix not in (".html", ".htm", ".pdf"):
+        raise InvalidInputError("the report must be an .html or a .pdf file", path=out, field="--output")
+    pdf_out = out if suffix == ".pdf" else (out.with_suffix(".pdf") if pdf else None)
+    if pdf_out is not None:
+        require_chromium()  # before the long build
+    check_outputs([out] if pdf_out in (None, out) else [out, pdf_out], overwrite)
     text = build_report(workdir, params)
-    with atomic_path(out, overwrite=overwrite) as tmp:
-        tmp.write_text(text, encoding="utf-8")
-    return out
+    written = []
+    if suffix != ".pdf":
+        with atomic_path(out, overwrite=overwrite) as tmp:
+            tmp.write_text(text, encoding="utf-8")
+        written.append(out)
+    if pdf_out is not None:
+        with atomic_path(pdf_out, overwrite=overwrite) as tmp:
+            page = tmp.with_suffix(".html")
+            page.write_text(text, encoding="utf-8")
+            try:
+                print_to_pdf(page, tmp)
+            finally:
+                page.unlink(missing_ok=True)
+        written.append(pdf_out)
+    return written
