@@ -468,10 +468,13 @@ def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: s
          cpu_s=round(time.process_time() - cpu0, 1))
 
 
-def texture_heritage(workdir):
+def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True):
     """Texture the true heritage-church mesh from the 24 photos of the synthetic convergent rig
     (datasets_synth/rig_heritage.toml, true cameras); texture colour at random points of the
-    textured church faces against the scene's true surface colour (0-255)."""
+    textured church faces against the scene's true surface colour (0-255). With ``jitter`` J,
+    each photo's channels are first multiplied by gains drawn from U(1 - J, 1 + J) (seed 7:
+    photos of unequal exposure), and the error is also given after the one gain per channel
+    that best fits the truth (what exposure balancing can recover)."""
     from workstation.core.products import Mesh
     from workstation.mesh import TextureParams, subdivide_midpoint, texture_from_photos
     from workstation.photogrammetry.rigs import _target_scene, load_rig, make_rig, surface_colour
@@ -491,7 +494,15 @@ def texture_heritage(workdir):
     V, F, vals = subdivide_midpoint(V[used], inv.reshape(-1, 3), np.column_stack([alb[tmask], np.ones(tmask.sum())]),
                                     max_edge=2.0)
     mesh = Mesh(V, F)
-    (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams())
+    images = None
+    if jitter:
+        from workstation.io.images import read_image
+
+        rng = np.random.default_rng(7)
+        images = {i: np.clip(np.round(read_image(im, workdir)[..., :3] * rng.uniform(1 - jitter, 1 + jitter, 3)), 0, 255)
+                  .astype(np.uint8) for i, im in sorted(rec.images.items())}
+    (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams(exposure_balance=balance),
+                                   images=images, image_root=workdir)
     tex = out.meta["texture"]
     h, w = tex.shape[:2]
     rng = np.random.default_rng(0)
@@ -505,6 +516,7 @@ def texture_heritage(workdir):
     n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
     truth = 255 * surface_colour(P, n / np.linalg.norm(n, axis=1, keepdims=True), vals[faces, :3])
     err = np.abs(col - truth)
+    fit = np.abs(col * (col * truth).sum(0) / (col * col).sum(0) - truth)
     area = mesh.face_areas()
     church = vals[:, 3] > 0.5
     seen = out.face_attrs["texture_view"] >= 0
@@ -513,6 +525,8 @@ def texture_heritage(workdir):
          church_area_textured_fraction=round(float(area[church & seen].sum() / area[church].sum()), 3),
          abs_error_0_255={"p50": round(float(np.median(err)), 2), "mean": round(float(err.mean()), 2),
                           "p95": round(float(np.percentile(err, 95)), 2)},
+         exposure_jitter=jitter, exposure_balance=balance, gain_range=step.summary["exposure_gain_range"],
+         abs_error_after_global_gain={"p50": round(float(np.median(fit)), 2), "mean": round(float(fit.mean()), 2)},
          texture_wall_s=round(wall, 1), texture_cpu_s=round(cpu, 1),
          rig_render_wall_s=None if wall_r is None else round(wall_r, 1))
 
@@ -540,6 +554,9 @@ if __name__ == "__main__":
                     help="heritage, heritage_fused: Poisson backend (default: the package's)")
     ap.add_argument("--with-truth-pose", action="store_true",
                     help="heritage_fused: also mesh with the dense cloud placed by the camera-truth similarity")
+    ap.add_argument("--exposure-jitter", type=float, default=0.0,
+                    help="texture: multiply each photo's channels by gains from U(1-J, 1+J) (seed 7)")
+    ap.add_argument("--no-exposure-balance", action="store_true", help="texture: without the exposure balance")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
     ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
     ap.add_argument("--samples-per-node", type=float, default=2.0, help="poisson, poisson_backend_open3d (2: the package default)")
@@ -563,6 +580,6 @@ if __name__ == "__main__":
     if "heritage" in todo:
         heritage(a.poisson_backend)
     if "texture" in todo:
-        texture_heritage(Path(a.work))
+        texture_heritage(Path(a.work), a.exposure_jitter, not a.no_exposure_balance)
     if "heritage_fused" in todo:
         heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)

@@ -90,6 +90,8 @@ MIN_PIECE_FRACTION = 0.05
           help="Texture: largest side of the texture image, pixels."),
     bound(TextureParams, "max_views", "--texture-views", type=click.IntRange(1, 16), show_default=True,
           help="Texture: photos blended per face (1 = the sharpest view)."),
+    bound(TextureParams, "exposure_balance", "--exposure-balance/--no-exposure-balance", show_default=True,
+          help="Texture: balance the photos' exposure and white balance by per-photo gains (Brown & Lowe 2007)."),
 )
 @overwrite_option
 @allow_outside_option

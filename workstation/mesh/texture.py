@@ -26,6 +26,14 @@ Open3D ray casting, and works on any machine:
    :func:`workstation.registration.colorize.project`), sampled bilinearly and blended with the
    view weights.
 
+4. **Exposure balance** (Brown & Lowe, "Automatic panoramic image stitching using invariant
+   features", IJCV 2007, section 6): photos taken with different exposure or white balance
+   leave colour seams where the chosen view changes from face to face. One gain per photo and
+   channel is found by least squares: over the faces two photos both see, their mean colours
+   times their gains should agree (error sigma ``sigma_n`` = 10 grey levels), and each gain
+   stays near 1 (sigma ``sigma_g`` = 0.1), the paper's values; each photo is multiplied by
+   its gains when sampled.
+
 Faces seen by no photo get their vertex colours (or grey) and ``texture_view = -1``.
 The textured mesh has one vertex per face corner (``uv`` per vertex, as OBJ and glTF store
 texture coordinates) and its image in ``meta["texture"]`` (see :mod:`workstation.io.mesh`).
@@ -73,6 +81,9 @@ class TextureParams:
         None = 5 % of the median edge length (plus 1e-4 of the distance for float32 ray casting).
     fallback_rgb : (int, int, int)
         Colour of faces seen by no photo when the mesh has no vertex colours (0-255).
+    exposure_balance : bool
+        Balance the photos' exposure and white balance by per-photo gains (True; step 4
+        of the module description).
     """
 
     texel_size: float | None = None
@@ -83,6 +94,7 @@ class TextureParams:
     border_px: float = 2.0
     depth_tolerance: float | None = None
     fallback_rgb: tuple = (128, 128, 128)
+    exposure_balance: bool = True
 
     def __post_init__(self):
         if self.texel_size is not None and not self.texel_size > 0:
@@ -106,8 +118,8 @@ def _corner_order(tri: np.ndarray) -> np.ndarray:
     return np.stack([r, (r + 1) % 3, (r + 2) % 3], axis=1)
 
 
-def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams()):
-    """Best views of every face.
+def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), k: int | None = None):
+    """The ``k`` (default ``params.max_views``) best views of every face.
 
     Returns
     -------
@@ -124,7 +136,7 @@ def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
 
     V, F = mesh.vertices, mesh.faces
     m = len(F)
-    k = int(params.max_views)
+    k = int(params.max_views if k is None else k)
     origin = default_origin(V)
     tri = V[F]
     cen = tri.mean(axis=1)
@@ -345,7 +357,11 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
     if not rec.images:
         raise InvalidInputError("the reconstruction has no oriented images", field="reconstruction")
     with Timer() as t:
-        views, weights, gsd = select_views(mesh, rec, params)
+        k = params.max_views
+        views, weights, gsd = select_views(mesh, rec, params, max(k, BALANCE_VIEWS) if params.exposure_balance else k)
+        photos = _PhotoCache(rec, images, image_root)
+        gains = exposure_gains(mesh, rec, views, photos) if params.exposure_balance else {}
+        views, weights = views[:, :k], weights[:, :k]
         seen = views[:, 0] >= 0
         if not seen.any():
             raise StageError(STAGE, "no face is seen whole by any photo",
@@ -354,12 +370,11 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         atlas = build_atlas(mesh, texel, params)
         order = _corner_order(mesh.vertices[mesh.faces])
         corners = np.take_along_axis(mesh.faces, order, axis=1)  # (right angle, p, q) vertex ids
-        photos = _PhotoCache(rec, images, image_root)
-        tex = _blend_photos(mesh, rec, views, weights, seen, atlas, corners, photos)
+        tex = _blend_photos(mesh, rec, views, weights, seen, atlas, corners, photos, gains)
         _paint_unseen(tex, mesh, seen, atlas, corners, params)
         texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
         out = _textured_mesh(mesh, atlas, views, texture)
-    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds)
+    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds, gains)
     log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
              int(seen.sum()), mesh.n_faces)
     return out, step
@@ -389,11 +404,57 @@ class _PhotoCache:
         return self.cache[iid]
 
 
+#: Views per face compared when balancing exposure; Brown & Lowe's sigmas (grey levels, gain).
+BALANCE_VIEWS, SIGMA_N, SIGMA_G = 4, 10.0, 0.1
+
+
+def exposure_gains(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos: _PhotoCache) -> dict:
+    """Per-photo, per-channel gains (image id -> (3,) float) that make the photos agree where
+    they see the same faces (Brown & Lowe 2007, section 6; module description, step 4).
+
+    ``views`` (m, k): the faces' candidate views. For each pair of photos i, j, N_ij counts the
+    faces both see and I_ij is photo i's mean colour at those faces' centroids; the gains g
+    minimise sum N_ij ((g_i I_ij - g_j I_ji)^2 / SIGMA_N^2 + (1 - g_i)^2 / SIGMA_G^2), one
+    linear system per channel. Photos sharing no face keep gain 1."""
+    from workstation.registration.colorize import bilinear, project
+
+    ids = np.unique(views[views >= 0])
+    if ids.size < 2 or views.shape[1] < 2:
+        return {}
+    slot = np.searchsorted(ids, np.maximum(views, ids[0]))
+    cen = mesh.vertices[mesh.faces].mean(axis=1)
+    colour = np.full(views.shape + (3,), np.nan)
+    for n, iid in enumerate(ids):
+        f, s = np.nonzero(views == iid)
+        im = rec.images[int(iid)]
+        cam = rec.cameras[im.camera_id]
+        u, v, _ = project(cen[f], cam, im.pose)
+        colour[f, s] = bilinear(photos(int(iid)), np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
+    n = ids.size
+    N = np.zeros((n, n))
+    S = np.zeros((n, n, 3))  # S[i, j]: sum of photo i's colours over the faces i and j share
+    for a in range(views.shape[1]):
+        for b in range(views.shape[1]):
+            both = (views[:, a] >= 0) & (views[:, b] >= 0) & (a != b)
+            np.add.at(N, (slot[both, a], slot[both, b]), 1.0)
+            np.add.at(S, (slot[both, a], slot[both, b]), colour[both, a])
+    I = S / np.maximum(N, 1.0)[..., None]
+    gains = np.ones((n, 3))
+    alone = N.sum(axis=1) == 0
+    for c in range(3):
+        A = np.diag((N * (2 * I[..., c] ** 2 / SIGMA_N**2 + 1 / SIGMA_G**2)).sum(axis=1))
+        A -= 2 * N * I[..., c] * I[..., c].T / SIGMA_N**2 * (1 - np.eye(n))
+        b = N.sum(axis=1) / SIGMA_G**2
+        A[alone, alone], b[alone] = 1.0, 1.0
+        gains[:, c] = np.linalg.solve(A, b)
+    return {int(i): gains[k] for k, i in enumerate(ids)}
+
+
 def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
-                  atlas: Atlas, corners: np.ndarray, photos: _PhotoCache) -> np.ndarray:
+                  atlas: Atlas, corners: np.ndarray, photos: _PhotoCache, gains: Mapping[int, np.ndarray]) -> np.ndarray:
     """The texture (h, w, 3) float32 of the seen faces: each texel's 3-D point projected into
-    the face's selected views, the photos sampled bilinearly and blended with the views'
-    weights; texels of unseen faces stay 0. Faces are processed per atlas cell size in
+    the face's selected views, the photos sampled bilinearly, times their ``gains`` (image id
+    -> (3,); 1 when absent), and blended with the views' weights; texels of unseen faces stay 0. Faces are processed per atlas cell size in
     chunks of about 2 million texels to bound memory."""
     from workstation.registration.colorize import bilinear, project
 
@@ -415,7 +476,7 @@ def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: n
                     u, v, _ = project(P[sel], cam, im.pose)
                     u = np.clip(u, 0, cam.width - 1)
                     v = np.clip(v, 0, cam.height - 1)
-                    col = bilinear(photos(int(iid)), u, v)[:, :3]
+                    col = bilinear(photos(int(iid)), u, v)[:, :3] * gains.get(int(iid), 1.0)
                     wt = weights[f[sel], slot]
                     # a texel belongs to one face: indices are unique within one call
                     tex_w[y[sel], x[sel]] += wt
@@ -464,17 +525,21 @@ def _textured_mesh(mesh: Mesh, atlas: Atlas, views: np.ndarray, texture: np.ndar
 
 
 def _texture_record(mesh: Mesh, rec: Reconstruction, params: TextureParams, atlas: Atlas, views: np.ndarray,
-                    seen: np.ndarray, seconds: float) -> StepRecord:
+                    seen: np.ndarray, seconds: float, gains: Mapping[int, np.ndarray]) -> StepRecord:
     """The step record: texel size (mesh units) used and requested, limits, texture size (px),
-    faces and area fraction textured, number of images and of views used."""
+    faces and area fraction textured, number of images and of views used, the range of the
+    exposure gains."""
     area = mesh.face_areas()
+    g = np.array(list(gains.values())) if gains else np.ones((1, 3))
     return StepRecord(
         STAGE,
         {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
-         "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos},
+         "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos,
+         "exposure_balance": params.exposure_balance},
         seconds,
         {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
          "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
          "area_textured_fraction": float(area[seen].sum() / max(area.sum(), 1e-300)),
-         "views_used": int(np.unique(views[seen, 0]).size)},
+         "views_used": int(np.unique(views[seen, 0]).size),
+         "exposure_gain_range": [round(float(g.min()), 4), round(float(g.max()), 4)]},
     )
