@@ -68,7 +68,7 @@ def test_catalog_reads_no_point(survey, monkeypatch):
     def boom(*a, **k):
         raise AssertionError("a point was read while planning")
 
-    for name in ("read", "iter_chunks", "_records"):
+    for name in ("read", "iter_chunks", "raw_records"):
         monkeypatch.setattr(las, name, boom)
     for name in ("read", "read_points", "chunk_iterator"):
         monkeypatch.setattr(laspy.LasReader, name, boom)

@@ -20,7 +20,7 @@ from workstation.core.geometry import default_origin
 from workstation.core.products import Mesh
 
 
-def _pymeshlab():
+def import_pymeshlab():
     try:
         import pymeshlab
     except ImportError as e:  # pragma: no cover - pymeshlab is a declared dependency
@@ -42,7 +42,7 @@ def cloud_to_pymeshlab(cloud: Cloud, origin=None):
     -------
     (pymeshlab.Mesh, (3,) float64 origin)
     """
-    pml = _pymeshlab()
+    pml = import_pymeshlab()
     origin = default_origin(cloud.xyz) if origin is None else np.asarray(origin, dtype=np.float64)
     kw = {}
     if "normal" in cloud.attrs:
@@ -61,7 +61,7 @@ def mesh_to_pymeshlab(mesh: Mesh, origin=None):
     -------
     (pymeshlab.Mesh, (3,) float64 origin)
     """
-    pml = _pymeshlab()
+    pml = import_pymeshlab()
     origin = default_origin(mesh.vertices) if origin is None else np.asarray(origin, dtype=np.float64)
     kw = {}
     va = mesh.vertex_attrs
@@ -83,7 +83,7 @@ def mesh_to_pymeshlab(mesh: Mesh, origin=None):
 
 def meshset_with(*meshes):
     """A new ``MeshSet`` holding the given ``pymeshlab.Mesh`` objects (ids 0, 1, ...)."""
-    pml = _pymeshlab()
+    pml = import_pymeshlab()
     ms = pml.MeshSet()
     ms.set_verbosity(False)
     for m in meshes:

@@ -187,17 +187,17 @@ def read(path, bounds=None, resolution=None, level=None) -> Cloud:
     (the same points ``laspy.CopcReader.query`` returns; see :func:`level_range`)."""
     import laspy
 
-    from workstation.io.las import _Filler, _meta_and_crs, _vlr_records
+    from workstation.io.las import Filler, meta_and_crs, vlr_records
 
     path = Path(path)
     header, rec = query_records(path, bounds, resolution, level)
     with open(path, "rb") as f:  # CopcReader skips the EVLRs, where the CRS may be
         full = laspy.LasHeader.read_from(f, read_evlrs=True)
-    meta, crs = _meta_and_crs(full, path)
-    meta["las"]["evlrs"] = _vlr_records(full.evlrs or [])
+    meta, crs = meta_and_crs(full, path)
+    meta["las"]["evlrs"] = vlr_records(full.evlrs or [])
     meta["las"]["crs"] = crs
     meta["format"] = "laz"
-    f = _Filler(header, len(rec))
+    f = Filler(header, len(rec))
     if len(rec):
         f.fill(rec, 0)
     return Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)

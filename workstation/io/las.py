@@ -187,7 +187,7 @@ def check_raw_header(path: Path) -> None:
             )
 
 
-def _check_point_bytes(path: Path, header) -> None:
+def check_point_bytes(path: Path, header) -> None:
     """Compare the header's point count with the points present (bytes for LAS, the chunk table for LAZ)."""
     if header.are_points_compressed:
         _check_laz_count(path, header)
@@ -269,7 +269,7 @@ def _check_laz_count(path: Path, header) -> None:
     _count_error(path, int(header.point_count), lo, total)
 
 
-def _vlr_records(vlrs) -> list[dict]:
+def vlr_records(vlrs) -> list[dict]:
     """The (E)VLRs to keep for writing back, as plain records. The COPC info VLR and hierarchy
     EVLR are left out without a word: they index this file's bytes and would be false in any
     file written from the points (a COPC file written as LAZ is plain LAZ)."""
@@ -344,7 +344,7 @@ def _header_meta(header, path) -> dict:
         "point_format": int(header.point_format.id),
         "scales": [float(s) for s in header.scales],
         "offsets": [float(o) for o in header.offsets],
-        "vlrs": _vlr_records([v for v in header.vlrs if not _is_managed_vlr(v)]),
+        "vlrs": vlr_records([v for v in header.vlrs if not _is_managed_vlr(v)]),
         "extra_dims": _extra_defs(header),
         "system_identifier": header.system_identifier,
         "generating_software": header.generating_software,
@@ -365,7 +365,7 @@ def _is_crs_vlr(rec: dict) -> bool:
     return rec["user_id"] == "LASF_Projection" and rec["record_id"] in (34735, 34736, 34737, 2111, 2112)
 
 
-class _Filler:
+class Filler:
     """Preallocated output arrays filled chunk by chunk."""
 
     def __init__(self, header, n: int):
@@ -423,10 +423,10 @@ class _Filler:
         return end
 
 
-def _allocate(path: Path, header, n: int) -> _Filler:
+def _allocate(path: Path, header, n: int) -> Filler:
     """The output arrays for ``n`` points (a count already checked against the file)."""
     try:
-        return _Filler(header, n)
+        return Filler(header, n)
     except MemoryError:
         raise InvalidInputError(f"not enough memory for the header's {n:,} points",
                                 "read the file in chunks (iter_chunks) or on a larger machine", path=path,
@@ -454,12 +454,12 @@ def open_las(path):
         raise wrap_open_error(path, exc) from None
 
 
-def _meta_and_crs(header, path):
+def meta_and_crs(header, path):
     meta = {"las": _header_meta(header, path), "format": "laz" if header.are_points_compressed else "las"}
     return meta, crs_string(header, path)
 
 
-def _records(reader, path, n: int, chunk_size: int):
+def raw_records(reader, path, n: int, chunk_size: int):
     """Point records chunk by chunk; corrupt or truncated data becomes an InvalidInputError."""
     got = 0
     it = reader.chunk_iterator(chunk_size)
@@ -488,7 +488,7 @@ def _records(reader, path, n: int, chunk_size: int):
 
 
 def _range_records(reader, path, start: int, stop: int, chunk_size: int):
-    """The point records ``start:stop``, chunk by chunk (see :func:`_records`)."""
+    """The point records ``start:stop``, chunk by chunk (see :func:`raw_records`)."""
     try:
         reader.seek(start)
         got = start
@@ -526,11 +526,11 @@ def _read_inside(path: Path, bounds, chunk_size: int | None) -> Cloud:
     laspy = _laspy()
     with open_las(path) as reader:
         header = reader.header
-        _check_point_bytes(path, header)
+        check_point_bytes(path, header)
         n = int(header.point_count)
         size = chunk_size or (CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS)
-        kept = [rec.array[bounds_mask(rec.array, header, bounds)] for rec in _records(reader, path, n, size)]
-        meta, crs = _meta_and_crs(header, path)
+        kept = [rec.array[bounds_mask(rec.array, header, bounds)] for rec in raw_records(reader, path, n, size)]
+        meta, crs = meta_and_crs(header, path)
     arr = np.concatenate(kept) if kept else np.empty(0, header.point_format.dtype())
     rec = laspy.ScaleAwarePointRecord(arr, header.point_format, header.scales, header.offsets)
     filler = _allocate(path, header, len(arr))
@@ -563,14 +563,14 @@ def read(path, *, chunk_size: int | None = None, bounds=None) -> Cloud:
         return _read_inside(path, bounds, chunk_size)
     with open_las(path) as reader:
         header = reader.header
-        _check_point_bytes(path, header)
+        check_point_bytes(path, header)
         n = int(header.point_count)
         if chunk_size is None:
             chunk_size = CHUNK_LAZ if header.are_points_compressed else CHUNK_LAS
         filler = _allocate(path, header, n)
         got = 0
         with _fill_pool() as pool:
-            for rec in _records(reader, path, n, chunk_size):
+            for rec in raw_records(reader, path, n, chunk_size):
                 # copy fields in cache-sized slices of a decoded chunk, the slices spread over
                 # the cores (numpy releases the GIL while copying; lazrs holds it while decoding,
                 # so the copy cannot overlap the decoding, only be shared out)
@@ -583,10 +583,10 @@ def read(path, *, chunk_size: int | None = None, bounds=None) -> Cloud:
                 else:
                     list(pool.map(lambda job: filler.fill(*job), jobs))
                 got += m
-        meta, crs = _meta_and_crs(header, path)
+        meta, crs = meta_and_crs(header, path)
         if header.version.minor >= 4 and getattr(header, "number_of_evlrs", 0):
             evlrs = reader.evlrs if reader.evlrs is not None else []
-            meta["las"]["evlrs"] = _vlr_records(evlrs)
+            meta["las"]["evlrs"] = vlr_records(evlrs)
     meta["las"]["crs"] = crs
     return Cloud.from_owned_arrays(filler.xyz, filler.attrs, crs=crs, meta=meta)
 
@@ -621,19 +621,19 @@ def iter_chunks(path, chunk_size: int = 1_000_000, start: int = 0, stop: int | N
     path = Path(path)
     with open_las(path) as reader:
         header = reader.header
-        _check_point_bytes(path, header)
-        meta, crs = _meta_and_crs(header, path)
+        check_point_bytes(path, header)
+        meta, crs = meta_and_crs(header, path)
         meta["las"]["crs"] = crs
         n = int(header.point_count)
         stop = n if stop is None else min(int(stop), n)
         if start or stop < n:
             records = _range_records(reader, path, int(start), stop, chunk_size)
         else:
-            records = _records(reader, path, n, chunk_size)
+            records = raw_records(reader, path, n, chunk_size)
         for rec in records:
             if bounds is not None:
                 rec = rec[bounds_mask(rec.array, header, bounds)]
-            f = _Filler(header, len(rec))
+            f = Filler(header, len(rec))
             f.fill(rec, 0)
             yield Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta)
 

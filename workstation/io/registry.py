@@ -22,7 +22,7 @@ from workstation.core.log import get_logger
 from .atomic import atomic_path
 
 #: Files whose CRS was already checked against their coordinates (path, mtime, size): the
-#: warning of :func:`_warn_crs` is shown once per file per process.
+#: warning of :func:`warn_crs` is shown once per file per process.
 _CRS_CHECKED: set = set()
 
 # extension -> (format name, module)
@@ -57,7 +57,7 @@ def _module(path):
     return importlib.import_module(format_of(path)[1])
 
 
-def _check_readable(path) -> Path:
+def check_readable(path) -> Path:
     p = Path(path)
     if not p.exists():
         raise InvalidInputError("file not found", "check the path", path=p)
@@ -109,7 +109,7 @@ def check_selection(path, bounds=None, resolution=None, level=None) -> dict | No
             "resolution": resolution, "level": level}
 
 
-def _inside(cloud: Cloud, bounds) -> Cloud:
+def inside_bounds(cloud: Cloud, bounds) -> Cloud:
     """The points of ``cloud`` inside ``bounds`` (inclusive on floats; formats without integer
     coordinates)."""
     b = np.asarray(bounds)
@@ -129,7 +129,7 @@ def _read_selected(path: Path, sel: dict, **opts) -> Cloud:
     mod = _module(path)
     if mod.__name__ == "workstation.io.las":
         return mod.read(path, bounds=sel["bounds"], **opts)
-    return _inside(mod.read(path, **opts), sel["bounds"])
+    return inside_bounds(mod.read(path, **opts), sel["bounds"])
 
 
 def read_cloud(path, *, bounds=None, resolution=None, level=None, **opts) -> Cloud:
@@ -149,17 +149,17 @@ def read_cloud(path, *, bounds=None, resolution=None, level=None, **opts) -> Clo
     **opts
         Format options (``columns="x,y,z,label"`` for text files, ``scans=[0]`` for E57, ...).
     """
-    p = _check_readable(path)
+    p = check_readable(path)
     sel = check_selection(p, bounds, resolution, level)
     if sel is None:
-        cloud = _guarded(p, _module(p).read, p, **opts)
+        cloud = guarded(p, _module(p).read, p, **opts)
     else:
-        cloud = _guarded(p, _read_selected, p, sel, **opts)
+        cloud = guarded(p, _read_selected, p, sel, **opts)
         if cloud.n == 0 and sel["bounds"] is not None:
             raise InvalidInputError(f"no points inside --bounds {','.join(f'{v:g}' for v in sel['bounds'])}",
                                     "compare the box with the file's bounds (ws info --summary FILE)", path=p,
                                     field="--bounds")
-    _warn_crs(p, cloud)
+    warn_crs(p, cloud)
     return cloud.with_meta(source=str(p), format=format_of(p)[0]) if "format" not in cloud.meta else cloud.with_meta(source=str(p))
 
 
@@ -188,7 +188,7 @@ def _file_extent(path: Path, cloud: Cloud):
     return cloud.xyz.min(axis=0), cloud.xyz.max(axis=0)
 
 
-def _warn_crs(path: Path, cloud: Cloud) -> None:
+def warn_crs(path: Path, cloud: Cloud) -> None:
     """Log, once per file, why its CRS does not fit its coordinates
     (:func:`workstation.io.crs.crs_warnings`: degrees on 1e6 coordinates, a geocentric CRS on
     eastings ...). A warning only: a failure of the check itself is logged at debug level."""
@@ -217,7 +217,7 @@ def _reader_error(path: Path, exc: Exception) -> InvalidInputError:
                              f"{name}; run with -v for the traceback", path=path)
 
 
-def _guarded(path: Path, func, *args, **opts):
+def guarded(path: Path, func, *args, **opts):
     """``func(*args, **opts)`` with any exception that is not one of ours wrapped by :func:`_reader_error`.
 
     Options a reader does not take still raise ``TypeError`` (a caller's mistake, not the file's).
@@ -253,12 +253,12 @@ def iter_chunks(path, chunk_size: int = 1_000_000, *, bounds=None, resolution=No
     ``bounds``/``resolution``/``level`` select points as in :func:`read_cloud` (chunks may then
     be empty; a COPC query's result is held, then cut into chunks).
     """
-    p = _check_readable(path)
+    p = check_readable(path)
     sel = check_selection(p, bounds, resolution, level)
     checked = False
     for chunk in _chunks(p, sel, chunk_size, **opts):
         if not checked and chunk.n:
-            _warn_crs(p, chunk)
+            warn_crs(p, chunk)
             checked = True
         yield chunk
 
@@ -269,17 +269,17 @@ def _chunks(p: Path, sel: dict | None, chunk_size: int, **opts) -> Iterator[Clou
     if sel is not None and not sel["copc"] and mod.__name__ == "workstation.io.las":
         opts["bounds"] = sel["bounds"]
     elif sel is not None:
-        cloud = _guarded(p, _read_selected, p, sel, **opts)
+        cloud = guarded(p, _read_selected, p, sel, **opts)
         for start in range(0, max(cloud.n, 1), chunk_size):
             yield cloud[start : start + chunk_size]
         return
     if hasattr(mod, "iter_chunks"):
-        chunks = _guarded(p, mod.iter_chunks, p, chunk_size, **opts)
+        chunks = guarded(p, mod.iter_chunks, p, chunk_size, **opts)
         while True:
-            chunk = _guarded(p, next, chunks, None)
+            chunk = guarded(p, next, chunks, None)
             if chunk is None:
                 return
             yield chunk
-    cloud = _guarded(p, mod.read, p, **opts)
+    cloud = guarded(p, mod.read, p, **opts)
     for start in range(0, max(cloud.n, 1), chunk_size):
         yield cloud[start : start + chunk_size]

@@ -108,9 +108,9 @@ def import_pymeshlab():
     runtime is loaded yet and the user has not chosen one.
     """
     passive_openmp()
-    from workstation.interop.pymeshlab import _pymeshlab
+    from workstation.interop.pymeshlab import import_pymeshlab
 
-    return _pymeshlab()
+    return import_pymeshlab()
 
 
 def passive_openmp() -> None:

@@ -428,7 +428,7 @@ def _split_vegetation(xyz: np.ndarray, cls: np.ndarray, low_max: float = 0.5, me
     g = np.isin(cls, (C.GROUND, C.ROAD_SURFACE))
     if not veg.any() or g.sum() < 3:
         return cls
-    from .features import _bilinear, _fill_nearest, _grid_reduce
+    from .features import fill_nearest, grid_bilinear, grid_reduce
 
     lo = xyz[:, :2].min(axis=0)
     xy = xyz[:, :2] - lo
@@ -436,9 +436,9 @@ def _split_vegetation(xyz: np.ndarray, cls: np.ndarray, low_max: float = 0.5, me
     c = np.floor(xy[:, 0] / cell).astype(np.int64)
     r = np.floor(xy[:, 1] / cell).astype(np.int64)
     shape = (int(r.max()) + 1, int(c.max()) + 1)
-    gz = _grid_reduce(xyz[g, 2], r[g], c[g], shape, np.minimum, np.inf)
-    gz = _fill_nearest(gz, ~np.isfinite(gz))
-    h = xyz[veg, 2] - _bilinear(gz, xy[veg], cell)
+    gz = grid_reduce(xyz[g, 2], r[g], c[g], shape, np.minimum, np.inf)
+    gz = fill_nearest(gz, ~np.isfinite(gz))
+    h = xyz[veg, 2] - grid_bilinear(gz, xy[veg], cell)
     out = cls.copy()
     out[veg] = np.where(h < low_max, C.LOW_VEGETATION, np.where(h < medium_max, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION))
     return out

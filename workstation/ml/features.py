@@ -170,13 +170,13 @@ def _grid(xy: np.ndarray, cell: float):
     return r, c, shape
 
 
-def _grid_reduce(z, r, c, shape, fn, fill):
+def grid_reduce(z, r, c, shape, fn, fill):
     g = np.full(shape[0] * shape[1], fill, np.float64)
     fn.at(g, r * shape[1] + c, z)
     return g.reshape(shape)
 
 
-def _fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
+def fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
     from scipy import ndimage
 
     if not empty.any():
@@ -235,9 +235,9 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     else:
         r, c, shape = rc
     if zmin is None:
-        zmin = _grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
+        zmin = grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf)
     empty = ~np.isfinite(zmin)
-    z0 = _fill_nearest(zmin, empty)
+    z0 = fill_nearest(zmin, empty)
     if steps is None:
         (steps,) = opening_steps(z0, cell, (window,))
     bad = (steps > slope) | empty
@@ -246,8 +246,8 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     if trend_slope > 0:
         from workstation.ground.common import trend_tolerance
 
-        bad = (steps > trend_tolerance(_fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
-    g = _fill_nearest(z0, bad)
+        bad = (steps > trend_tolerance(fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
+    g = fill_nearest(z0, bad)
     # smooth the filled cells a little (3 cells), keeping ground cells as measured
     sm = ndimage.uniform_filter(g, size=3, mode="nearest")
     return np.where(bad, sm, g)
@@ -270,13 +270,13 @@ def _despike_low(zmin: np.ndarray, threshold: float = 1.5) -> np.ndarray:
     return zmin
 
 
-def _bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
+def grid_bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
     from workstation.ground.common import bilinear
 
     return bilinear(grid, xy, cell, (0.0, 0.0))
 
 
-def _voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
+def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     """Voxel representative (first point) indices and each point's voxel index."""
     from workstation.ground.common import column_max, column_min
 
@@ -458,7 +458,7 @@ def _voxel_eigen(xyz: np.ndarray, voxel: float, k: int, workers: int):
         Each point's representative.
     """
     if voxel > 0:
-        first, inv = _voxel_ids(xyz, voxel)
+        first, inv = voxel_ids(xyz, voxel)
         ref = xyz[first]
     else:
         ref, inv = xyz, np.arange(len(xyz))
@@ -548,9 +548,9 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
 
     cell = auto_cell(xyz[:, :2], p.cell)  # sparse data over a large extent: grids sized by the points
     r, c, shape = _grid(xyz[:, :2], cell)
-    zmin = _despike_low(_grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
-    zmax = _grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
-    zmin_f = _fill_nearest(zmin, ~np.isfinite(zmin))  # despiked cells take their neighbours' value
+    zmin = _despike_low(grid_reduce(xyz[:, 2], r, c, shape, np.minimum, np.inf))
+    zmax = grid_reduce(xyz[:, 2], r, c, shape, np.maximum, -np.inf)
+    zmin_f = fill_nearest(zmin, ~np.isfinite(zmin))  # despiked cells take their neighbours' value
     flat = r * shape[1] + c  # each point's cell in the raveled grids
     _relief_features(F, xyz[:, 2], zmin_f, zmax, flat, cell, p)
     _ground_features(F, xyz, zmin, zmin_f, (r, c, shape), cell, p)
@@ -602,10 +602,10 @@ def _ground_features(F: np.ndarray, xyz: np.ndarray, zmin: np.ndarray, zmin_f: n
     steps = opening_steps(zmin_f, cell, windows)
     g = provisional_ground(xyz, cell, windows[0], p.ground_slope, zmin=zmin, rc=(r, c, shape),
                            trend_slope=p.ground_trend_slope, trend_window=p.trend_window, steps=steps[0])
-    F[:, 7] = np.clip(z - _bilinear(g, xyz[:, :2], cell), -20, 60)
+    F[:, 7] = np.clip(z - grid_bilinear(g, xyz[:, :2], cell), -20, 60)
     g2 = provisional_ground(xyz, cell, windows[1], p.ground_slope * 2, zmin=zmin, rc=(r, c, shape),
                             steps=steps[1])
-    F[:, 8] = np.clip(z - _bilinear(g2, xyz[:, :2], cell), -20, 60)
+    F[:, 8] = np.clip(z - grid_bilinear(g2, xyz[:, :2], cell), -20, 60)
     gy, gx = gradient(g, cell)  # 0 across a grid of one cell
     F[:, 9] = np.minimum(np.take(np.hypot(gx, gy).ravel(), r * shape[1] + c), 3.0)
 

@@ -199,9 +199,9 @@ class RoofTest:
         q = np.flatnonzero(candidate)
         if len(q) == 0 or self.tree is None:
             return np.zeros((0, 3), np.float32), np.zeros(0, bool)
-        from .features import _voxel_ids
+        from .features import voxel_ids
 
-        first = _voxel_ids(self.xyz[q], p.voxel)[0] if p.voxel > 0 else np.arange(len(q))
+        first = voxel_ids(self.xyz[q], p.voxel)[0] if p.voxel > 0 else np.arange(len(q))
         tested = (self.xyz[q[first]] - self.origin).astype(np.float32)
         resid, dk = plane_residuals(tested, self.ref, p.k, self.workers, tree=self.tree)
         bad = (resid > p.tolerance) & (dk <= p.max_radius)

@@ -656,12 +656,12 @@ def _levenberg_marquardt(resid, x: np.ndarray, steps: np.ndarray) -> tuple[np.nd
     """Minimise ``|resid(x)|²`` by Levenberg–Marquardt with a central-difference Jacobian
     (parameter steps ``steps``); stops when no damping gives a lower cost or every update is
     below 1e-3 of its step. Returns the parameters and their residuals."""
-    from .collinearity import _numeric_jacobian
+    from .collinearity import numeric_jacobian
 
     r = resid(x)
     lam = 1e-3
     for _ in range(100):
-        J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
+        J = numeric_jacobian(lambda d: resid(x + d), len(x), steps)
         A = J.T @ J
         g = J.T @ r
         ok = False
@@ -684,7 +684,7 @@ def _levenberg_marquardt(resid, x: np.ndarray, steps: np.ndarray) -> tuple[np.nd
 def _refine_dlt(X: np.ndarray, uv: np.ndarray, cam: Camera, R: np.ndarray, C: np.ndarray, params: DLTParams):
     """Refine the decomposed DLT camera and pose (and ``params.distortion`` terms) on the
     collinearity equations. Returns (camera, pose, standard deviations by name)."""
-    from .collinearity import _numeric_jacobian, rotvec_to_matrix
+    from .collinearity import numeric_jacobian, rotvec_to_matrix
 
     dt = int(params.distortion)
     if dt not in (0, 2, 5):
@@ -710,7 +710,7 @@ def _refine_dlt(X: np.ndarray, uv: np.ndarray, cam: Camera, R: np.ndarray, C: np
         steps[4] = 1e-6 * max(cam.fx, 1.0)
     x, r = _levenberg_marquardt(resid, x0.copy(), steps)
     refined, pose = unpack(x)
-    J = _numeric_jacobian(lambda d: resid(x + d), len(x), steps)
+    J = numeric_jacobian(lambda d: resid(x + d), len(x), steps)
     n = X.shape[0]
     dof = 2 * n - len(x)
     if dof <= 0:

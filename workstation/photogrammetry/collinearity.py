@@ -315,7 +315,7 @@ def _pose_params(R: np.ndarray, C: np.ndarray, d: np.ndarray) -> Pose:
     return Pose(Rn, -Rn @ Cn)
 
 
-def _numeric_jacobian(fun, n_params: int, steps: np.ndarray) -> np.ndarray:
+def numeric_jacobian(fun, n_params: int, steps: np.ndarray) -> np.ndarray:
     cols = []
     for j in range(n_params):
         e = np.zeros(n_params)
@@ -387,7 +387,7 @@ def _resection_lm(resid, R: np.ndarray, C: np.ndarray, steps: np.ndarray, scale:
     it = 0
     r = resid(np.zeros(6), R, C)
     for it in range(1, params.max_iterations + 1):
-        J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
+        J = numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
         A = J.T @ J
         g = J.T @ r
         improved = False
@@ -488,7 +488,7 @@ def resect(
     _, depth = project(X, camera, final, return_depth=True)
     if np.any(depth <= 0):
         raise StageError("resection", "some control points lie behind the resected camera", "check the observations")
-    J = _numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
+    J = numeric_jacobian(lambda d: resid(d, R, C), 6, steps)
     dof = 2 * n - 6
     cov, sigma0 = _covariance(J, r, dof, dof > 0, params.sigma_px)
     return _resection_result(final, C, cov, sigma0, r, it)
@@ -611,13 +611,13 @@ def intersect(
 
     for _ in range(iterations):  # Gauss–Newton
         r = resid(Xp)
-        J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
+        J = numeric_jacobian(lambda d: resid(Xp + d), 3, step)
         dx, *_ = np.linalg.lstsq(J, -r, rcond=None)
         Xp = Xp + dx
         if np.linalg.norm(dx) < 1e-12 * scale:
             break
     r = resid(Xp)
-    J = _numeric_jacobian(lambda d: resid(Xp + d), 3, step)
+    J = numeric_jacobian(lambda d: resid(Xp + d), 3, step)
     dof = 2 * m - 3
     cov, sigma0 = _covariance(J, r, dof, dof >= 3 and a_posteriori, sigma_px)
     res2 = r.reshape(-1, 2)

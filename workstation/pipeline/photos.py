@@ -24,7 +24,7 @@ from pathlib import Path
 from workstation.core.errors import InvalidInputError
 
 from .manifest import task_key
-from .tasks import _elapsed, _peak_rss_mb
+from .tasks import elapsed, peak_rss_mb
 
 
 def check_photo_names(photos: tuple, project_path: Path) -> None:
@@ -101,12 +101,12 @@ def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
         outputs = [workdir / "sparse" / "0", workdir / "sparse.ply", workdir / SFM_RECORD]
         rec = stage_record("sfm", doc, inputs={"image_dir": image_dir, "camera": stage.camera, "gcp": None,
                                                "workdir": workdir},
-                           params=settings, outputs=outputs[:2], seconds=_elapsed(t0))
+                           params=settings, outputs=outputs[:2], seconds=elapsed(t0))
         write_stage_record(rec, workdir / SFM_RECORD)
     s = result.summary
     return {"images": s["images"], "registered": s["registered"], "points": s["points"],
             "reprojection_px": s["mean_reprojection_error_px"], "scaled": frame.get("scaled"),
-            "unregistered": list(result.unregistered), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(),
+            "unregistered": list(result.unregistered), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(),
             "outputs": [str(p) for p in outputs]}
 
 
@@ -126,7 +126,7 @@ def dense_task(out: str, image_dir: str, params, *upstream) -> dict:
     laz.parent.mkdir(parents=True, exist_ok=True)
     write_cloud(cloud, laz, overwrite=True)
     return {"points": int(cloud.n), "device": summary["device"], "method": summary.get("method"),
-            "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(),
+            "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(),
             "outputs": [summary["fused"], str(record), str(laz)]}
 
 
@@ -158,9 +158,9 @@ def mesh_task(out: str, image_dir: str, stage, *upstream) -> dict:
     record = write_stage_record(stage_record("mesh", doc, inputs={"cloud": src, "reconstruction": workdir,
                                                                   "image_dir": image_dir},
                                              params=dataclasses.asdict(stage.params), outputs=files,
-                                             seconds=_elapsed(t0)), workdir / "mesh_mesh.json")
+                                             seconds=elapsed(t0)), workdir / "mesh_mesh.json")
     return {"faces": int(res.mesh.n_faces), "vertices": int(res.mesh.n_vertices), "points": int(cloud.n),
-            "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": files + [str(record)]}
+            "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": files + [str(record)]}
 
 
 def photo_tasks(ctx, plan, manifest) -> list:

@@ -24,7 +24,7 @@ from pathlib import Path
 from workstation.qc.partial import block_side, blocks_over
 
 from .manifest import task_key
-from .tasks import RunContext, _peak_rss_mb
+from .tasks import RunContext, peak_rss_mb
 
 
 def qc_params(ctx: RunContext, stage, dtm: str | None = None):
@@ -49,7 +49,7 @@ def qc_catalog_task(ctx: RunContext, stage, units: list, blocks: list, size: flo
     if not have:
         raise StageError("qc", "no point file to check", "check the earlier stages' errors")
     doc = write_catalog([p for p, _ in have], [n for _, n in have], state_root(ctx), blocks, size)
-    return {"files": len(doc["files"]), "peak_rss_mb": _peak_rss_mb(),
+    return {"files": len(doc["files"]), "peak_rss_mb": peak_rss_mb(),
             "outputs": [str(state_root(ctx) / "catalog.json")]}
 
 
@@ -64,13 +64,13 @@ def qc_pass1_task(ctx: RunContext, stage, path: str, *upstream) -> dict:
 
     if not _in_catalog(ctx, path):
         return {"points": 0, "outputs": []}
-    return {**pass1_file(state_root(ctx), path, qc_params(ctx, stage)), "peak_rss_mb": _peak_rss_mb()}
+    return {**pass1_file(state_root(ctx), path, qc_params(ctx, stage)), "peak_rss_mb": peak_rss_mb()}
 
 
 def qc_surface_task(ctx: RunContext, stage, *upstream) -> dict:
     from workstation.qc.partial import pass1_merge
 
-    return {**pass1_merge(state_root(ctx), qc_params(ctx, stage)), "peak_rss_mb": _peak_rss_mb()}
+    return {**pass1_merge(state_root(ctx), qc_params(ctx, stage)), "peak_rss_mb": peak_rss_mb()}
 
 
 def qc_pass2_task(ctx: RunContext, stage, path: str, *upstream) -> dict:
@@ -79,13 +79,13 @@ def qc_pass2_task(ctx: RunContext, stage, path: str, *upstream) -> dict:
     if not _in_catalog(ctx, path):
         return {"outputs": []}
     r = pass2_file(state_root(ctx), path, qc_params(ctx, stage))
-    return {**r, "points": 0, "pass2_points": r["points"], "peak_rss_mb": _peak_rss_mb()}
+    return {**r, "points": 0, "pass2_points": r["points"], "peak_rss_mb": peak_rss_mb()}
 
 
 def qc_fit_task(ctx: RunContext, stage, ix: int, iy: int, *upstream) -> dict:
     from workstation.qc.partial import fit_block
 
-    return {**fit_block(state_root(ctx), ix, iy, qc_params(ctx, stage)), "peak_rss_mb": _peak_rss_mb()}
+    return {**fit_block(state_root(ctx), ix, iy, qc_params(ctx, stage)), "peak_rss_mb": peak_rss_mb()}
 
 
 def _units(ctx: RunContext, points: list, folder: str) -> tuple[list, list, float]:

@@ -23,7 +23,7 @@ import numpy as np
 from workstation.core.errors import InvalidInputError, StageError, WorkstationError
 
 from .manifest import task_key
-from .tasks import _elapsed, _peak_rss_mb
+from .tasks import elapsed, peak_rss_mb
 
 RESERVED = ("merge", "merged", "poses")  # the names of the stage's own outputs
 
@@ -94,7 +94,7 @@ def register_task(out: str, name: str, scan: str, target: str | None, stage, *up
     with atomic_path(side, overwrite=True) as tmp:
         Path(tmp).write_text(json.dumps(doc, indent=1))
     return {"points": int(src.n), "fitness": pose["fitness"], "inlier_rmse": pose["inlier_rmse"],
-            "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [str(laz), str(side)]}
+            "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": [str(laz), str(side)]}
 
 
 def merge_task(out: str, stage, names: list, poses: list, *upstream) -> dict:
@@ -116,8 +116,8 @@ def merge_task(out: str, stage, names: list, poses: list, *upstream) -> dict:
            "failed": [n for n in names if n not in docs]}
     with atomic_path(folder / "poses.json", overwrite=True) as tmp:
         Path(tmp).write_text(json.dumps(doc, indent=1))
-    return {"points": int(merged.n), "scans": len(done), "failed_scans": doc["failed"], "seconds": _elapsed(t0),
-            "peak_rss_mb": _peak_rss_mb(), "outputs": [str(folder / "merged.laz"), str(folder / "poses.json")]}
+    return {"points": int(merged.n), "scans": len(done), "failed_scans": doc["failed"], "seconds": elapsed(t0),
+            "peak_rss_mb": peak_rss_mb(), "outputs": [str(folder / "merged.laz"), str(folder / "poses.json")]}
 
 
 def scan_tasks(ctx, plan, manifest, photo_tasks: list) -> list:

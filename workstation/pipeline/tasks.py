@@ -67,11 +67,11 @@ class RunContext:
     scans: tuple = ()
 
 
-def _elapsed(t0: float) -> float:
+def elapsed(t0: float) -> float:
     return round(time.perf_counter() - t0, 3)
 
 
-def _peak_rss_mb() -> float:
+def peak_rss_mb() -> float:
     """The peak resident memory of this worker process so far, MB (Linux ru_maxrss is in kB)."""
     import resource
 
@@ -94,7 +94,7 @@ def index_task(ctx: RunContext, tile_path: str, size: float, part: int = 0) -> d
     n = next(t.point_count for t in ctx.tiles if str(t.path) == tile_path)
     step = math.ceil(n / ctx.index_parts[tile_path])
     counts = chunkio.index_file(Path(tile_path), size, dest, ctx.crs, start=part * step, stop=min(n, (part + 1) * step))
-    return {"points": int(sum(counts.values())), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [str(dest)]}
+    return {"points": int(sum(counts.values())), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": [str(dest)]}
 
 
 def read_input_chunk(ctx: RunContext, chunk: Chunk):
@@ -179,14 +179,14 @@ def points_task(ctx: RunContext, plan, chunk: Chunk, folder: str, *upstream) -> 
     cloud = read_input_chunk(ctx, chunk)
     core = None if cloud is None else chunk.core_mask(cloud.xyz[:, :2])
     if cloud is None or not core.any():
-        return {"points": 0, "buffered": 0 if cloud is None else cloud.n, "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": []}
+        return {"points": 0, "buffered": 0 if cloud is None else cloud.n, "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": []}
     warnings: list[str] = []
     out = run_point_stages(cloud, plan, ctx, warnings)[core]
     laz = ctx.out / folder / f"{chunk.name}.laz"
     laz.parent.mkdir(parents=True, exist_ok=True)
     write_cloud(out, laz, overwrite=True)
     side = write_raster_fields(out, ctx.cache / "points" / f"{chunk.ix}_{chunk.iy}.bin")
-    return {"points": int(out.n), "buffered": int(cloud.n), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "warnings": warnings,
+    return {"points": int(out.n), "buffered": int(cloud.n), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "warnings": warnings,
             "outputs": [str(laz), str(side)]}
 
 
@@ -245,7 +245,7 @@ def raster_task(ctx: RunContext, plan, chunk: Chunk, *upstream) -> dict:
         outputs += _dem_tiles(ctx, plan.dem, chunk, cloud)
     if cloud is not None and plan.density is not None:
         outputs += _density_tile(ctx, chunk, cloud)
-    return {"points": int(n), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": outputs}
+    return {"points": int(n), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": outputs}
 
 
 def _dem_tiles(ctx: RunContext, stage, chunk: Chunk, cloud) -> list[str]:
@@ -321,7 +321,7 @@ def mosaic_task(ctx: RunContext, grid, tiles: list, out: str, meta: dict) -> dic
         placed.append((p, int(round((grid.y1 - t.f) / grid.res)), int(round((t.c - grid.x0) / grid.res))))
     Path(out).parent.mkdir(parents=True, exist_ok=True)
     write_mosaic(placed, grid.transform, grid.shape, out, crs=ctx.crs, meta=meta, overwrite=True)
-    return {"tiles": len(placed), "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
+    return {"tiles": len(placed), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": [out]}
 
 
 def hillshade_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dict:
@@ -330,7 +330,7 @@ def hillshade_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> di
 
     t0 = time.perf_counter()
     write_raster(hillshade(read_raster(dtm), params), out, overwrite=True)
-    return {"seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
+    return {"seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": [out]}
 
 
 def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dict:
@@ -340,7 +340,7 @@ def contours_task(ctx: RunContext, params, dtm: str, out: str, *upstream) -> dic
     t0 = time.perf_counter()
     cs = contour_lines(read_raster(dtm), params)
     write_geojson(cs, out, overwrite=True)
-    return {"lines": len(cs.lines), "interval": cs.interval, "seconds": _elapsed(t0), "peak_rss_mb": _peak_rss_mb(), "outputs": [out]}
+    return {"lines": len(cs.lines), "interval": cs.interval, "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(), "outputs": [out]}
 
 
 # ----------------------------------------------------------------------------- quality control
@@ -357,5 +357,5 @@ def qc_task(ctx: RunContext, stage, dtm: str | None, out: str, *upstream) -> dic
     outs = [str(p) for p in sorted(Path(out).iterdir()) if p.is_file()]
     return {"points": 0, "checked_points": doc["points"], "spec": doc["verdict"]["spec"],
             "pass": doc["verdict"]["pass"],
-            "seconds": _elapsed(t0), "cpu_s": round(time.process_time() - c0, 3), "peak_rss_mb": _peak_rss_mb(),
+            "seconds": elapsed(t0), "cpu_s": round(time.process_time() - c0, 3), "peak_rss_mb": peak_rss_mb(),
             "outputs": outs}

@@ -13,7 +13,7 @@ from pathlib import Path
 from workstation.core.errors import InvalidInputError
 from workstation.io import copc
 from workstation.io.crs import crs_info
-from workstation.io.registry import _check_readable, format_of
+from workstation.io.registry import check_readable, format_of
 
 
 def _read_header(path: Path):
@@ -89,7 +89,7 @@ def header_summary(path) -> dict:
         metres_per_unit} or None), ``vlrs`` and ``evlrs`` ([{user_id, record_id, description,
         size}]), ``generating_software``, ``copc`` (see :func:`workstation.io.copc.summary`, or None).
     """
-    p = _check_readable(path)
+    p = check_readable(path)
     h = _read_header(p)
     crs, info = _crs(h, p)
     c = copc.summary(p)
@@ -151,7 +151,7 @@ def pdal_metadata(path) -> dict:
     as PDAL names them (``count``, ``minx``..``maxz``, ``scale_x``, ``offset_x``,
     ``dataformat_id``, ``major_version``, ``minor_version``, ``srs``, ``copc``, ``copc_info``,
     ``vlr_0``...), plus ``vlrs``/``evlrs`` lists and ``points_by_return``."""
-    p = _check_readable(path)
+    p = check_readable(path)
     h = _read_header(p)
     from workstation.io.las import crs_string
 

@@ -15,7 +15,7 @@ cut into cache-sized slices spread over the cores (numpy releases the GIL); per 
 Scaling a record into the reader's attributes (scale and offset, the scan angle unit, a
 widening cast) is monotonic, so the extremes of the converted values are the converted
 extremes: two records holding the minima and the maxima go through the reader's own
-conversion (:class:`workstation.io.las._Filler`), which gives the same numbers, dtypes and
+conversion (:class:`workstation.io.las.Filler`), which gives the same numbers, dtypes and
 attribute names as reading the whole file.
 """
 
@@ -127,13 +127,13 @@ def las_statistics(path, chunk_size: int, density=None, slice_size: int | None =
     :data:`workstation.io.las.FILL_SLICE`, a few MB of records) spread over the cores.
 
     Raises InvalidInputError as the reader does (bad header, truncated or corrupt data)."""
-    from workstation.io.las import FILL_SLICE, _check_point_bytes, _meta_and_crs, _records, open_las
+    from workstation.io.las import FILL_SLICE, check_point_bytes, meta_and_crs, raw_records, open_las
 
     path = Path(path)
     st = LasStats()
     with open_las(path) as reader:
         header = reader.header
-        _check_point_bytes(path, header)
+        check_point_bytes(path, header)
         n = int(header.point_count)
         lay = _Layout(header.point_format)
         raw: dict = {}
@@ -141,12 +141,12 @@ def las_statistics(path, chunk_size: int, density=None, slice_size: int | None =
         cores = available_cores()
         pool = ThreadPoolExecutor(max_workers=min(cores, 4), thread_name_prefix="las-stats") if cores > 1 else None
         with pool or nullcontext():
-            for rec in _records(reader, path, n, chunk_size):
+            for rec in raw_records(reader, path, n, chunk_size):
                 if st.count == 0:
-                    st.meta, st.crs = _meta_and_crs(header, path)
+                    st.meta, st.crs = meta_and_crs(header, path)
                     st.meta["las"]["crs"] = st.crs
                     density = density(st.crs) if callable(density) else density
-                    _warn_crs(path, header, rec, st.crs, st.meta)
+                    warn_crs(path, header, rec, st.crs, st.meta)
                 _chunk(rec.array, lay, raw, xy_conv, density, pool, slice_size or FILL_SLICE)
                 st.count += len(rec)
     if st.count:
@@ -183,14 +183,14 @@ def _chunk(arr: np.ndarray, lay: _Layout, raw: dict, xy_conv, acc, pool, size: i
         acc.merge(len(arr), cands, keys)
 
 
-def _warn_crs(path: Path, header, rec, crs, meta) -> None:
+def warn_crs(path: Path, header, rec, crs, meta) -> None:
     """The reader's once-per-file warning when the CRS does not fit the coordinates
-    (:func:`workstation.io.registry._warn_crs`), given the first point as a cloud."""
+    (:func:`workstation.io.registry.warn_crs`), given the first point as a cloud."""
     from workstation.core.cloud import Cloud
-    from workstation.io.las import _Filler
-    from workstation.io.registry import _warn_crs as warn
+    from workstation.io.las import Filler
+    from workstation.io.registry import warn_crs as warn
 
-    f = _Filler(header, 1)
+    f = Filler(header, 1)
     f.fill(rec[:1], 0)
     warn(path, Cloud.from_owned_arrays(f.xyz, f.attrs, crs=crs, meta=meta))
 
@@ -235,10 +235,10 @@ def _convert_extremes(header, lay: _Layout, raw: dict, st: LasStats) -> None:
     reader's conversion, so the coordinates and attributes get its values, names and dtypes."""
     import laspy
 
-    from workstation.io.las import _Filler
+    from workstation.io.las import Filler
 
     rec = laspy.ScaleAwarePointRecord(_bit_extremes(lay, raw), header.point_format, header.scales, header.offsets)
-    f = _Filler(header, 2)
+    f = Filler(header, 2)
     f.fill(rec, 0)
     st.lo, st.hi = np.minimum(f.xyz[0], f.xyz[1]), np.maximum(f.xyz[0], f.xyz[1])
     for name, arr in f.attrs.items():

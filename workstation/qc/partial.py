@@ -102,15 +102,17 @@ def write_catalog(paths, names: list[str], state_root: Path, blocks: list, block
     ``names`` are the files' state folders under ``state_root``; ``blocks`` the (ix, iy) of the
     square blocks of side ``block_size`` (CRS units) whose swath planes :func:`fit_block` fits.
     """
-    from .run import _catalog, _header_spacing_m, _units
+    from workstation.io.crs import crs_units
 
-    cat = _catalog([Path(p) for p in paths])
-    units = _units(cat.crs)
+    from .run import header_spacing_m, read_catalog
+
+    cat = read_catalog([Path(p) for p in paths])
+    units = crs_units(cat.crs)
     doc = {"crs": cat.crs, "bounds": [float(b) for b in cat.bounds], "points": int(cat.point_count),
            "files": [str(t.path) for t in cat.tiles],
            "file_bounds": {str(t.path): [float(t.bounds[i]) for i in (0, 1, 3, 4)] for t in cat.tiles},
            "names": dict(zip((str(Path(p)) for p in paths), names)), "units": units.to_dict(),
-           "header_spacing_m": _header_spacing_m(cat, units), "blocks": [list(b) for b in blocks],
+           "header_spacing_m": header_spacing_m(cat, units), "blocks": [list(b) for b in blocks],
            "block_size": float(block_size)}
     _write_json(Path(state_root) / "catalog.json", doc)
     return doc
@@ -121,7 +123,7 @@ def read_json(path: Path) -> dict:
 
 
 def _units(doc: dict):
-    from .run import _units as crs_units
+    from workstation.io.crs import crs_units
 
     return crs_units(doc["crs"])
 
@@ -208,9 +210,9 @@ def pass1_merge(state_root: Path, params: QCParams) -> dict:
     if not anps or not np.isfinite(anps):
         raise InvalidInputError("no first returns to measure the point spacing", "check the return numbers",
                                 path=cat["files"][0], field="return_number")
-    from .run import _coverage_grid
+    from .run import catalog_coverage_grid
 
-    _coverage_grid(_CatalogView(cat), anps, units)  # refuses a grid too large, as ws qc does
+    catalog_coverage_grid(_CatalogView(cat), anps, units)  # refuses a grid too large, as ws qc does
     cls1 = ClassPass1.from_states(grid, cp, cls_states)
     del cls_states
     surface = cls1.surface()
@@ -224,7 +226,7 @@ def pass1_merge(state_root: Path, params: QCParams) -> dict:
 
 
 class _CatalogView:
-    """The catalog fields :func:`workstation.qc.run._coverage_grid` reads, from catalog.json."""
+    """The catalog fields :func:`workstation.qc.run.catalog_coverage_grid` reads, from catalog.json."""
 
     def __init__(self, cat: dict):
         from types import SimpleNamespace
@@ -240,7 +242,7 @@ def _pass2_checks(cat: dict, p1: dict, path: str, params: QCParams, surf):
     from .accuracy import CheckpointPass
     from .classes import ClassPass2
     from .coverage import CoverageParams, CoveragePass, coverage_grid
-    from .run import _read_checkpoints, swath_params
+    from .run import qc_checkpoints, swath_params
     from .specs import get_spec
     from .swath import SwathPass
 
@@ -252,7 +254,7 @@ def _pass2_checks(cat: dict, p1: dict, path: str, params: QCParams, surf):
     win = cgrid.window_over(box, pad=2)  # bilinear sampling reaches the next cell centre
     cls2 = ClassPass2(win, surf["surface"][win.block], cp, deck_floor=surf["deck"][win.block],
                       water=surf["water"][win.block], any_surface=p1["surface_any"])
-    cps = _read_checkpoints(params)
+    cps = qc_checkpoints(params)
     return grid2, cov, sw, cls2, (CheckpointPass(cps, units) if cps is not None else None)
 
 
@@ -384,9 +386,9 @@ def _merged(parts) -> tuple[np.ndarray, np.ndarray]:
 def _checkpoints(states: list[dict], params: QCParams, units):
     """The checkpoint pass of the whole delivery from the files' states (None without checkpoints)."""
     from .accuracy import CheckpointPass
-    from .run import _read_checkpoints
+    from .run import qc_checkpoints
 
-    cps = _read_checkpoints(params)
+    cps = qc_checkpoints(params)
     if cps is None:
         return None, None
     return CheckpointPass.from_states(cps, units, [s for s in states if "idx" in s]), cps

@@ -20,6 +20,7 @@ import numpy as np
 
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
+from workstation.io.crs import crs_units
 from workstation.io.registry import check_selection, format_of, iter_chunks
 
 from .context import QCGrid
@@ -62,7 +63,7 @@ class QCParams:
     read_opts: dict | None = None
 
 
-def _catalog(paths):
+def read_catalog(paths):
     from workstation.io.catalog import build_catalog
 
     for p in paths:
@@ -72,13 +73,7 @@ def _catalog(paths):
     return build_catalog(paths, inputs_hint="give the delivery's LAS/LAZ/COPC files")
 
 
-def _units(crs):
-    from workstation.io.crs import crs_units
-
-    return crs_units(crs)
-
-
-def _coverage_grid(cat, anps_m: float, units, bounds=None) -> QCGrid:
+def catalog_coverage_grid(cat, anps_m: float, units, bounds=None) -> QCGrid:
     """The 2×ANPS grid over the catalog (:func:`workstation.qc.coverage.coverage_grid`), cut to
     ``bounds`` (xmin, ymin, xmax, ymax[, ...]) when given, refused when it would not fit in memory
     (the extent is then too large for its spacing: check it in pieces)."""
@@ -96,7 +91,7 @@ def _coverage_grid(cat, anps_m: float, units, bounds=None) -> QCGrid:
     return g
 
 
-def _header_spacing_m(cat, units) -> float:
+def header_spacing_m(cat, units) -> float:
     """Mean point spacing (m) over the catalog's extent, from the headers alone."""
     x0, y0, x1, y1 = cat.bounds
     area = max((x1 - x0) * (y1 - y0), 1e-12) * units.h**2
@@ -153,10 +148,10 @@ def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
     spec = get_spec(params.spec)
     t0 = time.perf_counter()
     paths = [Path(p) for p in paths]
-    cat = _catalog(paths)
-    units = _units(cat.crs)
-    cps = _read_checkpoints(params)
-    surface_cell = params.surface_cell_m or max(1.0, 2.0 * _header_spacing_m(cat, units))
+    cat = read_catalog(paths)
+    units = crs_units(cat.crs)
+    cps = qc_checkpoints(params)
+    surface_cell = params.surface_cell_m or max(1.0, 2.0 * header_spacing_m(cat, units))
     fmt, dens, cls1 = _pass1_checks(cat, units, surface_cell)
     unreadable: dict = {}
     sel = {k: v for k, v in (params.read_opts or {}).items() if v is not None}
@@ -174,7 +169,7 @@ def run_qc(paths, out_dir: Path, params: QCParams = QCParams()) -> dict:
     if not anps or not np.isfinite(anps):
         raise InvalidInputError("no first returns to measure the point spacing", "check the return numbers",
                                 path=paths[0], field="return_number")
-    grid2 = _coverage_grid(cat, anps, units, sel.get("bounds"))
+    grid2 = catalog_coverage_grid(cat, anps, units, sel.get("bounds"))
     cov, sw, cls2, cpp = _pass2_checks(grid2, anps, cls1, cps, units, spec)
     with progress_bar("qc pass 2 of 2", cat.point_count, "points") as advance:
         _stream(cat, [c for c in (cov, sw, cls2, cpp) if c is not None], params.chunk_size, advance,
@@ -196,7 +191,7 @@ def finish(doc: dict, out_dir: Path, crs, cov, sw, spec, unreadable: dict, t0: f
     return doc
 
 
-def _read_checkpoints(params: QCParams):
+def qc_checkpoints(params: QCParams):
     if params.checkpoints is None:
         return None
     from .accuracy import read_checkpoints

@@ -15,8 +15,8 @@ import numpy as np
 from workstation.core.classes import class_name
 from workstation.io import copc
 from workstation.io.crs import crs_info, crs_units, crs_warnings
-from workstation.io.registry import _check_readable, format_of, iter_chunks
-from workstation.io.registry import _guarded as guarded
+from workstation.io.registry import check_readable, format_of, iter_chunks
+from workstation.io.registry import guarded
 
 from .density import DensityAccumulator
 from .las_stats import las_statistics
@@ -67,7 +67,7 @@ def summarize(path, *, chunk_size: int = 2_000_000, density_cell_m: float = 1.0,
     path = Path(path)
     fmt, _ = format_of(path)
     if fmt in ("las", "laz") and all(v is None for v in read_opts.values()):
-        _check_readable(path)
+        check_readable(path)
         stats, info, acc = _las_stats(path, chunk_size, density_cell_m, density_strict)
         crs, meta = stats.crs, stats.meta
     else:

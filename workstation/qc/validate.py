@@ -637,11 +637,11 @@ class FormatCheck:
     """
 
     def __init__(self, path, params: FormatParams = FormatParams()):
-        from workstation.io.registry import FORMATS, _check_readable
+        from workstation.io.registry import FORMATS, check_readable
 
         self.path = Path(path)
         if not self.path.is_file():
-            _check_readable(self.path)
+            check_readable(self.path)
         self.params = params
         self._n = 0
         self._chunks = 0

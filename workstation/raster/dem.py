@@ -284,11 +284,11 @@ def _iter_clouds(source, chunk_size: int) -> Iterator[Cloud]:
     paths = [source] if isinstance(source, (str, Path)) else list(source)
     opts = getattr(source, "read_opts", {})
     from workstation.io import iter_chunks
-    from workstation.io.registry import _inside
+    from workstation.io.registry import inside_bounds
 
     for p in paths:
         if isinstance(p, Cloud):
-            yield _inside(p, opts["bounds"]) if opts else p
+            yield inside_bounds(p, opts["bounds"]) if opts else p
         else:
             yield from iter_chunks(p, chunk_size, **opts)
 

@@ -27,6 +27,7 @@ from workstation.core.color import rgb_to_u8
 from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import Camera, Mesh, Pose, Reconstruction
+from workstation.io.crs import crs_units
 
 log = get_logger(__name__)
 
@@ -112,14 +113,6 @@ def _nice_length(x: float) -> float:
     return 10 ** e
 
 
-def _units(crs):
-    """The CRS's :class:`~workstation.core.units.Units` (the one unit model; metres assumed
-    without a CRS)."""
-    from workstation.io.crs import crs_units
-
-    return crs_units(crs)
-
-
 def _metre_label(units) -> str:
     """Unit label of lengths shown in metres: "m", or "m, no CRS" when metres are assumed."""
     return "m" if units.known else "m, no CRS"
@@ -181,7 +174,7 @@ def _scalar_colors(obj, params: RenderParams):
     if c == "uniform":
         return c, None, None, None
     if c == "elevation":  # heights shown in metres whatever the CRS's vertical unit
-        u = _units(getattr(obj, "crs", None))
+        u = crs_units(getattr(obj, "crs", None))
         return c, None, u.v_to_m(np.asarray(xyz[:, 2], dtype=np.float64)), f"Elevation ({_metre_label(u)})"
     if c not in attrs:
         raise InvalidInputError(f"--color {c}: neither a colouring nor an attribute of this data",
@@ -194,7 +187,7 @@ def _scalar_colors(obj, params: RenderParams):
         raise InvalidInputError(f"attribute '{c}' has shape {a.shape}: not a scalar", field=c)
     a = a.astype(np.float64)
     if c == "hag":  # heights above ground are in the CRS's vertical unit: shown in metres
-        u = _units(getattr(obj, "crs", None))
+        u = crs_units(getattr(obj, "crs", None))
         return c, None, u.v_to_m(a), f"Height above ground ({_metre_label(u)})"
     title = {"intensity": "Intensity"}.get(c, c)
     return c, None, a, title
@@ -449,7 +442,7 @@ def render(obj, params: RenderParams = RenderParams(), camera: tuple[Camera, Pos
         else:
             upp = _fit_view(pl, params.view, flo, fhi, size, params.margin)
             if params.view == "top" and params.scale_bar and upp:
-                _draw_scale_bar(pl, pv, upp, size, 0.5 * (flo + fhi), float(hi[2]), _units(obj.crs),
+                _draw_scale_bar(pl, pv, upp, size, 0.5 * (flo + fhi), float(hi[2]), crs_units(obj.crs),
                                 bg.mean() < 0.5)
         if is_cloud and params.edl:
             pl.enable_eye_dome_lighting()
