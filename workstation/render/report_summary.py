@@ -120,35 +120,51 @@ def registered(m) -> str:
     return f"{len(m.centres)} images in the model (no sfm record)"
 
 
-def _acc(rows: list, what: str, value, where: str) -> None:
+def _acc(rows: list, what: str, value, where: str, unit: str = "") -> None:
+    """Append (what, value with its unit, where) when ``value`` is a finite number; ``unit``
+    "%" shows a share (0-1) as a percentage, any other unit follows 4 significant digits."""
     if isinstance(value, (int, float)) and not isinstance(value, bool) and np.isfinite(value):
-        rows.append((what, value, where))
+        text = f"{100 * value:.3f} %" if unit == "%" else f"{value:.4g}" + (f" {unit}" if unit else "")
+        rows.append((what, text, where))
+
+
+def length_unit(clouds: dict) -> str:
+    """Short name of the horizontal unit of the clouds' CRS ("m", "ft", "US ft"; "m" without
+    a CRS, as the workstation assumes metres then); "CRS units" when the clouds disagree."""
+    from workstation.io.crs import crs_units
+
+    names = {crs_units(c.crs).h_name for c in clouds.values() if not isinstance(c, Exception) and c.crs}
+    short = {"metre": "m", "meter": "m", "foot": "ft", "US survey foot": "US ft"}
+    return short.get(names.pop(), "CRS units") if len(names) == 1 else ("m" if not names else "CRS units")
 
 
 def _where(p: Path, key: str, root: Path) -> str:
     return str(p.relative_to(root)) + (f" ({key})" if key else "")
 
 
-def _record_accuracies(docs: dict, root: Path) -> list[tuple]:
-    """Accuracy rows of the records: GCP control / check RMSE, registration, ground evaluation."""
+def _record_accuracies(docs: dict, root: Path, unit: str) -> list[tuple]:
+    """Accuracy rows of the records: GCP control / check RMSE and registration RMSE (lengths in
+    ``unit``), registration fitness, ground evaluation."""
     rows: list = []
     for p, doc in docs.items():
         for key, g in find_georef(doc):
             m, w = g["metrics"], _where(p, key, root)
-            _acc(rows, f"GCP control RMSE 3D ({m.get('control_n', '?')} points)", m.get("control_rmse_3d"), w)
+            _acc(rows, f"GCP control RMSE 3D ({m.get('control_n', '?')} points)", m.get("control_rmse_3d"), w, unit)
             for k, name in (("h", "horizontal"), ("z", "vertical"), ("3d", "3D")):
-                _acc(rows, f"check point RMSE {name} ({m.get('check_n', '?')} points)", m.get(f"check_rmse_{k}"), w)
+                _acc(rows, f"check point RMSE {name} ({m.get('check_n', '?')} points)", m.get(f"check_rmse_{k}"), w,
+                     unit)
     for p, key, d in find_all(docs, "registration"):
         w = _where(p, key, root)
-        _acc(rows, "registration inlier RMSE", d.get("inlier_rmse"), w)
-        _acc(rows, "registration fitness", d.get("fitness"), w)
+        _acc(rows, "registration inlier RMSE", d.get("inlier_rmse"), w, unit)
+        _acc(rows, "registration fitness (overlap share)", d.get("fitness"), w, "%")
         edges = [e["inlier_rmse"] for e in d.get("edges") or [] if isinstance(e.get("inlier_rmse"), (int, float))]
-        _acc(rows, "registration inlier RMSE, worst edge", max(edges) if edges else None, w)
+        _acc(rows, "registration inlier RMSE, worst edge", max(edges) if edges else None, w, unit)
     for p, key, d in find_all(docs, "ground_eval"):
         w = _where(p, key, root)
         for k, name in (("total_error", "ground filter total error"), ("type1", "ground filter Type I error"),
-                        ("type2", "ground filter Type II error"), ("kappa", "ground filter kappa")):
-            _acc(rows, name, d.get(k), w)
+                        ("type2", "ground filter Type II error")):
+            _acc(rows, name, d.get(k), w, "%")
+        _acc(rows, "ground filter kappa", d.get("kappa"), w)
     return rows
 
 
@@ -165,7 +181,7 @@ def _flat_numbers(d, prefix: str = "", out: list | None = None, limit: int = 200
     return out
 
 
-def _named_accuracies(docs: dict, root: Path) -> list[tuple]:
+def _named_accuracies(docs: dict, root: Path, unit: str) -> list[tuple]:
     """Accuracy figures named by their keys: an RMSE of a DTM / DEM (``rmse`` with ``dtm`` or
     ``dem`` in the file or key name), per-class F1 (``<class>_f1``), the overall accuracy of a
     classification and the median accuracy of a dense cloud (``accuracy_median_m``)."""
@@ -174,17 +190,17 @@ def _named_accuracies(docs: dict, root: Path) -> list[tuple]:
         for key, v in _flat_numbers(doc):
             low, leaf = f"{p.stem}.{key}".lower(), key.rsplit(".", 1)[-1].lower()
             if "rmse" in leaf and ("dtm" in low or "dem" in low):
-                _acc(rows, f"DTM/DEM RMSE ({key})", v, str(p.relative_to(root)))
+                _acc(rows, f"DTM/DEM RMSE ({key})", v, str(p.relative_to(root)), unit)
             elif leaf.endswith("_f1") and "." not in key:
                 _acc(rows, f"classification F1, {leaf[:-3]}", v, str(p.relative_to(root)))
             elif leaf == "overall_accuracy":
                 _acc(rows, "classification overall accuracy", v, str(p.relative_to(root)))
             elif leaf == "accuracy_median_m":
-                _acc(rows, "dense cloud median accuracy (m)", v, str(p.relative_to(root)))
+                _acc(rows, "dense cloud median accuracy", v, str(p.relative_to(root)), "m")
     return rows
 
 
-def key_accuracies(docs: dict, root: Path, sfm: list) -> list[tuple]:
+def key_accuracies(docs: dict, root: Path, sfm: list, unit: str = "m") -> list[tuple]:
     """(quantity, value, source) rows of the key accuracies found in the work folder: SfM
     reprojection error and registered images, GCP and check point RMSE, registration RMSE,
     ground-evaluation errors, DTM RMSE, classification F1."""
@@ -194,9 +210,9 @@ def key_accuracies(docs: dict, root: Path, sfm: list) -> list[tuple]:
             continue
         w = str(m.folder.relative_to(root)) if m.folder != root else "."
         if m.residuals.size:
-            _acc(rows, "SfM mean reprojection error (px)", float(m.residuals.mean()), w)
+            _acc(rows, "SfM mean reprojection error", float(m.residuals.mean()), w, "px")
         rows.append(("SfM registered images", registered(m), w))
-    return rows + _record_accuracies(docs, root) + _named_accuracies(docs, root)
+    return rows + _record_accuracies(docs, root, unit) + _named_accuracies(docs, root, unit)
 
 
 def qc_html(found: list, root: Path) -> str:
@@ -237,7 +253,7 @@ def summary_section(g, sections: list[tuple[str, str, str]], kind_of) -> str:
     parts.append(qc_html(qc, g.root) if qc else '<p class="note">No quality-control result (ws qc) in the folder.</p>')
     parts.append("<h3>What was processed</h3>" + kv_table(
         processed_rows(g.root, g.cloud_cache, g.meshes, g.rasters, g.steps, g.sfm, g.docs, kind_of)))
-    acc = key_accuracies(g.docs, g.root, g.sfm)
+    acc = key_accuracies(g.docs, g.root, g.sfm, length_unit(g.cloud_cache))
     parts.append("<h3>Key accuracies</h3>" + (table(acc, ("quantity", "value", "from")) if acc else
                                                "<p>No accuracy records found in the folder.</p>"))
     parts.append("<h3>Contents</h3>" + figure_list(sections) + "</section>")
