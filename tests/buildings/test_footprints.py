@@ -77,3 +77,19 @@ def test_buildings_are_separated_and_small_blobs_dropped():
     assert (owner[len(roof):] == -1).all()
     for b in blds:
         assert max(_iou(f.polygon, b.footprint()) for f in fps) > 0.9
+
+
+def test_trace_outline_is_contourpys_level_half_line():
+    """The direct serial generator gives contourpy.contour_generator's longest level-0.5 line."""
+    import contourpy
+
+    from workstation.buildings.footprints import trace_outline
+
+    rng = np.random.default_rng(4)
+    yy, xx = np.mgrid[0:40, 0:50]
+    field = np.exp(-((xx - 22) ** 2 / 120 + (yy - 18) ** 2 / 60)) + 0.05 * rng.random((40, 50))
+    gen = contourpy.contour_generator(z=np.pad(field, 1), line_type=contourpy.LineType.Separate)
+    ring = max(gen.lines(0.5), key=len)
+    got = trace_outline(field, np.array([10.0, 20.0]), 0.25)
+    assert len(ring) > 20 and np.allclose(ring[0], ring[-1])
+    assert np.array_equal(got, np.array([10.0, 20.0]) + (ring[:-1] - 1 + 0.5) * 0.25)

@@ -9,9 +9,9 @@ import pytest
 from workstation.buildings import synth
 from workstation.buildings.export import cityjson_document, validate_cityjson
 from workstation.buildings.footprints import extract_footprints
-from workstation.buildings.models import (build_building, is_watertight, lower_envelope, prism, triangulate,
-                                          weld)
+from workstation.buildings.models import build_building, is_watertight, prism, triangulate, weld
 from workstation.buildings.planes import segment_planes
+from workstation.buildings.roof_faces import lower_envelope
 
 
 def _model(kind, seed=5, yaw=0.5):
@@ -135,3 +135,18 @@ def test_cityjson_document_is_valid_and_the_validator_catches_errors():
     broken = __import__("copy").deepcopy(doc)
     broken["vertices"][0] = [0.5, 1, 2]
     assert any("integers" in e for e in validate_cityjson(broken))
+
+
+def test_weld_orders_vertices_and_inserts_several_t_vertices_along_an_edge():
+    """Vertices come out in the order of their rounded coordinates (each from its first
+    occurrence), and an edge with two vertices of other faces on it gets both, in order."""
+    base = np.array([[0, 0, 0], [3, 0, 0], [3, 0, 1], [0, 0, 1]], float)  # its bottom edge holds x = 1, 2
+    left = np.array([[0, 0, 0], [1, 0, 0], [1, -1, 0]], float)
+    right = np.array([[2, 0, 0], [3, 0, 0], [3, -1, 0], [2.00000001, -1e-9, 0]], float)  # within tol of (2, 0, 0)
+    s = weld([[base], [left], [right]], ["WallSurface"] * 3)
+    allv = np.vstack([base, left, right])
+    _, first = np.unique(np.round(allv / 1e-4).astype(np.int64), axis=0, return_index=True)
+    assert np.array_equal(s.vertices, allv[first])
+    ring = [tuple(s.vertices[v]) for v in s.faces[0][0]]
+    assert ring[:4] == [(0, 0, 0), (1, 0, 0), (2, 0, 0), (3, 0, 0)]
+    assert len(s.faces[2][0]) == 3  # the near-duplicate corner merged away

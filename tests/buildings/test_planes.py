@@ -116,3 +116,22 @@ def test_scan_lines_far_apart_still_give_the_roof_planes():
     big = r.counts > 0.2 * len(pts)
     assert big.sum() == 2 and r.counts[big].sum() > 0.9 * len(pts)
     assert np.allclose(r.tilt_deg[big], np.degrees(np.arctan(3.0 / 4.5)), atol=1.0)
+
+
+@pytest.mark.parametrize("p", [1, 7, 40, 600])
+def test_small_components_numbers_components_like_scipy(p):
+    """Same labels, in the same order, as scipy's connected components: isolated nodes, self
+    loops, repeated edges, chains (several propagation rounds) and the sparse fallback."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    from workstation.buildings.planes import small_components
+
+    rng = np.random.default_rng(p)
+    for e in (0, p // 2, 2 * p):
+        i, j = rng.integers(0, p, e), rng.integers(0, p, e)
+        chain = np.arange(p - 1)[::-1][: p // 3]  # a path walked from its high end
+        i, j = np.r_[i, chain], np.r_[j, chain + 1]
+        want = connected_components(coo_matrix((np.ones(len(i)), (i, j)), shape=(p, p)), directed=False)[1]
+        got = small_components(p, i, j)
+        assert got.dtype == want.dtype and got.tolist() == want.tolist()

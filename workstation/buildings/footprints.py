@@ -74,7 +74,23 @@ class Footprint:
     @property
     def area(self) -> float:
         x, y = self.polygon[:, 0], self.polygon[:, 1]
-        return float(0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+        return float(0.5 * (np.dot(x, _nxt(y)) - np.dot(y, _nxt(x))))
+
+
+def _nxt(a: np.ndarray) -> np.ndarray:
+    """``a`` shifted by one along its first axis, the first row last (``np.roll(a, -1, 0)``
+    without its general-axis overhead: rings are short and walked many times)."""
+    return np.concatenate([a[1:], a[:1]])
+
+
+def _prv(a: np.ndarray) -> np.ndarray:
+    """``a`` shifted the other way, the last row first (``np.roll(a, 1, 0)``)."""
+    return np.concatenate([a[-1:], a[:-1]])
+
+
+def _norm(v: np.ndarray) -> np.ndarray:
+    """Row lengths of (m, d) vectors, summed and rooted as ``np.linalg.norm(v, axis=1)`` does."""
+    return np.sqrt(np.add.reduce(v * v, axis=1))
 
 
 def nominal_spacing(xy: np.ndarray) -> float:
@@ -134,7 +150,7 @@ def _dominant_direction_rect(p: np.ndarray) -> float:
     rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.Polygon(p)).exterior.coords)
     e = rect[1] - rect[0]
     t0 = math.atan2(e[1], e[0])
-    d = np.roll(p, -1, axis=0) - p
+    d = _nxt(p) - p
     ln = np.hypot(d[:, 0], d[:, 1])
     dev = (np.arctan2(d[:, 1], d[:, 0]) - t0 + np.pi / 4) % (np.pi / 2) - np.pi / 4
     near = np.abs(dev) < math.radians(15)
@@ -145,7 +161,7 @@ def _dominant_direction_rect(p: np.ndarray) -> float:
 
 def _edges(ring, keep):
     """Traced points (list of (m, 2)) and chord vectors (e, 2) of the ring between kept vertices."""
-    nxt = np.roll(np.arange(len(keep)), -1)
+    nxt = _nxt(np.arange(len(keep)))
     segs = [ring[keep[i]:keep[nxt[i]] + 1] if keep[nxt[i]] > keep[i] else np.vstack([ring[keep[i]:], ring[:keep[nxt[i]] + 1]])
             for i in range(len(keep))]
     return segs, ring[keep[nxt]] - ring[keep]
@@ -183,7 +199,7 @@ def _joint_direction(segs, cls, trim):
 
 def _trimmed(sg: np.ndarray, trim: float) -> np.ndarray:
     """Traced points of an edge without ``trim`` metres at each end (all if too short)."""
-    t = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(sg, axis=0), axis=1))])
+    t = np.concatenate([[0.0], np.cumsum(_norm(sg[1:] - sg[:-1]))])
     sel = sg[(t > trim) & (t < t[-1] - trim)]
     return sel if len(sel) >= 2 else sg
 
@@ -210,8 +226,9 @@ def _lines(segs, chords, cls, theta0, trim):
 def _merge_runs(dirs, pts, cls, weights, tol):
     """Merge consecutive snapped edges of one class whose lines lie within ``tol`` (m) (a
     length-weighted mean line); join those further apart by a perpendicular step."""
-    start = int(np.flatnonzero(cls != np.roll(cls, 1))[0]) if (cls != np.roll(cls, 1)).any() else 0
-    order = np.roll(np.arange(len(cls)), -start)
+    change = cls != _prv(cls)
+    start = int(np.flatnonzero(change)[0]) if change.any() else 0
+    order = np.concatenate([np.arange(start, len(cls)), np.arange(start)])
     out = []  # [dir, point, class, weight]
     for i in order:
         d, p, c, w = dirs[i], pts[i], cls[i], weights[i]
@@ -237,7 +254,7 @@ def _merge_runs(dirs, pts, cls, weights, tol):
 
 def edge_intersections(dirs, pts):
     """Corner k = intersection of edge line k-1 and edge line k."""
-    prev = np.roll(np.arange(len(dirs)), 1)
+    prev = _prv(np.arange(len(dirs)))
     u, v = dirs[prev], dirs
     p, q = pts[prev], pts
     cross = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
@@ -294,17 +311,17 @@ def _drop_short(poly: np.ndarray, tol: float) -> np.ndarray:
     """Remove vertices closer than ``tol`` (m) to the previous one and collinear vertices."""
     if len(poly) < 4:
         return poly
-    d = np.linalg.norm(poly - np.roll(poly, 1, axis=0), axis=1)
+    d = _norm(poly - _prv(poly))
     poly = poly[d > tol] if (d > tol).sum() >= 3 else poly
-    a, b = np.roll(poly, 1, axis=0) - poly, np.roll(poly, -1, axis=0) - poly
-    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]) / np.maximum(np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1), 1e-12)
+    a, b = _prv(poly) - poly, _nxt(poly) - poly
+    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]) / np.maximum(_norm(a) * _norm(b), 1e-12)
     keep = cross > 1e-6
     return poly[keep] if keep.sum() >= 3 else poly
 
 
 def _ccw(ring: np.ndarray) -> np.ndarray:
     x, y = ring[:, 0], ring[:, 1]
-    area = 0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    area = 0.5 * (np.dot(x, _nxt(y)) - np.dot(y, _nxt(x)))
     return ring if area > 0 else ring[::-1].copy()
 
 
@@ -339,9 +356,9 @@ def fill_holes(mask: np.ndarray) -> np.ndarray:
     from scipy import ndimage
 
     lab, n = ndimage.label(~mask)
-    border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
     outside = np.zeros(n + 1, bool)
-    outside[border] = True
+    for edge in (lab[0], lab[-1], lab[:, 0], lab[:, -1]):
+        outside[edge] = True
     return mask | ~outside[lab]
 
 
@@ -358,10 +375,16 @@ def trace_outline(field: np.ndarray, origin: np.ndarray, cell: float) -> np.ndar
     squares with linear interpolation between cell centres."""
     import contourpy
 
-    m = np.pad(field, 1)
-    gen = contourpy.contour_generator(z=m, line_type=contourpy.LineType.Separate)
+    m = np.pad(np.asarray(field, np.float64), 1)
+    # contourpy's serial generator as contourpy.contour_generator makes it for a finite field
+    # (no mask, index coordinates), without that function's masked-array checks
+    x, y = np.meshgrid(np.arange(m.shape[1], dtype=np.float64), np.arange(m.shape[0], dtype=np.float64))
+    gen = contourpy.SerialContourGenerator(x, y, m, None, corner_mask=True, line_type=contourpy.LineType.Separate,
+                                           fill_type=contourpy.SerialContourGenerator.default_fill_type,
+                                           quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
+                                           x_chunk_size=0, y_chunk_size=0)
     ring = max(gen.lines(0.5), key=len)
-    if np.allclose(ring[0], ring[-1]):
+    if np.all(np.abs(ring[0] - ring[-1]) <= 1e-8 + 1e-5 * np.abs(ring[-1])):  # np.allclose
         ring = ring[:-1]
     return origin + (ring - 1 + 0.5) * cell
 
@@ -434,8 +457,8 @@ def _orthogonal_pass(rp, fine, spacing, ref):
     if len(dirs) < 4:
         return None
     corners = edge_intersections(dirs, mids)
-    nxt = np.roll(corners, -1, axis=0)
-    mids, near = _refine_offsets(dirs, 0.5 * (corners + nxt), np.linalg.norm(nxt - corners, axis=1), fine, tol, trim)
+    nxt = _nxt(corners)
+    mids, near = _refine_offsets(dirs, 0.5 * (corners + nxt), _norm(nxt - corners), fine, tol, trim)
     poly = _drop_short(edge_intersections(dirs, mids), cell / 2)
     if len(poly) < 4 or not shapely.is_valid(shapely.Polygon(poly)):
         return None
@@ -449,14 +472,25 @@ def _refine_offsets(dirs, mids, lengths, fine, tol, trim):
     moved points and, per edge, the fine points used."""
     out, used = mids.copy(), []
     for i, (d, m, L) in enumerate(zip(dirs, mids, lengths)):
+        used.append(np.zeros((0, 2)))
+        if not L > 2 * trim + tol:
+            continue
         nrm = np.array([-d[1], d[0]])
-        off = (fine - m) @ nrm
-        along = (fine - m) @ d
-        near = (np.abs(off) < tol) & (np.abs(along) < L / 2 - trim)
-        if L > 2 * trim + tol and near.sum() >= 3:
-            out[i] = m + nrm * float(np.median(off[near]))
-        used.append(fine[near] if L > 2 * trim + tol and near.sum() >= 3 else np.zeros((0, 2)))
+        rel = fine - m
+        off = rel @ nrm
+        near = (np.abs(off) < tol) & (np.abs(rel @ d) < L / 2 - trim)
+        if np.count_nonzero(near) >= 3:
+            out[i] = m + nrm * _median(off[near])
+            used[-1] = fine[near]
     return out, used
+
+
+def _median(v: np.ndarray) -> float:
+    """Median of a short 1-D array without NaNs (the value np.median gives, without its
+    general-axis machinery)."""
+    s = np.sort(v)
+    h = len(s) // 2
+    return float(s[h]) if len(s) % 2 else float((s[h - 1] + s[h]) / 2.0)
 
 
 def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams()):
@@ -476,8 +510,8 @@ def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams
     ij = np.floor((xy - origin) / cell).astype(np.int64)
     # points just outside the half-density outline (the edge itself) join the nearest building
     dist, (ii, jj) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
-    near = labels[ii, jj] * (dist <= 2 * spacing / cell)
-    point_comp = near[ij[:, 1], ij[:, 0]] - 1
+    r, c = ij[:, 1], ij[:, 0]  # looked up at the points' cells only
+    point_comp = labels[ii[r, c], jj[r, c]] * (dist[r, c] <= 2 * spacing / cell) - 1
     slices = ndimage.find_objects(labels)
     out, remap = [], np.full(len(slices), -1, np.int64)
     for k, sl in enumerate(slices):

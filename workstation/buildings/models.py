@@ -15,7 +15,9 @@ differ at their shared border by more than the step tolerance start a new *part*
 with a wall), planes meeting continuously stay in one part. Inside a part the roof is the lower
 envelope of its planes clipped to the part outline: exact for flat, shed, gabled, hipped and
 pyramid roofs and for any convex roof; planes whose envelope face disagrees with their own
-points are dropped. Faces are welded and T-junctions split so each part is a closed 2-manifold.
+points are dropped. Where that drops planes, the arrangement of the planes' intersection lines
+labelled by the raster is used instead when it is continuous and agrees better (valleys of
+cross-gabled roofs; :mod:`workstation.buildings.roof_faces`). Faces are welded and T-junctions split so each part is a closed 2-manifold.
 """
 
 from __future__ import annotations
@@ -24,6 +26,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from .roof_faces import lower_envelope, roof_faces
 
 #: Coordinate grid (m) to which part polygons are snapped, so that overlays leave no slivers.
 GRID = 1e-5
@@ -93,7 +97,7 @@ class RoofFace:
     def area_m2(self) -> float:
         """Sloped (true) area (m^2)."""
         x, y = self.polygon[:, 0], self.polygon[:, 1]
-        plan = 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+        plan = 0.5 * abs(np.dot(x, np.concatenate([y[1:], y[:1]])) - np.dot(y, np.concatenate([x[1:], x[:1]])))
         return float(plan / max(abs(self.normal[2]), 1e-9))
 
 
@@ -147,49 +151,6 @@ def prism(polygon: np.ndarray, z0: float, z1: float) -> Solid:
     return Solid(v, faces, ["GroundSurface", "RoofSurface"] + ["WallSurface"] * k)
 
 
-def halfplane_clip(poly: np.ndarray, a: float, b: float, c: float) -> np.ndarray:
-    """Sutherland-Hodgman clip of a convex polygon (k, 2) to a x + b y + c <= 0."""
-    if len(poly) == 0:
-        return poly
-    s = poly @ np.array([a, b]) + c
-    nxt = np.roll(np.arange(len(poly)), -1)
-    out = []
-    for i in range(len(poly)):
-        j = nxt[i]
-        if s[i] <= 0:
-            out.append(poly[i])
-        if (s[i] < 0 < s[j]) or (s[j] < 0 < s[i]):
-            t = s[i] / (s[i] - s[j])
-            out.append(poly[i] + t * (poly[j] - poly[i]))
-    return np.array(out).reshape(-1, 2)
-
-
-def lower_envelope(part, normals: np.ndarray, points: np.ndarray) -> list:
-    """Faces of the lower envelope of planes (normals (p, 3) up, points (p, 3)) over a shapely
-    polygon ``part``: [(plane index, shapely polygon)], each the part clipped to where that
-    plane is the lowest."""
-    import shapely
-
-    # z_i(x, y) = g_i . (x, y) + h_i
-    g = -normals[:, :2] / normals[:, 2:3]
-    h = points[:, 2] - np.einsum("ij,ij->i", g, points[:, :2])
-    x0, y0, x1, y1 = part.bounds
-    box = np.array([[x0 - 1, y0 - 1], [x1 + 1, y0 - 1], [x1 + 1, y1 + 1], [x0 - 1, y1 + 1]])
-    out = []
-    for i in range(len(normals)):
-        cell = box
-        for j in range(len(normals)):
-            if j != i:
-                cell = halfplane_clip(cell, *(g[i] - g[j]), h[i] - h[j])
-        if len(cell) < 3:
-            continue
-        piece = part.intersection(shapely.Polygon(cell))
-        for geom in getattr(piece, "geoms", [piece]):
-            if geom.geom_type == "Polygon" and geom.area > 1e-9:
-                out.append((i, shapely.orient_polygons(geom)))
-    return out
-
-
 def ownership_raster(polygon, xyz: np.ndarray, labels: np.ndarray, n_planes: int, cell: float):
     """Plane owning each raster cell inside a shapely ``polygon``: the majority label of the
     cell's points, and for cells without labelled points the label of the nearest such cell.
@@ -230,8 +191,7 @@ def split_parts(grid, origin, cell, normals, points, eps):
     planes whose heights at their common cell borders differ by more than
     ``3 eps + (tan a + tan b) cell`` (the plane threshold plus the height change over one cell
     of border uncertainty) are separated by a step."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
+    from .planes import small_components
 
     p = len(normals)
     pa, pb, mids = [], [], []
@@ -250,8 +210,7 @@ def split_parts(grid, origin, cell, normals, points, eps):
     tot = np.bincount(key, minlength=p * p)
     stp = np.bincount(key, weights=step, minlength=p * p)
     joined = np.flatnonzero((tot > 0) & (stp < 0.5 * tot))
-    g = coo_matrix((np.ones(len(joined)), (joined // p, joined % p)), shape=(p, p))
-    return connected_components(g, directed=False)[1]
+    return small_components(p, joined // p, joined % p)
 
 
 def step_split(s_own: np.ndarray, s_other: np.ndarray) -> float:
@@ -374,30 +333,6 @@ def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_p
     return out
 
 
-def _envelope_faces(poly, normals, points, grid, centres):
-    """Lower-envelope faces of a part; planes whose face covers under four raster cells, or
-    holds under half cells of their own label (an envelope the points contradict), are dropped
-    one at a time (smallest first) and the envelope recomputed."""
-    import shapely
-
-    use = np.arange(len(normals))
-    for _ in range(len(normals)):
-        faces = lower_envelope(poly, normals[use], points[use])
-        if len(use) == 1:
-            break
-        bad = []
-        area = np.bincount([k for k, _ in faces], [f.area for _, f in faces], minlength=len(use))
-        for k, face in faces:
-            inside = shapely.contains_xy(face, centres[..., 0], centres[..., 1]) & (grid != -1)
-            if inside.sum() < 4 or np.mean(grid[inside] == use[k]) < 0.5:  # under 4 cells, or contradicted
-                bad.append(k)
-        if not bad:
-            break
-        worst = min(bad, key=lambda k: area[k])
-        use = np.delete(use, worst)
-    return [(use[k], f) for k, f in faces]
-
-
 def _wall_rings(ring2d: np.ndarray, roof_xy: np.ndarray, roof_z: np.ndarray, ground: float, tol: float):
     """Walls under the closed ring (k, 2) (counter-clockwise for outward normals): each edge
     a -> b becomes [a_ground, b_ground, b_roof, (roof vertices on the edge, from b to a), a_roof]."""
@@ -409,22 +344,27 @@ def _wall_rings(ring2d: np.ndarray, roof_xy: np.ndarray, roof_z: np.ndarray, gro
         L2 = float(d @ d)
         if L2 < 1e-12:
             continue
-        t = (roof_xy - a) @ d / L2
-        off = np.abs((roof_xy[:, 0] - a[0]) * d[1] - (roof_xy[:, 1] - a[1]) * d[0]) / math.sqrt(L2)
+        rel = roof_xy - a
+        t = rel @ d / L2
+        off = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / math.sqrt(L2)
         on = (off < tol) & (t > -1e-9) & (t < 1 + 1e-9)
         ts, zs = t[on], roof_z[on]
-        za = zs[np.argmin(np.abs(ts))] if on.any() and np.min(np.abs(ts)) < 1e-6 else np.nan
-        zb = zs[np.argmin(np.abs(ts - 1))] if on.any() and np.min(np.abs(ts - 1)) < 1e-6 else np.nan
+        za = zb = np.nan
+        if len(ts):
+            ta, tb = np.abs(ts), np.abs(ts - 1)
+            ia, ib = int(np.argmin(ta)), int(np.argmin(tb))
+            za = zs[ia] if ta[ia] < 1e-6 else np.nan
+            zb = zs[ib] if tb[ib] < 1e-6 else np.nan
         mid = (ts > 1e-9) & (ts < 1 - 1e-9)
         order = np.argsort(-ts[mid])
-        top = [np.r_[b, zb]] + [np.r_[a + tt * d, zz] for tt, zz in zip(ts[mid][order], zs[mid][order])] + [np.r_[a, za]]
-        out.append(np.vstack([np.r_[a, ground], np.r_[b, ground], *top]))
+        between = np.column_stack([a + ts[mid][order][:, None] * d, zs[mid][order]])
+        out.append(np.vstack([[a[0], a[1], ground], [b[0], b[1], ground], [b[0], b[1], zb], between, [a[0], a[1], za]]))
     return out
 
 
 def part_solid(poly, normals, points, ground, grid, centres, part_index):
     """Closed LoD2.2 solid of one part polygon and its roof faces."""
-    faces = _envelope_faces(poly, normals, points, grid, centres) if len(normals) else []
+    faces = roof_faces(poly, normals, points, grid, centres) if len(normals) else []
     if not faces:  # no usable plane over this part: a flat roof at its planes' mean height
         c = poly.representative_point()
         z = float(points[:, 2].mean()) if len(points) else ground + 3.0
@@ -460,15 +400,21 @@ def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
     inserted into that edge (no T-junctions), so shared edges match exactly."""
     allv = np.vstack([r for f in faces for r in f])
     key = np.round(allv / tol).astype(np.int64)
-    uniq, first, inv = np.unique(key, axis=0, return_index=True, return_inverse=True)
-    V = allv[first]
+    # the distinct keys in lexicographic order, each from its first occurrence (np.unique over
+    # rows, without its structured-array sort)
+    order = np.lexsort((key[:, 2], key[:, 1], key[:, 0]))
+    sk = key[order]
+    new = np.concatenate([[True], (sk[1:] != sk[:-1]).any(axis=1)])
+    inv = np.empty(len(key), np.intp)
+    inv[order] = np.cumsum(new) - 1
+    V = allv[order[new]]
     out, pos = [], 0
     for f in faces:
         rings = []
         for r in f:
             idx = inv[pos:pos + len(r)].ravel()
             pos += len(r)
-            idx = idx[np.r_[True, idx[1:] != idx[:-1]]]
+            idx = idx[np.concatenate([[True], idx[1:] != idx[:-1]])]
             if len(idx) > 1 and idx[0] == idx[-1]:
                 idx = idx[:-1]
             rings.append(_split_edges(idx, V, tol))
@@ -478,19 +424,18 @@ def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
 
 def _split_edges(idx: np.ndarray, V: np.ndarray, tol: float) -> list:
     """Insert into each edge of the ring ``idx`` the vertices of V lying strictly inside it."""
-    a, b = V[idx], V[np.roll(idx, -1)]
+    a, b = V[idx], V[np.concatenate([idx[1:], idx[:1]])]
     d = b - a
     L2 = np.einsum("ij,ij->i", d, d)
     rel = V[None, :, :] - a[:, None, :]
     t = np.einsum("evj,ej->ev", rel, d) / np.maximum(L2, 1e-18)[:, None]
     perp = rel - t[..., None] * d[:, None, :]
     on = (np.einsum("evj,evj->ev", perp, perp) < tol * tol) & (t > 1e-9) & (t < 1 - 1e-9)
-    ring = []
-    for e in range(len(idx)):
-        ring.append(int(idx[e]))
-        ins = np.flatnonzero(on[e])
-        ring += [int(v) for v in ins[np.argsort(t[e, ins])]]
-    return ring
+    e, v = np.nonzero(on)
+    if not len(e):
+        return idx.tolist()
+    order = np.lexsort((t[e, v], e))  # by edge, along it
+    return np.insert(idx, e[order] + 1, v[order]).tolist()
 
 
 def triangulate(solid: Solid) -> tuple[np.ndarray, np.ndarray]:
@@ -547,7 +492,8 @@ def is_watertight(solid: Solid) -> bool:
 
 def roof_type(faces: list, n_parts: int) -> str:
     """``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` (several flat parts) or
-    ``complex``, from the faces that hold at least 5 % of the roof area."""
+    ``complex`` (several parts, flat and sloped faces mixed, or valleys), from the faces that
+    hold at least 5 % of the roof area."""
     area = np.array([f.area_m2 for f in faces])
     faces = [f for f, a in zip(faces, area) if a >= 0.05 * area.sum()]
     n_parts = len({f.part for f in faces})
@@ -555,7 +501,7 @@ def roof_type(faces: list, n_parts: int) -> str:
     sloped = tilt >= FLAT_TILT_DEG
     if not sloped.any():
         return "flat" if n_parts == 1 else "multilevel"
-    if n_parts > 1 or (~sloped).any():
+    if n_parts > 1 or (~sloped).any() or _has_valley(faces):
         return "complex"
     az = np.array([f.azimuth_deg for f in faces])
     planes = np.unique(np.round(np.column_stack([tilt, az]), 1), axis=0)
@@ -566,6 +512,16 @@ def roof_type(faces: list, n_parts: int) -> str:
     if len(planes) >= 3:
         return "hipped"
     return "complex"
+
+
+def _has_valley(faces: list, tol: float = 0.01) -> bool:
+    """Whether some face stands above another face's plane at its own centre (m): the roof is
+    not the lower envelope of its planes, so two faces meet in a valley (a convex roof, gabled
+    or hipped, is the lower envelope)."""
+    centres = np.array([f.polygon.mean(axis=0) for f in faces])
+    own = np.array([f.z(c[None])[0] for f, c in zip(faces, centres)])
+    lowest = np.min([f.z(centres) for f in faces], axis=0)
+    return bool((own > lowest + tol).any())
 
 
 def _claim_unlabelled(xyz, local, normals, points, eps, cell):
@@ -590,10 +546,7 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     """Merge the planes of one building that are the same plane (normals within ``angle_deg``,
     each centroid within ``eps`` of the other plane) even where they do not touch (pieces of one
     roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    from .planes import fit_plane
+    from .planes import fit_plane, small_components
 
     p = len(normals)
     cen = np.array([xyz[local == q].mean(axis=0) for q in range(p)])
@@ -601,7 +554,7 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     same = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
     same &= np.abs(np.einsum("ij,ij->i", normals[i], cen[j] - cen[i])) < eps
     same &= np.abs(np.einsum("ij,ij->i", normals[j], cen[i] - cen[j])) < eps
-    _, comp = connected_components(coo_matrix((np.ones(int(same.sum())), (i[same], j[same])), shape=(p, p)), directed=False)
+    comp = small_components(p, i[same], j[same])
     local = np.where(local >= 0, comp[np.maximum(local, 0)], -1)
     out_n, out_p = [], []
     for q in range(comp.max() + 1):

@@ -175,8 +175,10 @@ def scan_frame(xy: np.ndarray, k: int = 8):
     a = float(np.median(d[:, k]) / (k / 2))
     if w[1] < ANISOTROPY:  # offsets spread over directions: isotropic enough
         return np.array([1.0, 0.0]), a, a, 1.0 / (a * a)
-    cells = np.unique(np.floor(xy / 2.0).astype(np.int64), axis=0)
-    density = len(xy) / (4.0 * len(cells))
+    cell = np.floor(xy / 2.0).astype(np.int64)
+    cell -= cell.min(axis=0)
+    occupied = len(np.unique(cell[:, 0] * (int(cell[:, 1].max()) + 1) + cell[:, 1]))  # distinct 2 m cells
+    density = len(xy) / (4.0 * occupied)
     return e[:, 1], a, float(max(a, 1.0 / (density * max(a, 1e-9)))), density
 
 
@@ -262,7 +264,7 @@ def ransac_plane(pts: np.ndarray, eps: float, params: PlaneParams, rng: np.rando
 
 def _grow_regions(xyz, normals, sigma, idx, eps, spacing, angle_deg):
     """Region growing as connected components of the smooth-neighbour graph (labels (n,), -1 off)."""
-    from scipy.sparse import coo_matrix
+    from scipy.sparse import csr_matrix
     from scipy.sparse.csgraph import connected_components
 
     n, k = idx.shape
@@ -271,13 +273,15 @@ def _grow_regions(xyz, normals, sigma, idx, eps, spacing, angle_deg):
     j = idx[:, 1:].ravel()
     both = planar[i] & planar[j]  # the other tests only for pairs of planar points
     i, j = i[both], j[both]
+    # the three tests in turn, each on the pairs that passed the ones before
+    ok = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
+    i, j = i[ok], j[ok]
     diff = xyz[j] - xyz[i]
-    ni = normals[i]
-    ok = np.einsum("ij,ij->i", ni, normals[j]) > math.cos(math.radians(angle_deg))
-    ok &= np.abs(np.einsum("ij,ij->i", ni, diff)) < eps
+    ok = np.abs(np.einsum("ij,ij->i", normals[i], diff)) < eps
     ok &= np.einsum("ij,ij->i", diff, diff) < (3.0 * spacing) ** 2
-    g = coo_matrix((np.ones(int(ok.sum()), np.int8), (i[ok], j[ok])), shape=(n, n))
-    _, lab = connected_components(g, directed=False)
+    i, j = i[ok], j[ok]  # still grouped by i, and no pair twice (distinct neighbours per row)
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(i, minlength=n))])
+    _, lab = connected_components(csr_matrix((np.ones(len(j)), j, indptr), shape=(n, n)), directed=False)
     lab = np.where(planar, lab, -1)
     return lab
 
@@ -306,21 +310,51 @@ def _ransac_regions(xyz, regions, eps, params):
     return labels, np.array(normals).reshape(-1, 3), np.array(offsets, float)
 
 
+#: Largest graph labelled with the dense propagation of :func:`small_components` (nodes).
+DENSE_COMPONENTS = 512
+
+
+def small_components(p: int, i: np.ndarray, j: np.ndarray) -> np.ndarray:
+    """Connected-component label (p,) int32 of the undirected graph of ``p`` nodes with edges
+    ``(i[e], j[e])``, numbered as scipy.sparse.csgraph.connected_components numbers them (in the
+    order of each component's lowest node).
+
+    Graphs of planes are small (tens of nodes): every node takes the lowest index among itself
+    and its neighbours until nothing changes, on a dense adjacency matrix, which spares the
+    sparse-matrix set-up. Larger graphs go to scipy.
+
+    >>> small_components(5, np.array([3, 1]), np.array([4, 2])).tolist()
+    [0, 1, 1, 2, 2]
+    """
+    if p > DENSE_COMPONENTS:
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
+
+        return connected_components(coo_matrix((np.ones(len(i)), (i, j)), shape=(p, p)), directed=False)[1]
+    adj = np.zeros((p, p), bool)
+    adj[i, j] = adj[j, i] = True
+    low = np.arange(p)
+    while True:
+        new = np.minimum(low, np.where(adj, low[None, :], p).min(axis=1, initial=p))
+        if np.array_equal(new, low):
+            break
+        low = new
+    return np.unique(low, return_inverse=True)[1].astype(np.int32)
+
+
 def _merge_coplanar(xyz, labels, normals, offsets, idx, eps, angle_deg):
     """Union touching planes whose normals agree and where the smaller plane's centroid lies on
     the larger plane (the larger one is the better determined)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
     p = len(normals)
     if p < 2:
         return labels
     a = np.repeat(labels, idx.shape[1] - 1)
     b = labels[idx[:, 1:].ravel()]
     keep = (a >= 0) & (b >= 0) & (a != b)
-    pairs = np.unique(np.sort(np.column_stack([a[keep], b[keep]]), axis=1), axis=0)
-    if not len(pairs):
+    key = np.unique(np.minimum(a[keep], b[keep]) * p + np.maximum(a[keep], b[keep]))  # sorted pairs (lo, hi)
+    if not len(key):
         return labels
+    pairs = np.column_stack([key // p, key % p])
     on = labels >= 0
     cnt = np.bincount(labels[on], minlength=p).astype(float)
     cen = np.column_stack([np.bincount(labels[on], xyz[on, c], minlength=p) for c in range(3)]) / np.maximum(cnt, 1)[:, None]
@@ -329,8 +363,7 @@ def _merge_coplanar(xyz, labels, normals, offsets, idx, eps, angle_deg):
     big = np.where(cnt[pa] >= cnt[pb], pa, pb)  # the better-determined plane
     small = np.where(cnt[pa] >= cnt[pb], pb, pa)
     same &= np.abs(np.einsum("ij,ij->i", normals[big], cen[small]) + offsets[big]) < eps
-    g = coo_matrix((np.ones(int(same.sum())), (pa[same], pb[same])), shape=(p, p))
-    _, comp = connected_components(g, directed=False)
+    comp = small_components(p, pa[same], pb[same])
     return np.where(labels >= 0, comp[np.maximum(labels, 0)], -1)
 
 
