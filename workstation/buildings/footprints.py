@@ -278,7 +278,7 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     """
     import shapely
 
-    ring = _ccw(ring)
+    ring = ccw(ring)
     tol = DP_TOLERANCE * spacing
     keep = douglas_peucker(ring, tol)
     if len(keep) < 3:
@@ -304,7 +304,7 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     reg, ref = shapely.Polygon(poly), shapely.Polygon(simple)
     if reg.symmetric_difference(ref).area > 0.25 * ref.area:  # regularisation went astray
         return simple
-    return _ccw(poly)
+    return ccw(poly)
 
 
 def _drop_short(poly: np.ndarray, tol: float) -> np.ndarray:
@@ -319,7 +319,7 @@ def _drop_short(poly: np.ndarray, tol: float) -> np.ndarray:
     return poly[keep] if keep.sum() >= 3 else poly
 
 
-def _ccw(ring: np.ndarray) -> np.ndarray:
+def ccw(ring: np.ndarray) -> np.ndarray:
     x, y = ring[:, 0], ring[:, 1]
     area = 0.5 * (np.dot(x, _nxt(y)) - np.dot(y, _nxt(x)))
     return ring if area > 0 else ring[::-1].copy()
@@ -423,7 +423,7 @@ def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: f
     P, R = shapely.Polygon(poly), shapely.Polygon(_rot(ring - centre, -(theta0 - delta)))
     if not P.is_valid or P.symmetric_difference(R).area > 1.5 * spacing * R.length:
         return None
-    return _ccw(_rot(poly, theta0 - delta) + centre)
+    return ccw(_rot(poly, theta0 - delta) + centre)
 
 
 def _orthogonal_pass(rp, fine, spacing, ref):
@@ -443,7 +443,7 @@ def _orthogonal_pass(rp, fine, spacing, ref):
     mask = fill_holes(m8 > 0)
     if not mask.any():
         return None
-    stair = _ccw(trace_outline(mask.astype(float), origin, cell))
+    stair = ccw(trace_outline(mask.astype(float), origin, cell))
     keep = douglas_peucker(stair, cell)
     segs, chords = _edges(stair, keep)
     cls, L = _classify(chords, 0.0, spacing, FootprintParams(min_snap_deg=10.0, max_snap_deg=10.0))

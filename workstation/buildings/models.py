@@ -573,9 +573,9 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
     the ground height (m)."""
     import shapely
 
-    from .footprints import _ccw
+    from .footprints import ccw
 
-    fp_xy = _ccw(np.asarray(footprint, float))
+    fp_xy = ccw(np.asarray(footprint, float))
     fp = shapely.Polygon(fp_xy)
     height = float(np.percentile(xyz[:, 2], params.lod1_percentile)) if len(xyz) else ground
     lod1 = prism(fp_xy, ground, max(height, ground + 0.1))
