@@ -226,6 +226,28 @@ def test_streamed_chunks_give_the_same_file(tmp_path):
     assert io_copc.summary(streamed)["levels"] >= 2
 
 
+def test_on_octree_sees_the_octree_that_is_written(tmp_path):
+    cloud = _cloud(6000, seed=9)
+    params = CopcParams(max_points=1000, cells=16)
+    plain, hooked = tmp_path / "a.copc.laz", tmp_path / "b.copc.laz"
+    write_copc(cloud, plain, params)
+    seen = []
+
+    def look(staged):  # the records are only valid during the call
+        seen.append((staged.tree, np.sort(np.asarray(staged.records["gps_time"])[staged.tree.src[:100]]),
+                     staged.header.point_count, staged.crs, staged.params))
+
+    res = write_copc_chunks(iter([cloud]), hooked, params, on_octree=look)
+    assert plain.read_bytes() == hooked.read_bytes()  # the callback changes nothing in the file
+    ((tree, gps, count, crs, got_params),) = seen
+    assert count == cloud.n and crs == cloud.crs and got_params == params
+    assert np.array_equal(np.sort(tree.src), np.arange(cloud.n))  # every record once
+    assert len(tree.starts) == res.nodes and tree.level.max() + 1 == res.levels
+    sizes = np.diff(np.r_[tree.starts, len(tree.src)])
+    assert np.bincount(tree.level, weights=sizes).astype(int).tolist() == list(res.points_per_level)
+    assert set(gps.tolist()) <= set(cloud.attrs["gps_time"].tolist())
+
+
 def test_save_copc_is_atomic_and_other_writers_refuse_copc_names(tmp_path):
     cloud = _cloud(500)
     out = tmp_path / "s.copc.laz"

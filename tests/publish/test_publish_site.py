@@ -133,6 +133,77 @@ def test_publish_refuses_existing_site_and_a_site_holding_an_input(work, site, t
     assert not (tmp_path / "s").exists()
 
 
+EAST = 200_000.0  # the mesh site's shift east: 3 degrees off the UTM central meridian
+
+
+def box_mesh(lo, hi):
+    """A closed box (12 triangles, outward faces) between the corners ``lo`` and ``hi``, green
+    vertex colours."""
+    from workstation.core.products import Mesh
+
+    v = np.array([[(hi if i & k else lo)[j] for j, k in enumerate((1, 2, 4))] for i in range(8)], float)
+    f = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4], [2, 6, 3], [3, 6, 7],
+                  [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]])
+    return Mesh(v, f, {"rgb": np.tile(np.array([[0, 200, 0]], np.uint8), (8, 1))}, crs=CRS)
+
+
+@pytest.fixture(scope="module")
+def mesh_site(tmp_path_factory):
+    """The scene moved EAST metres east (where UTM's grid north is 1.3 degrees off true north,
+    so a tileset's east-north-up frame is turned against the CRS) with a 20 m x 20 m x 8 m box
+    mesh (PLY) on its ground at x 10-30 m, y 60-80 m, published with 3D Tiles."""
+    from workstation.core.cloud import Cloud
+    from workstation.io import write_cloud
+    from workstation.io.mesh import write_mesh
+    from workstation.publish.site import PublishParams, publish_site
+
+    d = tmp_path_factory.mktemp("mesh-work")
+    c = _scene()
+    write_cloud(Cloud(c.xyz + [EAST, 0.0, 0.0], dict(c.attrs), crs=CRS), d / "cloud.las")
+    write_mesh(box_mesh(np.array([X0 + EAST + 10, Y0 + 60, Z0]), np.array([X0 + EAST + 30, Y0 + 80, Z0 + 8])),
+               d / "box.ply")
+    out = tmp_path_factory.mktemp("mesh-pub") / "site"
+    publish_site([d], out, params=PublishParams(tiles3d=True))
+    return d, out
+
+
+def test_site_json_places_the_mesh_tileset_in_the_viewer_frame(mesh_site):
+    """The tileset's matrix takes every vertex of its glb tiles (glTF y-up turned z-up, node
+    translations applied) to the mesh's CRS coordinates minus the site origin, within 1 mm."""
+    import trimesh
+
+    from workstation.io.mesh import read_mesh
+
+    work, site = mesh_site
+    doc = json.loads((site / "site.json").read_text())
+    (mesh,) = [t for t in doc["tilesets"] if t["kind"] == "mesh"]
+    m = np.array(mesh["matrix"]).reshape(4, 4).T  # column-major
+    assert m[3].tolist() == [0, 0, 0, 1] and abs(np.degrees(np.arctan2(m[1, 0], m[0, 0]))) > 1.0  # turned
+    tileset = json.loads((site / mesh["url"]).read_text())
+    todo, uris = [tileset["root"]], []
+    while todo:
+        tile = todo.pop()
+        todo += tile.get("children", [])
+        uris += [tile["content"]["uri"]] if "content" in tile else []
+    want = read_mesh(work / "box.ply").vertices - np.array(doc["origin"])
+    for uri in uris:
+        for part in trimesh.load((site / mesh["url"]).parent / uri, file_type="glb", process=False).dump():
+            g = np.asarray(part.vertices)
+            local = np.column_stack([g[:, 0], -g[:, 2], g[:, 1]])  # glTF (x, y, z) is z-up (x, -z, y)
+            placed = local @ m[:3, :3].T + m[:3, 3]
+            assert np.abs(placed[:, None, :] - want[None]).max(axis=-1).min(axis=1).max() < 1e-3
+
+
+def test_tileset_matrix_refuses_a_tileset_without_its_frame(tmp_path):
+    from workstation.core.errors import InvalidInputError
+    from workstation.publish.site import tileset_matrix
+
+    p = tmp_path / "tileset.json"
+    p.write_text(json.dumps({"asset": {"version": "1.1"}, "root": {"boundingVolume": {"box": [0] * 12}}}))
+    with pytest.raises(InvalidInputError, match="extras.ws.origin"):
+        tileset_matrix(p, [0, 0, 0])
+
+
 def test_a_copc_input_is_copied_byte_for_byte(site, tmp_path):
     from workstation.publish.site import publish_site
 
@@ -388,6 +459,78 @@ def test_viewer_requests_only_the_nodes_in_view(browser, server, site):
     state, _ = _open(browser, server)
     e, corner, fetched = _requested_nodes(site, server)
     assert state == "ready" and (fetched & ~near).sum() > 10
+
+
+@pytest.fixture(scope="module")
+def lod_site(tmp_path_factory):
+    """The scene with a wavy 100 m x 100 m terrain mesh (7,200 triangles) over it, published
+    with 3D Tiles; the mesh's tileset is then rewritten in tiles of at most 800 triangles (a
+    tree of 21 tiles, 3 levels, refined by REPLACE) and its site.json matrix refitted."""
+    from workstation.core.products import Mesh
+    from workstation.io import write_cloud
+    from workstation.io.mesh import write_mesh
+    from workstation.publish.site import PublishParams, publish_site, tileset_matrix
+    from workstation.publish.tiles3d import write_mesh_tileset
+
+    d = tmp_path_factory.mktemp("lod-work")
+    write_cloud(_scene(), d / "cloud.las")
+    n = 61
+    x, y = np.meshgrid(np.linspace(0, 100, n), np.linspace(0, 100, n))
+    z = 3 * np.sin(x / 7) * np.cos(y / 9) + 2
+    i = np.arange(n * n).reshape(n, n)
+    a, b, c, e = i[:-1, :-1].ravel(), i[:-1, 1:].ravel(), i[1:, :-1].ravel(), i[1:, 1:].ravel()
+    faces = np.vstack([np.column_stack([a, b, e]), np.column_stack([a, e, c])])
+    rgb = np.column_stack([np.full(n * n, 200), np.clip(z.ravel() * 40, 0, 255), np.full(n * n, 50)]).astype(np.uint8)
+    xyz = np.column_stack([x.ravel() + X0, y.ravel() + Y0, z.ravel() + Z0])
+    write_mesh(Mesh(xyz, faces, {"rgb": rgb}, crs=CRS), d / "terrain.ply")
+    site = tmp_path_factory.mktemp("lod-pub") / "site"
+    publish_site([d], site, params=PublishParams(tiles3d=True))
+    doc = json.loads((site / "site.json").read_text())
+    (entry,) = [t for t in doc["tilesets"] if t["kind"] == "mesh"]
+    folder = (site / entry["url"]).parent
+    shutil.rmtree(folder)
+    write_mesh_tileset(d / "terrain.ply", folder, max_faces=800)
+    entry["matrix"] = tileset_matrix(folder / "tileset.json", doc["origin"])
+    (site / "site.json").write_text(json.dumps(doc))
+    return site, entry
+
+
+def _tiles(tileset: dict) -> dict:
+    """{content uri: (depth, box centre x, y)} of every tile of a tileset document."""
+    out, todo = {}, [(tileset["root"], 0)]
+    while todo:
+        tile, depth = todo.pop()
+        todo += [(c, depth + 1) for c in tile.get("children", [])]
+        if "content" in tile:
+            out[tile["content"]["uri"]] = (depth, *tile["boundingVolume"]["box"][:2])
+    return out
+
+
+def test_viewer_refines_mesh_tiles_by_screen_space_error_in_view(browser, lod_site):
+    """The whole site seen from afar needs no full-resolution leaf; a camera low over the
+    south-west corner looking at it fetches leaves there and nothing of the north-east
+    quarter, which is behind it."""
+    from workstation.publish.site import serve_in_thread
+
+    site, entry = lod_site
+    tiles = _tiles(json.loads((site / entry["url"]).read_text()))
+    leaf = max(d for d, _, _ in tiles.values())
+    srv = serve_in_thread(site)
+    try:
+        def fetched(fragment=""):
+            state, _ = _open(browser, srv, fragment)
+            assert state == "ready" and not browser.errors()
+            prefix = "/" + entry["url"].rsplit("/", 1)[0] + "/"
+            return {r[0][len(prefix):] for r in srv.requests if r[0].startswith(prefix) and r[0].endswith(".glb")}
+
+        far = fetched()
+        assert far and all(tiles[u][0] < leaf for u in far)
+        near = fetched(f"#view={X0 + 15},{Y0 + 15},{Z0 + 10},{X0 + 2},{Y0 + 2},{Z0}")
+        assert any(tiles[u][0] == leaf for u in near)
+        assert not [u for u in near if tiles[u][0] > 0 and tiles[u][1] > 0 and tiles[u][2] > 0]  # north-east
+        assert int(browser.eval("wsViewer.tilesets[0].tiles.filter(t => t.object && t.object.visible).length")) > 0
+    finally:
+        srv.shutdown()
 
 
 def _frame(browser):

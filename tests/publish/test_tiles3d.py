@@ -189,11 +189,27 @@ def _validate(files) -> list[dict]:
                     reason="npm gltf-validator not in web/node_modules")
 def test_khronos_gltf_validator_accepts_every_tile(cloud_tileset, mesh_tilesets):
     files = sorted(cloud_tileset[1].rglob("*.glb"))
-    files += [f for k in ("tex", "col") for f in sorted(mesh_tilesets[k].glob("*.glb"))]
+    files += [f for k in ("tex", "col") for f in sorted(mesh_tilesets[k].rglob("*.glb"))]
+    assert len(files) > len(list(cloud_tileset[1].rglob("*.glb"))) + 16
     reports = _validate(files)
     assert len(reports) == len(files)
     bad = [r for r in reports if r["errors"] or r["warnings"]]
     assert not bad, bad[:3]
+
+
+def test_publish_makes_the_cloud_tiles_from_the_copc_octree(tmp_path, monkeypatch, cloud_tileset):
+    from workstation.publish import tiles3d
+    from workstation.publish.site import PublishParams, publish_site
+
+    calls, real = [], tiles3d.write_cloud_tileset
+    monkeypatch.setattr(tiles3d, "write_cloud_tileset", lambda *a, **k: calls.append(a) or real(*a, **k))
+    _, folder, _ = cloud_tileset
+    publish_site([folder.parent / "cloud.laz"], tmp_path / "site", params=PublishParams(tiles3d=True, copc=SMALL))
+    assert not calls  # the cloud was read and sorted once, by the COPC writer
+    site = tmp_path / "site" / "3dtiles" / "cloud"
+    files = sorted(p.relative_to(folder) for p in folder.rglob("*") if p.is_file())
+    assert files == sorted(p.relative_to(site) for p in site.rglob("*") if p.is_file()) and len(files) > 8
+    assert all((folder / f).read_bytes() == (site / f).read_bytes() for f in files)  # as a tileset of its own
 
 
 def test_cloud_without_crs_is_local(tmp_path):
@@ -257,6 +273,9 @@ def _grid_mesh(n=50, **attrs):
     return Mesh(v, f, {k: (uv if k == "uv" else val) for k, val in attrs.items()}, crs=CRS), uv
 
 
+MESH_LEAF = 600  # max_faces: the 4,802-triangle grid becomes a few levels of tiles
+
+
 @pytest.fixture(scope="module")
 def mesh_tilesets(tmp_path_factory):
     from workstation.io.mesh import write_mesh
@@ -268,9 +287,9 @@ def mesh_tilesets(tmp_path_factory):
     write_mesh(textured, d / "tex.obj")
     rgb = np.random.default_rng(1).integers(0, 256, (2500, 3), dtype=np.uint8)
     write_mesh(_grid_mesh(rgb=rgb)[0], d / "col.ply")
-    save_tileset(d / "tex.obj", d / "tex", crs=CRS)
-    save_tileset(d / "col.ply", d / "col")  # the PLY records its CRS
-    return {"tex": d / "tex", "col": d / "col", "texture": tex, "rgb": rgb, "dir": d}
+    res = save_tileset(d / "tex.obj", d / "tex", crs=CRS, max_faces=MESH_LEAF)
+    save_tileset(d / "col.ply", d / "col", max_faces=MESH_LEAF)  # the PLY records its CRS
+    return {"tex": d / "tex", "col": d / "col", "texture": tex, "rgb": rgb, "dir": d, "result": res}
 
 
 def _glb_mesh(path: Path):
@@ -281,38 +300,176 @@ def _glb_mesh(path: Path):
     return m, np.column_stack([yup[:, 0], -yup[:, 2], yup[:, 1]])
 
 
-def test_textured_mesh_tileset_keeps_faces_texture_and_place(mesh_tilesets):
+def _mesh_leaves(folder: Path, src):
+    """(tileset doc, per leaf: (tile, trimesh mesh, index of each of its vertices into
+    ``src.vertices``)), the leaf vertices taken through the root transform back to the CRS
+    and matched to the source vertices within 1 mm."""
+    from scipy.spatial import cKDTree
+
+    doc = json.loads((folder / "tileset.json").read_text())
+    leaves = []
+    for tile, _ in _tiles(doc["root"]):
+        if tile.get("children"):
+            continue
+        m, local = _glb_mesh(folder / tile["content"]["uri"])
+        d, idx = cKDTree(src.vertices).query(_to_crs(doc, local, CRS))
+        assert d.max() < 1e-3, d.max()
+        leaves.append((tile, m, idx))
+    return doc, leaves
+
+
+def test_mesh_tileset_holds_every_triangle_once_at_full_resolution(mesh_tilesets):
     from workstation.io.mesh import read_mesh
 
     src = read_mesh(mesh_tilesets["dir"] / "tex.obj")
-    doc = json.loads((mesh_tilesets["tex"] / "tileset.json").read_text())
-    root = doc["root"]
-    assert doc["asset"]["version"] == "1.1" and root["refine"] == "REPLACE"
-    (full,) = root["children"]
-    assert root["content"]["uri"] == "mesh_lod.glb" and full["content"]["uri"] == "mesh.glb"
-    assert doc["geometricError"] > root["geometricError"] > full["geometricError"] == 0
-    m, local = _glb_mesh(mesh_tilesets["tex"] / "mesh.glb")
-    assert len(m.faces) == src.n_faces
-    xyz = _to_crs(doc, local, CRS)
-    np.testing.assert_allclose(xyz[np.asarray(m.faces)], src.vertices[src.faces], atol=1e-3)
-    assert np.array_equal(np.asarray(m.visual.material.baseColorTexture.convert("RGB")), mesh_tilesets["texture"])
-    np.testing.assert_allclose(m.visual.uv, src.vertex_attrs["uv"], atol=1e-6)  # trimesh flips v back
-    coarse, clocal = _glb_mesh(mesh_tilesets["tex"] / "mesh_lod.glb")
-    assert 0 < len(coarse.faces) < len(m.faces) // 5
-    lo, hi = _box_bounds(root["boundingVolume"]["box"])
-    assert (clocal >= lo - 1e-6).all() and (local <= hi + 1e-6).all()
+    doc, leaves = _mesh_leaves(mesh_tilesets["tex"], src)
+    assert doc["asset"]["version"] == "1.1" and doc["root"]["refine"] == "REPLACE"
+    assert len(leaves) >= 8 and mesh_tilesets["result"].levels >= 3 and mesh_tilesets["result"].faces == src.n_faces
+    got = np.concatenate([np.sort(idx[np.asarray(m.faces)], axis=1) for _, m, idx in leaves])
+    assert all(len(m.faces) <= MESH_LEAF for _, m, _ in leaves)
+    want = np.sort(src.faces, axis=1)
+    assert len(got) == len(want)  # no triangle twice ...
+    assert np.array_equal(np.unique(got, axis=0), np.unique(want, axis=0))  # ... and none missing
+
+
+def test_mesh_leaves_keep_their_texture(mesh_tilesets):
+    from workstation.io.mesh import read_mesh
+    from workstation.publish.tiles3d import _texture_at
+
+    src = read_mesh(mesh_tilesets["dir"] / "tex.obj")
+    _, leaves = _mesh_leaves(mesh_tilesets["tex"], src)
+    full = mesh_tilesets["texture"]
+    for _, m, idx in leaves:
+        img = np.asarray(m.visual.material.baseColorTexture.convert("RGB"))
+        assert img.shape[0] * img.shape[1] < full.shape[0] * full.shape[1]  # a leaf holds only its part
+        uv = np.asarray(m.visual.uv, float)  # trimesh flips v back to the OBJ convention
+        texel = src.vertex_attrs["uv"][idx] * [full.shape[1], full.shape[0]]
+        inner = (np.abs(texel % 1 - 0.5) < 0.49).all(axis=1)  # off texel edges, where float32 may pick the neighbour
+        assert inner.mean() > 0.5
+        assert np.array_equal(_texture_at(img, uv)[inner], _texture_at(full, src.vertex_attrs["uv"][idx])[inner])
+
+
+def test_mesh_tile_boxes_and_errors(mesh_tilesets):
+    folder = mesh_tilesets["tex"]
+    doc = json.loads((folder / "tileset.json").read_text())
+    assert doc["geometricError"] > doc["root"]["geometricError"] > 0
+    boxes = {id(t): _box_bounds(t["boundingVolume"]["box"]) for t, _ in _tiles(doc["root"])}
+    faces_below = {}
+    for tile, parent in reversed(list(_tiles(doc["root"]))):  # children before parents
+        m, local = _glb_mesh(folder / tile["content"]["uri"])
+        lo, hi = boxes[id(tile)]
+        assert (local >= lo).all() and (local <= hi).all()
+        gdoc, _ = read_glb((folder / tile["content"]["uri"]).read_bytes())
+        if tile.get("children"):
+            below = sum(faces_below[id(c)] for c in tile["children"])
+            assert tile["geometricError"] > 0 and len(m.faces) < below  # simplified, with vertex colours
+            assert "COLOR_0" in gdoc["meshes"][0]["primitives"][0]["attributes"]
+            faces_below[id(tile)] = below
+        else:
+            assert tile["geometricError"] == 0 and "images" in gdoc
+            faces_below[id(tile)] = len(m.faces)
+        if parent is not None:
+            assert tile["geometricError"] <= parent["geometricError"]
+            plo, phi = boxes[id(parent)]
+            assert (lo >= plo - 1e-9).all() and (hi <= phi + 1e-9).all()
+    assert faces_below[id(doc["root"])] == 2 * 49 * 49
+
+
+def test_mesh_with_a_vertex_per_corner_is_simplified(tmp_path, mesh_tilesets):
+    from workstation.core.products import Mesh
+    from workstation.io.mesh import read_mesh, write_mesh
+
+    grid, uv = _grid_mesh(uv=True)
+    wedge = grid.faces.reshape(-1)  # as texturing writes it: every face corner its own vertex and UV
+    soup = Mesh(grid.vertices[wedge], np.arange(len(wedge)).reshape(-1, 3), {"uv": uv[wedge]}, crs=CRS,
+                meta={"texture": mesh_tilesets["texture"]})
+    write_mesh(soup, tmp_path / "soup.obj")
+    assert read_mesh(tmp_path / "soup.obj").vertices.shape[0] == len(wedge)
+    save_tileset(tmp_path / "soup.obj", tmp_path / "t", crs=CRS, max_faces=MESH_LEAF)
+    doc = json.loads((tmp_path / "t" / "tileset.json").read_text())
+    root, _ = _glb_mesh(tmp_path / "t" / doc["root"]["content"]["uri"])
+    assert "children" in doc["root"] and len(root.faces) <= 1.2 * MESH_LEAF  # welded, then decimated
+    assert 0 < doc["root"]["geometricError"] < 10.0
 
 
 def test_vertex_colour_ply_tileset(mesh_tilesets):
-    doc = json.loads((mesh_tilesets["col"] / "tileset.json").read_text())
+    from workstation.io.mesh import read_mesh
+
+    src = read_mesh(mesh_tilesets["dir"] / "col.ply")
+    doc, leaves = _mesh_leaves(mesh_tilesets["col"], src)
     assert doc["extras"]["ws"]["crs"] == CRS and len(doc["root"]["transform"]) == 16
-    gdoc, binary = read_glb((mesh_tilesets["col"] / "mesh.glb").read_bytes())
-    (prim,) = gdoc["meshes"][0]["primitives"]
-    assert prim["mode"] == 4 and gdoc["materials"][0]["doubleSided"]
-    colours = _accessor(gdoc, binary, prim["attributes"]["COLOR_0"])
-    assert np.array_equal(colours, mesh_tilesets["rgb"])
-    faces = _accessor(gdoc, binary, prim["indices"]).reshape(-1, 3)
-    assert faces.max() < len(colours) and len(faces) == 2 * 49 * 49
+    for tile, _, idx in leaves:
+        gdoc, binary = read_glb((mesh_tilesets["col"] / tile["content"]["uri"]).read_bytes())
+        (prim,) = gdoc["meshes"][0]["primitives"]
+        assert prim["mode"] == 4 and gdoc["materials"][0]["doubleSided"]
+        colours = _accessor(gdoc, binary, prim["attributes"]["COLOR_0"])
+        assert np.array_equal(colours, mesh_tilesets["rgb"][idx])
+        faces = _accessor(gdoc, binary, prim["indices"]).reshape(-1, 3)
+        assert faces.max() < len(colours)
+
+
+def test_small_mesh_is_one_leaf(tmp_path, mesh_tilesets):
+    res = save_tileset(mesh_tilesets["dir"] / "col.ply", tmp_path / "t")  # 4,802 faces <= 50,000
+    doc = json.loads((tmp_path / "t" / "tileset.json").read_text())
+    assert res.tiles == res.levels == 1 and "children" not in doc["root"] and doc["root"]["geometricError"] == 0
+    assert doc["geometricError"] > 0
+    with pytest.raises(InvalidInputError):
+        save_tileset(mesh_tilesets["dir"] / "col.ply", tmp_path / "t2", max_faces=0)
+
+
+def test_split_faces_puts_every_face_in_one_leaf():
+    from workstation.publish.tiles3d import split_faces
+
+    rng = np.random.default_rng(3)
+    cent = np.vstack([rng.uniform(0, [400, 300, 20], (5000, 3)), np.full((700, 3), 7.0)])  # 700 at one point
+    tree = split_faces(cent, 300)
+    assert len(tree["children"]) == 4  # flat data: a quadtree split
+    leaves, stack = [], [tree]
+    while stack:
+        node = stack.pop()
+        if node["children"]:
+            kids = np.concatenate([k["faces"] for k in node["children"]])
+            assert np.array_equal(np.sort(kids), np.sort(node["faces"])) and len(node["children"]) >= 2
+            stack += node["children"]
+        else:
+            leaves.append(node)
+    owner = np.concatenate([n["faces"] for n in leaves])
+    assert np.array_equal(np.sort(owner), np.arange(len(cent)))
+    big = [n for n in leaves if len(n["faces"]) > 300]
+    assert len(big) == 1 and (big[0]["faces"] >= 5000).all()  # only coincident centroids cannot be split
+
+
+def _scattered_atlas(cells=16, seed=7):
+    """Unshared triangles each with its own 4 x 4 texel cell at a random place in a 64 x 64
+    atlas (as texturing packs faces): (uv (3m, 2), faces (m, 3), texture)."""
+    rng = np.random.default_rng(seed)
+    m = 200
+    slot = rng.permutation(cells * cells)[:m]
+    x0, y0 = (slot % cells) * 4, (slot // cells) * 4
+    corner = np.array([[0.5, 0.5], [3.5, 0.5], [0.5, 3.5]])  # texel units inside the cell, rows down
+    px = np.stack([x0, y0], 1)[:, None, :] + corner[None]
+    uv = np.column_stack([px[..., 0].ravel() / 64, 1 - px[..., 1].ravel() / 64])
+    return uv, np.arange(3 * m).reshape(m, 3), rng.integers(0, 256, (64, 64, 3), dtype=np.uint8)
+
+
+def test_sub_atlas_keeps_texels_and_only_what_is_used():
+    from workstation.publish.tiles3d import _texture_at, sub_atlas
+
+    uv, faces, tex = _scattered_atlas()
+    part = faces[:25]  # an eighth of the faces, spread over the whole atlas
+    used = np.unique(part)
+    sub, uv2 = sub_atlas(tex, uv[: used.max() + 1], part)
+    assert sub.shape[0] * sub.shape[1] < tex.shape[0] * tex.shape[1] / 3
+    assert np.array_equal(_texture_at(sub, uv2[used]), _texture_at(tex, uv[used]))
+    corners = (uv2[part] * [sub.shape[1], sub.shape[0]])  # the 3 x 3 texel triangle and 2 texels round it fit
+    assert (corners >= 0).all() and (corners[..., 0] <= sub.shape[1]).all()
+    rng = np.random.default_rng(5)  # one chart (a regular grid): a crop of its box
+    grid = rng.uniform([0.2, 0.55], [0.45, 0.9], (400, 2))
+    tri = np.column_stack([np.arange(398), np.arange(1, 399), np.arange(2, 400)])
+    sub, uv3 = sub_atlas(tex, grid, tri)
+    assert np.array_equal(_texture_at(sub, uv3), _texture_at(tex, grid)) and sub.shape[0] * sub.shape[1] < 1000
+    same, uv4 = sub_atlas(tex, grid + 0.6, tri)  # beyond 1: a repeating texture is kept whole
+    assert same is tex and np.array_equal(uv4, grid + 0.6)
 
 
 # ---------------------------------------------------------------------------------- the CLI

@@ -111,7 +111,7 @@ def test_class_legend_lists_present_classes_outside_the_render(page):
 def test_raster_kind_rules(tmp_path):
     from pathlib import Path
 
-    from workstation.render.report import raster_kind
+    from workstation.render.report_rasters import raster_kind
 
     assert raster_kind(Path("a.tif"), {"kind": "hillshade"}) == "hillshade"
     assert raster_kind(Path("dtm_hillshade.tif"), {"kind": "dtm"}) == "elevation"

@@ -8,7 +8,10 @@
 // screen than the drawn point size (the screen-space error test of Schütz, "Potree: rendering
 // large point clouds in web browsers", 2016). A point budget caps the drawn points; nearer,
 // coarser nodes come first. Coordinates are shifted by site.json's origin so float32 keeps
-// millimetres; the URL hash `#view=px,py,pz,tx,ty,tz` (CRS units) sets the camera.
+// millimetres; the URL hash `#view=px,py,pz,tx,ty,tz` (CRS units) sets the camera and
+// `&fov=DEG` its vertical field of view (default 55°). Meshes (site.json `tilesets` of kind
+// mesh: 3D Tiles written by `ws publish --3d-tiles`) are drawn by tiles.js, lit by a sky light
+// and a light from the camera.
 //
 // The page's state is published on <html data-ws-state="loading|ready|error"> together with
 // data-ws-requests (Range requests sent), data-ws-nodes (nodes drawn) and data-ws-errors, and
@@ -18,13 +21,14 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { Copc, Info, Las } from 'copc';
 import { createLazPerf } from 'laz-perf';
+import { openTileset } from './tiles.js';
 
 const MODES = { rgb: 0, classification: 1, elevation: 2, intensity: 3 };
 const MAX_CONCURRENT = 4; // node requests in flight
 const html = document.documentElement;
 const $ = (id) => document.getElementById(id);
 const state = {
-  site: null, origin: new THREE.Vector3(), clouds: [], requests: 0, errors: 0, nodesDrawn: 0,
+  site: null, origin: new THREE.Vector3(), clouds: [], tilesets: [], requests: 0, errors: 0, nodesDrawn: 0,
   pending: 0, queue: [], pointSize: 2, budget: 3_000_000, needsUpdate: true, picks: [], measure: null,
   marks: {}, // ms since navigation: 'start' (script runs), 'wasm' (laz-perf ready), 'opened' (COPC headers read), 'first' (first node drawn), 'ready'
 };
@@ -57,6 +61,14 @@ const scene = new THREE.Scene();
 scene.background = new THREE.Color(0x20242a);
 const camera = new THREE.PerspectiveCamera(55, 1, 0.1, 1e6);
 camera.up.set(0, 0, 1);
+const sky = new THREE.HemisphereLight(0xffffff, 0x555555, 2.0); // lights meshes only (points are unlit)
+sky.position.set(0, 0, 1); // the sky is up: +z here, not three.js's default +y
+scene.add(sky);
+const headlight = new THREE.DirectionalLight(0xffffff, 1.0);
+headlight.position.set(0, 1, 0); // from above the viewer's head (camera frame: y up, looking down -z)...
+headlight.target.position.set(0, 0, -1); // ...to a point ahead: faces towards the viewer are lit
+camera.add(headlight, headlight.target);
+scene.add(camera);
 const controls = new OrbitControls(camera, renderer.domElement);
 controls.addEventListener('change', () => { state.needsUpdate = true; });
 
@@ -271,8 +283,17 @@ function update() {
       if (!keep && pts.parent) { cloud.group.remove(pts); pts.geometry.dispose(); pts.material.dispose(); cloud.loaded.delete(key); }
     }
   }
+  const frustum = new THREE.Frustum().setFromProjectionMatrix(
+    new THREE.Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
+  for (const ts of state.tilesets) for (const tile of ts.select(frustum, camera.position, shared.uProj.value)) loadTile(ts, tile);
   pump();
   recount();
+}
+
+// Fetch one mesh tile; the selection runs again once it is there (a REPLACE parent swaps out).
+function loadTile(ts, tile) {
+  state.pending += 1;
+  ts.load(tile).catch(fail).finally(() => { state.pending -= 1; state.needsUpdate = true; });
 }
 
 function pump() {
@@ -368,6 +389,20 @@ function buildCloudList(clouds) {
   }
 }
 
+// One checkbox per mesh (3D Tiles); the box is hidden when the site has none.
+function buildMeshList(tilesets) {
+  if (!tilesets.length) { $('meshes-box').hidden = true; return; }
+  for (const ts of tilesets) {
+    const label = document.createElement('label'), box = document.createElement('input');
+    box.type = 'checkbox'; box.checked = true; box.dataset.mesh = ts.entry.name;
+    box.addEventListener('change', () => { ts.group.visible = box.checked; state.needsUpdate = true; });
+    label.append(box, ` ${ts.entry.name} `);
+    const faces = ts.entry.faces ? `<small>${ts.entry.faces.toLocaleString()} faces</small>` : '';
+    label.insertAdjacentHTML('beforeend', faces);
+    $('meshes').append(label);
+  }
+}
+
 // ---------------------------------------------------------------- measuring
 const raycaster = new THREE.Raycaster();
 const measureGroup = new THREE.Group();
@@ -386,14 +421,16 @@ function pick(ev) {
   const ndc = new THREE.Vector2(((ev.clientX - rect.left) / rect.width) * 2 - 1, -((ev.clientY - rect.top) / rect.height) * 2 + 1);
   raycaster.setFromCamera(ndc, camera);
   raycaster.params.Points.threshold = camera.position.distanceTo(controls.target) * 0.01;
-  const objects = state.clouds.flatMap((c) => [...c.loaded.values()]);
+  const objects = state.clouds.filter((c) => c.group.visible).flatMap((c) => [...c.loaded.values()]);
   const hits = raycaster.intersectObjects(objects, false).filter((h) => {
     const cls = h.object.geometry.attributes.cls.array[h.index];
     return classData[4 * cls + 3] > 0;
-  });
-  if (!hits.length) return null; // the nearest point along the ray (the front surface), not its foot on the ray
-  const h = hits[0];
-  return new THREE.Vector3().fromBufferAttribute(h.object.geometry.attributes.position, h.index).applyMatrix4(h.object.matrixWorld);
+  }).map((h) => ({ distance: h.distance, // the point itself, not its foot on the ray
+    point: new THREE.Vector3().fromBufferAttribute(h.object.geometry.attributes.position, h.index).applyMatrix4(h.object.matrixWorld) }));
+  const meshes = state.tilesets.filter((t) => t.group.visible).flatMap((t) => t.meshes());
+  hits.push(...raycaster.intersectObjects(meshes, false)); // surface points of the meshes
+  hits.sort((a, b) => a.distance - b.distance);
+  return hits.length ? hits[0].point.clone() : null; // the nearest along the ray: the front surface
 }
 
 function addMarker(p) {
@@ -489,6 +526,8 @@ function initialView(site) {
     controls.target.copy(c);
     camera.position.copy(c).add(new THREE.Vector3(0, -0.9 * r, 0.9 * r));
   }
+  const fov = /fov=([\d.]+)/.exec(window.location.hash);
+  if (fov && Number(fov[1]) > 0 && Number(fov[1]) < 180) camera.fov = Number(fov[1]);
   const extent = Math.hypot(b[3] - b[0], b[4] - b[1], b[5] - b[2]);
   camera.near = extent / 1e4; camera.far = extent * 20;
   camera.updateProjectionMatrix();
@@ -514,6 +553,10 @@ async function main() {
   mark('wasm');
   state.clouds = await Promise.all(site.clouds.map((c) => openCloud(c, lazPerf)));
   buildCloudList(state.clouds);
+  const meshes = (site.tilesets || []).filter((t) => t.kind === 'mesh');
+  state.tilesets = await Promise.all(meshes.map((t) => openTileset(t, state.origin)));
+  for (const ts of state.tilesets) scene.add(ts.group);
+  buildMeshList(state.tilesets);
   mark('opened');
   state.needsUpdate = true;
   requestAnimationFrame(frame);

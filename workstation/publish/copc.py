@@ -54,7 +54,7 @@ log = get_logger(__name__)
 DEPTH = 21  # bits per axis of the Morton code (3 * 21 = 63 bits)
 COPC_FORMATS = (6, 7, 8)
 _EVLR_HEADER = struct.Struct("<H16sHQ32s")  # reserved, user_id, record_id, length after header, description
-_SLICE = 1 << 20  # points per slice when computing codes from the memory map
+SLICE_POINTS = 1 << 20  # points per slice when computing codes from the memory map
 
 
 @dataclass(frozen=True)
@@ -142,12 +142,15 @@ def write_copc(cloud: Cloud, path, params: CopcParams = CopcParams(), *, point_f
 
 
 def write_copc_chunks(chunks: Iterable[Cloud], path, params: CopcParams = CopcParams(), *, bounds=None,
-                      point_format: int | None = None, scales=None, offsets=None) -> CopcResult:
+                      point_format: int | None = None, scales=None, offsets=None, on_octree=None) -> CopcResult:
     """Write a stream of clouds (same attributes and CRS, e.g. from
     :func:`workstation.io.registry.iter_chunks`) as one COPC file, holding one chunk at a time.
 
     ``bounds`` (lo, hi) of all the data, when known (a LAS header), let the automatic offsets
-    fit every chunk; else those of the first chunk are used.
+    fit every chunk; else those of the first chunk are used. ``on_octree``, when given, is
+    called with the :class:`StagedOctree` once the octree is built and before the file is
+    written, so another product of the same octree (a 3D Tiles tileset) is made from this one
+    read and sort of the points.
     """
     t0 = time.perf_counter()
     chunks = iter(chunks)
@@ -159,8 +162,8 @@ def write_copc_chunks(chunks: Iterable[Cloud], path, params: CopcParams = CopcPa
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".records.las", dir=path.parent)
     os.close(fd)
     try:
-        header = _stage_records(first, chunks, Path(tmp), fmt, bounds, scales, offsets)
-        result = _write_octree(Path(tmp), header, path, params, first.crs)
+        header = stage_records(first, chunks, Path(tmp), fmt, bounds, scales, offsets)
+        result = _write_octree(Path(tmp), header, path, params, first.crs, on_octree)
     finally:
         Path(tmp).unlink(missing_ok=True)
     log.info("COPC %s: %d points in %d nodes over %d levels (%.1f s)", path.name, result.points, result.nodes,
@@ -186,7 +189,7 @@ def save_copc(cloud_or_chunks, path, params: CopcParams = CopcParams(), *, overw
 # staging: the records, uncompressed, in a temporary LAS file
 
 
-def _stage_records(first: Cloud, rest: Iterator[Cloud], tmp: Path, fmt: int, bounds, scales, offsets):
+def stage_records(first: Cloud, rest: Iterator[Cloud], tmp: Path, fmt: int, bounds, scales, offsets):
     """Write every chunk to the plain LAS file ``tmp`` (header, extra bytes, CRS, scales and
     offsets made by :class:`~workstation.io.las.ChunkWriter`); return its header, EVLRs read."""
     import laspy
@@ -207,7 +210,7 @@ def _stage_records(first: Cloud, rest: Iterator[Cloud], tmp: Path, fmt: int, bou
         return laspy.LasHeader.read_from(f, read_evlrs=True)
 
 
-def _records(tmp: Path, header) -> np.ndarray:
+def staged_records(tmp: Path, header) -> np.ndarray:
     """The point records of the staged LAS file as a read-only memory map."""
     dtype = header.point_format.dtype()
     if dtype.itemsize != header.point_format.size:
@@ -255,7 +258,7 @@ def _part1by2(v: np.ndarray) -> np.ndarray:
     return v
 
 
-def _compact1by2(v: np.ndarray) -> np.ndarray:
+def compact1by2(v: np.ndarray) -> np.ndarray:
     """Inverse of :func:`_part1by2`: every third bit of ``v`` gathered into the low bits."""
     v = v & np.uint64(0x1249249249249249)
     for shift, mask in ((2, 0x10C30C30C30C30C3), (4, 0x100F00F00F00F00F), (8, 0x1F0000FF0000FF),
@@ -272,8 +275,8 @@ def _morton_codes(records: np.ndarray, header, cube: _Cube) -> tuple[np.ndarray,
     scales, offsets = np.asarray(header.scales, float), np.asarray(header.offsets, float)
     top = float(2**DEPTH - 1)
     gmin, gmax = np.inf, -np.inf
-    for s in range(0, n, _SLICE):
-        part = records[s : s + _SLICE]
+    for s in range(0, n, SLICE_POINTS):
+        part = records[s : s + SLICE_POINTS]
         code = np.zeros(len(part), np.uint64)
         for i, c in enumerate("XYZ"):
             t = ((part[c] * scales[i] + offsets[i]) - cube.corner[i]) * (2.0**DEPTH / cube.side)
@@ -360,11 +363,39 @@ def _node_runs(codes: np.ndarray, level: np.ndarray):
 # the file
 
 
-def _write_octree(tmp: Path, header, path: Path, params: CopcParams, crs) -> CopcResult:
-    """Sort the staged records into the octree and write the COPC file at ``path``."""
-    import lazrs
+@dataclass(frozen=True)
+class Octree:
+    """The octree of staged records: ``src`` (record index of every point, node by node, each
+    node's run in (level, Morton code) order), ``starts`` (first index of each node in
+    ``src``), node ``level`` and Morton ``prefix`` (the node's code bits, ``3 * level`` of
+    them), the ``cube`` and the GPS time range (``gmin``, ``gmax``) of the points."""
 
-    records = _records(tmp, header)
+    src: np.ndarray
+    starts: np.ndarray
+    level: np.ndarray
+    prefix: np.ndarray
+    cube: _Cube
+    gmin: float
+    gmax: float
+
+
+@dataclass(frozen=True)
+class StagedOctree:
+    """What :func:`write_copc_chunks` passes to its ``on_octree`` callback: the staged point
+    ``records`` (a read-only memory map, valid only during the call), their LAS ``header``
+    (scales, offsets, bounds, point count), the :class:`Octree`, the ``crs`` and the
+    :class:`CopcParams` it was built with."""
+
+    records: np.ndarray
+    header: object
+    tree: Octree
+    crs: object
+    params: CopcParams
+
+
+def build_octree(records: np.ndarray, header, params: CopcParams) -> Octree:
+    """The COPC octree of the staged ``records``: one Morton sort, then the levels
+    (:func:`assign_levels`) and the node runs."""
     cube = _cube(header)
     codes, gmin, gmax = _morton_codes(records, header, cube)
     perm = _compact_index(np.argsort(codes, kind="stable"))
@@ -373,6 +404,19 @@ def _write_octree(tmp: Path, header, path: Path, params: CopcParams, crs) -> Cop
     del codes
     src = perm[order]
     del perm, order
+    return Octree(src, starts, node_level, prefix, cube, gmin, gmax)
+
+
+def _write_octree(tmp: Path, header, path: Path, params: CopcParams, crs, on_octree=None) -> CopcResult:
+    """Sort the staged records into the octree, hand it to ``on_octree`` (when given) and
+    write the COPC file at ``path``."""
+    import lazrs
+
+    records = staged_records(tmp, header)
+    tree = build_octree(records, header, params)
+    if on_octree is not None:
+        on_octree(StagedOctree(records, header, tree, crs, params))
+    cube, src, starts, node_level, prefix = tree.cube, tree.src, tree.starts, tree.level, tree.prefix
     fmt = header.point_format.id
     laz_vlr = lazrs.LazVlr.new_for_compression(fmt, header.point_format.num_extra_bytes, True)
     out, info_vlr, evlrs = _copc_header(header, laz_vlr, crs)
@@ -392,7 +436,8 @@ def _write_octree(tmp: Path, header, path: Path, params: CopcParams, crs) -> Cop
             _write_evlr(f, v.user_id, int(v.record_id), v.description, bytes(v.record_data_bytes()))
         size = f.tell()
         out.start_of_first_evlr = evlr_start
-        info_vlr.record_data = _info_bytes(cube, params, evlr_start + _EVLR_HEADER.size, entries.nbytes, gmin, gmax)
+        info_vlr.record_data = _info_bytes(cube, params, evlr_start + _EVLR_HEADER.size, entries.nbytes, tree.gmin,
+                                           tree.gmax)
         f.seek(0)
         out.write_to(f, ensure_same_size=True)
     per_level = np.bincount(node_level, weights=counts, minlength=1 if len(counts) else 0).astype(np.int64)
@@ -464,7 +509,7 @@ def _entries(node_level, prefix, table, data_start: int) -> np.ndarray:
         raise StageError("copc", f"{len(counts)} LAZ chunks written for {len(e)} octree nodes")
     e["level"] = node_level
     for i, axis in enumerate("xyz"):
-        e[axis] = _compact1by2(prefix >> np.uint64(i)).astype(np.int32)
+        e[axis] = compact1by2(prefix >> np.uint64(i)).astype(np.int32)
     e["offset"] = data_start + 8 + np.r_[0, np.cumsum(nbytes)[:-1]]
     e["byte_size"] = nbytes
     e["point_count"] = counts

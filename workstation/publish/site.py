@@ -28,7 +28,9 @@ present; ``intensity_range``: the 2nd and 98th percentiles of intensity (raw cou
 xmax, ymax] (CRS units), ``source``, ``crs``; ``cameras``: ``name``, ``center`` [x, y, z] and
 ``corners`` (4 × [x, y, z], the image corners at the frustum depth), CRS units;
 ``tilesets`` (only with ``PublishParams.tiles3d``): the 3D Tiles of
-:func:`workstation.publish.tiles3d.publish_tilesets` (``name``, ``kind``, ``url``, ...).
+:func:`workstation.publish.tiles3d.publish_tilesets` (``name``, ``kind``, ``url``, ...), each
+with ``matrix`` (:func:`tileset_matrix`: 16 numbers, column-major) placing the tileset's
+coordinates in the viewer's frame (CRS units minus ``origin``); the viewer draws the meshes.
 """
 
 from __future__ import annotations
@@ -135,7 +137,7 @@ def _is_cloud(path: Path) -> bool:
     return path.suffix.lower() in CLOUD_SUFFIXES
 
 
-def _walk(folder: Path, depth: int = 2):
+def walk_files(folder: Path, depth: int = 2):
     """Files of ``folder`` and of its sub-folders down to ``depth`` levels, hidden ones skipped,
     in a stable order."""
     for p in sorted(folder.iterdir()):
@@ -144,7 +146,7 @@ def _walk(folder: Path, depth: int = 2):
         if p.is_file():
             yield p
         elif p.is_dir() and depth > 0 and not (p / "site.json").exists():
-            yield from _walk(p, depth - 1)
+            yield from walk_files(p, depth - 1)
 
 
 def collect_inputs(paths) -> Inputs:
@@ -157,7 +159,7 @@ def collect_inputs(paths) -> Inputs:
         p = Path(raw)
         if not p.exists():
             raise InvalidInputError("not found", "give a work folder, a products folder or files", path=p)
-        for f in [p] if p.is_file() else _walk(p):
+        for f in [p] if p.is_file() else walk_files(p):
             kind = _raster_kind(f) if f.suffix.lower() in RASTER_SUFFIXES else None
             if _is_cloud(f):
                 clouds.append(f)
@@ -232,11 +234,11 @@ def _percentiles(hist: np.ndarray, qs) -> list[float]:
     return [float(np.searchsorted(cdf, q / 100.0 * cdf[-1], side="left")) for q in qs]
 
 
-def _to_copc(src: Path, dst: Path, params: PublishParams) -> dict:
+def _to_copc(src: Path, dst: Path, params: PublishParams, on_octree=None) -> dict:
     """Copy a COPC file, or convert a LAS/LAZ file (or the points ``params.read_opts`` selects
     from any cloud) to COPC with the package's writer (:func:`workstation.publish.copc.write_copc_chunks`,
-    streaming chunks of ``params.chunk_points``); the statistics of :func:`cloud_stats`, gathered
-    on the way."""
+    streaming chunks of ``params.chunk_points``, its octree handed to ``on_octree`` when given:
+    a copied file calls nothing); the statistics of :func:`cloud_stats`, gathered on the way."""
     import laspy
 
     from workstation.io.copc import is_copc
@@ -252,18 +254,19 @@ def _to_copc(src: Path, dst: Path, params: PublishParams) -> dict:
         bounds = (np.asarray(f.header.mins), np.asarray(f.header.maxs))
     acc = _Stats()
     write_copc_chunks(acc.tap(input_chunks(src, params.chunk_points, **sel)), dst, params.copc or CopcParams(),
-                      bounds=bounds)
+                      bounds=bounds, on_octree=on_octree)
     with laspy.open(str(dst)) as f:
         h = f.header
         return {"points": int(h.point_count), "bounds": [*map(float, h.mins), *map(float, h.maxs)], **acc.result()}
 
 
-def _publish_cloud(src: Path, folder: Path, name: str, params: PublishParams) -> tuple[dict, dict]:
-    """Write ``folder/NAME.copc.laz``; its site.json entry and its statistics."""
+def _publish_cloud(src: Path, folder: Path, name: str, params: PublishParams, on_octree=None) -> tuple[dict, dict]:
+    """Write ``folder/NAME.copc.laz`` (``on_octree``: see :func:`_to_copc`); its site.json entry
+    and its statistics."""
     from workstation.io.copc import read_info, summary
 
     dst = folder / f"{name}.copc.laz"
-    stats = _to_copc(src, dst, params)
+    stats = _to_copc(src, dst, params, on_octree)
     info, tree = read_info(dst), summary(dst)
     entry = {"name": name, "url": f"clouds/{dst.name}", "source": str(src), "points": stats["points"],
              "bounds": stats["bounds"], "rgb_bits": stats["rgb_bits"], "spacing": info.spacing,
@@ -271,7 +274,7 @@ def _publish_cloud(src: Path, folder: Path, name: str, params: PublishParams) ->
     return entry, stats
 
 
-def _unique_names(paths) -> list[str]:
+def unique_names(paths) -> list[str]:
     """File stems without ``.copc``, made unique with ``-2``, ``-3``... and safe for URLs."""
     seen, out = {}, []
     for p in paths:
@@ -450,6 +453,60 @@ def _site_doc(title, clouds, stats, rasters, cameras, crs) -> dict:
             "intensity_range": [lo, max(hi, lo + 1.0)], "rasters": rasters, "cameras": cameras}
 
 
+def tileset_matrix(tileset_json, origin) -> list[float]:
+    """The 4x4 affine matrix (column-major, as three.js's ``Matrix4.fromArray`` reads it) that
+    takes a tileset's coordinates (z up: those of its bounding boxes and of its contents turned
+    z-up, before the root ``transform``) to the viewer's frame, CRS units minus ``origin``.
+
+    Without a CRS (``extras.ws.frame`` ``local``) the tileset is in CRS units relative to
+    ``extras.ws.origin``: a translation. With one it is in metres in the east-north-up frame at
+    that origin (:class:`workstation.publish.tiles3d.Frame`), which is not affine in the CRS
+    (meridian convergence, scale factor, Earth curvature): the matrix is the least-squares affine
+    map fitted on a 3x3x3 grid over the root bounding box (the grid is found in CRS coordinates
+    by a first fit, then refitted on it). Its error, mostly the Earth's curvature, grows with the
+    square of the box's extent: millimetres over a few hundred metres, decimetres over 2 km.
+
+    Examples
+    --------
+    >>> import json, tempfile, pathlib
+    >>> doc = {"root": {"boundingVolume": {"box": [0, 0, 0, 5, 0, 0, 0, 5, 0, 0, 0, 1]}},
+    ...        "extras": {"ws": {"crs": None, "origin": [110.0, 220.0, 5.0], "frame": "local"}}}
+    >>> p = pathlib.Path(tempfile.mkdtemp()) / "tileset.json"
+    >>> _ = p.write_text(json.dumps(doc))
+    >>> tileset_matrix(p, [100.0, 200.0, 0.0])[12:]
+    [10.0, 20.0, 5.0, 1.0]
+    """
+    import json
+
+    from workstation.io.crs import crs_units
+    from workstation.publish.tiles3d import Frame
+
+    path = Path(tileset_json)
+    doc = json.loads(path.read_text())
+    ws = (doc.get("extras") or {}).get("ws") or {}
+    try:
+        box = np.asarray(doc["root"]["boundingVolume"]["box"], float).reshape(4, 3)
+        frame_origin = np.asarray(ws["origin"], float).reshape(3)
+    except (KeyError, TypeError, ValueError) as e:
+        raise InvalidInputError(f"no root box or extras.ws.origin ({e})", path=path, field="root.boundingVolume") from e
+    m = np.eye(4)
+    frame = Frame(ws.get("crs"), frame_origin)
+    if frame.transform is None:
+        m[:3, 3] = frame_origin - np.asarray(origin, float)
+        return m.T.ravel().tolist()
+    grid = np.stack(np.meshgrid(*[[-1.0, 0.0, 1.0]] * 3, indexing="ij"), axis=-1).reshape(-1, 3)
+    local = box[0] + grid * np.abs(box[1:]).sum(axis=0)  # the axis-aligned root box, metres
+    u = crs_units(ws.get("crs"))
+    crs_pts = frame_origin + local / np.array([u.h, u.h, u.v])  # first guess: CRS axes along ENU
+    for _ in range(2):
+        design = np.column_stack([frame.to_local(crs_pts), np.ones(len(crs_pts))])
+        fit, *_ = np.linalg.lstsq(design, crs_pts, rcond=None)  # (4, 3): CRS = [local, 1] @ fit
+        crs_pts = np.column_stack([local, np.ones(len(local))]) @ fit
+    m[:3, :] = fit.T
+    m[:3, 3] -= np.asarray(origin, float)
+    return m.T.ravel().tolist()
+
+
 def _cloud_crs(path: Path):
     from workstation.io.copc import read
 
@@ -478,14 +535,19 @@ def publish_site(inputs, site, *, overwrite: bool = False, params: PublishParams
         _copy_viewer(tmp)
         for sub in ("clouds", "rasters"):
             (tmp / sub).mkdir()
-        clouds, stats = [], []
-        pairs = list(zip(found.clouds, _unique_names(found.clouds)))
+        clouds, stats, written = [], [], {}
+        pairs = list(zip(found.clouds, unique_names(found.clouds)))
         for src, name in track(pairs, "publishing clouds", unit="clouds"):
-            entry, st = _publish_cloud(src, tmp / "clouds", name, params)
+            hook = None
+            if params.tiles3d:  # the cloud's tileset from the COPC writer's octree: one read and sort for both
+                from workstation.publish.tiles3d import tileset_writer
+
+                hook = tileset_writer(tmp / "3dtiles" / name, written, src)
+            entry, st = _publish_cloud(src, tmp / "clouds", name, params, hook)
             clouds.append(entry)
             stats.append(st)
         crs = _cloud_crs(tmp / clouds[0]["url"])
-        rasters = [r for (src, kind), name in zip(found.rasters, _unique_names(p for p, _ in found.rasters))
+        rasters = [r for (src, kind), name in zip(found.rasters, unique_names(p for p, _ in found.rasters))
                    if (r := _publish_raster(src, kind, tmp / "rasters", name, params)) is not None]
         extent = float(np.linalg.norm(np.ptp(np.array([c["bounds"] for c in clouds]).reshape(-1, 3), axis=0)))
         cameras = [f for rec in _read_cameras(found.cameras) for f in camera_frusta(rec, params.frustum_depth, extent)]
@@ -494,7 +556,9 @@ def publish_site(inputs, site, *, overwrite: bool = False, params: PublishParams
             from workstation.publish.tiles3d import publish_tilesets
 
             doc["tilesets"] = publish_tilesets(inputs, found.clouds, tmp / "3dtiles", crs=crs, params=params.copc,
-                                               chunk_points=params.chunk_points)
+                                               chunk_points=params.chunk_points, written=written)
+        for t in doc.get("tilesets", ()):  # where the viewer draws each tileset
+            t["matrix"] = tileset_matrix(tmp / t["url"], doc["origin"])
         from workstation.core.jsonutil import dumps
 
         (tmp / "site.json").write_text(dumps(doc, indent=1))

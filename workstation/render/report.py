@@ -44,7 +44,7 @@ from .html import fmt as _fmt
 from .html import img as _img
 from .html import png_b64 as _png_b64
 from .html import table as _table
-from .report_rasters import _plot_raster, _preview_rasters, _raster_meta, hillshade, raster_kind  # noqa: F401
+from .report_rasters import plot_raster, preview_rasters, raster_meta
 
 log = get_logger(__name__)
 
@@ -369,7 +369,7 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         raise InvalidInputError("not a folder", "give the work folder of a run", path=root)
     g = _gather(root, params)
     sections = _sections(g, params)
-    summary = summary_section(g, sections, lambda p: _raster_meta(p).get("kind", ""))
+    summary = summary_section(g, sections, lambda p: raster_meta(p).get("kind", ""))
     name = html.escape(root.resolve().name)
     head = (f"<h1>Quality report: {name}</h1>"
             f'<p class="note">{html.escape(str(root.resolve()))} — generated '
@@ -481,7 +481,7 @@ def _product_records(rasters: list[Path], clouds: list[Path], root: Path) -> tup
 
     prod_rows = []
     for p in rasters:
-        m = _raster_meta(p)
+        m = raster_meta(p)
         if m.get("kind"):
             figs = {k: v for k, v in m.items() if k not in ("kind", "source", "params", "seconds", "units")}
             prod_rows.append((str(p.relative_to(root)), m["kind"], m.get("seconds", ""), figs))
@@ -575,9 +575,9 @@ def _previews_html(root: Path, rasters: list[Path], params: ReportParams) -> lis
     unreadable one), then the PNG images of the folder (renders, plots; up to 2 MB, embedded as
     they are; not the photos in an ``images`` folder)."""
     out = []
-    for p in _preview_rasters(root, rasters, params.max_files):
+    for p in preview_rasters(root, rasters, params.max_files):
         try:
-            r = _plot_raster(p)
+            r = plot_raster(p)
         except Exception as e:  # noqa: BLE001
             out.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
             continue

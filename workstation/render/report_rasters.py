@@ -103,7 +103,7 @@ def _rgb(a: np.ndarray, dtype) -> np.ndarray:
     return np.dstack([rgb, valid.astype(float)])
 
 
-def _plot_raster(path: Path) -> tuple[str, str] | None:
+def plot_raster(path: Path) -> tuple[str, str] | None:
     """(caption, b64 png) for a GeoTIFF: an ortho (3 bands) in colour, hillshades in grey
     (0-255 shading, never tinted), elevations as a hillshade with an elevation tint, slope,
     aspect, density and accuracy with their scales, diverging map for errors."""
@@ -145,7 +145,7 @@ def _plot_raster(path: Path) -> tuple[str, str] | None:
     return cap, _fig_b64(fig)
 
 
-def _raster_meta(path: Path) -> dict:
+def raster_meta(path: Path) -> dict:
     """The ``ws`` metadata of a GeoTIFF ({} when none or unreadable)."""
     try:
         import rasterio
@@ -163,7 +163,7 @@ def _raster_meta(path: Path) -> dict:
 _PREVIEW_ORDER = {"image": 0, "hillshade": 1, "elevation": 2, "density": 3}
 
 
-def _preview_rasters(root: Path, rasters: list[Path], limit: int) -> list[Path]:
+def preview_rasters(root: Path, rasters: list[Path], limit: int) -> list[Path]:
     """The rasters worth a preview, ortho first: tiles of a mosaic (a ``tiles`` folder) and a
     second file of one name (a copy in a published site) left out."""
     seen, keep = set(), []
@@ -172,5 +172,5 @@ def _preview_rasters(root: Path, rasters: list[Path], limit: int) -> list[Path]:
             continue
         seen.add(p.name)
         keep.append(p)
-    rank = {p: _PREVIEW_ORDER.get(raster_kind(p, _raster_meta(p)), 4) for p in keep}
+    rank = {p: _PREVIEW_ORDER.get(raster_kind(p, raster_meta(p)), 4) for p in keep}
     return sorted(keep, key=lambda p: (rank[p], "dtm" not in p.stem.lower(), len(p.parts)))[:limit]
