@@ -109,6 +109,14 @@ def test_site_json_lists_the_cloud_classes_raster_and_cameras(site):
 
     im = np.asarray(Image.open(site / ras["url"]))
     assert im.shape == (50, 100, 4) and (im[..., 3] == 255).all() and im[..., 0].std() < 5  # a plane: even shade
+    import rasterio
+
+    from workstation.io.geotiff import read_raster
+
+    src = read_raster(ras["source"])  # the raster itself beside the preview, as a COG with overviews
+    with rasterio.open(site / ras["cog"]) as cog:
+        assert cog.tags(ns="IMAGE_STRUCTURE")["LAYOUT"] == "COG"
+        assert np.array_equal(cog.read(1), np.asarray(src.array)) and cog.crs.to_epsg() == 32632
     cams = doc["cameras"]
     assert [c["name"] for c in cams] == ["im1.png", "im2.png"]
     assert cams[0]["center"] == pytest.approx([X0 + 50, Y0 + 50, Z0 + 60])

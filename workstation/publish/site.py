@@ -24,7 +24,7 @@ millimetres); ``bounds`` [xmin, ymin, zmin, xmax, ymax, zmax] of all clouds (CRS
 ``nodes``, ``source``);
 ``classes``: ``code``, ``name``, ``color`` [r, g, b] 0-255 and ``count`` of every ASPRS class
 present; ``intensity_range``: the 2nd and 98th percentiles of intensity (raw counts);
-``rasters``: ``name``, ``kind`` (hillshade / ortho), ``url`` (PNG), ``bounds`` [xmin, ymin,
+``rasters``: ``name``, ``kind`` (hillshade / ortho), ``url`` (PNG), ``cog`` (the GeoTIFF), ``bounds`` [xmin, ymin,
 xmax, ymax] (CRS units), ``source``, ``crs``; ``cameras``: ``name``, ``center`` [x, y, z] and
 ``corners`` (4 × [x, y, z], the image corners at the frustum depth), CRS units;
 ``tilesets`` (only with ``PublishParams.tiles3d``): the 3D Tiles of
@@ -327,11 +327,13 @@ def _preview_rgba(raster, kind: str) -> np.ndarray:
 
 
 def _publish_raster(src: Path, kind: str, folder: Path, name: str, params: PublishParams) -> dict | None:
-    """Write ``folder/NAME.png`` (longest side at most ``preview_px``); its site.json entry, or
-    None (with a warning) for a rotated raster, which a north-up map cannot show."""
+    """Write ``folder/NAME.png`` (longest side at most ``preview_px``) and the raster itself as a
+    Cloud Optimized GeoTIFF ``folder/NAME.tif`` (tiled, internal overviews: GIS clients read
+    only the parts they show); its site.json entry, or None (with a warning) for a rotated
+    raster, which a north-up map cannot show."""
     from PIL import Image
 
-    from workstation.io.geotiff import read_raster
+    from workstation.io.geotiff import read_raster, write_raster
 
     raster = read_raster(src)
     if raster.transform[1] or raster.transform[3]:
@@ -344,8 +346,10 @@ def _publish_raster(src: Path, kind: str, folder: Path, name: str, params: Publi
         im = im.resize((max(1, round(im.width * scale)), max(1, round(im.height * scale))), Image.Resampling.BOX)
     dst = folder / f"{name}.png"
     im.save(dst, optimize=False)
+    rgb = kind == "ortho" and raster.array.ndim == 3 and raster.array.shape[0] in (3, 4) and raster.array.dtype == np.uint8
+    write_raster(raster, folder / f"{name}.tif", photometric="RGB" if rgb else None)
     return {"name": name, "kind": "hillshade" if kind == "dtm" else kind, "url": f"rasters/{dst.name}",
-            "bounds": _raster_bounds(raster), "source": str(src), "crs": raster.crs}
+            "cog": f"rasters/{name}.tif", "bounds": _raster_bounds(raster), "source": str(src), "crs": raster.crs}
 
 
 # ---------------------------------------------------------------------------------- cameras
