@@ -8,6 +8,9 @@
                                         datasets_synth/{urban,rural,forest,mountain}.toml -o DIR/<name>.laz)
   python scripts/bench_ground.py memory [--sizes 1000000,2000000,4000000] [--methods ...] [--tile-points N]
                                         peak memory of each filter in a child process, above the tile's own
+  python scripts/bench_ground.py bridges [--methods ...] [--with-ml] [--seeds 0,1]  bridge decks on the simulated gallery
+                                        (tests/ground/gallery_scenes.py): deck points in ground (%), deck F1 as
+                                        class 17, class-17 points on the earthworks; --with-ml adds ws classify
   python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
                                         flags (and the point classifier's, --with-ml) could reach on the six ISPRS
                                         samples when the rule is picked with the reference labels
@@ -284,16 +287,52 @@ def bench_bounds(data: Path, with_ml: bool):
               "total_error_vote": float(np.mean(raw)), "total_error": float(np.mean(refined))})
 
 
+def bench_bridges(methods, with_ml: bool, seeds=(0,)):
+    """Deck points in each method's ground (%) and deck F1 as class 17 on the gallery's bridge
+    scenes: vertical abutments, spill-through ones (the tuning scenes ``spill_1.5`` and
+    ``spill_dev``; ``spill_held`` is kept for validation) and the earthworks (no deck)."""
+    sys.path.insert(0, str(REPO / "tests" / "ground"))
+    from gallery_scenes import bridges, earthworks, spill_through
+
+    scenes = {"vertical": lambda k: bridges(seed=k), "spill_1.5": lambda k: bridges(seed=k, abutment_slope=1.5),
+              "spill_dev": lambda k: spill_through(seed=k, preset="dev"),
+              "spill_held": lambda k: spill_through(seed=k, preset="held"), "earthworks": lambda k: earthworks(seed=k)}
+    runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
+    if with_ml:
+        from workstation.ml.classifier import PointClassifier
+
+        clf = PointClassifier.load(device="cpu")
+        runs.append(("classify", clf.predict))
+    for seed in seeds:
+        for name, make in scenes.items():
+            _bridge_rows(name, seed, make(seed), runs)
+
+
+def _bridge_rows(name: str, seed: int, scene, runs):
+    """One JSON line per run (method name, cloud -> classes) on one gallery scene."""
+    cloud, _, is_deck, _ = scene
+    for m, run in runs:
+        cls, wall, cpu = timed(lambda: run(cloud))
+        hit = cls == 17
+        row = {"bench": "bridges", "scene": name, "seed": seed, "method": m, "deck_points": int(is_deck.sum()),
+               "class17_points": int(hit.sum()), "seconds": wall, "cpu_seconds": cpu}
+        if is_deck.any():
+            row["deck_in_ground_pct"] = 100.0 * float(np.mean(cls[is_deck] == 2))
+            row["deck_f1"] = 2.0 * float(np.sum(hit & is_deck)) / float(hit.sum() + is_deck.sum())
+        emit(row)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds", "memory", "_memchild"])
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds", "bridges", "memory", "_memchild"])
     ap.add_argument("--sim-dir", default="sim")
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
     ap.add_argument("--sizes", default="1000000,2000000,4000000", help="memory: tile sizes (points)")
     ap.add_argument("--tile-points", type=int, default=0, help="memory: filter tile by tile (ws ground --tile-points); 0 = whole")
-    ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag")
+    ap.add_argument("--seeds", default="0", help="bridges: the scenes' seeds, e.g. 0,1,2,3")
+    ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag; bridges: add ws classify")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
     a = ap.parse_args(argv)
@@ -310,6 +349,8 @@ def main(argv=None):
         bench_sim(Path(a.sim_dir), methods)
     elif a.what == "bounds":
         bench_bounds(data, a.with_ml)
+    elif a.what == "bridges":
+        bench_bridges(methods, a.with_ml, [int(k) for k in a.seeds.split(",")])
     elif a.what == "memory":
         bench_memory(data, methods, [int(x) for x in a.sizes.split(",")], a.tile_points)
     elif a.what == "_memchild":

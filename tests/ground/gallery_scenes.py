@@ -280,3 +280,85 @@ def earthworks(seed: int = 0, pulses: float = 4.0, water_return: float = 0.5, no
         return ground(q)[0] + ORIGIN[2]
 
     return _cloud(xyz, rn, nr), terrain, np.zeros(len(xyz), bool), []
+
+
+# * :func:`spill_through`: one road bridge on spill-through abutments (the banks slope down
+#   under the deck's ends, so its last metres stand only a little over the slope), at any
+#   angle to the grid and skewed (the gap's banks oblique to the road). Two presets: ``"dev"``
+#   (the scene the end-extension was developed on) and ``"held"`` (kept for validation).
+
+SPILL_PRESETS = {
+    # road angle (deg from x), skew (deg between the gap's banks and the road's normal), deck
+    # height over the gap's floor (m), span along the road between the banks' tops (m), deck
+    # width (m), bank slope (run over rise), deck surface over the road beyond (m), water
+    "dev": dict(road_angle=0.0, skew=20.0, height=5.0, span=26.0, width=9.0, slope=2.0, lift=0.0, water=True),
+    "held": dict(road_angle=-25.0, skew=30.0, height=7.0, span=36.0, width=12.0, slope=1.5, lift=0.2, water=False),
+}
+
+
+def _unit(deg: float) -> np.ndarray:
+    """The plan unit vector ``deg`` degrees anticlockwise from x."""
+    a = np.deg2rad(deg)
+    return np.array([np.cos(a), np.sin(a)])
+
+
+def spill_through(seed: int = 0, preset: str = "dev", pulses: float = 4.0, water_return: float = 0.5,
+                  noise: float = 0.03):
+    """A road crossing a gap (a river, or with ``water`` False a road in a cutting) on a deck
+    between spill-through abutments, 140 x 110 m on gentle hills; parameters from
+    ``SPILL_PRESETS[preset]``. The gap's banks slope at 1:``slope`` from the banks' tops
+    (where the deck's ends rest) down to its floor ``height`` metres under the deck; the deck
+    is level with the banks' tops plus ``lift``, carries 1 m parapets 0.3 m wide and casts no
+    echo beneath it.
+
+    Returns
+    -------
+    cloud, terrain, is_deck : as :func:`bridges`
+    decks : list of one (4, 2) array, the deck's corners in cloud coordinates
+    """
+    q = SPILL_PRESETS[preset]
+    size = (140.0, 110.0)
+    rng = np.random.default_rng(seed)
+    centre = np.array([70.0, 55.0])
+    u = _unit(q["road_angle"])  # along the road
+    v = np.array([-u[1], u[0]])
+    n = _unit(q["road_angle"] + q["skew"])  # across the gap (the gap runs along its normal)
+    half_top = 0.5 * q["span"] * np.cos(np.deg2rad(q["skew"]))  # the banks' tops, across the gap
+    base = lambda xy: hills(xy, relief=1.5, slope=0.02)  # noqa: E731
+    ends = centre + np.outer([-0.5 * q["span"], 0.5 * q["span"]], u)
+    z_ends = base(ends)
+
+    def ground(xy):
+        d = np.abs((xy - centre) @ n)
+        depth = np.clip((half_top - d) / q["slope"], 0.0, q["height"])
+        wet = q["water"] & (depth >= q["height"])
+        return base(xy) - depth, wet
+
+    def deck_z(xy):
+        s = (xy - centre) @ u
+        return z_ends[0] + (s + 0.5 * q["span"]) / q["span"] * (z_ends[1] - z_ends[0]) + q["lift"]
+
+    xy = _pulses(rng, size, pulses)
+    z, wet = ground(xy)
+    t = (xy - centre) @ v
+    on_deck = (np.abs(t) <= 0.5 * q["width"]) & (np.abs((xy - centre) @ n) <= half_top)
+    parapet = on_deck & (np.abs(t) > 0.5 * q["width"] - 0.3)
+    z = np.where(on_deck, deck_z(xy) + np.where(parapet, 1.0, 0.0), z)
+    keep = ~(wet & ~on_deck) | (rng.uniform(size=len(xy)) < water_return)
+    xy, z, on_deck = xy[keep], z[keep], on_deck[keep]
+    xyz, rn, nr, crown = _trees(rng, xy, z, np.array([[10.0, 12.0], [125.0, 95.0], [20.0, 100.0], [120.0, 15.0]]))
+    is_deck = np.concatenate([on_deck & ~crown, np.zeros(len(xyz) - len(xy), bool)])
+    xyz[:, 2] += rng.normal(0, noise, len(xyz))
+
+    def terrain(p):
+        p = np.asarray(p, float) - ORIGIN[:2]
+        return ground(p)[0] + ORIGIN[2]
+
+    # corners: along the road to each bank's top line, on both edges of the deck
+    corners = []
+    for side in (-0.5, 0.5):
+        edge = centre + side * q["width"] * v
+        for bank in (-half_top, half_top):
+            s = (bank - (edge - centre) @ n) / (u @ n)
+            corners.append(edge + s * u)
+    return _cloud(xyz, rn, nr), terrain, is_deck, [np.array(corners)[[0, 1, 3, 2]] + ORIGIN[:2]]

@@ -37,22 +37,31 @@ only. So:
 5. the points of the deck's cells, and of the cells beside it that reach down into the gap or
    up to a parapet, lying from ``step`` / 2 under the deck's surface to ``structure`` metres
    above it, are the deck;
-6. beyond each end, slice by slice along the axis, the band of the deck's width is taken
-   while it holds the deck's plane and both its edges still step down (the points just
-   outside lie lower than a 1:1 face from the edge would, by ``step`` / 4): the end spans over
-   sloping (spill-through) abutments, where the cells see no drop.
+6. the deck's ends over sloping (spill-through) abutments, where the cells see no drop, and
+   the corners of a skewed deck: its plane and band are fitted about its own axis (the
+   rays see four axes, a road runs at any angle); slice by slice along the axis, the depth
+   of the ground beside each edge under the deck's plane, taken at the edge, is the gap's
+   depth, then falls along the abutment's slope and levels off over the ground beyond. A
+   line for the fall and a line for the ground beyond, fitted where the depth is under
+   ``clearance``, meet where the deck's surface meets the ground: that edge's end, unless
+   one line fits as well (the road beyond a wall, or a road on an embankment, whose crest
+   meets its side faces without a step: nothing taken). The deck ends on the line joining
+   its two edges' ends (the intersection of its plane with a planar slope, oblique on a
+   skewed bridge).
 
 The ground methods (:func:`workstation.ground.common.write_classes`) put those points in class
 17 and out of the ground, so a DTM from the ground is interpolated across the gap; the point
 classifier (:mod:`workstation.ml.classifier`) labels them 17.
 
 Limits: a road on an embankment held by vertical retaining walls on both sides looks like a
-deck and is called one; over spill-through abutments the last metre or two of each end, less
-than about ``step`` above the slope, stays ground (measured on the gallery's 1:1.5 abutments:
-about 20 % of the deck points stay unfound, against none on vertical abutments); a deck less
-than ``clearance`` over its gap (a footbridge over a ditch) is not found, nor one whose
-surroundings gave no echo within ``span`` (a river that answered nothing); the end cells hold
-up to one cell of the road beyond the abutment.
+deck and is called one; over spill-through abutments the last decimetres of each end, within
+the noise of the ground beside them, may stay ground or the end may run a few decimetres onto
+the road beyond (on the gallery's spill-through scenes 0-3 % of the deck
+points stay unfound, ``python scripts/bench_ground.py bridges``); a deck less than
+``clearance`` over its gap (a footbridge over a ditch) is not found, nor one whose
+surroundings gave no echo within ``span`` (a river that answered nothing), nor a low deck
+over gentle banks whose cells never drop by ``clearance`` on both sides; the end cells hold
+up to one cell of the road beyond a vertical abutment.
 
 Cost: grid arithmetic, O(cells · log(span / cell)): 0.04 s for 44 k points, 0.2-0.4 s for the
 real tiles of ``../shared/data`` (0.1-0.7 M points), 1.6 CPU s for 5 M points (12 points/m²).
@@ -63,6 +72,8 @@ ASPRS (2019). LAS Specification 1.4 - R15 (class 17, bridge deck).
 USGS (2024). Lidar Base Specification, v2.x (bare-earth DEMs, bridges removed).
 G. Sithole, G. Vosselman (2006). Bridge detection in airborne laser scanner data. ISPRS J.
 Photogramm. Remote Sens. 61(1):33-46.
+G. Schwarz (1978). Estimating the dimension of a model. Ann. Statist. 6(2):461-464 (the
+information criterion that picks one line or two).
 J. C. Wyllie (1979). The complexity of parallel computations. PhD thesis, Cornell University
 (pointer jumping).
 """
@@ -90,7 +101,8 @@ class BridgeParams:
         A drop steeper than this (rise over run) is a structure's edge (2.0, 63°): earthwork
         faces (dams, levees, road and railway embankments) are 1:1 (45°) or gentler.
     span : float
-        Longest walk of a ray, so the widest deck measured across (40.0).
+        Longest walk of a ray, so the widest deck measured across (40.0); a deck's end is
+        looked for at most ``span`` / 2 beyond its found cells.
     approach : float
         How far the surface must continue beyond each end of a deck (5.0).
     min_area : float
@@ -333,60 +345,232 @@ def deck_cells(z: np.ndarray, x: np.ndarray, y: np.ndarray, p: BridgeParams = Br
     return ndimage.binary_fill_holes(deck)
 
 
-def _ends(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: BridgeParams) -> np.ndarray:
-    """The deck's points beyond its found ends (m,) bool: slice by slice (``step`` metres long)
-    along its axis, for at most ``3 · clearance`` metres, while its band across holds the
-    deck's plane (fitted to its points ``mine``) and both edges still step down.
-
-    An edge steps down when the points just outside it (within ``step`` across, not above the
-    plane) lie, in the median, lower than the plane by more than an earthwork face rising at
-    1:1 from the edge would, plus ``step`` / 4: the discontinuity of a deck's side (its
-    clearance over the abutment's slope) that a crest's rounded edge does not have. A void
-    beside the deck counts as a drop, as in the rays."""
-    u = np.asarray(along, float)
+def _edges(xy: np.ndarray, u: np.ndarray, cell: float):
+    """The long edges of a deck's surface points ``xy`` (k, 2) seen along the unit vector
+    ``u``: the outermost points of each ``cell``-long slice lie on two lines t = k s + a
+    (t across); one slope ``k`` is fitted to both, refitted without the slices more than 2.5
+    robust deviations off (a cell that missed the edge). Slices narrower or wider than the
+    deck by a cell (its skewed ends, a strip of the road beyond them) are left out. Returns
+    k and the edges: the outermost t on each side in nine slices of ten, or None under three
+    slices."""
     v = np.array([-u[1], u[0]])
-    idx = np.flatnonzero(mine)
-    if len(idx) < 10:
-        return np.zeros(len(xyz), bool)
-    tol = 0.25 * p.step
-    xy = xyz[:, :2]
-    s_all, t_all = xy @ u, xy @ v
-    a = np.column_stack([np.ones(len(idx)), s_all[idx], t_all[idx]])
+    s, t = xy @ u, xy @ v
+    j = np.floor((s - s.min()) / cell).astype(np.int64)
+    n = int(j.max()) + 1
+    lo, hi = np.full(n, np.inf), np.full(n, -np.inf)
+    np.minimum.at(lo, j, t)
+    np.maximum.at(hi, j, t)
+    ok = np.bincount(j, minlength=n) >= 3
+    if ok.sum() < 3:
+        return None
+    ok &= np.abs(hi - lo - np.median((hi - lo)[ok])) <= cell
+    if ok.sum() < 3:
+        return None
+    centre = (np.flatnonzero(ok) + 0.5) * cell
+    a = np.column_stack([np.concatenate([centre, centre]), np.repeat([[1.0, 0.0], [0.0, 1.0]], len(centre), axis=0)])
+    b = np.concatenate([lo[ok], hi[ok]])
+    res = np.abs(b - a @ np.linalg.lstsq(a, b, rcond=None)[0])
+    good = res <= 2.5 * 1.4826 * max(float(np.median(res)), 1e-3)
+    k = float(np.linalg.lstsq(a[good], b[good], rcond=None)[0][0])
+    return k, float(np.percentile(lo[ok], 10.0)), float(np.percentile(hi[ok], 90.0))
+
+
+def _axis(xy: np.ndarray, along, cell: float = 1.0):
+    """The deck's axis (unit plan vector) and its edges across it (t_lo, t_hi; t along the
+    axis turned left), refined from ``along`` (the grid axis across which its cells dropped,
+    within 22.5° of the road's) on its surface points ``xy`` (k, 2): a deck's long edges run
+    parallel to its axis, so the slope of its edges (:func:`_edges`) seen along an axis is the
+    angle between the two (three passes). None when the edges cannot be followed."""
+    u = np.asarray(along, float) / np.hypot(*along)
+    for _ in range(3):
+        e = _edges(xy, u, cell)
+        if e is None:
+            return None
+        k = e[0]
+        v = np.array([-u[1], u[0]])
+        u = (u + k * v) / np.hypot(1.0, k)
+        if abs(k) < 1e-4:
+            break
+    e = _edges(xy, u, cell)
+    return None if e is None else (u, e[1], e[2])
+
+
+def _deck_plane(xyz: np.ndarray, idx: np.ndarray, u: np.ndarray, tol: float):
+    """The plane z = c0 + c1 s + c2 t of a deck's surface (s along ``u``, t across) fitted to
+    its points ``idx``, refitted without those more than ``tol`` off it (parapets, kerbs):
+    the coefficients and the surface points, or None when fewer than 10 remain."""
+    v = np.array([-u[1], u[0]])
+    st = np.column_stack([xyz[idx, :2] @ u, xyz[idx, :2] @ v])
+    a = np.column_stack([np.ones(len(idx)), st])
     coef = np.linalg.lstsq(a, xyz[idx, 2], rcond=None)[0]
-    res = xyz[idx, 2] - a @ coef
-    flat = idx[np.abs(res) < tol]  # the deck's surface (no parapets)
-    if len(flat) < 10:
-        return np.zeros(len(xyz), bool)
-    a = np.column_stack([np.ones(len(flat)), s_all[flat], t_all[flat]])
-    coef = np.linalg.lstsq(a, xyz[flat, 2], rcond=None)[0]
-    t_lo, t_hi = np.percentile(t_all[flat], [0.5, 99.5])
+    keep = np.abs(xyz[idx, 2] - a @ coef) < tol
+    if keep.sum() < 10:
+        return None
+    coef = np.linalg.lstsq(a[keep], xyz[idx[keep], 2], rcond=None)[0]
+    return coef, idx[keep]
+
+
+def _edge_clearance(off, dt, depth, h: float, j0: int, j1: int) -> np.ndarray:
+    """Per slice ``j0`` ≤ j < ``j1`` (``h`` long, by ``off`` along the axis) the depth of the
+    ground beside one edge of the deck under its surface, taken at the edge: the median of
+    ``depth - b · dt`` over the slice's points (``dt`` metres out from the edge), with ``b``
+    the across slope of the ground fitted within the slice and its two neighbours (a bank or
+    an embankment's side falls away from the edge). +inf where a slice holds no point (a
+    void beside the deck, as in the rays, counts as a drop)."""
+    j = np.floor(off / h).astype(np.int64) - j0
+    n = j1 - j0
+    ok = (j >= 0) & (j < n)
+    j, dt, depth = j[ok], dt[ok], depth[ok]
+    cnt = np.bincount(j, minlength=n).astype(float)
+    mdt = np.bincount(j, dt, n) / np.maximum(cnt, 1)
+    mdz = np.bincount(j, depth, n) / np.maximum(cnt, 1)
+    ddt, ddz = dt - mdt[j], depth - mdz[j]
+    sxy, sxx = np.bincount(j, ddt * ddz, n), np.bincount(j, ddt * ddt, n)
+    win = lambda q: q + np.append(q[1:], 0.0) + np.append(0.0, q[:-1])  # noqa: E731
+    b = np.clip(win(sxy) / np.maximum(win(sxx), 1e-9), -1.0, 1.0)
+    at_edge = depth - b[j] * dt
+    order = np.lexsort((at_edge, j))
+    js, vs = j[order], at_edge[order]
+    first = np.searchsorted(js, np.arange(n))
+    c = np.full(n, np.inf)
+    has = cnt > 0
+    lo = first[has] + (cnt[has].astype(np.int64) - 1) // 2
+    hi = first[has] + cnt[has].astype(np.int64) // 2
+    c[has] = 0.5 * (vs[lo] + vs[hi])
+    return c
+
+
+def _line(x: np.ndarray, y: np.ndarray):
+    """Least-squares line through (x, y): slope, intercept and the sum of squared residuals."""
+    slope, icpt = np.polyfit(x, y, 1)
+    return float(slope), float(icpt), float(np.sum((y - icpt - slope * x) ** 2))
+
+
+def _end_offset(c: np.ndarray, j0: int, h: float, ramp: float, step: float, kappa: float, window: int) -> float:
+    """Where one edge of the deck ends (metres beyond the found end), from its clearance
+    ``c`` per slice from the deck's middle (slice ``j0``, ``h`` long; :func:`_edge_clearance`).
+
+    Going out, the clearance is the gap's depth, then falls under ``ramp`` (the rays see no
+    drop there) at slice ``a``. Over the next ``window`` slices, either it runs on along one
+    line (the ground beyond a wall, near the deck's plane: the deck ends at ``a``, and not
+    beyond its found cells), or it
+    falls along the abutment's slope, from ``step`` or more and staying above ``kappa`` but
+    for its last slice (a slice astride a wall is no slope), and then runs on along a gentler line over the
+    ground beyond (the road and its verges, a little under the deck's
+    plane and trending with the terrain): two lines, meeting where the deck's surface meets
+    the ground. Both models are fitted (the second with its knee at every slice, least
+    squares) and the one with the smaller Bayesian information criterion is kept; the deck
+    ends at the knee."""
+    o = (np.arange(len(c)) + j0 + 0.5) * h
+    fin = np.isfinite(c)
+    low = np.flatnonzero(fin & (c <= ramp))
+    if not low.size:  # no fall from the gap within reach: nothing to follow
+        return 0.0
+    a = int(low[0])
+    wall = min(o[a] - 0.5 * h, 0.0)  # over a wall the deck ends with its cells
+    keep = fin[a: a + window]
+    x, y = o[a: a + window][keep], c[a: a + window][keep]
+    n = len(y)
+    if n < 5:
+        return wall
+    best = n * np.log(max(_line(x, y)[2] / n, 1e-6)) + 2.0 * np.log(n)
+    end = wall
+    for k in range(3, n - 2):  # the slope on x[:k] (a slice or two astride a wall are no slope)
+        s1, i1, e1 = _line(x[:k], y[:k])
+        s2, i2, e2 = _line(x[k:], y[k:])
+        bic = n * np.log(max((e1 + e2) / n, 1e-6)) + 4.0 * np.log(n)
+        if s1 < min(s2, 0.0) and i1 + s1 * wall >= step and y[: k - 1].min() > kappa and bic < best:
+            best = bic
+            end = float(np.clip((i2 - i1) / (s1 - s2), wall, x[k] + 0.5 * h))
+    return end
+
+
+def _deck_band(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: BridgeParams):
+    """A found deck's plane and band: its axis ``u`` (:func:`_axis`), the plane's
+    coefficients (z = c0 + c1 s + c2 t, s along ``u``, t across), its surface points, and the
+    band's edges ``t_lo``, ``t_hi``; None when the deck's points ``mine`` hold no plane.
+
+    The found cells miss the deck's edges (a cell whose lowest echo lies beside the deck is
+    not a deck cell), so the edges are taken again (:func:`_edges`) on every ``surface``
+    point along the found span that lies on the plane or up to ``structure`` above it (the
+    outer faces of the parapets); slices holding the road beyond an end are too wide and
+    left out."""
+    tol = 0.25 * p.step
+    idx = np.flatnonzero(mine)
+    fit = _deck_plane(xyz, idx, np.asarray(along, float), tol) if len(idx) >= 10 else None
+    axis = None if fit is None else _axis(xyz[fit[1], :2], along)
+    if axis is None:
+        return None
+    u, t_lo, t_hi = axis
+    fit = _deck_plane(xyz, fit[1], u, tol)  # the same plane, its coefficients about the axis
+    if fit is None:
+        return None
+    coef, flat = fit
+    v = np.array([-u[1], u[0]])
+    s_all, t_all = xyz[:, :2] @ u, xyz[:, :2] @ v
     s_lo, s_hi = s_all[flat].min(), s_all[flat].max()
-    reach = 3.0 * p.clearance
-    # the candidates: near the band, beyond the ends, within reach
-    w = p.step
-    near = surface & (t_all >= t_lo - w) & (t_all <= t_hi + w) & (s_all >= s_lo - reach) & (s_all <= s_hi + reach) \
-        & ~((s_all >= s_lo) & (s_all <= s_hi))
-    k = np.flatnonzero(near)
-    s, t, zk = s_all[k], t_all[k], xyz[k, 2]
-    dz = zk - (coef[0] + coef[1] * s + coef[2] * t)  # height above the deck's plane
+    on = np.flatnonzero(surface & (t_all >= t_lo - p.step) & (t_all <= t_hi + p.step)
+                        & (s_all >= s_lo) & (s_all <= s_hi))
+    above = xyz[on, 2] - (coef[0] + coef[1] * s_all[on] + coef[2] * t_all[on])
+    on = on[(above > -tol) & (above <= p.structure)]
+    edges = _edges(xyz[on, :2], u, 1.0) if len(on) >= 10 else None
+    if edges is not None:
+        t_lo, t_hi = min(t_lo, edges[1]), max(t_hi, edges[2])
+    return u, coef, flat, t_lo, t_hi
+
+
+def _ends(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: BridgeParams) -> np.ndarray:
+    """The deck's points beyond its found cells (m,) bool: its ends over sloping
+    (spill-through) abutments, where the cells see no drop, and the corners of a skewed
+    deck.
+
+    The deck is a plane over a band (:func:`_deck_band`); under it the ground is hidden, and
+    beside it, from ``step`` / 2 (parapets) to ``2.5 · step`` out, lies the ground the DTM
+    is interpolated across. Slice by slice (``step`` / 2 long) along the axis, from each
+    edge's own found end (a skewed deck's ends are oblique), that edge's clearance
+    (:func:`_edge_clearance`) is the gap's depth, then falls along the abutment's slope and
+    levels off over the ground beyond; the edge ends where its surface meets the ground
+    (:func:`_end_offset`), and at the latest where the band holds no point on the deck's
+    plane, within ``span`` / 2 of the found cells. The deck's end is the line joining its
+    two edges' ends: the intersection of its plane with a planar abutment slope. A road on
+    an embankment meets the embankment's sides without a step (clearance about nought all
+    along) and is not taken. The points taken are those of the band and of its parapet
+    margins, from ``step`` / 4 under the plane to ``structure`` over it, inside that line."""
+    band_of = _deck_band(xyz, surface, mine, along, p)
+    if band_of is None:
+        return np.zeros(len(xyz), bool)
+    u, coef, flat, t_lo, t_hi = band_of
+    tol = 0.25 * p.step
+    s_all, t_all = xyz[:, :2] @ u, xyz[:, :2] @ np.array([-u[1], u[0]])
+    s_lo, s_hi = s_all[flat].min(), s_all[flat].max()
+    h, m, wide, reach = 0.5 * p.step, 0.5 * p.step, 2.0 * p.step, 0.5 * p.span
+    window = int(np.ceil(6.0 * p.clearance / h))
+    inner = 0.5 * (s_hi - s_lo)
+    k = np.flatnonzero(surface & (t_all >= t_lo - m - wide) & (t_all <= t_hi + m + wide)
+                       & (s_all >= s_lo - reach) & (s_all <= s_hi + reach))
+    s, t = s_all[k], t_all[k]
+    dz = xyz[k, 2] - (coef[0] + coef[1] * s + coef[2] * t)  # height above the deck's plane
+    frac = np.clip((t - t_lo) / max(t_hi - t_lo, 1e-9), 0.0, 1.0)
+    band = (t >= t_lo - m) & (t <= t_hi + m) & (dz >= -tol) & (dz <= p.structure)
+    flat_band = (t >= t_lo) & (t <= t_hi) & (np.abs(dz) < tol)
     out = np.zeros(len(xyz), bool)
+    j0, j1 = -int(np.floor(inner / h)), int(np.ceil(reach / h))
+    s_flat, t_flat = s_all[flat], t_all[flat]
+    near_edge = (t_flat <= t_lo + p.clearance, t_flat >= t_hi - p.clearance)
     for sign, start in ((1.0, s_hi), (-1.0, s_lo)):
         off = sign * (s - start)  # metres beyond this end
-        for j in range(int(np.ceil(reach / p.step))):
-            sl = (off > j * p.step) & (off <= (j + 1) * p.step)
-            band = sl & (t >= t_lo) & (t <= t_hi) & (dz < tol)
-            if band.sum() < 3 or np.mean(np.abs(dz[band]) < tol) < 0.8:
-                break  # the band no longer holds the deck's plane
-            steps = True
-            for dt in (t - t_hi, t_lo - t):  # distance outside each edge
-                side = sl & (dt > 0) & (dt <= w) & (dz < tol)
-                if side.any() and np.median(-dz[side] - dt[side]) < 0.25 * p.step:
-                    steps = False  # a continuous face (an embankment's crest), not a deck's side
-            if not steps:
-                break
-            out[k[sl & (t >= t_lo - w) & (t <= t_hi + w) & (np.abs(dz) < tol)]] = True
-            out[k[sl & (t >= t_lo) & (t <= t_hi) & (dz >= -tol) & (dz <= p.structure)]] = True
-    return out
+        jj = np.floor(off[flat_band] / h).astype(np.int64)
+        held = np.bincount(jj[(jj >= 0) & (jj < j1)], minlength=j1) > 0
+        stop = int(np.argmin(held)) if not held.all() else j1  # the band leaves the plane
+        ends = []
+        for dt, near in zip((t_lo - t, t - t_hi), near_edge):  # distance out from each edge
+            lead = float(np.max(sign * (s_flat[near] - start))) if near.any() else 0.0
+            side = (dt > m) & (dt <= m + wide) & (dz < tol)
+            c = _edge_clearance(off[side] - lead, dt[side], -dz[side], h, j0, j1)
+            ends.append(min(lead + _end_offset(c, j0, h, p.clearance, p.step, tol, window), stop * h))
+        limit = ends[0] + frac * (ends[1] - ends[0])  # the end line, edge to edge
+        out[k[band & (off <= limit) & (off > -inner)]] = True
+    return out & ~mine
 
 
 def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.ndarray | None = None,
