@@ -17,7 +17,9 @@
   alone as the control (``--with-truth-pose``: also the dense cloud placed by the camera truth).
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 - texture: the true heritage-church mesh textured from the 24 photos of the synthetic rig,
-  texture colour vs the true surface colour.
+  texture colour vs the true surface colour; with ``--occluder branch|pole``, instead the
+  box-and-wall rig photographed with an occluder its mesh lacks, with and without the
+  photo-consistency check.
 - poisson_profile: Open3D's Poisson depth 10 on the 1 M-point torus, per PoissonRecon stage,
   for ``--variants`` (samples per node : point weight : full depth), accuracy vs the torus.
 Timings are wall seconds and process CPU seconds (CPU is the contention-free estimate on a
@@ -468,7 +470,7 @@ def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: s
          cpu_s=round(time.process_time() - cpu0, 1))
 
 
-def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True):
+def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consistency: bool = True):
     """Texture the true heritage-church mesh from the 24 photos of the synthetic convergent rig
     (datasets_synth/rig_heritage.toml, true cameras); texture colour at random points of the
     textured church faces against the scene's true surface colour (0-255). With ``jitter`` J,
@@ -501,7 +503,8 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True):
         rng = np.random.default_rng(7)
         images = {i: np.clip(np.round(read_image(im, workdir)[..., :3] * rng.uniform(1 - jitter, 1 + jitter, 3)), 0, 255)
                   .astype(np.uint8) for i, im in sorted(rec.images.items())}
-    (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams(exposure_balance=balance),
+    (out, step), wall, cpu = timed(texture_from_photos, mesh, rec, TextureParams(exposure_balance=balance,
+                                                                             photo_consistency=consistency),
                                    images=images, image_root=workdir)
     tex = out.meta["texture"]
     h, w = tex.shape[:2]
@@ -526,9 +529,80 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True):
          abs_error_0_255={"p50": round(float(np.median(err)), 2), "mean": round(float(err.mean()), 2),
                           "p95": round(float(np.percentile(err, 95)), 2)},
          exposure_jitter=jitter, exposure_balance=balance, gain_range=step.summary["exposure_gain_range"],
+         photo_consistency=step.summary["photo_consistency"],
          abs_error_after_global_gain={"p50": round(float(np.median(fit)), 2), "mean": round(float(fit.mean()), 2)},
          texture_wall_s=round(wall, 1), texture_cpu_s=round(cpu, 1),
          rig_render_wall_s=None if wall_r is None else round(wall_r, 1))
+
+
+#: Occluders of the box-and-wall rig missing from the textured mesh: centre, size (m), albedo.
+OCCLUDERS = {"branch": ((1.0, 5.0, 1.0), (0.8, 0.4, 0.6), (0.25, 0.55, 0.1)),
+             "pole": ((-2.0, 7.0, 0.0), (0.2, 0.2, 10.0), (0.35, 0.22, 0.12))}
+
+
+def texture_occluder(name: str):
+    """The box-and-wall rig of tests/mesh/test_mesh_texture.py (5 cameras, 200 x 150 px)
+    rendered with an extra box (``OCCLUDERS[name]``: a floating "branch", a thin pole) that
+    the textured mesh lacks; texture colour vs the true wall and box colour, on the faces the
+    occluder hides from at least one candidate view (centroid ray) and on all faces, with and
+    without the photo-consistency check, 1 and 2 views per face."""
+    from workstation.core.products import Camera, Image, Mesh, Reconstruction
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.mesh import TextureParams, subdivide_midpoint, texture_from_photos
+    from workstation.mesh.texture import select_views
+    from workstation.photogrammetry.rigs import box_wall_scene, look_at, render, surface_colour
+    from workstation.registration.colorize import bilinear
+
+    V, F, alb = box_wall_scene()
+    Vs, Fs, As = subdivide_midpoint(np.asarray(V, float), F, alb, times=3)
+    mesh = Mesh(Vs, Fs)
+    c, size, albedo = OCCLUDERS[name]
+    cube = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], float)
+    bv = np.asarray(c) + 0.5 * cube * np.asarray(size)
+    bf = F[2:] - 4  # box_wall_scene's box faces, on the cube's corners in the same order
+    scene_v, scene_f = np.vstack([V, bv]), np.vstack([F, bf + len(V)])
+    scene_a = np.vstack([alb, np.tile(albedo, (len(bf), 1))])
+    cam = Camera(200, 150, 190.0, 185.0, 101.0, 73.5)
+    images, pix = {}, {}
+    for k, x in enumerate(np.linspace(-2.5, 2.5, 5), start=1):
+        pose = look_at(np.array([x, 0.0, 0.5 * ((k - 1) % 2)]), np.array([0.0, 10.0, 0.0]))
+        images[k] = Image(f"im{k}.png", 1, pose)
+        pix[k] = render(scene_v, scene_f, scene_a, cam, pose, 1)
+    rec = Reconstruction({1: cam}, images)
+    views, _, _ = select_views(mesh, rec, TextureParams(), 8)
+    cen = Vs[Fs].mean(axis=1)
+    occ = RaycastScene(bv, bf)
+    hidden = np.zeros(len(Fs), bool)
+    for iid, im in images.items():
+        f = np.flatnonzero((views == iid).any(axis=1))
+        d = cen[f] - im.pose.center
+        dl = np.linalg.norm(d, axis=1)
+        t, _ = occ.cast(np.broadcast_to(im.pose.center, d.shape), d / dl[:, None])
+        hidden[f[t < dl]] = True
+
+    def error(out, sel):
+        tex = out.meta["texture"]
+        h, w = tex.shape[:2]
+        rng = np.random.default_rng(0)
+        faces = rng.choice(np.flatnonzero((out.face_attrs["texture_view"] >= 0) & sel), 20000)
+        bary = rng.dirichlet([2.0, 2.0, 2.0], len(faces))
+        t = Vs[Fs[faces]]
+        P = np.einsum("nk,nkd->nd", bary, t)
+        uv = np.einsum("nk,nkd->nd", bary, np.asarray(out.vertex_attrs["uv"], float)[out.faces[faces]])
+        n = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])
+        truth = 255 * surface_colour(P, n / np.linalg.norm(n, axis=1, keepdims=True), As[faces])
+        e = np.abs(bilinear(tex, uv[:, 0] * w - 0.5, (1 - uv[:, 1]) * h - 0.5) - truth)
+        return {"p50": round(float(np.median(e)), 2), "mean": round(float(e.mean()), 2),
+                "p95": round(float(np.percentile(e, 95)), 2)}
+
+    for views_per_face in (1, 2):
+        for check in (False, True):
+            (out, step), wall, cpu = timed(texture_from_photos, mesh, rec,
+                                           TextureParams(max_views=views_per_face, photo_consistency=check), images=pix)
+            emit(bench="texture_occluder", occluder=name, faces=mesh.n_faces, faces_hidden=int(hidden.sum()),
+                 max_views=views_per_face, photo_consistency=check, check=step.summary["photo_consistency"],
+                 abs_error_hidden_faces=error(out, hidden), abs_error_all_faces=error(out, np.ones(len(Fs), bool)),
+                 texture_wall_s=round(wall, 2), texture_cpu_s=round(cpu, 2))
 
 
 def render_10m():
@@ -557,6 +631,9 @@ if __name__ == "__main__":
     ap.add_argument("--exposure-jitter", type=float, default=0.0,
                     help="texture: multiply each photo's channels by gains from U(1-J, 1+J) (seed 7)")
     ap.add_argument("--no-exposure-balance", action="store_true", help="texture: without the exposure balance")
+    ap.add_argument("--no-photo-consistency", action="store_true", help="texture: without the photo-consistency check")
+    ap.add_argument("--occluder", choices=sorted(OCCLUDERS), default=None,
+                    help="texture: instead of the heritage rig, the box-and-wall rig with this occluder in the photos")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
     ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
     ap.add_argument("--samples-per-node", type=float, default=2.0, help="poisson, poisson_backend_open3d (2: the package default)")
@@ -580,6 +657,9 @@ if __name__ == "__main__":
     if "heritage" in todo:
         heritage(a.poisson_backend)
     if "texture" in todo:
-        texture_heritage(Path(a.work), a.exposure_jitter, not a.no_exposure_balance)
+        if a.occluder:
+            texture_occluder(a.occluder)
+        else:
+            texture_heritage(Path(a.work), a.exposure_jitter, not a.no_exposure_balance, not a.no_photo_consistency)
     if "heritage_fused" in todo:
         heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)

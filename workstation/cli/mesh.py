@@ -92,6 +92,9 @@ MIN_PIECE_FRACTION = 0.05
           help="Texture: photos blended per face (1 = the sharpest view)."),
     bound(TextureParams, "exposure_balance", "--exposure-balance/--no-exposure-balance", show_default=True,
           help="Texture: balance the photos' exposure and white balance by per-photo gains (Brown & Lowe 2007)."),
+    bound(TextureParams, "photo_consistency", "--photo-consistency/--no-photo-consistency", show_default=True,
+          help="Texture: drop the photos whose colour of a face disagrees with most others (an occluder the mesh "
+               "lacks: trees, people, cars) before choosing its photo (Waechter et al. 2014)."),
 )
 @overwrite_option
 @allow_outside_option

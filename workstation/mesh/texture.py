@@ -34,6 +34,17 @@ Open3D ray casting, and works on any machine:
    stays near 1 (sigma ``sigma_g`` = 0.1), the paper's values; each photo is multiplied by
    its gains when sampled.
 
+5. **Photo consistency** (Waechter, Moehrle & Goesele 2014, section 4.1): the mesh-based
+   visibility test cannot see an occluder the mesh lacks (a branch, a passer-by, a car in front
+   of a façade), so its colour would be painted onto the face from every photo it hides the
+   face in. Each face's candidate views (up to ``CONSISTENCY_VIEWS``) are compared by their
+   gain-corrected mean colours of the face (16 samples spread over it); a mean shift finds the
+   dominant colour, and views farther from it than the paper's kernel radius (3.2 times the
+   colour noise, estimated robustly from all faces' view pairs) are dropped before the best
+   views are taken. Views in which the face covers fewer pixels than it has samples take no
+   part: their mean colour blends the neighbouring surfaces. The exposure gains are then
+   estimated again without the dropped views.
+
 Faces seen by no photo get their vertex colours (or grey) and ``texture_view = -1``.
 The textured mesh has one vertex per face corner (``uv`` per vertex, as OBJ and glTF store
 texture coordinates) and its image in ``meta["texture"]`` (see :mod:`workstation.io.mesh`).
@@ -84,6 +95,10 @@ class TextureParams:
     exposure_balance : bool
         Balance the photos' exposure and white balance by per-photo gains (True; step 4
         of the module description).
+    photo_consistency : bool
+        Drop the views whose colour of a face disagrees with most others (an occluder missing
+        from the mesh: a tree, a passer-by) before choosing the face's views (True; step 5 of
+        the module description).
     """
 
     texel_size: float | None = None
@@ -95,6 +110,7 @@ class TextureParams:
     depth_tolerance: float | None = None
     fallback_rgb: tuple = (128, 128, 128)
     exposure_balance: bool = True
+    photo_consistency: bool = True
 
     def __post_init__(self):
         if self.texel_size is not None and not self.texel_size > 0:
@@ -357,11 +373,8 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
     if not rec.images:
         raise InvalidInputError("the reconstruction has no oriented images", field="reconstruction")
     with Timer() as t:
-        k = params.max_views
-        views, weights, gsd = select_views(mesh, rec, params, max(k, BALANCE_VIEWS) if params.exposure_balance else k)
         photos = _PhotoCache(rec, images, image_root)
-        gains = exposure_gains(mesh, rec, views, photos) if params.exposure_balance else {}
-        views, weights = views[:, :k], weights[:, :k]
+        views, weights, gsd, gains, check = _candidate_views(mesh, rec, params, photos)
         seen = views[:, 0] >= 0
         if not seen.any():
             raise StageError(STAGE, "no face is seen whole by any photo",
@@ -374,10 +387,45 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         _paint_unseen(tex, mesh, seen, atlas, corners, params)
         texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
         out = _textured_mesh(mesh, atlas, views, texture)
-    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds, gains)
+    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds, gains, check)
     log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
              int(seen.sum()), mesh.n_faces)
     return out, step
+
+
+def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, photos: "_PhotoCache"):
+    """The ``params.max_views`` views of every face (best first), after the exposure balance
+    and the photo-consistency check (module description, steps 1, 4 and 5) when asked.
+
+    Returns (views (m, k), weights (m, k), gsd (m,), gains, check): ``gains`` image id -> (3,)
+    (empty without the balance), ``check`` a summary of the consistency check (empty when off)."""
+    k = params.max_views
+    kc = max(k, CONSISTENCY_VIEWS if params.photo_consistency else BALANCE_VIEWS if params.exposure_balance else k)
+    views, weights, gsd = select_views(mesh, rec, params, kc)
+    if kc == k:
+        return views, weights, gsd, {}, {}
+    colour = face_colours(mesh, rec, views, photos)
+    nb = BALANCE_VIEWS if params.photo_consistency else kc
+    gains = exposure_gains(views[:, :nb], colour[:, :nb]) if params.exposure_balance else {}
+    check = {}
+    if params.photo_consistency:
+        g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
+        balanced = colour * g[views + 1]  # slot -1 (no view) takes row 0
+        # a face covering fewer pixels than it has colour samples blends its neighbours' colours
+        big = weights >= len(_SAMPLE_BARY)
+        sigma = colour_noise(np.where(big[..., None], balanced, np.nan))
+        keep = consistent_views(views, balanced, sigma, eligible=big)
+        if params.exposure_balance:  # the gains again, without the occluded views
+            gains = exposure_gains(np.where(keep, views, -1)[:, :nb], colour[:, :nb])
+        dropped = (views >= 0) & ~keep
+        check = {"colour_sigma": round(sigma, 3), "views_dropped": int(dropped.sum()),
+                 "faces_with_dropped_views": int(dropped.any(axis=1).sum())}
+        views = np.where(keep, views, -1)
+        weights = np.where(keep, weights, 0.0)
+        order = np.argsort(-weights, axis=1, kind="stable")
+        views = np.take_along_axis(views, order, axis=1)
+        weights = np.take_along_axis(weights, order, axis=1)
+    return views[:, :k], weights[:, :k], gsd, gains, check
 
 
 class _PhotoCache:
@@ -406,30 +454,54 @@ class _PhotoCache:
 
 #: Views per face compared when balancing exposure; Brown & Lowe's sigmas (grey levels, gain).
 BALANCE_VIEWS, SIGMA_N, SIGMA_G = 4, 10.0, 0.1
+#: Candidate views per face for the photo-consistency check; the Gaussian kernel value below
+#: which Waechter et al. drop a view (6e-3, a Mahalanobis distance of sqrt(-2 ln 6e-3) = 3.2).
+CONSISTENCY_VIEWS, CONSISTENCY_KERNEL = 8, 6e-3
+def _sample_bary(n: int = 4) -> np.ndarray:
+    """(n², 3) barycentric centroids of the n² triangles of a face split n times along each
+    edge: points spread evenly over the face, whose mean colour stands for the face's."""
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    up = np.stack([i, j, n - 1 - i - j], -1)[i + j <= n - 1] + 1 / 3
+    down = np.stack([i, j, n - 2 - i - j], -1)[i + j <= n - 2] + 2 / 3
+    return np.concatenate([up, down]) / n
 
 
-def exposure_gains(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos: _PhotoCache) -> dict:
+_SAMPLE_BARY = _sample_bary()
+
+
+def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos: _PhotoCache) -> np.ndarray:
+    """(m, k, 3) mean colour of every face in each of its ``views`` (m, k): the photo sampled
+    bilinearly at 16 points spread evenly over the face (:func:`_sample_bary`) and averaged; NaN
+    where the slot holds no view. Shared by the exposure balance and the photo-consistency
+    check."""
+    from workstation.registration.colorize import bilinear, project
+
+    pts = np.einsum("pk,mkd->mpd", _SAMPLE_BARY, mesh.vertices[mesh.faces])  # (m, p, 3)
+    npt = len(_SAMPLE_BARY)
+    colour = np.full(views.shape + (3,), np.nan)
+    for iid in np.unique(views[views >= 0]):
+        f, s = np.nonzero(views == iid)
+        im = rec.images[int(iid)]
+        cam = rec.cameras[im.camera_id]
+        u, v, _ = project(pts[f].reshape(-1, 3), cam, im.pose)
+        c = bilinear(photos(int(iid)), np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
+        colour[f, s] = c.reshape(-1, npt, 3).mean(axis=1)
+    return colour
+
+
+def exposure_gains(views: np.ndarray, colour: np.ndarray) -> dict:
     """Per-photo, per-channel gains (image id -> (3,) float) that make the photos agree where
     they see the same faces (Brown & Lowe 2007, section 6; module description, step 4).
 
-    ``views`` (m, k): the faces' candidate views. For each pair of photos i, j, N_ij counts the
-    faces both see and I_ij is photo i's mean colour at those faces' centroids; the gains g
-    minimise sum N_ij ((g_i I_ij - g_j I_ji)^2 / SIGMA_N^2 + (1 - g_i)^2 / SIGMA_G^2), one
-    linear system per channel. Photos sharing no face keep gain 1."""
-    from workstation.registration.colorize import bilinear, project
-
+    ``views`` (m, k): the faces' candidate views; ``colour`` (m, k, 3): their mean colours
+    (:func:`face_colours`). For each pair of photos i, j, N_ij counts the faces both see and
+    I_ij is photo i's mean colour over those faces; the gains g minimise
+    sum N_ij ((g_i I_ij - g_j I_ji)^2 / SIGMA_N^2 + (1 - g_i)^2 / SIGMA_G^2), one linear system
+    per channel. Photos sharing no face keep gain 1."""
     ids = np.unique(views[views >= 0])
     if ids.size < 2 or views.shape[1] < 2:
         return {}
     slot = np.searchsorted(ids, np.maximum(views, ids[0]))
-    cen = mesh.vertices[mesh.faces].mean(axis=1)
-    colour = np.full(views.shape + (3,), np.nan)
-    for n, iid in enumerate(ids):
-        f, s = np.nonzero(views == iid)
-        im = rec.images[int(iid)]
-        cam = rec.cameras[im.camera_id]
-        u, v, _ = project(cen[f], cam, im.pose)
-        colour[f, s] = bilinear(photos(int(iid)), np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
     n = ids.size
     N = np.zeros((n, n))
     S = np.zeros((n, n, 3))  # S[i, j]: sum of photo i's colours over the faces i and j share
@@ -448,6 +520,52 @@ def exposure_gains(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos: _
         A[alone, alone], b[alone] = 1.0, 1.0
         gains[:, c] = np.linalg.solve(A, b)
     return {int(i): gains[k] for k, i in enumerate(ids)}
+
+
+def colour_noise(colour: np.ndarray) -> float:
+    """Robust standard deviation (grey levels, per channel) of one view's mean face colour:
+    from the differences between every two views of the same face (each difference has
+    variance 2 sigma^2), sigma = 1.4826 median |difference| / sqrt(2); views of an occluder
+    are a minority of the pairs and do not move the median. At least 1 grey level (the photos'
+    8-bit step and their resampling)."""
+    k = colour.shape[1]
+    a, b = np.triu_indices(k, 1)
+    d = np.abs(colour[:, a] - colour[:, b])
+    d = d[np.isfinite(d)]
+    if d.size == 0:
+        return 1.0
+    return max(1.0, 1.4826 * float(np.median(d)) / math.sqrt(2.0))
+
+
+def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterations: int = 5,
+                     eligible: np.ndarray | None = None) -> np.ndarray:
+    """(m, k) bool: the views whose colour agrees with the face's dominant colour (Waechter,
+    Moehrle & Goesele 2014, section 4.1, with a flat kernel of the paper's radius).
+
+    The radius is r = sqrt(-2 ln CONSISTENCY_KERNEL) sigma (3.2 sigma; ``sigma``: the colour
+    noise, :func:`colour_noise`). For faces with >= 3 views, the centre starts at the view
+    colour with the most other views within r (ties: the best view) and moves to the mean of
+    the view colours within r of it, a few times (mean shift); views farther than r from the
+    final centre are occluded by something the mesh lacks (a tree, a passer-by) and dropped.
+    Faces with fewer views, and each face's starting view, keep their views. ``eligible``
+    (m, k) bool, optional: the views that take part (the others are kept as they are)."""
+    ok = views >= 0 if eligible is None else (views >= 0) & eligible
+    col = np.where(ok[..., None], colour, 0.0)
+    r = math.sqrt(-2.0 * math.log(CONSISTENCY_KERNEL)) * sigma
+    d = np.linalg.norm(col[:, :, None] - col[:, None, :], axis=3)  # (m, k, k)
+    near = (d <= r) & ok[:, :, None] & ok[:, None, :]
+    start = np.argmax(near.sum(axis=2), axis=1)
+    rows = np.arange(len(views))
+    centre = col[rows, start]
+    for _ in range(iterations):
+        inside = ok & (np.linalg.norm(col - centre[:, None], axis=2) <= r)
+        inside[rows, start] = True
+        centre = (col * inside[..., None]).sum(axis=1) / inside.sum(axis=1)[:, None]
+    keep = ok & (np.linalg.norm(col - centre[:, None], axis=2) <= r)
+    keep[rows, start] = ok[rows, start]
+    few = ok.sum(axis=1) < 3
+    keep[few] = ok[few]
+    return keep | ((views >= 0) & ~ok)
 
 
 def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
@@ -525,21 +643,22 @@ def _textured_mesh(mesh: Mesh, atlas: Atlas, views: np.ndarray, texture: np.ndar
 
 
 def _texture_record(mesh: Mesh, rec: Reconstruction, params: TextureParams, atlas: Atlas, views: np.ndarray,
-                    seen: np.ndarray, seconds: float, gains: Mapping[int, np.ndarray]) -> StepRecord:
+                    seen: np.ndarray, seconds: float, gains: Mapping[int, np.ndarray], check: Mapping) -> StepRecord:
     """The step record: texel size (mesh units) used and requested, limits, texture size (px),
     faces and area fraction textured, number of images and of views used, the range of the
-    exposure gains."""
+    exposure gains and the photo-consistency check's colour noise and dropped views."""
     area = mesh.face_areas()
     g = np.array(list(gains.values())) if gains else np.ones((1, 3))
     return StepRecord(
         STAGE,
         {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
          "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos,
-         "exposure_balance": params.exposure_balance},
+         "exposure_balance": params.exposure_balance, "photo_consistency": params.photo_consistency},
         seconds,
         {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
          "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
          "area_textured_fraction": float(area[seen].sum() / max(area.sum(), 1e-300)),
          "views_used": int(np.unique(views[seen, 0]).size),
-         "exposure_gain_range": [round(float(g.min()), 4), round(float(g.max()), 4)]},
+         "exposure_gain_range": [round(float(g.min()), 4), round(float(g.max()), 4)],
+         "photo_consistency": dict(check)},
     )
