@@ -12,6 +12,11 @@ Parts (``--part``, repeatable; default all):
 * ``fountain``: Strecha fountain-P11 — plain pycolmap against ``run_sfm`` (self-calibrated and
   with the true intrinsics), camera errors after a 7-DoF alignment to the true centres, and
   run-time ratios measured in the same run (wall and process CPU time).
+* ``sacre_coeur``: 10 internet photos of the Sacré-Cœur (YFCC, 10 cameras, 675–1083 px, no
+  EXIF): COLMAP with one shared camera (what a single-camera default does with mixed sizes)
+  against ``run_sfm``'s default (one camera per image size and EXIF camera), incremental and
+  global, at full size and at ``max_image_size`` 640: registered images, points, mean
+  reprojection error, wall and process CPU time.
 
 Usage::
 
@@ -376,13 +381,65 @@ def part_fountain(data: Path, which=("self", "camera")):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+def _shared_camera_colmap(images: Path, work: Path) -> dict:
+    """COLMAP's pipeline with one camera for all images (CameraMode.SINGLE): the images whose
+    size differs from the first one's are not imported."""
+    import pycolmap
+
+    pycolmap.set_random_seed(0)
+    db = work / "database.db"
+    names = sorted(p.name for p in images.iterdir() if p.suffix.lower() in (".jpg", ".png", ".tif"))
+    pycolmap.extract_features(db, images, image_names=names, camera_mode=pycolmap.CameraMode.SINGLE)
+    pycolmap.match_exhaustive(db)
+    with pycolmap.Database.open(str(db)) as d:
+        imported = d.num_images()
+    (work / "sparse").mkdir()
+    opts = pycolmap.IncrementalPipelineOptions()
+    opts.random_seed = 0
+    recs = pycolmap.incremental_mapping(db, images, work / "sparse", opts)
+    best = max(recs.values(), key=lambda r: r.num_reg_images(), default=None)
+    return {"images": len(names), "imported": imported, "registered": best.num_reg_images() if best else 0,
+            "points": best.num_points3D() if best else 0,
+            "mean_reprojection_error_px": round(best.compute_mean_reprojection_error(), 4) if best else None}
+
+
+SACRE_COEUR_RUNS = (
+    # (name, SfMParams overrides)
+    ("auto_incremental", {}),
+    ("auto_global", {"mapper": "global"}),
+    ("auto_incremental_640px", {"max_image_size": 640}),
+    ("auto_global_640px", {"mapper": "global", "max_image_size": 640}),
+)
+
+
+def part_sacre_coeur(data: Path):
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+
+    images = data / "images/sfm/sacre_coeur_yfcc"
+    tmp = Path(tempfile.mkdtemp(prefix="bench_sfm_sc_"))
+    try:
+        (tmp / "single").mkdir()
+        res, wall, cpu = timed(lambda: _shared_camera_colmap(images, tmp / "single"))
+        emit({"bench": "sacre_coeur_colmap_single_camera", **res, "wall_s": round(wall, 1), "cpu_s": round(cpu, 1)})
+        for name, over in SACRE_COEUR_RUNS:
+            r, wall, cpu = timed(lambda over=over, name=name: run_sfm(images, tmp / name, params=SfMParams(**over)))
+            s = r.summary
+            emit({"bench": f"sacre_coeur_ws_sfm_{name}", "images": s["images"], "registered": s["registered"],
+                  "cameras": s["camera_count"], "camera_sharing": s["camera_sharing"], "points": s["points"],
+                  "mean_reprojection_error_px": round(s["mean_reprojection_error_px"], 4),
+                  "mean_track_length": round(s["mean_track_length"], 3), "wall_s": round(wall, 1),
+                  "cpu_s": round(cpu, 1), "timings_s": {k: round(v, 1) for k, v in s["timings_s"].items()}})
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", type=Path, default=REPO.parent / "shared" / "data")
-    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain"])
+    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain", "sacre_coeur"])
     ap.add_argument("--fountain-mode", action="append", choices=["self", "camera"])
     a = ap.parse_args(argv)
-    parts = a.part or ["zhang", "dlt", "gcp", "fountain"]
+    parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur"]
     for p in parts:
         if p == "fountain":
             part_fountain(a.data, tuple(a.fountain_mode or ("self", "camera")))

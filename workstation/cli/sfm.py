@@ -14,7 +14,7 @@ from workstation.cli.options import SentinelIntRange, positive_float, positive_i
 from workstation.cli.options import RegistryChoice, bound, field_option, param_group
 from workstation.photogrammetry.dense import DEVICES, DenseParams
 from workstation.photogrammetry.georef import ADJUSTMENTS, georeference
-from workstation.photogrammetry.sfm import MAPPERS, MATCHERS, SfMParams
+from workstation.photogrammetry.sfm import CAMERA_SHARING, MAPPERS, MATCHERS, SfMParams
 from workstation.core.jsonutil import json_clean
 
 
@@ -39,6 +39,10 @@ from workstation.core.jsonutil import json_clean
           help="SIFT features per image."),
     bound(SfMParams, "camera_model", "--camera-model", show_default=True,
           help="COLMAP model for self-calibration (SIMPLE_RADIAL, RADIAL, OPENCV...)."),
+    bound(SfMParams, "cameras", "--cameras", type=RegistryChoice(CAMERA_SHARING), show_default=True,
+          help="Which photos share self-calibrated intrinsics: auto = one camera per group of one image size "
+               "and one EXIF make, model and focal length (photos without EXIF: by size), single = one for "
+               "all (same size only), per-image = one each (internet photos resized to one size)."),
 )
 @click.option("--no-principal-point", is_flag=True, help="Keep the principal point fixed in the final bundle adjustment.")
 @click.option("--no-final-ba", is_flag=True, help="Skip the final robust bundle adjustment (plain COLMAP result).")
@@ -175,14 +179,15 @@ def _densify(wd: Path, images, device: str, overwrite: bool) -> dict:
 
 def _record(out: dict, images, camera_file, gcp_file, params, gcp_adjustment: str, crs, sigma_px: float, wd: Path) -> dict:
     """The sfm stage record (WORKDIR/summary.json): the --json document plus the absolute image
-    folder and the camera settings (model, shared or per-image intrinsics, image size, matcher)."""
+    folder and the camera settings (model, intrinsics shared, per image or per camera group, image size,
+    matcher)."""
     import dataclasses
 
     from workstation.cli.summary import elapsed
     from workstation.io.reconstruction import stage_record
 
     settings = dataclasses.asdict(params)
-    settings["intrinsics"] = "shared" if params.single_camera else "per-image"
+    settings["intrinsics"] = out["camera_sharing"]
     if gcp_file:
         settings.update(gcp_adjustment=gcp_adjustment, crs=crs, sigma_px=sigma_px)
     outputs = [wd / "sparse" / "0", wd / "sparse.ply", wd / "georef" / "0" if gcp_file else None,

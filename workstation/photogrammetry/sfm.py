@@ -1,6 +1,7 @@
 """Structure from motion with pycolmap (COLMAP; Schönberger & Frahm, CVPR 2016).
 
-Feature extraction (SIFT), matching (exhaustive for small sets; sequential for large ordered
+Feature extraction (SIFT; one self-calibrated camera per group of images of one size and one
+EXIF camera, so photos from several cameras each get their own intrinsics), matching (exhaustive for small sets; sequential for large ordered
 sets, spatial when the images carry GPS priors), incremental mapping (or global mapping,
 GLOMAP — Pan et al., ECCV 2024 — where pycolmap has it), then, when the intrinsics are
 self-calibrated, one final bundle adjustment that also frees the principal point: COLMAP's
@@ -31,6 +32,7 @@ log = get_logger(__name__)
 
 MATCHERS = ("auto", "exhaustive", "sequential", "spatial")
 MAPPERS = ("incremental", "global")
+CAMERA_SHARING = ("auto", "single", "per-image")
 
 
 @dataclass(frozen=True)
@@ -55,8 +57,11 @@ class SfMParams:
         SIFT features per image.
     camera_model : str
         COLMAP model for self-calibration ("SIMPLE_RADIAL", "RADIAL", "OPENCV", ...).
-    single_camera : bool
-        All images share one camera (one body and lens at a fixed focal length).
+    cameras : str
+        Which images share intrinsics: "auto" (one camera per group of images of one pixel size
+        and one EXIF make, model and focal length — one camera for a set from one body and lens,
+        one per photo for internet photos; images without EXIF group by size alone), "single"
+        (one camera for all; refused when the sizes differ) or "per-image".
     refine_intrinsics : bool
         With a given camera: refine it in the bundle adjustments instead of keeping it fixed.
     refine_principal_point : bool
@@ -85,7 +90,7 @@ class SfMParams:
     max_image_size: int = -1
     max_features: int = 8192
     camera_model: str = "SIMPLE_RADIAL"
-    single_camera: bool = True
+    cameras: str = "auto"
     refine_intrinsics: bool = False
     refine_principal_point: bool = True
     final_ba: bool = True
@@ -100,6 +105,8 @@ class SfMParams:
             raise InvalidInputError(f"matcher must be one of {MATCHERS}", field="matcher")
         if self.mapper not in MAPPERS:
             raise InvalidInputError(f"mapper must be one of {MAPPERS}", field="mapper")
+        if self.cameras not in CAMERA_SHARING:
+            raise InvalidInputError(f"cameras must be one of {CAMERA_SHARING}", field="cameras")
 
 
 @dataclass(frozen=True)
@@ -114,7 +121,9 @@ class SfMResult:
         Its sparse points with ``rgb``.
     summary : dict
         ``images``, ``registered``, ``points``, ``observations``, ``mean_reprojection_error_px``,
-        ``mean_track_length``, ``matcher``, ``mapper``, ``timings_s``, ``cameras``.
+        ``mean_track_length``, ``matcher``, ``mapper``, ``timings_s``, ``cameras``,
+        ``camera_sharing`` ("shared", "per-image" or "per camera group") and ``camera_count``
+        (cameras in the database; the model holds those of its registered images).
     unregistered : list of str
         Images not in the largest model.
     other_models : list of dict
@@ -214,8 +223,65 @@ def _device(pycolmap):
     return pycolmap.Device.cpu if not pycolmap.has_cuda else pycolmap.Device.auto
 
 
-def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera | None, params: SfMParams) -> None:
-    """SIFT features of every image into the database; a given camera is applied to all."""
+def camera_key(path) -> tuple:
+    """What tells the camera that took an image: its pixel size as stored (before any EXIF
+    rotation) and its EXIF make, model, focal length and 35 mm equivalent focal length (None
+    where absent)."""
+    from PIL import Image as PILImage
+
+    with PILImage.open(path) as im:
+        exif = im.getexif()
+        shot = exif.get_ifd(0x8769)  # Exif sub-IFD: FocalLength (37386), FocalLengthIn35mmFilm (41989)
+        focal = shot.get(37386)
+        return (im.size, exif.get(271), exif.get(272), None if focal is None else float(focal), shot.get(41989))
+
+
+def camera_groups(files) -> list[list[Path]]:
+    """``files`` grouped by :func:`camera_key`, in order of first appearance: the images one
+    self-calibrated camera is shared by in ``cameras="auto"``."""
+    groups: dict[tuple, list[Path]] = {}
+    for f in files:
+        groups.setdefault(camera_key(f), []).append(Path(f))
+    return list(groups.values())
+
+
+def _single_camera_sizes(files, camera: Camera | None) -> None:
+    """Refuse a shared camera for images of different sizes (COLMAP would drop every image
+    whose size differs from the first one's), or of another size than the given camera."""
+    sizes = [camera_key(f)[0] for f in files]
+    ref, ref_name = ((camera.width, camera.height), "the given camera") if camera is not None else (sizes[0], files[0].name)
+    for f, size in zip(files, sizes):
+        if size != ref:
+            raise InvalidInputError(
+                f"this image is {size[0]}x{size[1]} but {ref_name} is {ref[0]}x{ref[1]}",
+                "use the camera's own image size, or recalibrate" if camera is not None
+                else "photos of several cameras or sizes need --cameras auto or per-image",
+                path=f,
+            )
+
+
+def _extraction_batches(files, camera: Camera | None, params: SfMParams) -> tuple[list, str]:
+    """``[(camera_mode, files)]``, one feature-extraction call each (a call in SINGLE mode
+    makes one camera of its own), and how the intrinsics are shared: "shared", "per-image" or
+    "per camera group"."""
+    if camera is not None or params.cameras == "single":
+        _single_camera_sizes(files, camera)
+        return [("SINGLE", list(files))], "shared"
+    if params.cameras == "per-image":
+        return [("PER_IMAGE", list(files))], "per-image"
+    groups = camera_groups(files)
+    if len(groups) == 1:
+        return [("SINGLE", groups[0])], "shared"
+    shared = [("SINGLE", g) for g in groups if len(g) > 1]
+    alone = [g[0] for g in groups if len(g) == 1]
+    log.info("%d camera groups among %d images (by image size and EXIF camera)", len(groups), len(files))
+    return shared + ([("PER_IMAGE", alone)] if alone else []), "per-image" if not shared else "per camera group"
+
+
+def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera | None, params: SfMParams) -> tuple[str, int]:
+    """SIFT features of every image into the database; a given camera is applied to all,
+    otherwise the images share cameras as ``params.cameras`` says. Returns how the intrinsics
+    are shared (:func:`_extraction_batches`) and the number of cameras."""
     from workstation.interop.pycolmap import camera_to_colmap_params
 
     reader = pycolmap.ImageReaderOptions()
@@ -223,19 +289,21 @@ def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera
         model, cparams = camera_to_colmap_params(camera)
         reader.camera_model = model
         reader.camera_params = ",".join(repr(float(v)) for v in cparams)
-        _check_sizes(files, camera)
     else:
         reader.camera_model = params.camera_model
     ext = pycolmap.FeatureExtractionOptions()
     ext.max_image_size = int(params.max_image_size)
     ext.num_threads = int(params.num_threads)
     ext.sift.max_num_features = int(params.max_features)
-    mode = pycolmap.CameraMode.SINGLE if (params.single_camera or camera is not None) else pycolmap.CameraMode.AUTO
-    log.info("extracting features from %d images", len(files))
-    pycolmap.extract_features(
-        db, image_dir, image_names=[f.name for f in files], camera_mode=mode, reader_options=reader,
-        extraction_options=ext, device=_device(pycolmap),
-    )
+    batches, sharing = _extraction_batches(files, camera, params)
+    n_cameras = sum(1 if mode == "SINGLE" else len(group) for mode, group in batches)
+    log.info("extracting features from %d images (%d camera%s)", len(files), n_cameras, "s" * (n_cameras > 1))
+    for mode, group in batches:
+        pycolmap.extract_features(
+            db, image_dir, image_names=[f.name for f in group], camera_mode=getattr(pycolmap.CameraMode, mode),
+            reader_options=reader, extraction_options=ext, device=_device(pycolmap),
+        )
+    return sharing, n_cameras
 
 
 def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> str:
@@ -284,11 +352,16 @@ def _final_bundle_adjustment(pycolmap, best, fixed: bool, params: SfMParams, not
     """One robust bundle adjustment of the largest model, the intrinsics free when
     self-calibrated and the principal point with them; when the principal point then moves
     beyond ``max_principal_point_shift`` the adjustment is repeated with it fixed (on a copy
-    of the model taken before). Returns the adjusted model."""
+    of the model taken before). A camera seen in one image only (per-image intrinsics) keeps
+    its principal point: a shift of it is, to first order, a rotation of that one view.
+    Returns the adjusted model."""
     bopt = pycolmap.BundleAdjustmentOptions()
     bopt.refine_focal_length = not fixed
     bopt.refine_extra_params = not fixed
     bopt.refine_principal_point = (not fixed) and params.refine_principal_point
+    if bopt.refine_principal_point and _has_single_view_camera(best):
+        bopt.refine_principal_point = False
+        notes.append("principal point kept at the image centre (cameras seen in one image only)")
     bopt.print_summary = False
     try:
         bopt.ceres.loss_function_type = getattr(pycolmap.LossFunctionType, params.final_ba_loss.upper())
@@ -315,6 +388,12 @@ def _final_bundle_adjustment(pycolmap, best, fixed: bool, params: SfMParams, not
             pycolmap.bundle_adjustment(best, bopt)
             notes.append("principal point not estimated (weakly constrained)")
     return best
+
+
+def _has_single_view_camera(rec) -> bool:
+    """Whether a camera of the pycolmap model ``rec`` is used by one registered image only."""
+    ids = np.array([im.camera_id for im in rec.images.values() if im.has_pose])
+    return bool(ids.size) and bool((np.unique(ids, return_counts=True)[1] == 1).any())
 
 
 def _write_models(ordered: list, sparse: Path) -> list[dict]:
@@ -407,7 +486,8 @@ def run_sfm(
     Raises
     ------
     InvalidInputError
-        Fewer than 2 images, images of another size than the given camera.
+        Fewer than 2 images, images of another size than the given camera, images of
+        several sizes with ``params.cameras == "single"``.
     StageError
         No model could be built.
     """
@@ -425,7 +505,7 @@ def run_sfm(
     fixed = camera is not None and not params.refine_intrinsics
     timings, notes = {}, []
     with _timed(timings, "features"):
-        _extract_features(pycolmap, db, image_dir, files, camera, params)
+        sharing, n_cameras = _extract_features(pycolmap, db, image_dir, files, camera, params)
     with _timed(timings, "matching"):
         matcher = _match(pycolmap, db, len(files), params)
     with _timed(timings, "mapping"):
@@ -449,6 +529,7 @@ def run_sfm(
         notes.append(note)
     cloud = cloud_from_reconstruction(rec)
     summary = _summary(names, registered, rec, best, matcher, camera, fixed, params, timings, notes)
+    summary.update(camera_sharing=sharing, camera_count=n_cameras)
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
@@ -518,25 +599,3 @@ def read_reconstruction(path, image_dir=None) -> Reconstruction:
         return read_model(p, image_dir)
     raise InvalidInputError("no cameras.json and no COLMAP model (cameras.bin/.txt) found",
                             "run ws sfm first or give the model folder", path=p)
-
-
-def _check_sizes(files, camera: Camera) -> None:
-    """Refuse images whose size differs from the calibrated camera (reads the first one)."""
-    try:
-        from PIL import Image as PILImage
-
-        with PILImage.open(files[0]) as im:
-            w, h = im.size
-    except Exception:  # noqa: BLE001 - size check is best effort; pycolmap reads the files anyway
-        import cv2
-
-        img = cv2.imread(str(files[0]), cv2.IMREAD_UNCHANGED)
-        if img is None:
-            return
-        h, w = img.shape[:2]
-    if (w, h) != (camera.width, camera.height):
-        raise InvalidInputError(
-            f"image {files[0].name} is {w}x{h} but the camera was calibrated at {camera.width}x{camera.height}",
-            "use the camera's own image size, or recalibrate",
-            path=files[0],
-        )

@@ -97,7 +97,7 @@ def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
         write_cloud(cloud, workdir / "sparse.ply", overwrite=True)
         doc = {**result.to_dict(), **frame, "sparse_cloud": str(workdir / "sparse.ply")}
         settings = {**dataclasses.asdict(stage.params), "upright": stage.upright,
-                    "intrinsics": "shared" if stage.params.single_camera else "per-image"}
+                    "intrinsics": result.summary["camera_sharing"]}
         outputs = [workdir / "sparse" / "0", workdir / "sparse.ply", workdir / SFM_RECORD]
         rec = stage_record("sfm", doc, inputs={"image_dir": image_dir, "camera": stage.camera, "gcp": None,
                                                "workdir": workdir},
