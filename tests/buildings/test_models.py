@@ -9,7 +9,8 @@ import pytest
 from workstation.buildings import synth
 from workstation.buildings.export import cityjson_document, validate_cityjson
 from workstation.buildings.footprints import extract_footprints
-from workstation.buildings.models import build_building, is_watertight, prism, triangulate, weld
+from workstation.buildings.models import (build_building, detach_raised, is_watertight, prism, split_holes, triangulate,
+                                          weld)
 from workstation.buildings.planes import segment_planes
 from workstation.buildings.roof_faces import lower_envelope
 
@@ -150,3 +151,49 @@ def test_weld_orders_vertices_and_inserts_several_t_vertices_along_an_edge():
     ring = [tuple(s.vertices[v]) for v in s.faces[0][0]]
     assert ring[:4] == [(0, 0, 0), (1, 0, 0), (2, 0, 0), (3, 0, 0)]
     assert len(s.faces[2][0]) == 3  # the near-duplicate corner merged away
+
+
+def test_dormer_is_a_raised_part_on_the_main_roof():
+    """The dormer's planes meet the main slope in valleys but stand on it behind a front wall:
+    they are split off into their own closed part, and the roof follows the analytic one."""
+    b, m = _model("dormer", seed=6)
+    assert len(m.lod2) >= 2 and all(is_watertight(s) for s in m.lod2)
+    assert m.roof_type == "complex"
+    normals = np.array([f.normal for f in m.roofs])
+    for tilt, az in b.true_tilt_azimuth():
+        t, a = np.radians(tilt), np.radians(az)
+        f = m.roofs[int(np.argmax(normals @ [np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)]))]
+        assert abs(f.tilt_deg - tilt) < 2.0 and abs((f.azimuth_deg - az + 180) % 360 - 180) < 3.0
+    assert _roof_rms(b, m) < 0.15
+    doc = cityjson_document([m], [np.full(len(m.roofs), 1000.0)])
+    assert validate_cityjson(doc) == []
+
+
+def test_detach_raised_splits_off_left_out_planes_on_a_step():
+    # planes 0, 1 kept in part 0; 2 and 3 left out: 2 meets 1 in a step of 5 borders, 3 only touches 2
+    steps = np.zeros((4, 4))
+    steps[1, 2] = steps[2, 1] = 5
+    part = np.zeros(4, int)
+    dropped = np.array([False, False, True, True])
+    assert detach_raised(part, dropped, steps).tolist() == [0, 0, 1, 0]
+    steps[1, 2] = steps[2, 1] = 3  # under four cell borders: no wall
+    assert detach_raised(part, dropped, steps).tolist() == [0, 0, 0, 0]
+
+
+def test_split_holes_gives_pieces_without_holes():
+    import shapely
+
+    poly = shapely.Polygon([(0, 0), (10, 0), (10, 6), (0, 6)], [[(2, 2), (2, 4), (4, 4), (4, 2)],
+                                                                [(6, 1), (6, 2), (8, 2), (8, 1)]])
+    pieces = split_holes(poly)
+    assert all(not len(p.interiors) for p in pieces) and len(pieces) >= 3
+    assert sum(p.area for p in pieces) == pytest.approx(poly.area)
+    assert shapely.union_all(pieces).equals(poly)
+
+
+def test_weld_merges_vertices_that_rounding_puts_in_neighbouring_cells():
+    """Two copies of a vertex 2e-5 m apart on either side of a rounding boundary are one vertex."""
+    tri = [np.array([[0.0, 0, 0], [1, 0, 0], [0.00004999, 1, 0]])]
+    tri2 = [np.array([[0.00005001, 1, 0], [1, 0, 0], [1, 1, 0]])]
+    s = weld([tri, tri2], ["RoofSurface"] * 2)
+    assert len(s.vertices) == 4

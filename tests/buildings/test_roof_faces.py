@@ -87,7 +87,7 @@ def test_cross_gabled_faces_follow_the_true_roof(kind, yaw):
 @pytest.mark.parametrize("kind", ["cross_l", "cross_t"])
 def test_cross_gabled_solid_is_watertight(kind):
     b, poly, normals, points, grid, centres = _part(kind)
-    solid, roofs = models.part_solid(poly, normals, points, b.ground, grid, centres, 0)
+    solid, roofs, _ = models.part_solid(poly, normals, points, b.ground, grid, centres, 0)
     assert models.is_watertight(solid)
     assert len(roofs) >= len(normals)
 

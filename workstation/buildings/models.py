@@ -17,7 +17,11 @@ envelope of its planes clipped to the part outline: exact for flat, shed, gabled
 pyramid roofs and for any convex roof; planes whose envelope face disagrees with their own
 points are dropped. Where that drops planes, the arrangement of the planes' intersection lines
 labelled by the raster is used instead when it is continuous and agrees better (valleys of
-cross-gabled roofs; :mod:`workstation.buildings.roof_faces`). Faces are welded and T-junctions split so each part is a closed 2-manifold.
+cross-gabled roofs; :mod:`workstation.buildings.roof_faces`). Planes a part's continuous roof
+leaves out but that meet its kept planes in a step (a dormer: valleys at its back, a front wall)
+become a raised part of their own, a closed solid standing on the ground inside the main part
+like the upper level of a multi-level roof; a part around it is cut into pieces without holes.
+Faces are welded and T-junctions split so each part is a closed 2-manifold.
 """
 
 from __future__ import annotations
@@ -47,9 +51,10 @@ class ModelParams:
     max_roof_tilt_deg : float
         Planes steeper than this are walls and not used for the roof (degrees).
     min_plane_share : float
-        Smallest roof plane modelled, as a share of the building's roof-plane points (0-1):
-        LoD2.2 here models the main roof planes; pieces, dormers and chimneys below it are
-        left to their neighbours.
+        Smallest plane of the main roof, as a share of the building's roof-plane points (0-1).
+        Smaller planes are modelled only where they form parts of their own standing on the
+        roof behind a step (a dormer, a raised annex; see :func:`build_building`); pieces of
+        the main roof below the share are left to their neighbours.
     cell : float or None
         Cell of the plane ownership raster (m); None uses the nominal point spacing.
     """
@@ -186,13 +191,11 @@ def _plane_z(normals, points, idx, xy):
     return p[:, 2] - (n[:, 0] * (xy[:, 0] - p[:, 0]) + n[:, 1] * (xy[:, 1] - p[:, 1])) / n[:, 2]
 
 
-def split_parts(grid, origin, cell, normals, points, eps):
-    """Part index per plane: planes meeting continuously (a ridge, a valley) share a part;
-    planes whose heights at their common cell borders differ by more than
-    ``3 eps + (tan a + tan b) cell`` (the plane threshold plus the height change over one cell
-    of border uncertainty) are separated by a step."""
-    from .planes import small_components
-
+def border_steps(grid, origin, cell, normals, points, eps):
+    """Shared raster borders of every pair of planes: (cell borders (p, p), of which steps (p, p)),
+    symmetric. A border is a step where the two planes' heights at its midpoint differ by more
+    than ``3 eps + (tan a + tan b) cell`` (the plane threshold plus the height change over one
+    cell of border uncertainty)."""
     p = len(normals)
     pa, pb, mids = [], [], []
     for a, b, off in ((grid[:, :-1], grid[:, 1:], (1.0, 0.5)), (grid[:-1, :], grid[1:, :], (0.5, 1.0))):
@@ -202,15 +205,49 @@ def split_parts(grid, origin, cell, normals, points, eps):
         mids.append(origin + np.column_stack([c + off[0], r + off[1]]) * cell)
     pa, pb, mids = np.concatenate(pa), np.concatenate(pb), np.concatenate(mids)
     if not len(pa):
-        return np.arange(p) if p else np.zeros(0, int)
+        return np.zeros((p, p)), np.zeros((p, p))
     dz = np.abs(_plane_z(normals, points, pa, mids) - _plane_z(normals, points, pb, mids))
     slope = np.hypot(normals[:, 0], normals[:, 1]) / normals[:, 2]
     step = dz > 3 * eps + (slope[pa] + slope[pb]) * cell
     key = np.minimum(pa, pb) * p + np.maximum(pa, pb)
-    tot = np.bincount(key, minlength=p * p)
-    stp = np.bincount(key, weights=step, minlength=p * p)
-    joined = np.flatnonzero((tot > 0) & (stp < 0.5 * tot))
-    return small_components(p, joined // p, joined % p)
+    tot = np.bincount(key, minlength=p * p).reshape(p, p).astype(float)
+    stp = np.bincount(key, weights=step, minlength=p * p).reshape(p, p)
+    return tot + tot.T, stp + stp.T
+
+
+def split_parts(grid, origin, cell, normals, points, eps):
+    """Part index per plane: planes meeting continuously (a ridge, a valley) share a part;
+    planes whose shared border is mostly a step (:func:`border_steps`) are separated."""
+    from .planes import small_components
+
+    p = len(normals)
+    tot, stp = border_steps(grid, origin, cell, normals, points, eps)
+    if not tot.any():
+        return np.arange(p) if p else np.zeros(0, int)
+    i, j = np.nonzero(np.triu((tot > 0) & (stp < 0.5 * tot), 1))
+    return small_components(p, i, j)
+
+
+def detach_raised(part_of_plane, dropped, steps, min_cells: int = 4):
+    """Part index per plane after splitting off, from each part, the planes its roof faces left
+    out (``dropped`` (p,) bool) where they meet the kept planes of their part in a step of at
+    least ``min_cells`` raster cell borders (``steps`` (p, p) from :func:`border_steps`): a dormer
+    or a raised annex joined to the main roof by its valleys but standing on it behind a front
+    wall, which the part's continuous roof cannot hold. The detached planes that touch form one
+    new part each."""
+    from .planes import small_components
+
+    p = len(part_of_plane)
+    same = part_of_plane[:, None] == part_of_plane[None, :]
+    kept = ~dropped
+    raised = dropped & ((steps * (same & kept[None, :])).sum(axis=1) >= min_cells)
+    if not raised.any():
+        return part_of_plane
+    i, j = np.nonzero(np.triu(same & raised[:, None] & raised[None, :], 1))
+    comp = small_components(p, i, j)
+    out = part_of_plane.copy()
+    out[raised] = part_of_plane.max() + 1 + np.unique(comp[raised], return_inverse=True)[1]
+    return out
 
 
 def step_split(s_own: np.ndarray, s_other: np.ndarray) -> float:
@@ -362,14 +399,38 @@ def _wall_rings(ring2d: np.ndarray, roof_xy: np.ndarray, roof_z: np.ndarray, gro
     return out
 
 
+def split_holes(poly) -> list:
+    """A shapely polygon cut into polygons without holes (counter-clockwise): each hole is cut
+    through by the horizontal line through its centroid, and the halves are cut again while
+    they hold holes. A part around a raised part (a dormer) so becomes parts whose roof faces
+    have no holes (a :class:`RoofFace` stores the outer ring only); the cut is a wall shared by
+    two closed solids, as between the parts of a multi-level roof."""
+    import shapely
+
+    if not len(poly.interiors):
+        return [shapely.orient_polygons(poly)]
+    y = shapely.Polygon(poly.interiors[0]).centroid.y
+    x0, y0, x1, y1 = poly.bounds
+    out = []
+    for box in (shapely.box(x0 - 1, y0 - 1, x1 + 1, y), shapely.box(x0 - 1, y, x1 + 1, y1 + 1)):
+        half = shapely.set_precision(poly.intersection(box), GRID)
+        for g in shapely.get_parts(half):
+            if g.geom_type == "Polygon" and g.area > 1e-9:
+                out += split_holes(g)
+    return out
+
+
 def part_solid(poly, normals, points, ground, grid, centres, part_index):
-    """Closed LoD2.2 solid of one part polygon and its roof faces."""
+    """Closed LoD2.2 solid of one part polygon, its roof faces and the indices of the planes
+    (of ``normals``) that hold a face."""
     faces = roof_faces(poly, normals, points, grid, centres) if len(normals) else []
+    planes_given = bool(faces)
     if not faces:  # no usable plane over this part: a flat roof at its planes' mean height
         c = poly.representative_point()
         z = float(points[:, 2].mean()) if len(points) else ground + 3.0
         normals, points = np.array([[0.0, 0.0, 1.0]]), np.array([[c.x, c.y, z]])
         faces = lower_envelope(poly, normals, points)
+    used = np.array(sorted({int(k) for k, _ in faces}), np.int64) if planes_given else np.zeros(0, np.int64)
     roofs, rings, sem = [], [], []
     for k, face in faces:
         ext = np.asarray(face.exterior.coords)[:-1]
@@ -391,7 +452,7 @@ def part_solid(poly, normals, points, ground, grid, centres, part_index):
             for r in [np.asarray(poly.exterior.coords)[:-1]] + [np.asarray(h.coords)[:-1] for h in poly.interiors]]
     rings.append(base)
     sem.append("GroundSurface")
-    return weld(rings, sem), roofs
+    return weld(rings, sem), roofs, used
 
 
 def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
@@ -408,6 +469,7 @@ def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
     inv = np.empty(len(key), np.intp)
     inv[order] = np.cumsum(new) - 1
     V = allv[order[new]]
+    inv, V = _merge_close(inv, V, tol)
     out, pos = [], 0
     for f in faces:
         rings = []
@@ -420,6 +482,21 @@ def weld(faces: list, semantics: list, tol: float = 1e-4) -> Solid:
             rings.append(_split_edges(idx, V, tol))
         out.append(rings)
     return Solid(V, out, list(semantics))
+
+
+def _merge_close(inv: np.ndarray, V: np.ndarray, tol: float):
+    """Vertices of V (v, 3) closer than ``tol`` that rounding put in neighbouring cells merged
+    into the first of them: (new index per input index ``inv``, remaining vertices)."""
+    from scipy.spatial import cKDTree
+
+    pairs = cKDTree(V).query_pairs(tol, output_type="ndarray")
+    if not len(pairs):
+        return inv, V
+    from .planes import small_components
+
+    comp = small_components(len(V), pairs[:, 0], pairs[:, 1])  # numbered by lowest member
+    first = np.unique(comp, return_index=True)[1]
+    return comp[inv], V[first]
 
 
 def _split_edges(idx: np.ndarray, V: np.ndarray, tol: float) -> list:
@@ -570,7 +647,11 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
                    params: ModelParams = ModelParams(), cell: float = 0.5) -> BuildingModel:
     """LoD1.2 and LoD2.2 of one building from its footprint (k, 2), its points (m, 3), their
     plane labels (m,) into ``planes`` (a :class:`~workstation.buildings.planes.RoofPlanes`) and
-    the ground height (m)."""
+    the ground height (m).
+
+    The LoD2.2 is first built from all roof planes; it is kept when every plane under the
+    ``min_plane_share`` ended in a raised part of small planes only (:func:`_lod2`), else the
+    model is rebuilt from the main planes alone."""
     import shapely
 
     from .footprints import ccw
@@ -580,11 +661,32 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
     height = float(np.percentile(xyz[:, 2], params.lod1_percentile)) if len(xyz) else ground
     lod1 = prism(fp_xy, ground, max(height, ground + 0.1))
     ids, counts = np.unique(labels[labels >= 0], return_counts=True)
+    small = ids[:0]
     if len(ids):
         roof = planes.tilt_deg[ids] <= params.max_roof_tilt_deg
-        keep = ids[roof & (counts >= max(3, params.min_plane_share * counts[roof].sum()))]
+        least = max(3, params.min_plane_share * counts[roof].sum())
+        keep, small = ids[roof & (counts >= least)], ids[roof & (counts < least) & (counts >= 3)]
     else:
         keep = ids
+    raised = None
+    if len(keep) and len(small):  # the smaller planes too, where they stand raised on the roof
+        raised = _lod2(fp, xyz, labels, np.union1d(keep, small), planes, ground, height, cell, least)
+    solids, roofs, _ = raised if raised is not None and raised[2] else _lod2(fp, xyz, labels, keep, planes, ground,
+                                                                             height, cell)
+    return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs, len(solids)), lod1, solids, roofs)
+
+
+def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):
+    """LoD2.2 solids and roof faces of a building from its planes ``keep`` (indices into
+    ``planes``), and whether planes a part's roof left out were detached as raised parts.
+
+    Each part's roof is built from its planes (:func:`split_parts`, :func:`part_solid`); planes
+    a part's continuous roof left out but that meet its kept planes in a step are split off
+    (:func:`detach_raised`) when that keeps every solid watertight. With ``least`` (points), the
+    model is for the planes under ``least`` points: it only counts (third value True) when each
+    such plane ended in a part of small planes only (a dormer, a raised annex, split off by a
+    step that :func:`split_parts` or :func:`detach_raised` found), so small planes never reshape
+    the main roof."""
     if len(keep):
         local = np.full(len(xyz), -1, np.int64)
         m = np.isin(labels, keep)
@@ -595,17 +697,39 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
         normals = np.array([[0.0, 0.0, 1.0]])
         points = np.array([[c.x, c.y, float(np.median(xyz[:, 2])) if len(xyz) else height]])
         local = np.zeros(len(xyz), np.int64)
+    is_small = np.bincount(local[local >= 0], minlength=len(normals)) < (least or 0)
     local = _claim_unlabelled(xyz, local, normals, points, planes.threshold, cell)
     grid, origin, centres = ownership_raster(fp, xyz, local, len(normals), cell)
     part_of_plane = split_parts(grid, origin, cell, normals, points, planes.threshold)
+    solids, roofs, used = _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, normals, points,
+                                       ground)
+    detached = False
+    if len(normals) > 2 and not used.all():  # planes a part's roof left out: raised on a step?
+        _, steps = border_steps(grid, origin, cell, normals, points, planes.threshold)
+        again = detach_raised(part_of_plane, ~used, steps)
+        if not np.array_equal(again, part_of_plane):
+            alt = _part_solids(fp, grid, origin, centres, cell, again, xyz, local, normals, points, ground)
+            if all(is_watertight(s) for s in alt[0]):  # else keep the roof without the raised planes
+                solids, roofs, used, part_of_plane, detached = *alt, again, True
+    if least is None:
+        return solids, roofs, detached
+    mixed = np.bincount(part_of_plane, weights=~is_small, minlength=part_of_plane.max() + 1) > 0
+    ok = is_small.any() and not mixed[part_of_plane[is_small]].any() and used[is_small].all()
+    return solids, roofs, bool(ok)
+
+
+def _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, normals, points, ground):
+    """LoD2.2 solids and roof faces of every part polygon, and which planes (p,) bool hold a face."""
     solids, roofs = [], []
+    used = np.zeros(len(normals), bool)
     for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane, xyz[:, :2], local).items():
         sel = np.flatnonzero(part_of_plane == q)
         lut = np.full(len(normals), -2, np.int64)
         lut[sel] = np.arange(len(sel))
         sub = np.where(grid >= 0, lut[np.maximum(grid, 0)], -1)
-        for poly in polys:
-            solid, faces = part_solid(poly, normals[sel], points[sel], ground, sub, centres, len(solids))
+        for poly in [piece for poly in polys for piece in split_holes(poly)]:
+            solid, faces, k = part_solid(poly, normals[sel], points[sel], ground, sub, centres, len(solids))
+            used[sel[k]] = True
             solids.append(solid)
             roofs += faces
-    return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs, len(solids)), lod1, solids, roofs)
+    return solids, roofs, used

@@ -17,6 +17,9 @@ clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
 4. Planes that are coplanar (normals within ``angle_deg``, each other's points within the
    threshold) and touch are merged; points left over (ridges, edges) join the nearest plane of
    their neighbours when within the threshold.
+5. A finer pass over the points still left (:func:`_fine_pass`): normals from a third of the
+   neighbours, searched among those points only, find faces too narrow for the first pass's
+   neighbourhoods (dormer cheeks of 1-2 m); their planes go through steps 3-4 as well.
 
 The distance threshold combines the noise and the spacing: ``eps = sqrt((3 sigma)^2 +
 (s tan(angle))^2)``: 3 sigma keeps 99.7 % of Gaussian noise and the second term is the offset a
@@ -26,7 +29,7 @@ plane tilted by the angle tolerance makes over one point spacing ``s``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -400,6 +403,32 @@ def _assign_leftovers(xyz, labels, normals, offsets, idx, eps, rounds: int = 2):
     return labels
 
 
+def _fine_pass(xyz, labels, eps, spacing, frame, params):
+    """Planes among the points no plane took, found at a finer scale: normals from the
+    ``k_neighbors // 3`` nearest *unassigned* points (at least 6), then region growing and RANSAC
+    as in the first pass. A roof face narrower than about two neighbourhood radii of the first
+    pass (a dormer cheek of 1-2 m at 10 points/m^2, where k = 24 spans a disc of about 0.9 m
+    radius) has almost no neighbourhood that stays on it, so none of its points counts as planar;
+    a third of the neighbours spans 1 / sqrt(3) of that radius, and searching only among the
+    leftovers keeps the planes already found out of the neighbourhoods. A region of half
+    ``min_points`` seeds a plane (a third of the neighbours leaves fewer planar points on a small
+    face); it is kept only if it reaches ``min_points`` once the unassigned points within the
+    threshold of it join (:func:`segment_planes`). Returns the labels with the new planes
+    numbered after the existing ones."""
+    free = np.flatnonzero(labels < 0)
+    if len(free) < params.min_points:
+        return labels
+    k = max(6, params.k_neighbors // 3)
+    normals, sigma, idx = local_geometry(xyz[free], k, frame=frame)
+    regions = _grow_regions(xyz[free], normals, sigma, idx, eps, spacing, params.angle_deg)
+    seed = replace(params, min_points=max(3, params.min_points // 2))
+    sub, _, _ = _ransac_regions(xyz[free], regions, eps, seed)
+    out = labels.copy()
+    hit = sub >= 0
+    out[free[hit]] = sub[hit] + (labels.max() + 1)
+    return out
+
+
 def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> RoofPlanes:
     """Planes of a cloud of roof points (n, 3) (m) by region growing, RANSAC and merging.
 
@@ -429,6 +458,11 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
     labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
     labels, pn, pd, _, _ = _refit(loc, labels, params.min_points)
     labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
+    fine = _fine_pass(loc, labels, eps, spacing, frame, params)
+    if fine.max(initial=-1) > labels.max(initial=-1):
+        # the fine planes' seeds may be smaller; with their neighbours within eps they must reach min_points
+        labels, pn, pd, _, _ = _refit(loc, fine, max(3, params.min_points // 2))
+        labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
     labels, pn, pd, _, _ = _refit(loc, labels, params.min_points)
     # pieces of one plane split by a gap of unassigned points touch only now
     labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
