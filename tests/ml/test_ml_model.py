@@ -199,7 +199,7 @@ def test_roof_test_sends_rough_building_points_to_their_next_class(tiny_model, t
     P[~raised, 0] = 1.0
     P[raised, 2], P[raised, 1], P[raised, 4] = 0.7, 0.2, 0.1  # building, then vegetation, other
     hs = np.column_stack([hag, np.zeros(n)]).astype(np.float32)
-    codes, conf = tiny_model._codes(P, hs, cloud)
+    codes, conf = tiny_model.codes_from_proba(P, hs, cloud)
     assert (codes[label == 6] == C.BUILDING).mean() > 0.97
     crown = label == 5
     assert (codes[crown] == C.HIGH_VEGETATION).mean() > 0.8
@@ -207,7 +207,7 @@ def test_roof_test_sends_rough_building_points_to_their_next_class(tiny_model, t
     np.testing.assert_allclose(conf[moved], 0.2 / 0.3, rtol=1e-5)
     tiny_model.roof_test = False
     try:
-        assert (tiny_model._codes(P, hs, cloud)[0][crown] == C.BUILDING).all()
+        assert (tiny_model.codes_from_proba(P, hs, cloud)[0][crown] == C.BUILDING).all()
     finally:
         tiny_model.roof_test = True
     loaded = PointClassifier.load(tiny_model.save(tmp_path / "r.pt"), device="cpu")
@@ -226,10 +226,10 @@ def test_raised_patches_send_a_roof_called_ground_to_its_next_class(tiny_model, 
     P[:, 0], P[:, 2], P[:, 1] = 0.6, 0.3, 0.1  # ground first, then building, vegetation
     hs = np.zeros((n, 2), np.float32)  # every point inside the gate's band
     assert tiny_model.raised_patches is False  # off by default (speed), on in ws ground --method ml
-    assert (tiny_model._codes(P, hs, cloud)[0] == C.GROUND).all()
+    assert (tiny_model.codes_from_proba(P, hs, cloud)[0] == C.GROUND).all()
     tiny_model.roof_test, tiny_model.raised_patches = False, True  # this test is about the ground
     try:
-        codes, _ = tiny_model._codes(P, hs, cloud)
+        codes, _ = tiny_model.codes_from_proba(P, hs, cloud)
         assert (codes[roof] == C.BUILDING).mean() > 0.99
         assert (codes[~roof] == C.GROUND).all()
         loaded = PointClassifier.load(tiny_model.save(tmp_path / "p.pt"), device="cpu")
@@ -252,14 +252,14 @@ def test_water_step_makes_still_water_class_9(tiny_model, tmp_path):
     P[:, 0], P[:, 1] = 0.9, 0.1  # the network and the gate call everything ground
     hs = np.zeros((n, 2), np.float32)
     assert tiny_model.water is True
-    codes, conf = tiny_model._codes(P, hs, cloud)
+    codes, conf = tiny_model.codes_from_proba(P, hs, cloud)
     assert (codes[pond] == C.WATER).mean() > 0.95
     assert (codes[~pond] == C.GROUND).mean() > 0.99
     w = codes == C.WATER
     assert (conf[w] >= 0.5).all() and (conf[w] <= 1.0).all() and conf[w].mean() > 0.85
     tiny_model.water = False
     try:
-        assert (tiny_model._codes(P, hs, cloud)[0] == C.GROUND).all()
+        assert (tiny_model.codes_from_proba(P, hs, cloud)[0] == C.GROUND).all()
         loaded = PointClassifier.load(tiny_model.save(tmp_path / "w.pt"), device="cpu")
         assert loaded.water is False and loaded.config()["water"] is False
     finally:

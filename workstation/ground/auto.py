@@ -5,12 +5,14 @@ trend slope (``trend_slope=1``: mountainsides are not cut as objects), SMRF with
 (threshold 0.3 m, scalar 1.0; fewer low objects accepted), PMF (square windows, a different
 failure mode on slopes), CSF (a cloth: bridges objects, follows terraces) and PTD (a TIN grown
 from seeds: follows slopes and breaklines). A point is ground when at least three say so.
-Then the patches of voted ground that drop by 1 m or more on all sides (roofs, decks, wagons)
-are taken out (:mod:`workstation.ground.patches`), the rejected points on terrain steps that the
-vote's TIN spans are put back (:mod:`workstation.ground.risers`), and, where the echoes show a
-canopy, the understorey the vote let in (:mod:`workstation.ground.understorey`; a no-op without
-return numbers). Its figures against each member's are in docs/benchmarks.md ("Ground
-filtering").
+Then the refine chain declared in :attr:`AutoParams.steps` runs on the vote
+(:mod:`workstation.ground.refine`): the patches of voted ground that drop by 1 m or more on all
+sides (roofs, decks, wagons) are taken out, the rejected points on terrain steps that the
+vote's TIN spans are put back (those at least one member accepted), and, where the echoes show
+a canopy, the understorey the vote let in is taken out (a no-op without return numbers).
+Bridge decks leave the ground last, as in every filter (``bridges``,
+:func:`workstation.ground.common.write_classes`). Its figures against each member's are in
+docs/benchmarks.md ("Ground filtering").
 """
 
 from __future__ import annotations
@@ -24,14 +26,18 @@ from workstation.core.cloud import Cloud
 from . import common
 from .csf import CSFParams, csf_ground
 from .options import FilterOptions
-from .patches import PatchParams, raised_patches
+from .patches import PatchParams
 from .pmf import PMFParams, pmf_ground
 from .ptd import PTDParams, ptd_ground
-from .risers import RiserParams, riser_fill
+from .refine import Refine, check_steps, declare, run_chain
+from .risers import RiserParams
 from .smrf import SMRFParams, smrf_ground
-from .understorey import UnderstoreyParams, canopy_share, refine_understorey
+from .understorey import UnderstoreyParams
 
 STAGE = "ground.auto"
+#: The refine steps ``auto`` can run after its vote: each step's switch field and its
+#: parameters field in :class:`AutoParams`.
+STEP_NAMES = {"raised_patches": "patch_params", "risers": "riser_params", "understorey": "understorey_params"}
 
 
 @dataclass(frozen=True)
@@ -54,16 +60,22 @@ class AutoParams(FilterOptions):
         Fifth member (PTD defaults).
     min_votes : int
         Votes needed for ground (3 of 5).
+    steps : tuple of str
+        The refine chain after the vote, in order (:mod:`workstation.ground.refine`), of the
+        steps in :data:`STEP_NAMES` (bridge decks leave the ground after it, as in every
+        filter: ``bridges``): ``("raised_patches", "risers", "understorey")``.
     raised_patches : bool
-        Take out the patches of voted ground that stand above all the ground around them
-        (roofs, decks, wagons; :mod:`workstation.ground.patches`; True).
+        Run the ``raised_patches`` step: take out the patches of voted ground that stand above
+        all the ground around them (roofs, decks, wagons; :mod:`workstation.ground.patches`;
+        True).
     patch_params : PatchParams
     risers : bool
-        Put back the rejected points on terrain steps that at least one member accepted
-        (:mod:`workstation.ground.risers`; True).
+        Run the ``risers`` step: put back the rejected points on terrain steps that at least
+        one member accepted (:mod:`workstation.ground.risers`; True).
     riser_params : RiserParams
     understorey : bool
-        Take the understorey out of the ground under canopy (True; needs return numbers).
+        Run the ``understorey`` step: take the understorey out of the ground under canopy
+        (True; needs return numbers).
     understorey_params : UnderstoreyParams
     """
 
@@ -73,12 +85,22 @@ class AutoParams(FilterOptions):
     csf: CSFParams = field(default_factory=CSFParams)
     ptd: PTDParams = field(default_factory=PTDParams)
     min_votes: int = 3
+    steps: tuple[str, ...] = ("raised_patches", "risers", "understorey")
     raised_patches: bool = True
     patch_params: PatchParams = field(default_factory=PatchParams)
     risers: bool = True
     riser_params: RiserParams = field(default_factory=RiserParams)
     understorey: bool = True
     understorey_params: UnderstoreyParams = field(default_factory=UnderstoreyParams)
+
+    def __post_init__(self):
+        object.__setattr__(self, "steps", check_steps(self.steps, "steps", STEP_NAMES))
+
+    def chain(self) -> tuple:
+        """The refine chain (:func:`workstation.ground.refine.declare`): the declared ``steps``
+        that are switched on, with their parameters."""
+        return declare(self.steps, on={n: getattr(self, n) for n in STEP_NAMES},
+                       params={n: getattr(self, f) for n, f in STEP_NAMES.items()})
 
 
 PRESETS: dict[str, AutoParams] = common.presets(AutoParams)  # one parameter set for all terrain
@@ -88,29 +110,35 @@ MEMBERS = ("smrf_wide", "smrf_tight", "pmf", "csf", "ptd")
 
 
 def member_votes(xyz: np.ndarray, p: AutoParams) -> np.ndarray:
-    """(5, m) bool: the ground of each member (:data:`MEMBERS` order) on local metric points."""
-    return np.stack([smrf_ground(xyz, p.smrf_wide), smrf_ground(xyz, p.smrf_tight), pmf_ground(xyz, p.pmf),
-                     csf_ground(xyz, p.csf), ptd_ground(xyz, p.ptd)])
+    """(5, m) bool: the ground of each member (:data:`MEMBERS` order) on local metric points.
+
+    The two SMRF members and CSF's empty-particle surface share one minimum grid and one
+    opening sequence (:class:`workstation.ground.smrf.SharedSurfaces`); every member's flags
+    are those of its run alone.
+    """
+    from .csf import surface_params
+    from .smrf import SharedSurfaces
+
+    shared = SharedSurfaces(xyz, [q for q in (p.smrf_wide, p.smrf_tight, surface_params(xyz, p.csf)) if q is not None])
+    return np.stack([smrf_ground(xyz, p.smrf_wide, shared), smrf_ground(xyz, p.smrf_tight, shared),
+                     pmf_ground(xyz, p.pmf), csf_ground(xyz, p.csf, shared), ptd_ground(xyz, p.ptd)])
 
 
 def refine_vote(xyz: np.ndarray, ground: np.ndarray, votes: np.ndarray, p: AutoParams,
-                share: np.ndarray | None = None) -> np.ndarray:
-    """The steps after the vote: raised patches out, risers in, and (with ``share``) the
-    understorey out; ``votes`` (m,) is the number of members that accepted each point."""
-    if p.raised_patches:
-        ground = raised_patches(xyz, ground, p.patch_params)
-    if p.risers:
-        ground = riser_fill(xyz, ground, votes, p.riser_params)
-    if p.understorey and share is not None:
-        ground = refine_understorey(xyz, ground, share, p.understorey_params)
-    return ground
+                return_number: np.ndarray | None = None, number_of_returns: np.ndarray | None = None) -> np.ndarray:
+    """Ground flags (m,) bool after the refine chain of ``p`` (:meth:`AutoParams.chain`) on the
+    vote's ``ground``; ``votes`` (m,) is the number of members that accepted each point, the
+    echo numbers (when known) show the canopy to the understorey step."""
+    state = Refine(xyz, ground, votes, return_number, number_of_returns)
+    return run_chain(state, p.chain()).ground
 
 
-def auto_ground(xyz: np.ndarray, p: AutoParams, share: np.ndarray | None = None) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points by the majority vote, refined under
-    canopy where ``share`` (:func:`workstation.ground.understorey.canopy_share`) is given."""
+def auto_ground(xyz: np.ndarray, p: AutoParams, return_number: np.ndarray | None = None,
+                number_of_returns: np.ndarray | None = None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points by the majority vote and the refine chain
+    (see :func:`refine_vote`)."""
     votes = member_votes(xyz, p).sum(axis=0, dtype=np.int8)
-    return refine_vote(xyz, votes >= p.min_votes, votes, p, share)
+    return refine_vote(xyz, votes >= p.min_votes, votes, p, return_number, number_of_returns)
 
 
 def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
@@ -122,13 +150,13 @@ def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or AutoParams(), **overrides)
-    return common.run_filter(cloud, p, STAGE, lambda prep: auto_ground(prep.xyz, p, _canopy_share(cloud, prep, p)))
+    return common.run_filter(cloud, p, STAGE, lambda prep: auto_ground(prep.xyz, p, *_echoes(cloud, prep)))
 
 
-def _canopy_share(cloud: Cloud, prep: common.Prepared, p: AutoParams) -> np.ndarray | None:
-    """:func:`~workstation.ground.understorey.canopy_share` of the prepared points, None when
-    the understorey step is off or the cloud has no return numbers."""
-    if not (p.understorey and "return_number" in cloud.attrs and "number_of_returns" in cloud.attrs):
-        return None
-    return canopy_share(prep.xyz[:, :2], np.asarray(cloud.attrs["return_number"])[prep.index],
-                        np.asarray(cloud.attrs["number_of_returns"])[prep.index], p.understorey_params.canopy_cell)
+def _echoes(cloud: Cloud, prep: common.Prepared) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """Return number and number of returns of the prepared points, (None, None) when the cloud
+    has no return numbers."""
+    if not ("return_number" in cloud.attrs and "number_of_returns" in cloud.attrs):
+        return None, None
+    return (np.asarray(cloud.attrs["return_number"])[prep.index],
+            np.asarray(cloud.attrs["number_of_returns"])[prep.index])

@@ -320,16 +320,28 @@ def fill_nearest(grid: np.ndarray) -> np.ndarray:
     return grid[tuple(idx)]
 
 
+@lru_cache(maxsize=1)
+def _blas_controller():
+    """threadpoolctl's view of the loaded BLAS libraries, made once (finding them reads every
+    loaded library's path, milliseconds a call); None without threadpoolctl."""
+    try:
+        from threadpoolctl import ThreadpoolController
+    except ImportError:  # pragma: no cover - threadpoolctl comes with scikit-learn
+        return None
+    import scipy.linalg  # noqa: F401 - loads scipy's LAPACK before the libraries are listed
+
+    return ThreadpoolController()
+
+
 def _one_blas_thread():
     """Context limiting BLAS to one thread: find_simplex builds per-triangle transforms with
     tiny LAPACK calls, which OpenBLAS worker threads make ~100x slower on a busy machine."""
-    try:
-        from threadpoolctl import threadpool_limits
-    except ImportError:  # pragma: no cover - threadpoolctl comes with scikit-learn
+    controller = _blas_controller()
+    if controller is None:  # pragma: no cover
         import contextlib
 
         return contextlib.nullcontext()
-    return threadpool_limits(1, user_api="blas")
+    return controller.limit(limits=1, user_api="blas")
 
 
 def locate(tri, q: np.ndarray) -> np.ndarray:

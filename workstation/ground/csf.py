@@ -314,8 +314,21 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
     return z, steps
 
 
-def csf_ground(xyz: np.ndarray, p: CSFParams) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points (metres) by CSF."""
+def surface_params(xyz: np.ndarray, p: CSFParams):
+    """The :class:`~workstation.ground.smrf.SMRFParams` of the SMRF surface that fills the
+    empty particles of a run on ``xyz`` (PDAL's defaults on a cell sized by the points), None
+    when ``empty_fill`` is not "ground"."""
+    from .smrf import SMRFParams
+
+    if p.empty_fill != "ground":
+        return None
+    return SMRFParams(cell=common.auto_cell(xyz[:, :2], SMRFParams.cell))
+
+
+def csf_ground(xyz: np.ndarray, p: CSFParams, shared=None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points (metres) by CSF; ``shared`` (a
+    :class:`workstation.ground.smrf.SharedSurfaces` of ``xyz``) serves the SMRF surface of the
+    empty particles when it holds it."""
     from .noise import isolated_low_points
 
     if p.empty_fill not in ("ground", "tin"):
@@ -335,11 +348,11 @@ def csf_ground(xyz: np.ndarray, p: CSFParams) -> np.ndarray:
         # core while the isolated low points are found
         from concurrent.futures import ThreadPoolExecutor
 
-        from .smrf import SMRFParams, smrf_surface
+        from .smrf import smrf_surface
 
-        sp = SMRFParams(cell=common.auto_cell(xyz[:, :2], SMRFParams.cell))  # sized by the points
+        sp = surface_params(xyz, p)
         pool = ThreadPoolExecutor(max_workers=1, thread_name_prefix="csf-smrf")
-        surface_job = pool.submit(smrf_surface, xyz, sp)
+        surface_job = pool.submit(smrf_surface, xyz, sp, shared)
         pool.shutdown(wait=False)
     if p.remove_low_outliers:
         lowest = imin[imin >= 0]  # a low outlier is the lowest point of its particle

@@ -40,7 +40,9 @@ judged against a flat-terrain slope where the terrain is flat.
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, replace
+from typing import Callable
 
 import numpy as np
 
@@ -116,8 +118,97 @@ def progressive_filter(surface: np.ndarray, cell: float, slope, window: float) -
     return common.opening_steps(surface, cell, (window,))[0] > slope
 
 
-def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+class SharedSurfaces:
+    """What several SMRF runs on the same points share, computed once and thread-safe.
+
+    ``auto`` runs SMRF twice (two members with the same cell and window, different tests) and
+    CSF fills its empty particles from a third SMRF surface: all three start from the same grid
+    of lowest points and its inpainted fill, and the disk openings of that fill do not depend
+    on the slope, so one opening sequence up to the largest window gives every window's steps
+    (:func:`workstation.ground.common.opening_steps`). The first provisional DEM of the
+    slope-adaptive test (``trend_slope``) is the provisional DEM of a run without it, so that
+    is shared too. Each item is computed by the first run that needs it, the others wait for
+    it; the results are those of the runs alone.
+
+    Parameters
+    ----------
+    xyz : (m, 3) float64
+        The local metric points every run filters (the same array object).
+    params : sequence of SMRFParams
+        The runs to come: their windows, per cell, are opened in one sequence.
+    """
+
+    def __init__(self, xyz: np.ndarray, params):
+        self.xyz = xyz
+        self._windows: dict[float, tuple] = {}
+        for p in params:
+            self._windows[p.cell] = tuple(sorted(set(self._windows.get(p.cell, ())) | {p.window}))
+        self._lock = threading.Lock()
+        self._items: dict = {}
+
+    def serves(self, xyz: np.ndarray, p: SMRFParams) -> bool:
+        """Whether a run of ``p`` on ``xyz`` can read from here (same points, a window opened
+        here, no grid low-outlier step, which changes the filled surface)."""
+        return xyz is self.xyz and not p.low_outliers and p.window in self._windows.get(p.cell, ())
+
+    def get(self, key, make: Callable):
+        """The item ``key``, made by ``make()`` on first use (one maker per key at a time)."""
+        with self._lock:
+            slot = self._items.setdefault(key, [threading.Lock(), None, False])
+        with slot[0]:
+            if not slot[2]:
+                slot[1], slot[2] = make(), True
+            return slot[1]
+
+    def grid(self, cell: float):
+        """:func:`_minimum_grid` of the points on ``cell``."""
+        return self.get(("grid", cell), lambda: _minimum_grid(self.xyz, cell))
+
+    def steps(self, cell: float, window: float) -> np.ndarray:
+        """The steepest opening step up to ``window`` of the filled grid on ``cell``."""
+        windows = self._windows[cell]
+
+        def make():
+            return dict(zip(windows, common.opening_steps(self.grid(cell).zfill, cell, windows)))
+
+        return self.get(("steps", cell), make)[window]
+
+
+@dataclass(frozen=True)
+class _MinimumGrid:
+    """The lowest point per cell of :func:`smrf_surface`'s grid (NaN where empty), its
+    inpainted fill, the grid's origin and the (row, col) of its cell (0, 0) on the lattice."""
+
+    zmin: np.ndarray
+    zfill: np.ndarray
+    origin: np.ndarray
+    off: tuple
+
+
+def _minimum_grid(xyz: np.ndarray, cell: float) -> _MinimumGrid:
+    """SMRF's step 1 on ``cell``-metre cells (see :class:`_MinimumGrid`)."""
+    # the grid starts at a multiple of the cell on prepare's 100 m lattice, with no empty margin
+    r, c, shape, origin = common.grid_index(xyz[:, :2], cell, common.aligned_origin(xyz[:, :2], cell))
+    off = tuple(int(v) for v in np.round(origin[::-1] / cell))  # (row, col) of cell (0, 0)
+    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
+    return _MinimumGrid(zmin, common.inpaint(zmin, off), origin, off)
+
+
+def _provisional(zmin: np.ndarray, bad: np.ndarray, zfill: np.ndarray, off) -> np.ndarray:
+    """``zmin`` without the ``bad`` cells, inpainted (``zfill`` when every cell is bad)."""
+    zp = zmin.copy()
+    zp[bad] = np.nan
+    if bad.all():
+        zp = zfill
+    return common.inpaint(zp, off)
+
+
+def smrf_surface(xyz: np.ndarray, p: SMRFParams,
+                 shared: SharedSurfaces | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Provisional DEM of SMRF on local metric points.
+
+    ``shared`` (:class:`SharedSurfaces` of these points) serves the grid, the opening steps
+    and a first provisional DEM computed once for several runs; the result is the same.
 
     Returns
     -------
@@ -127,13 +218,12 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
     empty_or_object : (rows, cols) bool
         Cells that were interpolated.
     """
-    # the grid starts at a multiple of the cell on prepare's 100 m lattice, with no empty margin
-    r, c, shape, origin = common.grid_index(xyz[:, :2], p.cell, common.aligned_origin(xyz[:, :2], p.cell))
-    off = tuple(int(v) for v in np.round(origin[::-1] / p.cell))  # (row, col) of cell (0, 0)
-    zmin, _ = common.grid_min(xyz[:, 2], r, c, shape)
+    if shared is not None and not shared.serves(xyz, p):
+        shared = None
+    g = shared.grid(p.cell) if shared is not None else _minimum_grid(xyz, p.cell)
+    zmin, zfill, off = g.zmin, g.zfill, g.off
     empty = np.isnan(zmin)
-    zfill = common.inpaint(zmin, off)
-    low = np.zeros(shape, dtype=bool)
+    low = np.zeros(zmin.shape, dtype=bool)
     if p.low_outliers:
         low = progressive_filter(-zfill, p.cell, 5.0, 1.0)
         if low.any():
@@ -141,32 +231,33 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams) -> tuple[np.ndarray, np.ndarray
             z2[low] = np.nan
             zfill = common.inpaint(z2, off)
     # the disk openings do not depend on the slope: both tests read one sequence
-    (steps,) = common.opening_steps(zfill, p.cell, (p.window,))
+    if shared is not None:
+        steps = shared.steps(p.cell, p.window)
+    else:
+        (steps,) = common.opening_steps(zfill, p.cell, (p.window,))
     obj = steps > p.slope
-    if p.trend_slope > 0:  # the per-cell slope
-        obj = steps > _trend_slope(zmin, empty | low | obj, p, off)
     bad = empty | low | obj
-    zp = zmin.copy()
-    zp[bad] = np.nan
-    if bad.all():
-        zp = zfill
-    zpro = common.inpaint(zp, off)
-    return zpro, origin, bad
+    if p.trend_slope > 0:  # the per-cell slope, from the provisional DEM of the plain test
+        if bad.all():
+            tol = np.full(zmin.shape, p.slope)
+        else:
+            if shared is not None:
+                first = shared.get(("first", p.cell, p.window, p.slope), lambda: _provisional(zmin, bad, zfill, off))
+            else:
+                first = _provisional(zmin, bad, zfill, off)
+            tol = common.trend_tolerance(first, p.cell, p.slope, p.trend_slope, p.window)
+        bad = empty | low | (steps > tol)
+    if shared is not None and p.trend_slope == 0:
+        zpro = shared.get(("first", p.cell, p.window, p.slope), lambda: _provisional(zmin, bad, zfill, off))
+    else:
+        zpro = _provisional(zmin, bad, zfill, off)
+    return zpro, g.origin, bad
 
 
-def _trend_slope(zmin: np.ndarray, bad: np.ndarray, p: SMRFParams, off=(0, 0)) -> np.ndarray:
-    """Per-cell slope of the object test (:func:`workstation.ground.common.trend_tolerance`) of
-    the first provisional DEM: ``zmin`` without ``bad`` cells, inpainted."""
-    if bad.all():
-        return np.full(zmin.shape, p.slope)
-    z = zmin.copy()
-    z[bad] = np.nan
-    return common.trend_tolerance(common.inpaint(z, off), p.cell, p.slope, p.trend_slope, p.window)
-
-
-def smrf_ground(xyz: np.ndarray, p: SMRFParams) -> np.ndarray:
-    """Ground flags (m,) bool of local metric points (m, 3) by SMRF."""
-    zpro, origin, _ = smrf_surface(xyz, p)
+def smrf_ground(xyz: np.ndarray, p: SMRFParams, shared: SharedSurfaces | None = None) -> np.ndarray:
+    """Ground flags (m,) bool of local metric points (m, 3) by SMRF (``shared``: see
+    :func:`smrf_surface`)."""
+    zpro, origin, _ = smrf_surface(xyz, p, shared)
     gy, gx = common.gradient(zpro, p.cell)
     gsurf = np.hypot(gx, gy)
     zs = common.bilinear(zpro, xyz[:, :2], p.cell, origin)

@@ -25,7 +25,7 @@ import json
 import time
 import warnings
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -34,7 +34,8 @@ from workstation.core.classes import ASPRSClass as C
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError, NotFittedError, StageError
 from workstation.core.log import get_logger
-from workstation.ground.water import WaterParams, water_surfaces
+from workstation.ground.bridges import BridgeParams
+from workstation.ground.refine import Refine, check_steps, declare, run_chain
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
 from .features import FEATURE_NAMES, FeatureParams, compute_features, features_and_segments, metric_xyz
@@ -44,6 +45,11 @@ log = get_logger(__name__)
 FORMAT = "workstation-point-classifier/1"
 #: Default shipped model.
 SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
+#: The refine steps the classifier can declare (:mod:`workstation.ground.refine`); ``bridges``,
+#: when declared, is last: it runs on the classes.
+STEPS = ("understorey", "raised_patches", "water", "bridges")
+#: The step switches: a boolean attribute each, overridable per call (:class:`StepSwitches`).
+SWITCHES = ("understorey", "raised_patches", "water", "roof_test", "bridges")
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
 _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
 
@@ -88,6 +94,45 @@ def _run_roof_job(tester, candidate):
     t = tester.result()
     tested, bad = t.test(candidate)
     return tested, bad, t.vote(candidate, tested, bad)
+
+
+@dataclass(frozen=True)
+class StepSwitches:
+    """Step switches for one call of :meth:`PointClassifier.predict_codes` (None: the
+    classifier's own, its attribute of the same name).
+
+    Attributes
+    ----------
+    understorey, raised_patches, water, bridges : bool or None
+        The refine steps of those names (see :class:`PointClassifier`).
+    roof_test : bool or None
+        The roof planarity test.
+    """
+
+    understorey: bool | None = None
+    raised_patches: bool | None = None
+    water: bool | None = None
+    roof_test: bool | None = None
+    bridges: bool | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Prediction:
+    """What :meth:`PointClassifier.predict_codes` returns.
+
+    Attributes
+    ----------
+    codes : (n,) uint8
+        ASPRS class codes.
+    confidence : (n,) float32
+        Confidence (0-1) of each point's class.
+    proba : (n, len(MODEL_CLASSES)) float32
+        The network's model-class probabilities (column 0: ground).
+    """
+
+    codes: np.ndarray
+    confidence: np.ndarray
+    proba: np.ndarray
 
 
 @dataclass
@@ -173,11 +218,18 @@ class PointClassifier:
         ``gate_promote_probability`` and it lies within ``gate_promote_height`` metres of the
         provisional surface: the network repairs the surface where the morphological filter
         cut into the terrain (ridges, embankments, steep edges).
+    steps : tuple of str
+        The refine chain after the gate, in order (:mod:`workstation.ground.refine`; names
+        from :data:`STEPS`, each run when its switch below is on): ``("understorey",
+        "raised_patches", "water", "bridges")``. The ground the steps take out takes the
+        network's best non-ground class. The roof test runs between the ground steps and
+        ``bridges``, which, when declared, is last and runs on the classes. Without the gate
+        only ``bridges`` runs.
     understorey : bool
-        Under canopy (read from the echoes), ground points above the lower envelope of the
-        ground take the network's best non-ground class
-        (:func:`workstation.ground.understorey.refine_understorey`, the step ``auto`` ends
-        with; needs return numbers, a no-op without them). A rule, not learned.
+        The ``understorey`` step: under canopy (read from the echoes), ground points above the
+        lower envelope of the ground leave it
+        (:func:`workstation.ground.understorey.refine_understorey`, a step of ``auto``'s chain
+        too; needs return numbers, a no-op without them). A rule, not learned.
     roof_test : bool
         Building points whose raw neighbourhood is not planar (neither the disc of the 24
         nearest raised points nor any of its four half-discs fits a plane within
@@ -190,26 +242,25 @@ class PointClassifier:
         test (0.08); raise it for a noisy scan, as lasclassify's documentation advises for
         its ``-planar``.
     raised_patches : bool
-        After the gate and the understorey step, patches of ground cut off from the terrain
-        by breaks of more than 1 m that drop on all sides (roofs, decks, platforms) take the
-        network's best non-ground class (:func:`workstation.ground.patches.raised_patches`,
-        the step ``auto`` uses after its vote). A rule, not learned. Off by default here
-        (it costs about 15 % of the inference rate, whose goal has less margin than that) and on
-        in ``ws ground --method ml`` (:mod:`workstation.ml.ground`): ISPRS 3.49 → 3.24 %.
+        The ``raised_patches`` step: patches of ground cut off from the terrain by breaks of
+        more than 1 m that drop on all sides (roofs, decks, platforms) leave the ground
+        (:func:`workstation.ground.patches.raised_patches`, a step of ``auto``'s chain too). A
+        rule, not learned. Off by default here (it slows inference) and on in ``ws ground
+        --method ml`` (:mod:`workstation.ml.ground`).
     water : bool
-        After those steps, ground points on still water (level, single-echo surfaces of
+        The ``water`` step: ground points on still water (level, single-echo surfaces of
         150 m² or more whose banks rise from them,
         :func:`workstation.ground.water.water_surfaces`) become water (ASPRS 9); their
         confidence falls from 1 at the surface's level to 0.5 at 0.15 m from it. A rule, not
-        learned: the network alone finds almost no water (F1 0.0 on Topography's lake, 0.22 on
-        the simulated validation tiles with water), having neither trustworthy intensity nor
-        density inputs. Models saved before load with it on.
+        learned: the network alone finds almost no water, having neither trustworthy
+        intensity nor density inputs. Models saved before load with it on.
     bridges : bool
-        Last, the points of bridge decks (ground-like surfaces dropping abruptly on both sides
-        to the gap they span and running on into the terrain at both ends; their parapets)
-        become class 17, whatever the network said (:func:`workstation.ground.bridges.bridge_decks`,
-        judged on the lowest echoes of every class but noise). The network, trained with decks
-        as "other", calls most of a deck ground or building. Models saved before load with it on.
+        The ``bridges`` step: the points of bridge decks (ground-like surfaces dropping
+        abruptly on both sides to the gap they span and running on into the terrain at both
+        ends; their parapets) become class 17, whatever the network said
+        (:func:`workstation.ground.bridges.bridge_decks`, judged on the lowest echoes of every
+        class but noise). The network, trained with decks as "other", calls most of a deck
+        ground or building. Models saved before load with it on.
     """
 
     def __init__(self, model: str = "mlp", hidden=(64, 64), dropout: float = 0.05, weight_decay: float = 1e-5, epochs: int = 40, batch: int = 2048,
@@ -221,7 +272,7 @@ class PointClassifier:
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
                  gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True,
                  roof_test: bool = True, roof_tolerance: float = 0.08, raised_patches: bool = False,
-                 water: bool = True, bridges: bool = True):
+                 water: bool = True, bridges: bool = True, steps=STEPS):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -258,6 +309,10 @@ class PointClassifier:
         self.raised_patches = bool(raised_patches)
         self.water = bool(water)
         self.bridges = bool(bridges)
+        self.steps = check_steps(steps, "steps", STEPS)
+        if "bridges" in self.steps[:-1]:
+            raise InvalidInputError("the bridges step must be the last of steps (it runs on the classes)",
+                                    f"e.g. {tuple(n for n in self.steps if n != 'bridges') + ('bridges',)}", field="steps")
         self.net_ = None
         self.rf_ = None
         self.report_: TrainReport | None = None
@@ -454,10 +509,6 @@ class PointClassifier:
                 sel = np.flatnonzero((xyz[:, 0] >= x0) & (xyz[:, 0] < x1) & (xyz[:, 1] >= y0) & (xyz[:, 1] < y1))
                 yield core, sel
 
-    def _proba_and_hag(self, cloud: Cloud) -> tuple[np.ndarray, np.ndarray]:
-        """Network probabilities (n, c) and the provisional-ground height and slope (n, 2)."""
-        return self._infer(cloud)[:2]
-
     def _roof_tester(self, cloud: Cloud, hag: np.ndarray):
         from .roofs import RoofParams, RoofTest
 
@@ -470,7 +521,7 @@ class PointClassifier:
 
         For a single tile the roof test's KD-tree is built beside the network, and its
         queries start on the building points (after the segment step and the gate) while
-        :meth:`_codes` runs the understorey step, which may add a few more (tested there)."""
+        :meth:`_codes` runs the refine chain, whose steps may add a few more (tested there)."""
         self._check_fitted()
         if cloud.n < 3:
             raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
@@ -486,7 +537,7 @@ class PointClassifier:
                 def build(hag, sub=sub, tester=tester):
                     tester.append(pool.submit(self._roof_tester, sub, hag.copy()))
 
-                want = whole and roof and self.roof_test
+                want = whole and roof
                 F, segments = features_and_segments(sub, self.feature_params, with_hag=build if want else None)
                 F = self._mask(F)
                 tester = tester[0] if tester else None
@@ -494,7 +545,7 @@ class PointClassifier:
                 if self.segment_weight > 0:
                     p = _segment_mean(p, segments, self.segment_weight)
                 job = None
-                if tester is not None:  # the candidates _codes will have, but the understorey's
+                if tester is not None:  # the candidates _codes will have, but the refine chain's
                     cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])
                     job = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
             finally:
@@ -509,32 +560,12 @@ class PointClassifier:
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
         """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes
         (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
-        return self._proba_and_hag(cloud)[0]
-
-    def _understorey(self, ground: np.ndarray, cloud: Cloud | None, xyz: np.ndarray | None = None) -> np.ndarray:
-        """``ground`` without the understorey under canopy (see ``understorey``)."""
-        if not self.understorey or cloud is None or not {"return_number", "number_of_returns"} <= set(cloud.attrs):
-            return ground
-        from workstation.ground.understorey import UnderstoreyParams, canopy_share, refine_understorey
-
-        p = UnderstoreyParams()
-        xyz = metric_xyz(cloud)[0] if xyz is None else xyz
-        share = canopy_share(xyz[:, :2], cloud.attrs["return_number"], cloud.attrs["number_of_returns"], p.canopy_cell)
-        return refine_understorey(xyz, ground, share, p)
-
-    def _water(self, ground: np.ndarray, cloud: Cloud | None, xyz: np.ndarray | None):
-        """(water points, their height above the surface's level) among ``ground`` (see
-        ``water``), or (None, None)."""
-        if not self.water or cloud is None:
-            return None, None
-        xyz = metric_xyz(cloud)[0] if xyz is None else xyz
-        water, offset = water_surfaces(xyz, ground, cloud.attrs.get("number_of_returns"))
-        return (water, offset) if water.any() else (None, None)
+        return self._infer(cloud)[0]
 
     def _nonplanar(self, candidate: np.ndarray, hag: np.ndarray, cloud: Cloud | None, job) -> np.ndarray | None:
         """Building candidates that fail the roof planarity test (see ``roof_test``); ``job``:
         the test started by :meth:`_infer`, completed here for the candidates it did not have."""
-        if not self.roof_test or cloud is None:
+        if cloud is None:
             return None
         if job is None:
             if int(np.count_nonzero(candidate)) < 3:
@@ -549,7 +580,7 @@ class PointClassifier:
         return fail
 
     def _gate(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
-        """Ground of the gate (before the understorey step)."""
+        """Ground of the gate (before the refine chain)."""
         hag, slope = hs[:, 0], hs[:, 1]
         band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
         ground = band & (P[:, 0] >= self.gate_min_probability)
@@ -557,79 +588,121 @@ class PointClassifier:
         return ground
 
     def _building_candidates(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
-        """Points that are building before the roof test (and the understorey step)."""
+        """Points that are building before the roof test (and the refine chain)."""
         if not self.ground_gate:
             return P.argmax(axis=1) == 2
         return (P[:, 1:].argmax(axis=1) == 1) & ~self._gate(P, hs)
 
-    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None = None, roof=None) -> tuple[np.ndarray, np.ndarray]:
-        """ASPRS codes and confidences from the probabilities and the provisional-ground
-        height and slope; ``cloud`` (the same points) enables the understorey step and the
-        roof planarity test (``roof``: the test :meth:`_infer` started, if any)."""
-        hag = hs[:, 0]
-        k = P.argmax(axis=1)
-        conf = P[np.arange(len(P)), k].astype(np.float32)
-        xyz = metric_xyz(cloud)[0] if cloud is not None and self.understorey else None
-        if self.ground_gate:
-            ground = self._gate(P, hs)
-            rest = P[:, 1:]
-            k2 = rest.argmax(axis=1) + 1
-            # (the roof test started by _infer runs on meanwhile)
-            ground = self._understorey(ground, cloud, xyz)
-            if self.raised_patches and cloud is not None:
-                from workstation.ground.patches import raised_patches
+    def switches(self, overrides: StepSwitches | None = None) -> dict[str, bool]:
+        """The step switches (:data:`SWITCHES`) of this classifier, those ``overrides`` sets
+        replaced."""
+        given = {} if overrides is None else {k: v for k, v in asdict(overrides).items() if v is not None}
+        return {n: bool(given.get(n, getattr(self, n))) for n in SWITCHES}
 
-                ground = raised_patches(metric_xyz(cloud)[0] if xyz is None else xyz, ground)
-            water, level_offset = self._water(ground, cloud, xyz)
-            terrain = ground  # ground and water: not building candidates
-            if water is not None:
-                ground = ground & ~water
-            fail = self._nonplanar((k2 == 2) & ~terrain, hag, cloud, roof)
-            c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
-            k = np.where(ground, 0, k2)
-            conf = np.where(ground, np.maximum(P[:, 0], 0.5), np.minimum(c2, 1.0)).astype(np.float32)
-            if water is not None:
-                k[water] = 3
-                conf[water] = 1.0 - np.abs(level_offset[water]) / (2 * WaterParams().point_tolerance)
+    def chain(self, overrides: StepSwitches | None = None) -> tuple:
+        """The refine chain (:func:`workstation.ground.refine.declare`): the declared ``steps``
+        that are switched on (``overrides``: switches for this call)."""
+        return declare(self.steps, self.switches(overrides))
+
+    def codes_from_proba(self, proba: np.ndarray, hag_slope: np.ndarray, cloud: Cloud | None = None,
+                         overrides: StepSwitches | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """ASPRS codes (n,) uint8 and confidences (n,) float32 from the model-class
+        probabilities ``proba`` (n, c) and the provisional-ground height and slope
+        ``hag_slope`` (n, 2) of ``cloud``'s points: the gate, the refine chain, the roof test and
+        the bridge step, which need ``cloud`` (None: the network's classes through the gate
+        only); ``overrides``: step switches for this call."""
+        return self._codes(np.asarray(proba), np.asarray(hag_slope), cloud, None, self.switches(overrides))
+
+    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, roof, on: dict) -> tuple[np.ndarray, np.ndarray]:
+        """ASPRS codes and confidences from the probabilities and the provisional-ground
+        height and slope; ``cloud`` (the same points) enables the refine chain and the roof
+        planarity test (``roof``: the test :meth:`_infer` started, if any); ``on``: the step
+        switches. The chain's ground steps run on the gate's ground, its ``bridges`` step on
+        the classes after the roof test (noise is no deck's surface)."""
+        hag = hs[:, 0]
+        chain = declare(self.steps, on) if cloud is not None else ()
+        xyz = metric_xyz(cloud)[0] if chain else None
+        if self.ground_gate:  # (the roof test started by _infer runs on meanwhile)
+            k, conf = self._gated(P, hs, cloud, xyz, tuple(p for p in chain if not isinstance(p, BridgeParams)))
         else:
-            fail = self._nonplanar(k == 2, hag, cloud, roof)
-        if fail is not None:
-            fail &= k == 2
-            if fail.any():  # the best class other than ground and building
-                others = np.array([1, 3, 4, 5])  # vegetation, water, other, noise
-                best = others[P[fail][:, others].argmax(axis=1)]
-                k = k.copy()
-                k[fail] = best
-                conf = conf.copy()
-                conf[fail] = P[fail, best] / np.maximum(P[fail][:, others].sum(axis=1), 1e-6)
+            k = P.argmax(axis=1)
+            conf = P[np.arange(len(P)), k].astype(np.float32)
+        if on["roof_test"]:
+            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, roof))
+        codes = self._asprs(k, hag)
+        decks = tuple(p for p in chain if isinstance(p, BridgeParams))
+        if decks:
+            codes[run_chain(Refine(xyz, k == 0, surface=k != 5), decks).deck] = C.BRIDGE_DECK
+        return codes, conf
+
+    def _gated(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, xyz, chain) -> tuple[np.ndarray, np.ndarray]:
+        """Model classes (n,) and confidences of the gate: its ground refined by ``chain`` is
+        class 0 (its water class 3), every other point takes the network's best non-ground
+        class."""
+        ground = self._gate(P, hs)
+        water = None
+        if chain:
+            state = run_chain(Refine(xyz, ground, return_number=cloud.attrs.get("return_number"),
+                                     number_of_returns=cloud.attrs.get("number_of_returns")), chain)
+            ground, water = state.ground, state.water
+        rest = P[:, 1:]
+        k2 = rest.argmax(axis=1) + 1
+        c2 = rest[np.arange(len(P)), k2 - 1] / np.maximum(1.0 - P[:, 0], 1e-6)
+        k = np.where(ground, 0, k2)
+        conf = np.where(ground, np.maximum(P[:, 0], 0.5), np.minimum(c2, 1.0)).astype(np.float32)
+        if water is not None and water.any():
+            k[water] = 3
+            conf[water] = state.water_confidence[water]
+        return k, conf
+
+    @staticmethod
+    def _roof_classes(P: np.ndarray, k: np.ndarray, conf: np.ndarray, fail) -> tuple[np.ndarray, np.ndarray]:
+        """Building points (class 2 of ``k``) that ``fail`` the roof test take the network's best
+        class other than ground and building, with its share of those classes' probability."""
+        if fail is None:
+            return k, conf
+        fail &= k == 2
+        if fail.any():
+            others = np.array([1, 3, 4, 5])  # vegetation, water, other, noise
+            best = others[P[fail][:, others].argmax(axis=1)]
+            k = k.copy()
+            k[fail] = best
+            conf = conf.copy()
+            conf[fail] = P[fail, best] / np.maximum(P[fail][:, others].sum(axis=1), 1e-6)
+        return k, conf
+
+    def _asprs(self, k: np.ndarray, hag: np.ndarray) -> np.ndarray:
+        """ASPRS codes (n,) uint8 of model classes ``k``: vegetation by height above the
+        provisional ground, noise low (7) below it and high (18) above it."""
         veg = np.where(hag < self.veg_low_max, C.LOW_VEGETATION,
                        np.where(hag < self.veg_medium_max, C.MEDIUM_VEGETATION, C.HIGH_VEGETATION))
         noise = np.where(hag < 0, C.LOW_POINT, C.HIGH_NOISE)
         table = np.array([C.GROUND, 0, C.BUILDING, C.WATER, C.UNCLASSIFIED, 0], np.uint8)
         codes = table[k]
         codes = np.where(k == 1, veg, codes)
-        codes = np.where(k == 5, noise, codes).astype(np.uint8)
-        if self.bridges and cloud is not None:
-            from workstation.ground.bridges import bridge_decks
+        return np.where(k == 5, noise, codes).astype(np.uint8)
 
-            deck = bridge_decks(metric_xyz(cloud)[0] if xyz is None else xyz, surface=k != 5, ground=k == 0)
-            codes[deck] = C.BRIDGE_DECK
-        return codes, conf
+    def predict_codes(self, cloud: Cloud, overrides: StepSwitches | None = None) -> Prediction:
+        """Codes, confidences and probabilities of every point (:class:`Prediction`);
+        ``overrides``: step switches for this call (e.g. ``StepSwitches(roof_test=False)``),
+        the classifier's own left as they are."""
+        on = self.switches(overrides)
+        P, hag, roof = self._infer(cloud, roof=on["roof_test"])
+        codes, conf = self._codes(P, hag, cloud, roof, on)
+        return Prediction(codes, conf, P)
 
     def predict(self, cloud: Cloud) -> np.ndarray:
         """ASPRS class codes (n,) uint8 for every point."""
-        P, hag, roof = self._infer(cloud, roof=True)
-        return self._codes(P, hag, cloud, roof)[0]
+        return self.predict_codes(cloud).codes
 
     def classify(self, cloud: Cloud) -> Cloud:
         """A new cloud with ``classification`` (u8 ASPRS) and ``confidence`` (f4, the winning
         class probability); every other attribute is kept unchanged."""
         t0 = time.perf_counter()
-        P, hag, roof = self._infer(cloud, roof=True)
-        codes, conf = self._codes(P, hag, cloud, roof)
-        if not np.isfinite(conf).all():
+        pred = self.predict_codes(cloud)
+        if not np.isfinite(pred.confidence).all():
             raise StageError("classify", "non-finite probabilities", "check the input coordinates for NaN")
-        out = cloud.with_attrs(classification=codes, confidence=conf)
+        out = cloud.with_attrs(classification=pred.codes, confidence=pred.confidence)
         return out.with_history("classify", {"model": self.model, **self.meta_.get("summary", {})}, time.perf_counter() - t0)
 
     # -- persistence -------------------------------------------------------------------------
@@ -647,7 +720,8 @@ class PointClassifier:
                 "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
                 "segment_weight": self.segment_weight, "understorey": self.understorey,
                 "roof_test": self.roof_test, "roof_tolerance": self.roof_tolerance,
-                "raised_patches": self.raised_patches, "water": self.water, "bridges": self.bridges}
+                "raised_patches": self.raised_patches, "water": self.water, "bridges": self.bridges,
+                "steps": list(self.steps)}
 
     def save(self, path, overwrite: bool = False) -> Path:
         """Write the MLP weights and config (loadable with ``torch.load(weights_only=True)``)."""

@@ -5,8 +5,12 @@ The classifier's ground class becomes :attr:`ASPRSClass.GROUND`; other points be
 and 2), which keep it unless ``reclassify`` — the convention of the other ground filters
 (:mod:`workstation.ground.common`).
 
-Still water stays in the ground here, as with the other filters (the classifier's water step
-is off); ``ws ground --water`` (:func:`workstation.ground.water.classify_water`) separates it.
+The classifier runs its refine chain (:meth:`workstation.ml.classifier.PointClassifier.predict_codes`)
+with these switches: the raised-patch step as ``raised_patches`` says (roofs and decks the
+gate let in), the water step off (still water stays in the ground, as with the other
+filters; ``ws ground --water``, :func:`workstation.ground.water.classify_water`, separates it)
+and the roof test off (it only moves building points among the object classes); the
+understorey and bridge steps as the model is saved (on in the shipped model).
 """
 
 from __future__ import annotations
@@ -51,16 +55,13 @@ def ml_ground(cloud: Cloud, params: MLGroundParams = MLGroundParams()) -> Cloud:
     """Classify ground with the point classifier; returns a new cloud (see module doc)."""
     from workstation.ground.common import OVERWRITABLE
 
-    from .classifier import PointClassifier
+    from .classifier import PointClassifier, StepSwitches
 
     t0 = time.perf_counter()
     clf = PointClassifier.load(params.model, device=params.device)
-    clf.roof_test = False  # it only moves building points among the object classes
-    clf.raised_patches = params.raised_patches  # roofs and decks the gate let in (ISPRS 3.49 -> 3.24 %)
-    clf.water = False  # water is bare earth here, as for the other filters (ws ground --water separates it)
-    P, hs = clf._proba_and_hag(cloud)
-    codes, _ = clf._codes(P, hs, cloud)
-    ground = (codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
+    pred = clf.predict_codes(cloud, StepSwitches(roof_test=False, raised_patches=params.raised_patches, water=False))
+    P = pred.proba
+    ground = (pred.codes == C.GROUND) & (P[:, 0] >= params.min_confidence)
     if not ground.any():
         raise StageError("ground_ml", "no point was classified as ground", "check the units and the input; try another method")
     old = np.asarray(cloud.attrs["classification"]) if "classification" in cloud.attrs else np.zeros(cloud.n, np.uint8)
