@@ -1,4 +1,4 @@
-"""Plain JSON from numpy-flavoured results: arrays to lists, NaN/inf to null."""
+"""Plain JSON from numpy-flavoured results: arrays to lists, NaN/inf to null; flat key paths."""
 
 from __future__ import annotations
 
@@ -45,3 +45,20 @@ def json_clean(o):
 def dumps(obj, **kwargs) -> str:
     """Strict JSON text of ``obj`` (numpy values converted, non-finite floats as null)."""
     return json.dumps(json_clean(json.loads(json.dumps(obj, default=to_jsonable))), allow_nan=False, **kwargs)
+
+
+def flatten(d, limit: int = 60, prefix: str = "", out: list | None = None) -> list:
+    """(dotted key path, leaf value) of a nested JSON object, depth first, at most ``limit``.
+
+    >>> flatten({"a": 1, "b": {"c": [2], "d": "x"}})
+    [('a', 1), ('b.c', [2]), ('b.d', 'x')]
+    """
+    out = [] if out is None else out
+    if isinstance(d, dict):
+        for k, v in d.items():
+            if len(out) >= limit:
+                break
+            flatten(v, limit, f"{prefix}{k}.", out)
+    elif prefix:
+        out.append((prefix[:-1], d))
+    return out

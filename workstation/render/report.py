@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
+from workstation.core.jsonutil import flatten
 from workstation.core.log import get_logger
 from workstation.io.textfile import read_text
 
@@ -73,18 +74,6 @@ class ReportParams:
     max_points: int = 2_000_000
     max_files: int = 12
     max_depth: int = 3
-
-
-def _flatten(d, prefix="", out=None, limit=60):
-    out = [] if out is None else out
-    if isinstance(d, dict):
-        for k, v in d.items():
-            if len(out) >= limit:
-                break
-            _flatten(v, f"{prefix}{k}.", out, limit)
-    elif prefix:
-        out.append((prefix[:-1], d))
-    return out
 
 
 # Work-folder parts that hold tool internals, not products (COLMAP text models, depth maps).
@@ -466,7 +455,7 @@ def _records_html(docs: dict, root: Path) -> list[str]:
         if srows:
             out.append(title + _table(srows, ("stage", "seconds", "parameters", "summary")))
         rest = {k: v for k, v in doc.items() if k not in ("stages", "steps", "history")} if isinstance(doc, dict) else doc
-        flat = [(k, v) for k, v in _flatten(rest) if not isinstance(v, (dict,))]
+        flat = [(k, v) for k, v in flatten(rest) if not isinstance(v, (dict,))]
         if flat:
             out.append(title + f"<details><summary>{len(flat)} figures</summary>"
                        + _table(flat, ("figure", "value")) + "</details>")

@@ -168,17 +168,11 @@ def _record_accuracies(docs: dict, root: Path, unit: str) -> list[tuple]:
     return rows
 
 
-def _flat_numbers(d, prefix: str = "", out: list | None = None, limit: int = 2000) -> list:
-    """(key path, number) of the numbers of a JSON document, depth first, at most ``limit``."""
-    out = [] if out is None else out
-    if isinstance(d, dict):
-        for k, v in d.items():
-            if len(out) >= limit:
-                break
-            _flat_numbers(v, f"{prefix}{k}.", out, limit)
-    elif isinstance(d, (int, float)) and not isinstance(d, bool) and prefix:
-        out.append((prefix[:-1], d))
-    return out
+def _flat_numbers(d, limit: int = 2000) -> list:
+    """(key path, number) of the numbers among the first ``limit`` leaves of a JSON document."""
+    from workstation.core.jsonutil import flatten
+
+    return [(k, v) for k, v in flatten(d, limit) if isinstance(v, (int, float)) and not isinstance(v, bool)]
 
 
 def _named_accuracies(docs: dict, root: Path, unit: str) -> list[tuple]:
