@@ -60,9 +60,7 @@ def lower_envelope(part, normals: np.ndarray, points: np.ndarray) -> list:
     plane is the lowest."""
     import shapely
 
-    # z_i(x, y) = g_i . (x, y) + h_i
-    g = -normals[:, :2] / normals[:, 2:3]
-    h = points[:, 2] - np.einsum("ij,ij->i", g, points[:, :2])
+    g, h = _plane_coefficients(normals, points)  # z_i(x, y) = g_i . (x, y) + h_i
     x0, y0, x1, y1 = part.bounds
     box = np.array([[x0 - 1, y0 - 1], [x1 + 1, y0 - 1], [x1 + 1, y1 + 1], [x0 - 1, y1 + 1]])
     out = []
@@ -229,14 +227,14 @@ def _repair(labels: np.ndarray, votes: np.ndarray, seg, meet: np.ndarray) -> np.
     return labels
 
 
-def agreement(faces: list, grid: np.ndarray, centres: np.ndarray, planes: np.ndarray) -> int:
+def agreement(faces: list, grid: np.ndarray, centres: np.ndarray) -> int:
     """Labelled raster cells whose centre lies in a face of their own plane; ``faces`` is
-    [(plane index, shapely Polygon)] and ``planes`` maps those indices to raster labels."""
+    [(plane index, shapely Polygon)], plane indices being the raster's labels."""
     m = grid >= 0
     if not faces or not m.any():
         return 0
     fi = _polygon_of([f for _, f in faces], centres[m])
-    k = planes[np.array([i for i, _ in faces])]
+    k = np.array([i for i, _ in faces])
     return int(np.count_nonzero((fi >= 0) & (grid[m] == k[np.maximum(fi, 0)])))
 
 
@@ -301,5 +299,4 @@ def roof_faces(poly, normals: np.ndarray, points: np.ndarray, grid: np.ndarray, 
     arr = arrangement_faces(poly, normals, points, grid, centres)
     if arr is None:
         return env
-    ident = np.arange(len(normals))
-    return arr if agreement(arr, grid, centres, ident) > agreement(env, grid, centres, ident) else env
+    return arr if agreement(arr, grid, centres) > agreement(env, grid, centres) else env

@@ -348,13 +348,13 @@ def read_reference(path, bounds=None) -> Cloud:
         c = read_isprs_text(p)
         if bounds is None:
             return c
-        b = np.asarray(bounds, dtype=np.float64)
-        half = len(b) // 2
-        inside = np.all((c.xyz[:, :half] >= b[[0, 1, 4][:half]]) & (c.xyz[:, :half] <= b[[2, 3, 5][:half]]), axis=1)
-        if not inside.any():
+        from workstation.io.registry import inside_bounds
+
+        c = inside_bounds(c, np.asarray(bounds, dtype=np.float64))
+        if c.n == 0:
             raise InvalidInputError("no reference points inside --bounds", "compare the box with the file's bounds",
                                     path=p, field="--bounds")
-        return c[inside]
+        return c
     from workstation.io import read_cloud
 
     return read_cloud(p, bounds=bounds)

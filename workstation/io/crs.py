@@ -152,6 +152,13 @@ def reproject(cloud: Cloud, to_crs: str) -> Cloud:
 
 # --------------------------------------------------------------------------- the unit model
 @lru_cache(maxsize=128)
+def unit_symbol(crs: str | None) -> str:
+    """Short symbol of a CRS's horizontal unit: "m", "ft", "usft", "°", another unit's name,
+    or "" when it has none (metres are assumed without a CRS: "m")."""
+    name = crs_units(crs).h_name
+    return {"metre": "m", "meter": "m", "foot": "ft", "US survey foot": "usft", "degree": "°"}.get(name, name or "")
+
+
 def crs_units(crs: str | None):
     """Horizontal and vertical units of a CRS string as :class:`workstation.core.units.Units`.
 

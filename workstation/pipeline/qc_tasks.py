@@ -21,7 +21,7 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-from workstation.qc.partial import block_side, blocks_over
+from workstation.qc.partial import block_side, blocks_over, boxes_meet
 
 from .manifest import task_key
 from .tasks import RunContext, peak_rss_mb
@@ -123,14 +123,10 @@ def qc_plan(ctx: RunContext, plan, points: list, dtm, file_hash: dict, folder: s
     fits = []
     for ix, iy in blocks:  # the files within a block of the block: those its cells' windows reach
         near = (ix * size - size, iy * size - size, ix * size + 2 * size, iy * size + 2 * size)
-        deps = [t for t, u in zip(pass2, units) if _meets(u[2], near)]
+        deps = [t for t, u in zip(pass2, units) if boxes_meet(u[2], near)]
         fits.append(Task(f"qc/fit/{ix}_{iy}", "qc", qc_fit_task, (ctx, plan.qc, ix, iy), [t.id for t in deps],
                          task_key("qc-fit", [p, ix, iy], (), [t.key for t in deps]), p, barrier=True))
     last = [surf, *pass2, *fits, *([dtm] if dtm else [])]
     merge = Task("qc/delivery", "qc", qc_task, (ctx, plan.qc, dtm.args[3] if dtm else None, str(ctx.out / "qc")),
                  [t.id for t in last], task_key("qc", p, (), [t.key for t in last]), p, barrier=True)
     return [cat, *pass1, surf, *pass2, *fits, merge]
-
-
-def _meets(b, box) -> bool:
-    return not (b[2] < box[0] or b[0] > box[2] or b[3] < box[1] or b[1] > box[3])

@@ -433,15 +433,10 @@ def _copy_viewer(tmp: Path) -> None:
     shutil.copytree(VIEWER_DIR / "licenses", tmp / "viewer" / "licenses")
 
 
-def _units(crs) -> str:
-    from workstation.io.crs import crs_units
-
-    u = crs_units(crs)
-    return {"metre": "m", "meter": "m", "foot": "ft", "US survey foot": "usft", "degree": "°"}.get(u.h_name, u.h_name or "")
-
-
 def _site_doc(title, clouds, stats, rasters, cameras, crs) -> dict:
     """The site.json document (see the module docstring)."""
+    from workstation.io.crs import unit_symbol
+
     b = np.array([c["bounds"] for c in clouds], float)
     bounds = [*b[:, :3].min(axis=0), *b[:, 3:].max(axis=0)]
     counts: dict[int, int] = {}
@@ -452,7 +447,7 @@ def _site_doc(title, clouds, stats, rasters, cameras, crs) -> dict:
             counts[k] = counts.get(k, 0) + n
     lo, hi = _percentiles(hist, (2, 98))
     origin = [round((bounds[0] + bounds[3]) / 2, 0), round((bounds[1] + bounds[4]) / 2, 0), round(bounds[2], 0)]
-    return {"version": SITE_VERSION, "title": title, "crs": crs, "units": _units(crs), "origin": origin,
+    return {"version": SITE_VERSION, "title": title, "crs": crs, "units": unit_symbol(crs), "origin": origin,
             "bounds": [float(v) for v in bounds], "clouds": clouds, "classes": _classes(counts),
             "intensity_range": [lo, max(hi, lo + 1.0)], "rasters": rasters, "cameras": cameras}
 

@@ -731,12 +731,11 @@ def _surface_distance(full: np.ndarray, full_faces: np.ndarray, coarse: np.ndarr
     """The Hausdorff distance between the vertices of two meshes (tileset metres) and the
     other mesh's surface, both ways (MeshLab's sampling filter, every vertex a sample): how
     far the simplified surface is from the full one at most."""
-    import pymeshlab
+    from workstation.interop.pymeshlab import import_pymeshlab, meshset_with
 
-    far = pymeshlab.PureValue(float(np.ptp(np.vstack([full, coarse]), axis=0).max()) * 2.0 + 1.0)
-    ms = pymeshlab.MeshSet()
-    ms.add_mesh(pymeshlab.Mesh(full, np.asarray(full_faces, np.int32)))
-    ms.add_mesh(pymeshlab.Mesh(coarse, np.asarray(coarse_faces, np.int32)))
+    pml = import_pymeshlab()
+    far = pml.PureValue(float(np.ptp(np.vstack([full, coarse]), axis=0).max()) * 2.0 + 1.0)
+    ms = meshset_with(pml.Mesh(full, np.asarray(full_faces, np.int32)), pml.Mesh(coarse, np.asarray(coarse_faces, np.int32)))
     d = 0.0
     for a, b, n in ((0, 1, len(full)), (1, 0, len(coarse))):
         r = ms.get_hausdorff_distance(sampledmesh=a, targetmesh=b, samplevert=True, sampleedge=False,

@@ -353,7 +353,7 @@ def fit_block(state_root: Path, ix: int, iy: int, params: QCParams) -> dict:
     ctx = grid2.window(own.row0 - r, own.row0 + own.rows + r, own.col0 - r, own.col0 + own.cols + r)
     x0, y1 = grid2.x0 + ctx.col0 * grid2.cell, grid2.y1 - ctx.row0 * grid2.cell
     reach = (x0, y1 - ctx.rows * grid2.cell, x0 + ctx.cols * grid2.cell, y1)
-    parts = [p for f in cat["files"] if _meets(cat["file_bounds"][f], reach, grid2.cell)
+    parts = [p for f in cat["files"] if boxes_meet(cat["file_bounds"][f], reach, grid2.cell)
              and (p := _window_keys(root / cat["names"][f], grid2, ctx.row0, ctx.row0 + ctx.rows,
                                     ctx.col0, ctx.col0 + ctx.cols)) is not None]
     keys, sums = _merged(parts)
@@ -366,7 +366,9 @@ def fit_block(state_root: Path, ix: int, iy: int, params: QCParams) -> dict:
     return {"points": 0, "cells": int(sel.size), **_times(t0, c0), "outputs": [str(out)]}
 
 
-def _meets(b, box, pad: float) -> bool:
+def boxes_meet(b, box, pad: float = 0.0) -> bool:
+    """Whether the 2-D boxes ``b`` and ``box`` (xmin, ymin, xmax, ymax) meet once ``b`` grows
+    by ``pad`` on every side."""
     return not (b[2] + pad < box[0] or b[0] - pad > box[2] or b[3] + pad < box[1] or b[1] - pad > box[3])
 
 

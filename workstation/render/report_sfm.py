@@ -89,14 +89,12 @@ def observation_residuals(rec) -> np.ndarray:
 
 def read_sfm_model(folder: Path, record: dict | None = None) -> SfMModel:
     """The points, camera centres and observation residuals of the SfM work folder ``folder``."""
-    from workstation.interop.pycolmap import find_model, import_pycolmap, reconstruction_from_pycolmap
+    from workstation.interop.pycolmap import find_model, read_model
 
     model = find_model(folder / "georef" / "0") or find_model(folder / "sparse" / "0")
-    pycolmap = import_pycolmap()
-    rec = reconstruction_from_pycolmap(pycolmap.Reconstruction(str(model)), None, with_tracks=True)
+    rec = read_model(model if model is not None else folder / "sparse" / "0", with_tracks=True)
     ids = sorted(rec.images)
-    centres = np.array([-np.asarray(rec.images[i].pose.R).T @ np.asarray(rec.images[i].pose.t) for i in ids],
-                       dtype=float).reshape(-1, 3)
+    centres = np.array([rec.images[i].pose.center for i in ids], dtype=float).reshape(-1, 3)
     pts = np.asarray(rec.points if rec.points is not None else np.empty((0, 3)), dtype=float)
     return SfMModel(folder, model, pts, centres, [rec.images[i].name for i in ids],
                     observation_residuals(rec) if pts.size else np.empty(0), dict(record or {}))

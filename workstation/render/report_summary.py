@@ -47,9 +47,10 @@ def _dtm_area(rasters: list[Path], kind_of) -> tuple[str, float] | None:
             h, w = max(1, ds.height // step), max(1, ds.width // step)
             valid = np.count_nonzero(ds.read_masks(1, out_shape=(h, w)))
             cell_area = abs(ds.transform.a * ds.transform.e) * (ds.height / h) * (ds.width / w)
-            unit = str(ds.crs.linear_units) if ds.crs is not None else ""
-        unit = "m" if unit.lower() in ("metre", "meter", "m") else (unit or "CRS units")
-        return p.name, float(valid * cell_area), f"{unit}²"
+            crs = ds.crs.to_wkt() if ds.crs is not None else None
+        from workstation.io.crs import unit_symbol
+
+        return p.name, float(valid * cell_area), f"{unit_symbol(crs) or 'CRS units'}²"
     return None
 
 
@@ -129,13 +130,13 @@ def _acc(rows: list, what: str, value, where: str, unit: str = "") -> None:
 
 
 def length_unit(clouds: dict) -> str:
-    """Short name of the horizontal unit of the clouds' CRS ("m", "ft", "US ft"; "m" without
-    a CRS, as the workstation assumes metres then); "CRS units" when the clouds disagree."""
-    from workstation.io.crs import crs_units
+    """Symbol of the horizontal unit of the clouds' CRS (:func:`workstation.io.crs.unit_symbol`;
+    "m" without a CRS, as the workstation assumes metres then); "CRS units" when the clouds
+    disagree or the unit has no name."""
+    from workstation.io.crs import unit_symbol
 
-    names = {crs_units(c.crs).h_name for c in clouds.values() if not isinstance(c, Exception) and c.crs}
-    short = {"metre": "m", "meter": "m", "foot": "ft", "US survey foot": "US ft"}
-    return short.get(names.pop(), "CRS units") if len(names) == 1 else ("m" if not names else "CRS units")
+    names = {unit_symbol(c.crs) for c in clouds.values() if not isinstance(c, Exception) and c.crs}
+    return (names.pop() or "CRS units") if len(names) == 1 else ("m" if not names else "CRS units")
 
 
 def _where(p: Path, key: str, root: Path) -> str:
