@@ -87,7 +87,9 @@ def register_task(out: str, name: str, scan: str, target: str | None, stage, *up
     laz = Path(out) / "register" / f"{name}.laz"
     laz.parent.mkdir(parents=True, exist_ok=True)
     write_cloud(moved, laz, overwrite=True)
-    side = Path(out) / ".ws-cache" / "register" / f"{name}.json"
+    from .runner import CACHE
+
+    side = Path(out) / CACHE / "register" / f"{name}.json"
     side.parent.mkdir(parents=True, exist_ok=True)
     doc = {"name": name, "scan": scan, "reference": target is None, "target": target, "points": int(src.n),
            "output": str(laz), **pose}
