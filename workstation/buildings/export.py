@@ -250,9 +250,10 @@ def read_footprints(path, cloud_crs=None) -> list:
     """Outer rings (list of (k, 2) arrays, closing vertex dropped) of the polygons of a GeoJSON
     (.geojson, .json) or GeoPackage (.gpkg, its first feature table) file, read by
     :func:`workstation.ops.vector.read_polygons`. When the file and ``cloud_crs`` both name a
-    CRS they must be the same one."""
+    CRS they must be the same one (:func:`workstation.io.crs.same_crs`)."""
     from pathlib import Path
 
+    from workstation.io.crs import same_crs
     from workstation.ops.vector import read_polygons
 
     p = Path(path)
@@ -260,7 +261,7 @@ def read_footprints(path, cloud_crs=None) -> list:
         raise InvalidInputError("footprints must be GeoJSON (.geojson, .json) or GeoPackage (.gpkg)",
                                 "convert with ogr2ogr -f GPKG", path=p)
     polys = read_polygons(p)
-    if polys.crs and cloud_crs and not _same_crs(polys.crs, cloud_crs):
+    if polys.crs and cloud_crs and not same_crs(polys.crs, cloud_crs):
         raise InvalidInputError(f"footprints are in {polys.crs} but the cloud is in {cloud_crs}",
                                 f"reproject them, e.g. ogr2ogr -t_srs {cloud_crs}", path=p)
     rings = []
@@ -272,16 +273,6 @@ def read_footprints(path, cloud_crs=None) -> list:
     if not rings:
         raise InvalidInputError("no polygon with three or more vertices", path=p)
     return rings
-
-
-def _same_crs(a, b) -> bool:
-    """Whether two CRS descriptions name the same CRS (pyproj when it can parse both)."""
-    try:
-        from pyproj import CRS
-
-        return CRS.from_user_input(str(a)) == CRS.from_user_input(str(b))
-    except Exception:
-        return str(a).upper() == str(b).upper()
 
 
 MTL = {"RoofSurface": (0.78, 0.27, 0.24), "WallSurface": (0.92, 0.90, 0.86), "GroundSurface": (0.35, 0.35, 0.35)}

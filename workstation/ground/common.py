@@ -307,11 +307,18 @@ def lowest_per_cell(xyz: np.ndarray, cell: float, origin=None, option: str = "--
     return imin[imin >= 0]
 
 
-def fill_nearest(grid: np.ndarray) -> np.ndarray:
-    """Fill NaN cells with the value of the nearest filled cell (Euclidean distance transform)."""
+def fill_nearest(grid: np.ndarray, empty: np.ndarray | None = None) -> np.ndarray:
+    """Fill the ``empty`` cells (by default the NaN ones) with the value of the nearest other
+    cell (Euclidean distance transform); ``grid`` itself when none is empty.
+
+    Raises
+    ------
+    ValueError
+        When every cell is empty (no value to fill with).
+    """
     from scipy import ndimage
 
-    mask = np.isnan(grid)
+    mask = np.isnan(grid) if empty is None else empty
     if not mask.any():
         return grid
     if mask.all():

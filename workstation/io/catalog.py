@@ -122,17 +122,6 @@ def read_tile_info(path) -> TileInfo:
                         crs_string(h, path), _is_copc(h))
 
 
-def _same_crs(a: str, b: str) -> bool:
-    if a == b:
-        return True
-    from pyproj import CRS
-
-    try:
-        return CRS.from_user_input(a).equals(CRS.from_user_input(b), ignore_axis_order=True)
-    except Exception:  # an unparsable CRS string is compared as text
-        return False
-
-
 def _crs_name(crs: str) -> str:
     from pyproj import CRS
 
@@ -159,12 +148,14 @@ def build_catalog(paths, crs: str | None = None, inputs_hint: str = "check [inpu
     InvalidInputError
         An unreadable header (naming the file), tiles in more than one CRS, or no points.
     """
+    from workstation.io.crs import same_crs
+
     tiles = [read_tile_info(p) for p in paths]
     if not tiles:
         raise InvalidInputError("there are no input tiles", inputs_hint)
     ref = crs or next((t.crs for t in tiles if t.crs), None)
     for t in tiles:
-        if t.crs and ref and not _same_crs(t.crs, ref):
+        if t.crs and ref and not same_crs(t.crs, ref):
             raise InvalidInputError(
                 f"CRS {_crs_name(t.crs)} differs from the other tiles' {_crs_name(ref)}",
                 "reproject the tile first (ws convert IN OUT --to-crs ...) or fix [project] crs; "

@@ -64,6 +64,22 @@ def parse_crs(crs: str, what: str = "crs"):
 
 
 @lru_cache(maxsize=128)
+def same_crs(a, b) -> bool:
+    """Whether two CRS descriptions (EPSG:code, WKT, PROJ string, pyproj CRS) name the same
+    CRS: equal text, or equal to pyproj with the axis order ignored (EPSG:4326 and OGC:CRS84
+    hold the same coordinates, x = longitude, in LAS and GeoJSON alike). A description that
+    pyproj cannot parse equals only the same text."""
+    if a == b:
+        return True
+    from pyproj import CRS
+
+    try:
+        return CRS.from_user_input(a).equals(CRS.from_user_input(b), ignore_axis_order=True)
+    except Exception:  # noqa: BLE001 - an unparsable CRS string is compared as text
+        return False
+
+
+@lru_cache(maxsize=128)
 def crs_info(crs: str | None, identify: bool = True) -> CRSInfo | None:
     """Name, EPSG code and units of a CRS string; None when ``crs`` is None.
 

@@ -428,7 +428,9 @@ def _split_vegetation(xyz: np.ndarray, cls: np.ndarray, low_max: float = 0.5, me
     g = np.isin(cls, (C.GROUND, C.ROAD_SURFACE))
     if not veg.any() or g.sum() < 3:
         return cls
-    from .features import fill_nearest, grid_bilinear, grid_reduce
+    from workstation.ground.common import fill_nearest
+
+    from .features import grid_bilinear, grid_reduce
 
     lo = xyz[:, :2].min(axis=0)
     xy = xyz[:, :2] - lo

@@ -52,6 +52,7 @@ import numpy as np
 from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.core.pca import sym3_eigen, sym3_eigenvalues, sym3_eigenvector_z  # noqa: F401 (sym3_eigen re-exported)
+from workstation.ground.common import fill_nearest
 
 #: Names of the feature columns, in order.
 FEATURE_NAMES: tuple[str, ...] = (
@@ -174,15 +175,6 @@ def grid_reduce(z, r, c, shape, fn, fill):
     g = np.full(shape[0] * shape[1], fill, np.float64)
     fn.at(g, r * shape[1] + c, z)
     return g.reshape(shape)
-
-
-def fill_nearest(grid: np.ndarray, empty: np.ndarray) -> np.ndarray:
-    from scipy import ndimage
-
-    if not empty.any():
-        return grid
-    idx = ndimage.distance_transform_edt(empty, return_distances=False, return_indices=True)
-    return grid[tuple(idx)]
 
 
 def opening_steps(z0: np.ndarray, cell: float, windows) -> list[np.ndarray]:

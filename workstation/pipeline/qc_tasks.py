@@ -53,18 +53,22 @@ def qc_catalog_task(ctx: RunContext, stage, units: list, blocks: list, size: flo
             "outputs": [str(state_root(ctx) / "catalog.json")]}
 
 
-def _in_catalog(ctx: RunContext, path: str) -> bool:
+def _catalog(ctx: RunContext) -> dict:
+    """``catalog.json`` of the run's QC states, read once per task; a point file missing from
+    its ``names`` did not exist when the catalog was made, so its per-file tasks have nothing
+    to do."""
     from workstation.qc.partial import read_json
 
-    return path in read_json(state_root(ctx) / "catalog.json")["names"]
+    return read_json(state_root(ctx) / "catalog.json")
 
 
 def qc_pass1_task(ctx: RunContext, stage, path: str, *upstream) -> dict:
     from workstation.qc.partial import pass1_file
 
-    if not _in_catalog(ctx, path):
+    cat = _catalog(ctx)
+    if path not in cat["names"]:
         return {"points": 0, "outputs": []}
-    return {**pass1_file(state_root(ctx), path, qc_params(ctx, stage)), "peak_rss_mb": peak_rss_mb()}
+    return {**pass1_file(state_root(ctx), path, qc_params(ctx, stage), cat), "peak_rss_mb": peak_rss_mb()}
 
 
 def qc_surface_task(ctx: RunContext, stage, *upstream) -> dict:
@@ -76,9 +80,10 @@ def qc_surface_task(ctx: RunContext, stage, *upstream) -> dict:
 def qc_pass2_task(ctx: RunContext, stage, path: str, *upstream) -> dict:
     from workstation.qc.partial import pass2_file
 
-    if not _in_catalog(ctx, path):
+    cat = _catalog(ctx)
+    if path not in cat["names"]:
         return {"outputs": []}
-    r = pass2_file(state_root(ctx), path, qc_params(ctx, stage))
+    r = pass2_file(state_root(ctx), path, qc_params(ctx, stage), cat)
     return {**r, "points": 0, "pass2_points": r["points"], "peak_rss_mb": peak_rss_mb()}
 
 

@@ -156,14 +156,15 @@ def _first_z(chunk) -> float | None:
     return float(np.median(chunk.xyz[keep, 2])) if keep.any() else None
 
 
-def pass1_file(state_root: Path, path: str, params: QCParams) -> dict:
-    """Pass 1 of ``ws qc`` on one file of the catalog, into ``<its folder>/pass1.npz``."""
+def pass1_file(state_root: Path, path: str, params: QCParams, cat: dict | None = None) -> dict:
+    """Pass 1 of ``ws qc`` on one file of the catalog, into ``<its folder>/pass1.npz``;
+    ``cat`` is ``catalog.json`` when the caller has read it already."""
     from .coverage import DensityPass
     from .classes import ClassPass1
     from .validate import FormatCheck
 
     t0, c0 = time.perf_counter(), time.process_time()
-    cat = read_json(Path(state_root) / "catalog.json")
+    cat = read_json(Path(state_root) / "catalog.json") if cat is None else cat
     grid, cp = _class_grid(cat, params)
     fmt, dens = FormatCheck(Path(path)), DensityPass(_units(cat))
     cls1 = ClassPass1(grid.window_over(cat["file_bounds"][path], pad=1), cp)
@@ -258,12 +259,24 @@ def _pass2_checks(cat: dict, p1: dict, path: str, params: QCParams, surf):
     return grid2, cov, sw, cls2, (CheckpointPass(cps, units) if cps is not None else None)
 
 
-def pass2_file(state_root: Path, path: str, params: QCParams) -> dict:
+def _off_window(grid, win, xy: np.ndarray) -> int:
+    """How many of the points ``xy`` fall in ``grid`` but outside its window ``win``: one
+    cell index on the whole grid serves both tests, a window computing a point's cell as its
+    grid does (:class:`~workstation.qc.context.QCGrid`)."""
+    row, col, inside = grid.index(xy)  # clipped into the grid: exact for the points inside it
+    r0, c0 = win.row0 - grid.row0, win.col0 - grid.col0  # the window's offsets in ``grid``
+    in_win = (row >= r0) & (row < r0 + win.rows) & (col >= c0) & (col < c0 + win.cols)
+    return int(np.count_nonzero(inside & ~in_win))
+
+
+def pass2_file(state_root: Path, path: str, params: QCParams, cat: dict | None = None) -> dict:
     """Pass 2 of ``ws qc`` on one file, into ``<its folder>/pass2.npz`` and the swath sums
-    ``swath_keys.npy`` / ``swath_sums.npy`` (sorted (swath, cell) keys on the 2×ANPS grid)."""
+    ``swath_keys.npy`` / ``swath_sums.npy`` (sorted (swath, cell) keys on the 2×ANPS grid);
+    ``cat`` is ``catalog.json`` when the caller has read it already."""
     t0, c0 = time.perf_counter(), time.process_time()
     root = Path(state_root)
-    cat, p1 = read_json(root / "catalog.json"), read_json(root / "pass1.json")
+    cat = read_json(root / "catalog.json") if cat is None else cat
+    p1 = read_json(root / "pass1.json")
     folder = root / cat["names"][path]
     _, surf = load_state(root / "surface.npz")
     grid2, cov, sw, cls2, cpp = _pass2_checks(cat, p1, path, params, surf)
@@ -274,9 +287,7 @@ def pass2_file(state_root: Path, path: str, params: QCParams) -> dict:
                 for c in (cov, sw, cls2, cpp):
                     if c is not None:
                         c.add(chunk, path)
-                _, in_win = cov.grid.flat(chunk.xyz[:, :2])
-                _, in_all = grid2.flat(chunk.xyz[:, :2])
-                off += int(np.count_nonzero(in_all & ~in_win))
+                off += _off_window(grid2, cov.grid, chunk.xyz[:, :2])
                 n += chunk.n
         except InvalidInputError as exc:
             raise StageError("qc", f"{path}: pass 2 cannot read what pass 1 read: {exc}", "check the file") from None
@@ -473,11 +484,12 @@ def qc_in_parts(paths, out_dir: Path, params: QCParams, work: Path, block_size: 
                                      max(b[2] for b in boxes), max(b[3] for b in boxes)), len(paths))
     blocks = blocks_over(boxes, size)
     write_catalog(paths, [f"f{i}" for i in range(len(paths))], work, blocks, size)
+    cat = read_json(Path(work) / "catalog.json")  # as the tasks read it, once for every file
     for p in paths:
-        pass1_file(work, p, params)
+        pass1_file(work, p, params, cat)
     pass1_merge(work, params)
     for p in paths:
-        pass2_file(work, p, params)
+        pass2_file(work, p, params, cat)
     for ix, iy in blocks:
         fit_block(work, ix, iy, params)
     return merge_report(work, params, Path(out_dir))

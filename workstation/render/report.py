@@ -30,6 +30,7 @@ import base64
 import datetime as _dt
 import html
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -45,7 +46,7 @@ from .html import fmt as _fmt
 from .html import img as _img
 from .html import png_b64 as _png_b64
 from .html import table as _table
-from .report_rasters import plot_raster, preview_rasters, raster_meta
+from .report_rasters import plot_raster, preview_rasters, raster_metas
 
 log = get_logger(__name__)
 
@@ -299,7 +300,8 @@ h2{break-after:avoid}img{max-width:100%}}
 @dataclass
 class _Gathered:
     """What the report reads of a work folder once: files found, records parsed, clouds read,
-    SfM models read."""
+    SfM models read; ``raster_meta(path)`` gives a raster's ``ws`` metadata, each file read
+    once (:func:`~.report_rasters.raster_metas`)."""
 
     root: Path
     jsons: list
@@ -312,6 +314,7 @@ class _Gathered:
     prod_rows: list
     cloud_cache: dict
     sfm: list
+    raster_meta: Callable[[Path], dict]
 
 
 def _gather(root: Path, params: ReportParams) -> _Gathered:
@@ -323,9 +326,11 @@ def _gather(root: Path, params: ReportParams) -> _Gathered:
     meshes = [p for p in _find(root, CLOUD_EXT + MESH_EXT, params.max_depth) if is_mesh_file(p)]
     rasters = _find(root, RASTER_EXT, params.max_depth)
     docs, notes = _read_records(jsons)
-    prod_rows, cloud_cache = _product_records(rasters[: params.max_files], clouds[: params.max_files], root)
+    meta_of = raster_metas()
+    prod_rows, cloud_cache = _product_records(rasters[: params.max_files], clouds[: params.max_files], root,
+                                              meta_of)
     return _Gathered(root, jsons, clouds, meshes, rasters, docs, notes, work_steps(docs, root), prod_rows,
-                     cloud_cache, _sfm_models(root, docs, params))
+                     cloud_cache, _sfm_models(root, docs, params), meta_of)
 
 
 def _sfm_models(root: Path, docs: dict, params: ReportParams) -> list:
@@ -358,7 +363,7 @@ def build_report(workdir, params: ReportParams = ReportParams()) -> str:
         raise InvalidInputError("not a folder", "give the work folder of a run", path=root)
     g = _gather(root, params)
     sections = _sections(g, params)
-    summary = summary_section(g, sections, lambda p: raster_meta(p).get("kind", ""))
+    summary = summary_section(g, sections, lambda p: g.raster_meta(p).get("kind", ""))
     name = html.escape(root.resolve().name)
     head = (f"<h1>Quality report: {name}</h1>"
             f'<p class="note">{html.escape(str(root.resolve()))} — generated '
@@ -378,7 +383,7 @@ def _sections(g: _Gathered, params: ReportParams) -> list[tuple[str, str, str]]:
 
     root = g.root
     ground = _ground_section(g)
-    out = [("previews", "Previews", "".join(_previews_html(root, g.rasters, params))),
+    out = [("previews", "Previews", "".join(_previews_html(root, g.rasters, params, g.raster_meta))),
            ("photogrammetry", "Photogrammetry", "".join(sfm_html(g.sfm, root) + georef_html(g.docs, root))),
            ("registration", "Registration", "".join(registration_html(find_all(g.docs, "registration"), root))),
            ("ground", "Ground", ground),
@@ -462,15 +467,16 @@ def _records_html(docs: dict, root: Path) -> list[str]:
     return out
 
 
-def _product_records(rasters: list[Path], clouds: list[Path], root: Path) -> tuple[list[tuple], dict]:
+def _product_records(rasters: list[Path], clouds: list[Path], root: Path, meta_of) -> tuple[list[tuple], dict]:
     """The products' own records: a folder of plain ws outputs has no JSON, but its rasters
-    carry their stage's metadata and its clouds their history. Returns the rows (file, stage,
-    seconds, figures) and the clouds read ({path: Cloud, or the exception that reading raised})."""
+    carry their stage's metadata (``meta_of(path)``) and its clouds their history. Returns the
+    rows (file, stage, seconds, figures) and the clouds read ({path: Cloud, or the exception
+    that reading raised})."""
     from workstation.io import read_cloud
 
     prod_rows = []
     for p in rasters:
-        m = raster_meta(p)
+        m = meta_of(p)
         if m.get("kind"):
             figs = {k: v for k, v in m.items() if k not in ("kind", "source", "params", "seconds", "units")}
             prod_rows.append((str(p.relative_to(root)), m["kind"], m.get("seconds", ""), figs))
@@ -559,14 +565,14 @@ def _meshes_html(meshes: list[Path], root: Path, params: ReportParams) -> list[s
     return out
 
 
-def _previews_html(root: Path, rasters: list[Path], params: ReportParams) -> list[str]:
+def _previews_html(root: Path, rasters: list[Path], params: ReportParams, meta_of) -> list[str]:
     """Previews: a plot per raster (ortho, hillshade, DTM, density...; a note for an
     unreadable one), then the PNG images of the folder (renders, plots; up to 2 MB, embedded as
-    they are; not the photos in an ``images`` folder)."""
+    they are; not the photos in an ``images`` folder). ``meta_of(path)``: a raster's metadata."""
     out = []
-    for p in preview_rasters(root, rasters, params.max_files):
+    for p in preview_rasters(root, rasters, params.max_files, meta_of):
         try:
-            r = plot_raster(p)
+            r = plot_raster(p, meta_of(p))
         except Exception as e:  # noqa: BLE001
             out.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
             continue

@@ -70,12 +70,22 @@ def raster_kind(path: Path, meta: dict | None = None, dtype=None, nodata=None) -
 MAX_PREVIEW_PX = 1500  # the longer side of a raster as read for its preview (decimated above)
 
 
-def _read_preview(path: Path):
-    """(bands (b, h, w) float with NaN for no data, cell size, dtype, nodata, metadata) of a
-    GeoTIFF, decimated so that its longer side is at most :data:`MAX_PREVIEW_PX`."""
-    import rasterio
-
+def _tags_meta(ds) -> dict:
+    """The ``ws`` metadata of an open GeoTIFF ({} when none or not a JSON object)."""
     from workstation.io.geotiff import META_TAG
+
+    try:
+        meta = json.loads(ds.tags().get(META_TAG) or "{}")
+    except ValueError:
+        return {}
+    return meta if isinstance(meta, dict) else {}
+
+
+def _read_preview(path: Path, meta: dict | None = None):
+    """(bands (b, h, w) float with NaN for no data, cell size, dtype, nodata, metadata) of a
+    GeoTIFF, decimated so that its longer side is at most :data:`MAX_PREVIEW_PX`; the
+    metadata is ``meta`` when given (already read), else read from the file."""
+    import rasterio
 
     with rasterio.open(path) as ds:
         step = max(1, -(-max(ds.height, ds.width) // MAX_PREVIEW_PX))
@@ -83,11 +93,9 @@ def _read_preview(path: Path):
         a = ds.read(list(range(1, shape[0] + 1)), out_shape=shape, masked=True).astype(np.float64).filled(np.nan)
         cell = (abs(ds.transform.a) or 1.0) * ds.width / shape[2]
         dtype, nodata = ds.dtypes[0], ds.nodata
-        try:
-            meta = json.loads(ds.tags().get(META_TAG) or "{}")
-        except ValueError:
-            meta = {}
-    return a, cell, dtype, nodata, meta if isinstance(meta, dict) else {}
+        if meta is None:
+            meta = _tags_meta(ds)
+    return a, cell, dtype, nodata, meta
 
 
 def _rgb(a: np.ndarray, dtype) -> np.ndarray:
@@ -103,16 +111,17 @@ def _rgb(a: np.ndarray, dtype) -> np.ndarray:
     return np.dstack([rgb, valid.astype(float)])
 
 
-def plot_raster(path: Path) -> tuple[str, str] | None:
+def plot_raster(path: Path, meta: dict | None = None) -> tuple[str, str] | None:
     """(caption, b64 png) for a GeoTIFF: an ortho (3 bands) in colour, hillshades in grey
     (0-255 shading, never tinted), elevations as a hillshade with an elevation tint, slope,
-    aspect, density and accuracy with their scales, diverging map for errors."""
+    aspect, density and accuracy with their scales, diverging map for errors. ``meta``: the
+    file's ``ws`` metadata when already read (:func:`raster_meta`), else read here."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    bands, cell, dtype, nodata, meta = _read_preview(path)
+    bands, cell, dtype, nodata, meta = _read_preview(path, meta)
     kind = "image" if bands.shape[0] >= 3 else raster_kind(path, meta, dtype, nodata)
     a = bands[0]
     fig, ax = plt.subplots(figsize=(6, 6 * a.shape[0] / max(a.shape[1], 1) + 0.5))
@@ -150,27 +159,35 @@ def raster_meta(path: Path) -> dict:
     try:
         import rasterio
 
-        from workstation.io.geotiff import META_TAG
-
         with rasterio.open(path) as ds:
-            meta = json.loads(ds.tags().get(META_TAG) or "{}")
+            return _tags_meta(ds)
     except Exception:  # noqa: BLE001 - a report shows what it can read
         return {}
-    return meta if isinstance(meta, dict) else {}
+
+
+def raster_metas():
+    """A :func:`raster_meta` that reads each file once: a report asks for a raster's
+    metadata in several places (preview order and picture, the summary's DTM, the appendix's
+    product records), and one such reader, passed down, opens the file for it only once.
+    The dicts it returns are shared, read-only."""
+    from functools import lru_cache
+
+    return lru_cache(maxsize=None)(raster_meta)
 
 
 # Order of the raster previews: ortho first, then shaded terrain, elevation, density, the rest.
 _PREVIEW_ORDER = {"image": 0, "hillshade": 1, "elevation": 2, "density": 3}
 
 
-def preview_rasters(root: Path, rasters: list[Path], limit: int) -> list[Path]:
+def preview_rasters(root: Path, rasters: list[Path], limit: int, meta_of=raster_meta) -> list[Path]:
     """The rasters worth a preview, ortho first: tiles of a mosaic (a ``tiles`` folder) and a
-    second file of one name (a copy in a published site) left out."""
+    second file of one name (a copy in a published site) left out. ``meta_of(path)`` gives a
+    raster's ``ws`` metadata (:func:`raster_metas` to read each file once)."""
     seen, keep = set(), []
     for p in rasters:
         if "tiles" in p.relative_to(root).parts[:-1] or p.name in seen:
             continue
         seen.add(p.name)
         keep.append(p)
-    rank = {p: _PREVIEW_ORDER.get(raster_kind(p, raster_meta(p)), 4) for p in keep}
+    rank = {p: _PREVIEW_ORDER.get(raster_kind(p, meta_of(p)), 4) for p in keep}
     return sorted(keep, key=lambda p: (rank[p], "dtm" not in p.stem.lower(), len(p.parts)))[:limit]
