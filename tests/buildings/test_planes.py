@@ -118,7 +118,7 @@ def test_scan_lines_far_apart_still_give_the_roof_planes():
     assert np.allclose(r.tilt_deg[big], np.degrees(np.arctan(3.0 / 4.5)), atol=1.0)
 
 
-@pytest.mark.parametrize("p", [1, 7, 40, 600])
+@pytest.mark.parametrize("p", [1, 7, 40, 64, 65, 600])
 def test_small_components_numbers_components_like_scipy(p):
     """Same labels, in the same order, as scipy's connected components: isolated nodes, self
     loops, repeated edges, chains (several propagation rounds) and the sparse fallback."""

@@ -323,12 +323,33 @@ def _shapely_point(xy):
     return shapely.Point(float(xy[0]), float(xy[1]))
 
 
+def _part_outline(traced: np.ndarray, cell: float, direction: float) -> np.ndarray:
+    """Regularised outline of a part's traced raster outline (k, 2): that of
+    :func:`~workstation.buildings.footprints.regularize` at the raster cell when it stays on
+    average within half a cell of the traced outline (the symmetric difference over the
+    perimeter; the raster places an edge to half a cell), else the regularisation with the
+    simplification tolerance of one cell. The footprint
+    tolerance of several cells suits outlines of tens of metres; on a part a few metres across
+    (a dormer) it can cut a corner and its edges, which then lie too far from the points for
+    :func:`refine_step_edges` to place them."""
+    import shapely
+
+    from .footprints import DP_TOLERANCE, regularize
+
+    ring = regularize(traced, cell, direction=direction)
+    ref = shapely.make_valid(shapely.Polygon(traced))
+    reg = shapely.make_valid(shapely.Polygon(ring)) if len(ring) >= 3 else shapely.Polygon()
+    if ref.length > 0 and reg.symmetric_difference(ref).area / ref.length > 0.5 * cell:
+        return regularize(traced, cell / DP_TOLERANCE, direction=direction)
+    return ring
+
+
 def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_plane=None):
     """Shapely polygons tiling the footprint, one list per part: each smaller part is its
-    traced raster region, regularised, its step edges placed between the points of the parts
-    (:func:`refine_step_edges`, when the points ``xy`` (n, 2) and their plane indices
-    ``point_plane`` (n,), -1 for none, are given) and clipped to the footprint; the largest
-    part is the rest."""
+    traced raster region, regularised (:func:`_part_outline`), its step edges placed between the
+    points of the parts (:func:`refine_step_edges`, when the points ``xy`` (n, 2) and their
+    plane indices ``point_plane`` (n,), -1 for none, are given) and clipped to the footprint;
+    the largest part is the rest."""
     import shapely
 
     from .footprints import regularize, trace_outline
@@ -353,8 +374,7 @@ def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_p
         mask = (full == q) & near_fp
         if cells[q] < 4:
             continue
-        ring = trace_outline(mask.astype(float), o2, cell)
-        ring = regularize(ring, cell, direction=direction)
+        ring = _part_outline(trace_outline(mask.astype(float), o2, cell), cell, direction)
         if len(ring) < 3:
             continue
         if xy is not None:
@@ -570,10 +590,12 @@ def is_watertight(solid: Solid) -> bool:
 def roof_type(faces: list, n_parts: int) -> str:
     """``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` (several flat parts) or
     ``complex`` (several parts, flat and sloped faces mixed, or valleys), from the faces that
-    hold at least 5 % of the roof area."""
+    hold at least 5 % of the roof area; the parts are counted over all faces, so that a small
+    part of its own (a dormer, a raised annex) makes the roof ``complex`` (``multilevel`` on a
+    flat roof) whatever its area."""
     area = np.array([f.area_m2 for f in faces])
-    faces = [f for f, a in zip(faces, area) if a >= 0.05 * area.sum()]
     n_parts = len({f.part for f in faces})
+    faces = [f for f, a in zip(faces, area) if a >= 0.05 * area.sum()]
     tilt = np.array([f.tilt_deg for f in faces])
     sloped = tilt >= FLAT_TILT_DEG
     if not sloped.any():

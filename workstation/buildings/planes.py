@@ -20,6 +20,10 @@ clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
 5. A finer pass over the points still left (:func:`_fine_pass`): normals from a third of the
    neighbours, searched among those points only, find faces too narrow for the first pass's
    neighbourhoods (dormer cheeks of 1-2 m); their planes go through steps 3-4 as well.
+6. Faces under ``min_points`` among the points still left (:func:`_residual_faces`): RANSAC
+   proposals accepted on statistical grounds (tilt standard error at the pooled noise, a
+   chi-square test of the residuals, a surface test and the Bayesian information criterion
+   against the planes already there) instead of a point count.
 
 The distance threshold combines the noise and the spacing: ``eps = sqrt((3 sigma)^2 +
 (s tan(angle))^2)``: 3 sigma keeps 99.7 % of Gaussian noise and the second term is the offset a
@@ -313,8 +317,9 @@ def _ransac_regions(xyz, regions, eps, params):
     return labels, np.array(normals).reshape(-1, 3), np.array(offsets, float)
 
 
-#: Largest graph labelled with the dense propagation of :func:`small_components` (nodes).
-DENSE_COMPONENTS = 512
+#: Largest graph labelled with the dense propagation of :func:`small_components` (nodes): about
+#: where scipy's sparse set-up (a few hundred microseconds) costs less than the dense rounds.
+DENSE_COMPONENTS = 64
 
 
 def small_components(p: int, i: np.ndarray, j: np.ndarray) -> np.ndarray:
@@ -429,6 +434,129 @@ def _fine_pass(xyz, labels, eps, spacing, frame, params):
     return out
 
 
+#: Largest standard error (degrees) of the tilt of a face recovered by :func:`_residual_faces`:
+#: the roof-plane tilt goal of issue 26 (1 degree) as one standard deviation.
+MAX_TILT_SE_DEG = 1.0
+
+
+#: Significance level of the chi-square test of a recovered face's residuals (:func:`_residual_faces`).
+PLANAR_LEVEL = 0.01
+
+
+def pooled_noise(xyz, labels, normals, offsets) -> float:
+    """Noise sigma (m) along the normal, pooled over every plane's points: sqrt(RSS / (n - 3 p))
+    with the three parameters of each plane taken out (the residuals of planes fitted by least
+    squares; the local PCA figure of :func:`local_geometry` is biased low, being the smallest of
+    three eigenvalues of small neighbourhoods)."""
+    on = labels >= 0
+    if not on.any():
+        return float("nan")
+    r = np.einsum("ij,ij->i", normals[labels[on]], xyz[on]) + offsets[labels[on]]
+    dof = on.sum() - 3 * len(np.unique(labels[on]))
+    return float(np.sqrt(np.sum(r * r) / dof)) if dof > 0 else float("nan")
+
+
+def tilt_standard_error(pts: np.ndarray, normal: np.ndarray, sigma: float) -> float:
+    """Standard error (degrees) of the tilt of the least-squares plane of ``pts`` (m, 3) with
+    unit ``normal`` (up), for noise ``sigma`` (m) along the normal. In the plane's own frame
+    (e1 downslope, e2 level; for a level plane e1 along the points' largest spread) the fitted
+    normal turns by a small vector with covariance sigma^2 (P^T P)^-1, P the centred in-plane
+    coordinates of the points; its part along e1 changes the tilt.
+
+    >>> xy = np.array([[x, y] for x in range(5) for y in range(4)], float)
+    >>> round(tilt_standard_error(np.column_stack([xy, np.zeros(20)]), np.array([0.0, 0, 1]), 0.03), 3)
+    0.272
+    """
+    c = pts - pts.mean(axis=0)
+    down = np.array([0.0, 0.0, -1.0]) - normal * -normal[2]  # -z projected on the plane
+    if np.linalg.norm(down) < 1e-9:  # level: the direction of the largest spread
+        down = np.linalg.svd(c, full_matrices=False)[2][0]
+    e1 = down / np.linalg.norm(down)
+    e2 = np.cross(normal, e1)
+    p = np.column_stack([c @ e1, c @ e2])
+    ptp = p.T @ p
+    if len(pts) < 4 or np.linalg.det(ptp) <= 1e-12 * np.trace(ptp) ** 2:
+        return float("inf")
+    return float(np.degrees(sigma * math.sqrt(np.linalg.inv(ptp)[0, 0])))
+
+
+def _surface(xyz: np.ndarray, pts: np.ndarray, normal: np.ndarray, d: float, eps: float) -> bool:
+    """Whether the plane (normal, d) of the points ``pts`` (m, 3) is a surface seen from above:
+    of all points ``xyz`` (n, 3) inside the plan outline (convex hull) of ``pts``, more lie on
+    it (within ``eps``) than off it. A roof face hides what is under it and carries little
+    above it; a slab through a tree crown holds a minority of the crown's points."""
+    import shapely
+
+    hull = shapely.MultiPoint(pts[:, :2]).convex_hull
+    inside = shapely.contains_xy(hull, xyz[:, 0], xyz[:, 1])
+    on = np.abs(xyz[inside] @ normal + d) < eps
+    return bool(on.sum() > (~on).sum())
+
+
+def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
+    """Faces too small for the count ``min_points`` among the points still on no plane (a dormer
+    cheek of 1-3 m^2 has 10-30 points at 10 points/m^2), accepted on statistical grounds
+    instead of a count. The free points are joined into clusters (two free points are linked
+    when one is among the other's ``idx`` neighbours, the neighbourhoods of the normals);
+    sequential RANSAC proposes planes in each, and a proposal with n inliers becomes a face when
+
+    * its tilt is determined to :data:`MAX_TILT_SE_DEG` (:func:`tilt_standard_error` at the
+      pooled noise sigma of the planes found, :func:`pooled_noise`): the support needed follows
+      from the noise, the spacing and the face's extent, not from a fixed count;
+    * its points lie on it as the noise predicts: RSS_1 / sigma^2 is not in the upper
+      :data:`PLANAR_LEVEL` tail of the chi-square law with n - 3 degrees of freedom (points
+      scattered through the slab of half-width ``eps``, a tree crown, give about three times
+      the sum of a plane's);
+    * it is a surface (:func:`_surface`): most points inside its outline lie on it; and
+    * it explains its points better than the planes already there, by the Bayesian information
+      criterion for Gaussian residuals of known sigma: (RSS_0 - RSS_1) / sigma^2 > 3 ln n, with
+      RSS_1 the squared residuals to the new plane (three parameters) and RSS_0 those to the
+      nearest plane among each point's neighbours' planes (all planes where none has one).
+
+    Returns the labels with the new faces numbered after the existing planes."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.stats import chi2
+
+    free = np.flatnonzero(labels < 0)
+    sigma = pooled_noise(xyz, labels, normals, offsets)
+    if len(free) < 4 or not len(normals) or not np.isfinite(sigma) or sigma <= 0:
+        return labels
+    pos = np.full(len(xyz), -1, np.int64)
+    pos[free] = np.arange(len(free))
+    a, b = np.repeat(np.arange(len(free)), idx.shape[1] - 1), pos[idx[free, 1:]].ravel()
+    _, comp = connected_components(coo_matrix((np.ones(int((b >= 0).sum())), (a[b >= 0], b[b >= 0])),
+                                              shape=(len(free),) * 2), directed=False)
+    d_all = np.abs(xyz[free] @ normals.T + offsets)  # (u, p)
+    cand = labels[idx[free]]
+    near = np.where(cand >= 0, np.take_along_axis(d_all, np.maximum(cand, 0), axis=1), np.inf).min(axis=1)
+    rss0 = np.where(np.isfinite(near), near, d_all.min(axis=1)) ** 2
+    rng = np.random.default_rng(params.seed)
+    out, nxt = labels.copy(), int(labels.max()) + 1
+    order = np.argsort(comp, kind="stable")
+    start = np.searchsorted(comp[order], np.arange(comp.max() + 2))
+    for c in np.flatnonzero(np.diff(start) >= 4):
+        members = order[start[c]:start[c + 1]]
+        for _ in range(params.max_planes_per_region):
+            if len(members) < 4:
+                break
+            nrm, d, inl = ransac_plane(xyz[free[members]], eps, params, rng)
+            m = int(inl.sum()) if nrm is not None else 0
+            if m < 4:
+                break
+            pts = xyz[free[members[inl]]]
+            rss1 = float(np.sum((pts @ nrm + d) ** 2))
+            gain = (float(rss0[members[inl]].sum()) - rss1) / sigma ** 2
+            if (gain <= 3.0 * math.log(m) or chi2.sf(rss1 / sigma ** 2, m - 3) < PLANAR_LEVEL
+                    or tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
+                    or not _surface(xyz, pts, nrm, d, eps)):
+                break
+            out[free[members[inl]]] = nxt
+            nxt += 1
+            members = members[~inl]
+    return out
+
+
 def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> RoofPlanes:
     """Planes of a cloud of roof points (n, 3) (m) by region growing, RANSAC and merging.
 
@@ -467,4 +595,10 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
     # pieces of one plane split by a gap of unassigned points touch only now
     labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
     labels, pn, pd, rmse, counts = _refit(loc, labels, params.min_points)
+    small = _residual_faces(loc, labels, pn, pd, idx, eps, params)
+    if small.max(initial=-1) > labels.max(initial=-1):  # faces accepted by test, not by count
+        labels, pn, pd, _, _ = _refit(loc, small, 3)
+        labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
+        labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
+        labels, pn, pd, rmse, counts = _refit(loc, labels, 3)
     return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg)
