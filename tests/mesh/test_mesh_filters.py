@@ -114,8 +114,8 @@ def test_poisson_trims_unsupported_surface():
     keep = u[:, 2] > 0
     cloud = Cloud(xyz[keep])
     oriented, _ = estimate_normals(cloud, NormalParams(k=10), viewpoints=CENTRE + [0, 0, 50.0])
-    closed, _ = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.0, threads=1))
-    trimmed, rec = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.3, threads=1))
+    closed, _ = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.0, support_trim=0.0, threads=1))
+    trimmed, rec = poisson(oriented, PoissonParams(depth=6, trim_quantile=0.3, support_trim=0.0, threads=1))
     from scipy.spatial import cKDTree
 
     tree = cKDTree(cloud.xyz)

@@ -1,4 +1,4 @@
-"""Filter chains: cloud -> normals -> surface -> clean -> decimate -> smooth -> colours -> quality.
+"""Filter chains: cloud -> normals -> surface -> refine -> clean -> decimate -> smooth -> colours -> quality.
 
 Each step is one named function with a frozen parameter dataclass; the chain records every
 step (parameters resolved to numbers, seconds, summary) in the result and in the mesh's
@@ -21,8 +21,8 @@ from workstation.core.geometry import require_spread
 
 from .normals import NormalParams, estimate_normals
 from .quality import QualityParams, mesh_quality
-from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, ball_pivoting, delaunay25d,
-                          poisson)
+from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, RefineParams, ball_pivoting,
+                          delaunay25d, poisson, refine_to_cloud)
 from .simplify import DecimateParams, SmoothParams, decimate, smooth
 from .steps import StepRecord, Timer
 from .texture import TextureParams, texture_from_photos
@@ -44,6 +44,9 @@ class MeshChainParams:
     normals : NormalParams
         Used by poisson and bpa.
     poisson, ball_pivoting, delaunay : parameter sets of the reconstruction methods
+    refine : RefineParams or None
+        Vertices projected onto the cloud's moving-least-squares surface right after the
+        reconstruction (averages the noise of photogrammetric clouds; None = off).
     clean : CleanParams or None
     decimate : DecimateParams or None
     smooth : SmoothParams or None
@@ -61,6 +64,7 @@ class MeshChainParams:
     poisson: PoissonParams = PoissonParams()
     ball_pivoting: BallPivotingParams = BallPivotingParams()
     delaunay: Delaunay25dParams = Delaunay25dParams()
+    refine: RefineParams | None = None
     clean: CleanParams | None = CleanParams()
     decimate: DecimateParams | None = None
     smooth: SmoothParams | None = None
@@ -127,6 +131,9 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
             mesh, rec = delaunay25d(work, params.delaunay)
         steps.append(rec)
         log.info("%s: %d faces in %.1f s", rec.name, mesh.n_faces, rec.seconds)
+        if params.refine is not None:
+            mesh, rec = refine_to_cloud(mesh, cloud, params.refine)
+            steps.append(rec)
         if params.clean is not None:
             cp = params.clean
             if params.quality is not None and params.quality.self_intersections:

@@ -7,11 +7,19 @@ measuring error on simplified surfaces", CGF 1998):
   point (how far the surface strays from the data: invented surface shows here);
 - cloud -> mesh: every cloud point's distance to the nearest point of the surface (how much
   of the data the surface misses).
+
+Against a known true surface, :func:`fscore_against_truth` gives the F-score of Knapitsch et
+al., "Tanks and Temples: benchmarking large-scale scene reconstruction", ACM TOG 2017, and
+Schöps et al., "A multi-view stereo benchmark with high-resolution images and multi-camera
+videos" (ETH3D), CVPR 2017: at a tolerance τ, precision is the share of the reconstruction
+(area-uniform samples of a mesh, or the points of a cloud) within τ of the true surface,
+recall the share of the true surface (area-uniform samples of the part that at least two
+cameras see) within τ of the reconstruction, and F = 2PR / (P + R).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -49,16 +57,27 @@ def _stats(d: np.ndarray) -> dict:
             "p50": float(np.percentile(d, 50)), "p95": float(np.percentile(d, 95)), "n": int(d.size)}
 
 
-def _sample_surface(mesh: Mesh, n: int, seed: int = 0) -> np.ndarray:
-    """n points (n, 3) sampled uniformly by area on the faces (seeded)."""
+def sample_surface(mesh: Mesh, n: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """n points (n, 3) sampled uniformly by area on the faces (seeded), and the face (n,) of
+    each: a face is drawn with probability proportional to its area, then a point uniformly
+    in it (two uniform barycentric coordinates folded back into the triangle)."""
+    if mesh.n_faces == 0:
+        raise InvalidInputError("the mesh has no faces to sample", field="faces")
     rng = np.random.default_rng(seed)
     a = mesh.face_areas()
+    if not a.sum() > 0:
+        raise InvalidInputError("the mesh has zero area: no surface to sample", field="faces")
     f = rng.choice(mesh.n_faces, size=int(n), p=a / a.sum())
     u, v = rng.random((2, int(n)))
     flip = u + v > 1
     u, v = np.where(flip, 1 - u, u), np.where(flip, 1 - v, v)
     t = mesh.vertices[mesh.faces[f]]
-    return t[:, 0] + u[:, None] * (t[:, 1] - t[:, 0]) + v[:, None] * (t[:, 2] - t[:, 0])
+    return t[:, 0] + u[:, None] * (t[:, 1] - t[:, 0]) + v[:, None] * (t[:, 2] - t[:, 0]), f
+
+
+def _sample_surface(mesh: Mesh, n: int, seed: int = 0) -> np.ndarray:
+    """n points (n, 3) sampled uniformly by area on the faces (seeded)."""
+    return sample_surface(mesh, n, seed)[0]
 
 
 def _hausdorff(surface, points, sample_faces: bool, n: int, maxdist: float) -> np.ndarray:
@@ -181,3 +200,148 @@ def mesh_quality(mesh: Mesh, cloud: Cloud | None = None, params: QualityParams =
         out["mesh_to_cloud_floor"] = _stats(nearest_point_floor(samples, ref.xyz))
         out["cloud_to_mesh"] = _stats(_hausdorff(m, c, False, ref.n, diag))
     return out
+
+
+# ---------------------------------------------------------------------------------------------
+# F-score against a true surface
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class FScoreParams:
+    """Parameters of :func:`fscore_against_truth`.
+
+    Attributes
+    ----------
+    taus : tuple of float
+        Distance tolerances τ (CRS units).
+    truth_samples : int
+        Area-uniform samples drawn on the true target surface before the visibility test
+        (count).
+    recon_samples : int
+        Area-uniform samples of a reconstructed mesh; a cloud with more points is reduced to a
+        seeded random subset of this size (count).
+    min_views : int
+        A true sample counts for recall when at least this many cameras see it (in frame, in
+        front, not hidden by the true scene).
+    seed : int
+    """
+
+    taus: tuple = field(default=(0.01, 0.02, 0.05))
+    truth_samples: int = 200_000
+    recon_samples: int = 200_000
+    min_views: int = 2
+    seed: int = 0
+
+    def __post_init__(self):
+        if not self.taus or any(not np.isfinite(t) or t <= 0 for t in self.taus):
+            raise InvalidInputError("every tolerance τ must be a positive number", field="taus")
+        if self.truth_samples < 1 or self.recon_samples < 1 or self.min_views < 1:
+            raise InvalidInputError("sample counts and min_views must be ≥ 1", field="truth_samples")
+
+
+def closest_on_mesh(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distance (n,) from each point (n, 3) to the nearest point of a triangle mesh, and the
+    index (n,) of that nearest face (Open3D's closest-point query, in float32 around the
+    mesh's centre so that map coordinates keep their precision)."""
+    import open3d as o3d
+
+    V = np.asarray(vertices, np.float64)
+    o = V.mean(axis=0)
+    rs = o3d.t.geometry.RaycastingScene()
+    rs.add_triangles(o3d.core.Tensor((V - o).astype(np.float32)),
+                     o3d.core.Tensor(np.ascontiguousarray(faces, np.uint32)))
+    p = np.asarray(points, np.float64) - o
+    q = rs.compute_closest_points(o3d.core.Tensor(p.astype(np.float32)))
+    return (np.linalg.norm(q["points"].numpy().astype(np.float64) - p, axis=1),
+            q["primitive_ids"].numpy().astype(np.int64))
+
+
+def views_seeing(points: np.ndarray, rec, vertices: np.ndarray, faces: np.ndarray,
+                 rel_tol: float = 0.002, abs_tol: float = 1e-3) -> np.ndarray:
+    """How many cameras of ``rec`` (a Reconstruction in the points' frame) see each point
+    (n, 3) of a surface: in front of the camera, inside its frame (OpenCV distortion
+    included), and not hidden by the occluding mesh ``vertices``/``faces`` (the ray from the
+    camera centre hits the mesh no nearer than the point, within ``rel_tol`` × range +
+    ``abs_tol``). The loop runs over the cameras; each is one vectorised ray cast."""
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.photogrammetry.collinearity import project
+
+    V = np.asarray(vertices, np.float64)
+    o = V.mean(axis=0)
+    scene = RaycastScene(V - o, faces)
+    P = np.asarray(points, np.float64)
+    count = np.zeros(len(P), np.int64)
+    for im in rec.images.values():
+        cam = rec.cameras[im.camera_id]
+        C = np.asarray(im.pose.center, np.float64)
+        d = P - C
+        dist = np.linalg.norm(d, axis=1)
+        uv, z = project(P, cam, im.pose, return_depth=True)
+        inside = (z > 0) & (uv[:, 0] >= -0.5) & (uv[:, 0] < cam.width - 0.5) & (uv[:, 1] >= -0.5) & \
+            (uv[:, 1] < cam.height - 0.5)
+        t, _ = scene.cast(np.broadcast_to(C - o, d.shape), d / np.maximum(dist, 1e-12)[:, None])
+        count += inside & (t >= dist - (rel_tol * dist + abs_tol))
+    return count
+
+
+def fscore(precision_dist: np.ndarray, recall_dist: np.ndarray, taus) -> dict:
+    """Precision, recall and F-score per tolerance from the distances of the reconstruction's
+    samples to the truth (``precision_dist``) and of the truth's samples to the
+    reconstruction (``recall_dist``). Keys are the tolerances; F is 0 where P + R = 0."""
+    pd_, rd = np.asarray(precision_dist, float), np.asarray(recall_dist, float)
+    if pd_.size == 0 or rd.size == 0:
+        raise InvalidInputError("an F-score needs reconstruction and truth samples",
+                                "the reconstruction may lie outside the true target, or no camera sees it")
+    out = {}
+    for tau in taus:
+        p, r = float(np.mean(pd_ <= tau)), float(np.mean(rd <= tau))
+        out[float(tau)] = {"precision": p, "recall": r, "f": 2 * p * r / (p + r) if p + r > 0 else 0.0}
+    return out
+
+
+def fscore_against_truth(recon, truth: Mesh, rec, target: np.ndarray | None = None,
+                         params: FScoreParams = FScoreParams()) -> dict:
+    """F-score of a reconstruction (a :class:`Mesh`, or (n, 3) points) against a true scene.
+
+    ``truth`` is the whole true scene (it hides what the cameras of ``rec`` cannot see);
+    ``target`` (m,) bool marks its faces that are measured (default all). Recall: area-uniform
+    samples of the target faces seen by ≥ ``params.min_views`` cameras, distance to the
+    reconstructed surface (mesh) or nearest point (cloud, KD-tree). Precision: samples of the
+    reconstruction whose nearest true face is a target face (the reconstruction cropped to
+    the target as Tanks and Temples crops to its bounding volume), distance to the true
+    surface.
+
+    Returns
+    -------
+    dict
+        ``scores`` ({τ: {precision, recall, f}}), ``recon_samples`` (after the crop),
+        ``truth_samples`` (seen ones), ``truth_seen_share``, ``precision_dist`` and
+        ``recall_dist`` medians and 90th percentiles.
+    """
+    from scipy.spatial import cKDTree
+
+    faces = np.asarray(truth.faces, np.int64)
+    target = np.ones(len(faces), bool) if target is None else np.asarray(target, bool)
+    if target.shape != (len(faces),) or not target.any():
+        raise InvalidInputError("target must be one bool per true face, with at least one True", field="target")
+    tm = Mesh(truth.vertices, faces[target])
+    ts, _ = sample_surface(tm, params.truth_samples, params.seed)
+    seen = views_seeing(ts, rec, truth.vertices, faces) >= params.min_views
+    ts = ts[seen]
+    if isinstance(recon, Mesh):
+        rs, _ = sample_surface(recon, params.recon_samples, params.seed + 1)
+        rd, _ = closest_on_mesh(ts, recon.vertices, recon.faces)
+    else:
+        rs = np.asarray(recon, np.float64)
+        if rs.ndim != 2 or rs.shape[1] != 3 or len(rs) == 0:
+            raise InvalidInputError("the reconstruction must be a Mesh or (n, 3) points", field="recon")
+        rd = cKDTree(rs).query(ts)[0]
+        if len(rs) > params.recon_samples:
+            rs = rs[np.sort(np.random.default_rng(params.seed).choice(len(rs), params.recon_samples, replace=False))]
+    pdist, pf = closest_on_mesh(rs, truth.vertices, faces)
+    pdist = pdist[target[pf]]
+    out = {"scores": fscore(pdist, rd, params.taus), "recon_samples": int(pdist.size), "truth_samples": int(len(ts)),
+           "truth_seen_share": float(seen.mean())}
+    for name, d in (("precision_dist", pdist), ("recall_dist", rd)):
+        out[name] = {"p50": float(np.median(d)), "p90": float(np.percentile(d, 90))}
+    return out
+

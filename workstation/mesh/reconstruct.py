@@ -68,6 +68,14 @@ class PoissonParams:
     trim_quantile : float
         Vertices whose density is below this quantile of the output vertices' densities are
         removed, with their faces (fraction in [0, 1); 0 = keep the closed surface).
+    support_trim : float
+        Vertices farther from the nearest input point than this many point spacings (the
+        median nearest-neighbour distance, :func:`~workstation.mesh.steps.point_spacing`) are
+        removed, with their faces (dimensionless; 0 = off). Poisson closes the surface over
+        holes and unseen parts; such invented surface has no data near it, while surface over
+        the data lies within about one spacing of a point. The density trim misses invented
+        sheets spanning small gaps, whose density is interpolated from their rims. Default 3
+        (chosen on the F-score of a simulated photo rig's dense cloud, checked on laser scans).
     backend : {"open3d", "pymeshlab"}
         Open3D's build of Kazhdan's screened PoissonRecon (default) or MeshLab's filter (the
         same algorithm and parameters). MeshLab's build is the slow Linux Poisson of PyMeshLab
@@ -88,6 +96,7 @@ class PoissonParams:
     scale: float = 1.1
     iterations: int = 8
     trim_quantile: float = 0.05
+    support_trim: float = 3.0
     backend: str = "open3d"
     threads: int = 0
 
@@ -96,6 +105,8 @@ class PoissonParams:
             raise InvalidInputError(f"depth={self.depth} out of 1..16", field="depth")
         if not 0.0 <= self.trim_quantile < 1.0:
             raise InvalidInputError(f"trim_quantile={self.trim_quantile} not in [0, 1)", field="trim_quantile")
+        if not (np.isfinite(self.support_trim) and self.support_trim >= 0):
+            raise InvalidInputError(f"support_trim={self.support_trim} must be ≥ 0", field="support_trim")
         if self.backend not in POISSON_BACKENDS:
             raise InvalidInputError(f"unknown Poisson backend '{self.backend}'", "use open3d or pymeshlab",
                                     field="backend")
@@ -191,14 +202,23 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
             q = np.asarray(mesh.vertex_attrs["quality"], dtype=np.float64)
             thr = float(np.quantile(q, params.trim_quantile))
             mesh = keep_vertices(mesh, q >= thr)
+        spacing, n_support = None, 0
+        if params.support_trim > 0 and mesh.n_faces:
+            spacing = point_spacing(cloud.xyz)
+            reach = params.support_trim * spacing
+            far = support_distance(mesh.vertices, cloud.xyz, reach) > reach
+            n_support = int(far.sum())
+            mesh = keep_vertices(mesh, ~far)
     rec = StepRecord(
         "poisson",
         {"depth": params.depth, "full_depth": params.full_depth, "samples_per_node": params.samples_per_node,
          "point_weight": params.point_weight, "scale": params.scale, "iterations": params.iterations,
-         "trim_quantile": params.trim_quantile, "backend": params.backend, "threads": threads},
+         "trim_quantile": params.trim_quantile, "support_trim": params.support_trim, "backend": params.backend,
+         "threads": threads},
         t.seconds,
         {"faces_untrimmed": n_before, "faces": mesh.n_faces, "vertices": mesh.n_vertices,
-         "density_threshold": thr, "cpu_seconds": round(t.cpu, 3)},
+         "density_threshold": thr, "point_spacing": spacing, "vertices_without_support": n_support,
+         "cpu_seconds": round(t.cpu, 3)},
     )
     return _check_mesh("poisson", mesh), rec
 
@@ -220,6 +240,89 @@ def _poisson_open3d(cloud: Cloud, params: PoissonParams, threads: int) -> Mesh:
         point_weight=float(params.point_weight))
     return Mesh(np.asarray(m.vertices) + origin, np.asarray(m.triangles, dtype=np.int64),
                 {"quality": np.asarray(dens, dtype=np.float32)}, crs=cloud.crs)
+
+
+@dataclass(frozen=True)
+class RefineParams:
+    """Projection of a mesh's vertices onto the moving-least-squares surface of its cloud.
+
+    Attributes
+    ----------
+    k : int
+        Cloud points per local plane (count): the noise of the cloud is averaged over about
+        this many points; more smooths across edges narrower than their footprint.
+    chunk : int
+        Vertices projected per vectorised batch (count; bounds the memory to about
+        ``chunk × k × 100`` bytes).
+    """
+
+    k: int = 32
+    chunk: int = 50_000
+
+    def __post_init__(self):
+        if self.k < 3:
+            raise InvalidInputError(f"k={self.k}: a plane fit needs at least 3 points", field="k")
+        if self.chunk < 1:
+            raise InvalidInputError("chunk must be ≥ 1", field="chunk")
+
+
+def refine_to_cloud(mesh: Mesh, cloud: Cloud, params: RefineParams = RefineParams()) -> tuple[Mesh, StepRecord]:
+    """Move every vertex to its foot on the Gaussian-weighted least-squares plane of its ``k``
+    nearest cloud points: one first-order MLS projection step (Alexa et al., "Computing and
+    rendering point set surfaces", IEEE TVCG 2003, with a plane as the local fit; bandwidth the
+    median distance to the k-th neighbour). Screened Poisson interpolates its points, so the
+    noise of a photogrammetric cloud stays in the surface; the projection averages it over the
+    points of every view near the vertex. Faces and attributes are kept.
+
+    Returns
+    -------
+    (Mesh, StepRecord)
+        The record's summary gives the median and 95th percentile of the vertex moves.
+    """
+    from scipy.spatial import cKDTree
+
+    if cloud.n < params.k:
+        raise InvalidInputError(f"{cloud.n} points: too few for planes of k={params.k}", field="k")
+    with Timer() as t:
+        origin = cloud.xyz.mean(axis=0)
+        xyz = cloud.xyz - origin
+        v = mesh.vertices - origin
+        tree = cKDTree(xyz)
+        d, _ = tree.query(v[: min(len(v), 20_000)], k=params.k)
+        h = float(np.median(d[:, -1]))
+        out = np.empty_like(v)
+        for a in range(0, len(v), params.chunk):
+            out[a:a + params.chunk] = _mls_plane_foot(v[a:a + params.chunk], xyz, tree, params.k, h)
+        move = np.linalg.norm(out - v, axis=1)
+        refined = Mesh(out + origin, mesh.faces, dict(mesh.vertex_attrs), dict(mesh.face_attrs), crs=mesh.crs,
+                       meta=dict(mesh.meta))
+    rec = StepRecord("refine_mls", {"k": params.k, "bandwidth": h}, t.seconds,
+                     {"move_p50": float(np.median(move)) if move.size else 0.0,
+                      "move_p95": float(np.percentile(move, 95)) if move.size else 0.0})
+    return refined, rec
+
+
+def _mls_plane_foot(v: np.ndarray, xyz: np.ndarray, tree, k: int, h: float) -> np.ndarray:
+    """Feet (m, 3) of the points ``v`` on the Gaussian-weighted (bandwidth ``h``) planes of
+    their k nearest points of ``xyz`` (indexed by ``tree``)."""
+    d, idx = tree.query(v, k=k)
+    w = np.exp(-(d / max(h, 1e-300)) ** 2) + 1e-12
+    nb = xyz[idx]
+    c = np.einsum("mk,mki->mi", w, nb) / w.sum(axis=1, keepdims=True)
+    x = nb - c[:, None, :]
+    _, vec = np.linalg.eigh(np.einsum("mk,mki,mkj->mij", w, x, x))
+    n = vec[:, :, 0]
+    return v - np.einsum("mi,mi->m", v - c, n)[:, None] * n
+
+
+def support_distance(vertices: np.ndarray, xyz: np.ndarray, upper: float = np.inf) -> np.ndarray:
+    """Distance (n,) from each vertex to the nearest point of ``xyz`` (cKDTree); distances
+    beyond ``upper`` come back as ``inf`` (the search stops there, which keeps it fast)."""
+    from scipy.spatial import cKDTree
+
+    origin = np.asarray(xyz, np.float64).mean(axis=0)
+    return cKDTree(np.asarray(xyz, np.float64) - origin).query(np.asarray(vertices, np.float64) - origin,
+                                                              distance_upper_bound=float(upper))[0]
 
 
 def keep_vertices(mesh: Mesh, keep: np.ndarray) -> Mesh:
