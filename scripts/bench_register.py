@@ -14,6 +14,9 @@
    maps at pixel centres, footprint-minimum depth maps) and check against the scene.
 5. ``--sfm-tls WORKDIR``: SfM-dense cloud of the heritage photo rig (render, ``ws sfm``, CPU
    dense, cached in WORKDIR) registered in 7 DoF to a simulated TLS survey of the same scene.
+6. ``--merge-bunny``: the three bunny scans as a multi-station set through ``ws merge --register``'s
+   pose graph, in two input orders and in random frames, against bun.conf; beside Open3D's
+   multiway-registration tutorial.
 Wall times on a shared machine are contended: CPU seconds (process_time) are given beside them.
 """
 
@@ -603,6 +606,119 @@ def bench_colorize_rig(work: Path, supersample: int = 3, modes=("zbuffer", "exac
               "wall_s": round(wall, 1), "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
 
 
+BUNNY_SCANS = ("bun000.ply", "bun045.ply", "bun090.ply")
+
+
+def bunny_gauge_errors(poses, names, truth, clouds, frames=None) -> list[tuple[float, float]]:
+    """(rotation degrees, translation metres at the scan's centroid) of each pose against
+    bun.conf with the gauge fixed on bun000. ``poses`` map each input scan into the first
+    input's frame; an input is scan k moved by ``frames[k]`` (identity when None), so
+    ``inv(F_bun000) inv(P_bun000) P_k F_k`` maps the original scan k into bun000's frame, as
+    bun.conf does."""
+    from workstation.registration.transforms import invert, transform_error
+
+    frames = [np.eye(4)] * len(names) if frames is None else frames
+    i0 = names.index("bun000.ply")
+    g = invert(np.asarray(poses[i0]) @ frames[i0])
+    return [transform_error(g @ np.asarray(p) @ f, truth[n], center=c.xyz.mean(axis=0))
+            for p, f, n, c in zip(poses, frames, names, clouds)]
+
+
+def bench_merge_bunny(data: Path, orders=(BUNNY_SCANS, ("bun090.ply", "bun000.ply", "bun045.ply")),
+                      frame_seeds=(0, 1, 2)):
+    """The three bunny scans as a multi-station set through ``ws merge --register``'s pose graph
+    (``register_multiway`` with defaults): in their own scanner frames (45 and 90 degrees apart)
+    in each of ``orders``, then, for each of ``frame_seeds``, each scan moved into a random frame
+    (any rotation, +-10 m). Every scan's pose error against bun.conf with the gauge fixed on
+    bun000, the per-edge residuals, wall and CPU seconds."""
+    from test_reg_bunny import bunny_truth
+
+    from workstation.io import read_cloud
+    from workstation.registration.merge import transform_cloud
+    from workstation.registration.posegraph import MultiwayParams, register_multiway
+    from workstation.registration.transforms import make_transform, random_rotation
+
+    d = data / "registration"
+    truth = bunny_truth(d / "bun.conf")
+    scans = {n: read_cloud(d / n) for n in BUNNY_SCANS}
+    cases = [(list(o), "scanner", None) for o in orders]
+    for s in frame_seeds:
+        rng = np.random.default_rng(s)
+        cases.append((list(BUNNY_SCANS), f"random_{s}",
+                      [make_transform(random_rotation(rng), rng.uniform(-10, 10, 3)) for _ in BUNNY_SCANS]))
+    for names, frame, F in cases:
+        clouds = [scans[n] for n in names]
+        moved = clouds if F is None else [transform_cloud(c, f) for c, f in zip(clouds, F)]
+        w0, c0 = time.perf_counter(), time.process_time()
+        mw = register_multiway(moved, MultiwayParams())
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        errs = bunny_gauge_errors(mw.poses, names, truth, clouds, F)
+        emit({"bench": "merge_bunny", "order": names, "frames": frame,
+              "rotation_error_deg": {n: round(e[0], 4) for n, e in zip(names, errs)},
+              "translation_error_mm": {n: round(e[1] * 1000, 4) for n, e in zip(names, errs)},
+              "edges": [{"edge": f"{names[e.source]}->{names[e.target]}", "kind": e.kind,
+                         "fitness": round(e.fitness, 3),
+                         "rotation_residual_deg": round(e.rotation_residual_deg, 4),
+                         "translation_residual_mm": round(e.translation_residual * 1000, 4), "kept": e.kept}
+                        for e in mw.edges],
+              "wall_s": round(wall, 1), "cpu_s": round(cpu, 1), "load1": os.getloadavg()[0]})
+def bench_merge_bunny_open3d(data: Path, voxel: float = 0.003, global_init: bool = False):
+    """Open3D's multiway-registration tutorial on the three bunny scans, unchanged except the
+    voxel size: voxel downsampling, normals (radius 2 voxel), pairwise point-to-plane ICP at 15
+    then 1.5 voxel from the identity (``global_init``: from the global-registration tutorial's
+    FPFH + RANSAC instead), odometry and uncertain loop edges, Levenberg-Marquardt pose graph
+    (correspondence 1.5 voxel, prune 0.25, reference node 0)."""
+    import open3d as o3d
+    from test_reg_bunny import bunny_truth
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.io import read_cloud
+
+    reg, kd = o3d.pipelines.registration, o3d.geometry.KDTreeSearchParamHybrid
+    d = data / "registration"
+    truth = bunny_truth(d / "bun.conf")
+    clouds = [read_cloud(d / n) for n in BUNNY_SCANS]
+    w0, c0 = time.perf_counter(), time.process_time()
+    pcds = [points_to_legacy(np.array(c.xyz)).voxel_down_sample(voxel) for c in clouds]
+    for p in pcds:
+        p.estimate_normals(kd(radius=2 * voxel, max_nn=30))
+
+    def init(s, t):
+        if not global_init:
+            return np.eye(4)
+        fs, ft = (reg.compute_fpfh_feature(p, kd(radius=5 * voxel, max_nn=100)) for p in (s, t))
+        dist = 1.5 * voxel
+        return reg.registration_ransac_based_on_feature_matching(
+            s, t, fs, ft, True, dist, reg.TransformationEstimationPointToPoint(False), 3,
+            [reg.CorrespondenceCheckerBasedOnEdgeLength(0.9), reg.CorrespondenceCheckerBasedOnDistance(dist)],
+            reg.RANSACConvergenceCriteria(100000, 0.999)).transformation
+
+    graph, odometry = reg.PoseGraph(), np.eye(4)
+    graph.nodes.append(reg.PoseGraphNode(odometry))
+    for i in range(len(pcds)):
+        for j in range(i + 1, len(pcds)):
+            coarse = reg.registration_icp(pcds[i], pcds[j], 15 * voxel, init(pcds[i], pcds[j]),
+                                          reg.TransformationEstimationPointToPlane())
+            fine = reg.registration_icp(pcds[i], pcds[j], 1.5 * voxel, coarse.transformation,
+                                        reg.TransformationEstimationPointToPlane())
+            info = reg.get_information_matrix_from_point_clouds(pcds[i], pcds[j], 1.5 * voxel, fine.transformation)
+            if j == i + 1:
+                odometry = fine.transformation @ odometry
+                graph.nodes.append(reg.PoseGraphNode(np.linalg.inv(odometry)))
+            graph.edges.append(reg.PoseGraphEdge(i, j, fine.transformation, info, uncertain=j != i + 1))
+    option = reg.GlobalOptimizationOption(max_correspondence_distance=1.5 * voxel, edge_prune_threshold=0.25,
+                                          reference_node=0)
+    with o3d.utility.VerbosityContextManager(o3d.utility.VerbosityLevel.Error):
+        reg.global_optimization(graph, reg.GlobalOptimizationLevenbergMarquardt(),
+                                reg.GlobalOptimizationConvergenceCriteria(), option)
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    errs = bunny_gauge_errors([np.asarray(nd.pose) for nd in graph.nodes], list(BUNNY_SCANS), truth, clouds)
+    emit({"bench": "merge_bunny_open3d_tutorial", "voxel": voxel, "init": "fpfh_ransac" if global_init else "identity",
+          "rotation_error_deg": {n: round(e[0], 4) for n, e in zip(BUNNY_SCANS, errs)},
+          "translation_error_mm": {n: round(e[1] * 1000, 4) for n, e in zip(BUNNY_SCANS, errs)},
+          "wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load1": os.getloadavg()[0]})
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", type=Path, default=Path(os.environ.get("WS_SHARED_DATA", "../shared/data")))
@@ -618,12 +734,19 @@ def main():
     ap.add_argument("--sfm-self-calibrated", action="store_true", help="with --sfm-tls: SfM self-calibrates the focal length")
     ap.add_argument("--tls-laz", type=Path, default=None,
                     help="simulated multi-station TLS survey (point_source_id per station), e.g. from ws simulate tls")
+    ap.add_argument("--merge-bunny", action="store_true",
+                    help="the three bunny scans through the pose graph of ws merge --register, beside Open3D's")
     a = ap.parse_args()
     emit({"bench": "machine", "cpus": os.cpu_count(), "load1": os.getloadavg()[0]})
     if not a.skip_bunny and (a.data / "registration").is_dir():
         bench_bunny(a.data)
         for v in (0.002, 0.003, 0.004):
             bench_bunny_open3d(a.data, v)
+    if a.merge_bunny:
+        bench_merge_bunny(a.data)
+        for v in (0.002, 0.003, 0.004):
+            for g in (False, True):
+                bench_merge_bunny_open3d(a.data, v, g)
     if a.colorize_sim:
         bench_colorize_sim()
     if a.sfm_tls is not None:

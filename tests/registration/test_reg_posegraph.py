@@ -56,3 +56,27 @@ def test_pose_graph_of_four_scans_closes():
     merged = merge_clouds(scans, res.poses)
     assert merged.n == sum(s.n for s in scans)
     assert set(np.unique(merged.attrs["point_source_id"])) == {1, 2, 3, 4}
+
+
+def test_edge_information_is_moved_to_the_pose_graph_source_frame():
+    """Open3D's information matrix of a pair (target points, registration frame) re-expressed for
+    the pose graph (source points, graph frame) equals the one computed there directly."""
+    import open3d as o3d
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.registration.posegraph import _graph_information
+
+    info_of = o3d.pipelines.registration.get_information_matrix_from_point_clouds
+    pts = wavy_scene(8000, seed=3)
+    L = make_transform(_rz(130.0), (4.0, -7.0, 1.5))  # source -> target, graph frame
+    pair_origin, graph_origin = np.array([12.0, -3.0, 2.0]), np.array([-5.0, 8.0, 0.0])
+    src_graph = pts - graph_origin  # the source scan in the graph's local frame
+    tgt_graph = apply_transform(L, src_graph)
+    shift = make_transform(np.eye(3), graph_origin - pair_origin)
+    T_pair = shift @ L @ invert(shift)  # the same motion in the registration's frame
+    info_pair = np.asarray(info_of(points_to_legacy(src_graph + graph_origin - pair_origin),
+                                   points_to_legacy(tgt_graph + graph_origin - pair_origin), 0.05, T_pair))
+    moved = _graph_information(info_pair, pair_origin - graph_origin, L)
+    direct = np.asarray(info_of(points_to_legacy(tgt_graph), points_to_legacy(src_graph), 0.05, invert(L)))
+    assert np.abs(moved - direct).max() < 1e-6 * np.abs(direct).max()
+    assert np.abs(info_pair - direct).max() > 0.1 * np.abs(direct).max()  # the frames do differ

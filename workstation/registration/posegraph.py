@@ -133,8 +133,8 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
         raise InvalidInputError(f"{len(params.initial_poses)} initial poses for {n} scans", field="initial_poses")
     if not 0 <= params.reference < n:
         raise InvalidInputError(f"reference {params.reference} out of range", field="reference")
-    edges, infos = _pair_edges(clouds, params)
     origin = default_origin(clouds[params.reference].xyz)
+    edges, infos = _pair_edges(clouds, params, origin)
     voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
     if voxel is None:
         from .preprocess import estimate_voxel_size
@@ -148,11 +148,14 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     return MultiwayResult(poses, out_edges, params.reference, {"voxel_size": voxel, "n_scans": n})
 
 
-def _pair_edges(clouds: list[Cloud], params: MultiwayParams) -> tuple[list[EdgeRecord], dict]:
+def _pair_edges(clouds: list[Cloud], params: MultiwayParams, origin: np.ndarray) -> tuple[list[EdgeRecord], dict]:
     """Register each consecutive pair (odometry edges, which must succeed) and, with
     ``params.loop_closure``, every other pair (loop edges, kept only when they pass
     ``params.loop_min_fitness``); from the initial poses when given (ICP only). Returns the
-    edges and their 6 x 6 information matrices by ``(i, j)``."""
+    edges and their 6 x 6 information matrices by ``(i, j)``, expressed in the pose graph's
+    local frame (world minus ``origin``) as its residuals are (:func:`_graph_information`)."""
+    from workstation.interop.open3d import local_transform
+
     n = len(clouds)
     edges: list[EdgeRecord] = []
     infos: dict = {}
@@ -174,9 +177,36 @@ def _pair_edges(clouds: list[Cloud], params: MultiwayParams) -> tuple[list[EdgeR
                 log.info("no loop closure %d-%d: %s", i, j, e.message)
                 continue
             edges.append(EdgeRecord(i, j, "odometry" if odo else "loop", r.transform, r.fitness, r.inlier_rmse))
-            infos[(i, j)] = r.information if r.information is not None else np.eye(6)
+            infos[(i, j)] = np.eye(6) if r.information is None else _graph_information(
+                r.information, np.asarray(r.meta["origin"], float) - origin,
+                local_transform(r.transform, origin, origin))
             log.info("edge %d->%d (%s): fitness %.3f", i, j, edges[-1].kind, r.fitness)
     return edges, infos
+
+
+def _graph_information(info: np.ndarray, shift: np.ndarray, L: np.ndarray) -> np.ndarray:
+    """Re-express a pairwise information matrix in the frame of the pose graph's residual.
+
+    Open3D's ``get_information_matrix_from_point_clouds`` returns ``sum G(q)^T G(q)`` over the
+    target points ``q`` of the correspondences, in the pair registration's local frame, with
+    ``G(q) = [-[q]x | I]`` (the motion of ``q`` under a small twist ``(omega, v)``). The pose
+    graph's residual is the twist of ``inv(L) inv(P_t) P_s``: a motion of the *source* scan, in
+    the graph's local frame. The matrix is therefore moved to the source points
+    ``p = R^T (q + shift - tau)`` of the same correspondences, where ``L = (R, tau)`` is the
+    edge's transform and ``shift`` the registration's origin minus the graph's: since
+    ``G(q + a) = G(q) J(a)`` with ``J(a) = [[I, 0], [-[a]x, I]]`` and
+    ``G(R^T b) = R^T G(b) diag(R, R)``, the result is ``M^T info M`` with
+    ``M = J(shift - tau) diag(R, R)``. Without this the weights depend on where the scans'
+    coordinates happen to lie and on how far each pair is turned, and the optimised poses move
+    with them.
+    """
+    R, tau = L[:3, :3], L[:3, 3]
+    a = np.asarray(shift, dtype=np.float64) - tau
+    M = np.zeros((6, 6))
+    M[:3, :3] = R
+    M[3:, 3:] = R
+    M[3:, :3] = -np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]]) @ R
+    return M.T @ np.asarray(info, dtype=np.float64) @ M
 
 
 def _optimise_pose_graph(n: int, edges: list[EdgeRecord], L: dict, infos: dict, voxel: float,
