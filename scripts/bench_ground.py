@@ -290,13 +290,15 @@ def bench_bounds(data: Path, with_ml: bool):
 def bench_bridges(methods, with_ml: bool, seeds=(0,)):
     """Deck points in each method's ground (%) and deck F1 as class 17 on the gallery's bridge
     scenes: vertical abutments, spill-through ones (the tuning scenes ``spill_1.5`` and
-    ``spill_dev``; ``spill_held`` is kept for validation) and the earthworks (no deck)."""
+    ``spill_dev``; ``spill_held`` and ``spill_held2`` are kept for validation) and the
+    earthworks (no deck)."""
     sys.path.insert(0, str(REPO / "tests" / "ground"))
     from gallery_scenes import bridges, earthworks, spill_through
 
     scenes = {"vertical": lambda k: bridges(seed=k), "spill_1.5": lambda k: bridges(seed=k, abutment_slope=1.5),
               "spill_dev": lambda k: spill_through(seed=k, preset="dev"),
-              "spill_held": lambda k: spill_through(seed=k, preset="held"), "earthworks": lambda k: earthworks(seed=k)}
+              "spill_held": lambda k: spill_through(seed=k, preset="held"),
+              "spill_held2": lambda k: spill_through(seed=k, preset="held2"), "earthworks": lambda k: earthworks(seed=k)}
     runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
     if with_ml:
         from workstation.ml.classifier import PointClassifier

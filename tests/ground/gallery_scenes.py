@@ -284,8 +284,9 @@ def earthworks(seed: int = 0, pulses: float = 4.0, water_return: float = 0.5, no
 
 # * :func:`spill_through`: one road bridge on spill-through abutments (the banks slope down
 #   under the deck's ends, so its last metres stand only a little over the slope), at any
-#   angle to the grid and skewed (the gap's banks oblique to the road). Two presets: ``"dev"``
-#   (the scene the end-extension was developed on) and ``"held"`` (kept for validation).
+#   angle to the grid and skewed (the gap's banks oblique to the road). Three presets: ``"dev"``
+#   (the scene the end-extension was developed on), ``"held"`` and ``"held2"`` (kept for
+#   validation).
 
 SPILL_PRESETS = {
     # road angle (deg from x), skew (deg between the gap's banks and the road's normal), deck
@@ -293,6 +294,9 @@ SPILL_PRESETS = {
     # width (m), bank slope (run over rise), deck surface over the road beyond (m), water
     "dev": dict(road_angle=0.0, skew=20.0, height=5.0, span=26.0, width=9.0, slope=2.0, lift=0.0, water=True),
     "held": dict(road_angle=-25.0, skew=30.0, height=7.0, span=36.0, width=12.0, slope=1.5, lift=0.2, water=False),
+    # a second held-out deck, added after the end fit was settled: skewed the other way at 50° to
+    # the grid, over a shallower river on 1:1.75 banks, 0.1 m over its road
+    "held2": dict(road_angle=50.0, skew=-15.0, height=4.5, span=30.0, width=10.0, slope=1.75, lift=0.1, water=True),
 }
 
 

@@ -45,19 +45,23 @@ only. So:
    line for the fall and a line for the ground beyond, fitted where the depth is under
    ``clearance``, meet where the deck's surface meets the ground: that edge's end, unless
    one line fits as well (the road beyond a wall, or a road on an embankment, whose crest
-   meets its side faces without a step: nothing taken). The deck ends on the line joining
-   its two edges' ends (the intersection of its plane with a planar slope, oblique on a
-   skewed bridge).
+   meets its side faces without a step: nothing taken). Where an edge falls, its end is
+   then refined on the ground points beside it, as two planes in (along, out from the
+   edge): the abutment's slope and the ground beyond, the ground the lower of the two;
+   they meet along the slope's top, where the deck rests, a line oblique to the edge on a
+   skewed bridge (slices taken square to the axis straddle it). The deck ends on the line
+   joining its two edges' ends.
 
 The ground methods (:func:`workstation.ground.common.write_classes`) put those points in class
 17 and out of the ground, so a DTM from the ground is interpolated across the gap; the point
 classifier (:mod:`workstation.ml.classifier`) labels them 17.
 
 Limits: a road on an embankment held by vertical retaining walls on both sides looks like a
-deck and is called one; over spill-through abutments the last decimetres of each end, within
-the noise of the ground beside them, may stay ground or the end may run a few decimetres onto
-the road beyond (on the gallery's spill-through scenes 0-3 % of the deck
-points stay unfound, ``python scripts/bench_ground.py bridges``); a deck less than
+deck and is called one; over spill-through abutments the deck's last decimetres stand within
+the noise of the bank under them (a deck flush with its road, or whose plane dips under the
+bank's curved top at a corner): no height test tells them from the ground, only the end line,
+so an end placed a decimetre short leaves them ground and one placed long takes a strip of the
+road beyond (``python scripts/bench_ground.py bridges``); a deck less than
 ``clearance`` over its gap (a footbridge over a ditch) is not found, nor one whose
 surroundings gave no echo within ``span`` (a river that answered nothing), nor a low deck
 over gentle banks whose cells never drop by ``clearance`` on both sides; the end cells hold
@@ -485,6 +489,39 @@ def _end_offset(c: np.ndarray, j0: int, h: float, ramp: float, step: float, kapp
     return end
 
 
+def _hinge_end(off, dt, dz, end: float, reach: float, rise: float) -> float:
+    """Where one edge of a deck ends, refined on the ground beside it (points at ``off``
+    metres beyond the deck's found end, ``dt`` out from the edge, ``dz`` above the deck's
+    plane): within ``reach`` of the first estimate ``end`` the ground is the lower of two
+    planes in (off, dt), the abutment's slope and the ground beyond, meeting along the
+    slope's top (oblique to the edge on a skewed bridge); fitted by alternating assignment
+    (each point to the lower plane), leaving out points more than 2.5 robust deviations off.
+    Returns the top's offset at the edge (dt = 0), or ``end`` when the two planes do not
+    make a slope rising to the ground beyond by ``rise`` or more over ``reach``, or meet
+    more than ``reach`` from ``end``."""
+    near = np.abs(off - end) <= reach
+    if near.sum() < 12:
+        return end
+    a = np.column_stack([np.ones(int(near.sum())), off[near], dt[near]])
+    zz = dz[near]
+    beyond = a[:, 1] > end
+    keep = np.ones(len(zz), bool)
+    for _ in range(6):
+        if min((~beyond & keep).sum(), (beyond & keep).sum()) < 4:
+            return end
+        p1 = np.linalg.lstsq(a[~beyond & keep], zz[~beyond & keep], rcond=None)[0]
+        p2 = np.linalg.lstsq(a[beyond & keep], zz[beyond & keep], rcond=None)[0]
+        f1, f2 = a @ p1, a @ p2
+        beyond = f2 < f1
+        res = zz - np.minimum(f1, f2)
+        keep = np.abs(res) <= 2.5 * 1.4826 * max(float(np.median(np.abs(res))), 1e-3)
+    d = p1 - p2
+    if d[1] * reach < rise:  # the slope must rise towards the ground beyond
+        return end
+    new = -float(d[0]) / float(d[1])
+    return new if abs(new - end) <= reach else end
+
+
 def _deck_band(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: BridgeParams):
     """A found deck's plane and band: its axis ``u`` (:func:`_axis`), the plane's
     coefficients (z = c0 + c1 s + c2 t, s along ``u``, t across), its surface points, and the
@@ -530,9 +567,11 @@ def _ends(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: Brid
     edge's own found end (a skewed deck's ends are oblique), that edge's clearance
     (:func:`_edge_clearance`) is the gap's depth, then falls along the abutment's slope and
     levels off over the ground beyond; the edge ends where its surface meets the ground
-    (:func:`_end_offset`), and at the latest where the band holds no point on the deck's
-    plane, within ``span`` / 2 of the found cells. The deck's end is the line joining its
-    two edges' ends: the intersection of its plane with a planar abutment slope. A road on
+    (:func:`_end_offset`), refined on the ground beside the edge up to ``step`` over the
+    plane (:func:`_hinge_end`; on rolling ground the road beyond may rise over a level
+    deck's plane), and at the latest where the band holds no point on the
+    deck's plane, within ``span`` / 2 of the found cells. The deck's end is the line joining
+    its two edges' ends: the top of a planar abutment slope, where the deck rests. A road on
     an embankment meets the embankment's sides without a step (clearance about nought all
     along) and is not taken. The points taken are those of the band and of its parapet
     margins, from ``step`` / 4 under the plane to ``structure`` over it, inside that line."""
@@ -567,7 +606,12 @@ def _ends(xyz: np.ndarray, surface: np.ndarray, mine: np.ndarray, along, p: Brid
             lead = float(np.max(sign * (s_flat[near] - start))) if near.any() else 0.0
             side = (dt > m) & (dt <= m + wide) & (dz < tol)
             c = _edge_clearance(off[side] - lead, dt[side], -dz[side], h, j0, j1)
-            ends.append(min(lead + _end_offset(c, j0, h, p.clearance, p.step, tol, window), stop * h))
+            end = min(lead + _end_offset(c, j0, h, p.clearance, p.step, tol, window), stop * h)
+            if end > lead:  # a fall onto the bank: the slope's top, fitted on the ground beside the edge
+                bank = (dt > m) & (dt <= m + wide) & (dz < p.step)
+                end = min(_hinge_end(off[bank], dt[bank], dz[bank], end, 2.0 * p.clearance, p.step),
+                          stop * h)
+            ends.append(end)
         limit = ends[0] + frac * (ends[1] - ends[0])  # the end line, edge to edge
         out[k[band & (off <= limit) & (off > -inner)]] = True
     return out & ~mine
