@@ -17,10 +17,16 @@ Parts (``--part``, repeatable; default all):
   against ``run_sfm``'s default (one camera per image size and EXIF camera), incremental and
   global, at full size and at ``max_image_size`` 640: registered images, points, mean
   reprojection error, wall and process CPU time.
+* ``rig``: a simulated heritage rig of ``--images`` photos (default 200: two convergent rings
+  around the church of ``datasets_synth/rig_heritage.toml``, 640×480, one ray per pixel)
+  through ``ws sfm`` with its defaults, as a separate process: wall and CPU time, stage
+  timings, the matcher chosen and the pairs matched, registered images, mean reprojection
+  error, and camera-centre errors against the rig's true poses after a 7-DoF similarity.
 
 Usage::
 
     PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
+    PYTHONPATH=$PWD python scripts/bench_sfm.py --part rig --images 200 --work /tmp/bench_sfm_rig [--reuse]
 """
 
 from __future__ import annotations
@@ -433,16 +439,83 @@ def part_sacre_coeur(data: Path):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+def _rig_images(folder: Path, images: int, reuse: bool) -> dict:
+    """Render the rig (unless ``reuse`` finds it) and return the true camera centres by name."""
+    import dataclasses
+
+    from workstation.io.reconstruction import read_reconstruction_json
+    from workstation.photogrammetry.rigs import load_rig, make_rig
+
+    if not (reuse and (folder / "cameras.json").exists()):
+        recipe, spec = load_rig("rig_heritage")
+        make_rig(recipe, dataclasses.replace(spec, n_images=images, supersample=1), folder, overwrite=True)
+    truth = read_reconstruction_json(folder / "cameras.json")
+    return {im.name: im.pose.center for im in truth.images.values()}
+
+
+def _centre_errors(model_dir: Path, centres: dict) -> dict:
+    """Camera-centre errors of a model against true centres after a 7-DoF similarity (metres
+    of the true frame; the rig's ring is 50 m from the church)."""
+    import pycolmap
+
+    from workstation.photogrammetry.georef import fit_similarity
+
+    rec = pycolmap.Reconstruction(str(model_dir))
+    got = {im.name: np.asarray(im.projection_center()) for im in rec.images.values() if im.has_pose}
+    names = sorted(set(got) & set(centres))
+    est, true = np.array([got[n] for n in names]), np.array([centres[n] for n in names])
+    err = np.linalg.norm(fit_similarity(est, true).apply(est) - true, axis=1)
+    return {"median_centre_err_m": round(float(np.median(err)), 4), "max_centre_err_m": round(float(err.max()), 4),
+            "rms_centre_err_m": round(float(np.sqrt(np.mean(err ** 2))), 4)}
+
+
+def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: bool = False):
+    import os
+    import resource
+    import subprocess
+    import sys
+
+    work = Path(work or tempfile.mkdtemp(prefix="bench_sfm_rig_"))
+    folder = work / f"rig{images}"
+    centres = _rig_images(folder, images, reuse)
+    out = work / f"sfm{images}"
+    cmd = [sys.executable, "-c", "import sys; from workstation.cli.main import main; sys.exit(main())",
+           "sfm", str(folder / "images"), "-o", str(out), "--overwrite", "--json"]
+    env = {**os.environ, "PYTHONPATH": str(REPO)}
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, text=True)
+    wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if proc.returncode:
+        raise SystemExit(f"ws sfm failed with exit code {proc.returncode}")
+    doc = json.loads(proc.stdout)
+    with open("/proc/loadavg") as fh:
+        load = fh.read().split()[:3]
+    emit({"bench": f"rig{images}_ws_sfm", "images": doc["images"], "registered": doc["registered"],
+          "registered_pct": round(100 * doc["registered"] / doc["images"], 1), "points": doc["points"],
+          "matcher": doc["matcher"], "matched_pairs": doc["matched_pairs"], "mean_reprojection_error_px": round(doc["mean_reprojection_error_px"], 4),
+          **_centre_errors(out / "sparse" / "0", centres), "wall_s": round(wall, 1),
+          "cpu_s": round(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, 1),
+          "cores": os.cpu_count(), "load_avg": load,
+          "timings_s": {k: round(v, 1) for k, v in doc["timings_s"].items()}})
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", type=Path, default=REPO.parent / "shared" / "data")
-    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain", "sacre_coeur"])
+    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig"])
     ap.add_argument("--fountain-mode", action="append", choices=["self", "camera"])
+    ap.add_argument("--images", type=int, default=200, help="rig: photos in the simulated rig")
+    ap.add_argument("--work", type=Path, help="rig: folder for the rendered rig and the work folder (default: a temporary one)")
+    ap.add_argument("--reuse", action="store_true", help="rig: reuse a rig rendered earlier in --work")
     a = ap.parse_args(argv)
-    parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur"]
+    parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig"]
     for p in parts:
         if p == "fountain":
             part_fountain(a.data, tuple(a.fountain_mode or ("self", "camera")))
+        elif p == "rig":
+            part_rig(a.data, a.images, a.work, a.reuse)
         else:
             globals()[f"part_{p}"](a.data)
 

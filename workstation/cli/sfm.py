@@ -79,7 +79,7 @@ def sfm(images, workdir, camera_file, given, gcp_file, gcp_adjustment, crs, no_p
     """
     from workstation.io.atomic import work_folder
     from workstation.io.reconstruction import SFM_RECORD, write_stage_record
-    from workstation.photogrammetry.sfm import run_sfm
+    from workstation.photogrammetry.sfm import orient_photos
 
     camera, gcps, bars = _read_inputs(images, camera_file, gcp_file, scale_bars, scale_distances)
     if do_dense:
@@ -88,22 +88,15 @@ def sfm(images, workdir, camera_file, given, gcp_file, gcp_adjustment, crs, no_p
         device = resolve_device(device)  # --device cuda without CUDA fails before the long SfM run
     params = SfMParams(**given, refine_principal_point=not no_principal_point, final_ba=not no_final_ba)
     with work_folder(workdir):  # a failed run removes what it wrote
-        result = run_sfm(images, workdir, camera, params, overwrite=overwrite)
+        result, out = orient_photos(images, workdir, camera, params, upright=upright, scale_bars=bars,
+                                    sigma_px=sigma_px, overwrite=overwrite)
         wd = Path(workdir)
-        out = result.to_dict()
-        from workstation.io import write_cloud
-        from workstation.photogrammetry.scale import level_and_scale_model
-
-        cloud, frame = level_and_scale_model(result, wd, upright, bars, sigma_px)
-        out.update(frame)
-        write_cloud(cloud, wd / "sparse.ply", overwrite=True)
-        out["sparse_cloud"] = str(wd / "sparse.ply")
         _echo_result(result, wd)
         if gcps is not None:
             out["georef"] = _georeference(wd, images, gcps, sigma_px, crs, gcp_adjustment)
         if do_dense:
             out["dense"] = _densify(wd, images, device, overwrite)
-        out = _record(out, images, camera_file, gcp_file, params, gcp_adjustment, crs, sigma_px, wd)
+        out = _record(out, images, camera_file, gcp_file, params, upright, gcp_adjustment, crs, sigma_px, wd)
         write_stage_record(out, wd / SFM_RECORD)
         from workstation.cli.summary import count, emit_summary
 
@@ -177,23 +170,20 @@ def _densify(wd: Path, images, device: str, overwrite: bool) -> dict:
     return dense_summary
 
 
-def _record(out: dict, images, camera_file, gcp_file, params, gcp_adjustment: str, crs, sigma_px: float, wd: Path) -> dict:
-    """The sfm stage record (WORKDIR/summary.json): the --json document plus the absolute image
-    folder and the camera settings (model, intrinsics shared, per image or per camera group, image size,
-    matcher)."""
-    import dataclasses
-
+def _record(out: dict, images, camera_file, gcp_file, params, upright: bool, gcp_adjustment: str, crs, sigma_px: float,
+            wd: Path) -> dict:
+    """The sfm stage record (WORKDIR/summary.json, :func:`~workstation.photogrammetry.sfm.sfm_record`):
+    the --json document plus the absolute image folder and the camera settings (model,
+    intrinsics shared, per image or per camera group, image size, matcher), with the GCP
+    settings when there are GCPs."""
     from workstation.cli.summary import elapsed
-    from workstation.io.reconstruction import stage_record
+    from workstation.photogrammetry.sfm import sfm_record
 
-    settings = dataclasses.asdict(params)
-    settings["intrinsics"] = out["camera_sharing"]
-    if gcp_file:
-        settings.update(gcp_adjustment=gcp_adjustment, crs=crs, sigma_px=sigma_px)
     outputs = [wd / "sparse" / "0", wd / "sparse.ply", wd / "georef" / "0" if gcp_file else None,
                (out.get("dense") or {}).get("fused")]
-    return stage_record("sfm", out, inputs={"image_dir": images, "camera": camera_file, "gcp": gcp_file, "workdir": wd},
-                        params=settings, outputs=outputs, seconds=elapsed())
+    gcp = {"gcp_adjustment": gcp_adjustment, "crs": crs, "sigma_px": sigma_px} if gcp_file else None
+    return sfm_record(out, images, wd, params, upright=upright, outputs=outputs, seconds=elapsed(),
+                      camera_file=camera_file, gcp_file=gcp_file, gcp_settings=gcp)
 
 
 def _georeference(wd: Path, images, gcps, sigma_px: float, crs, gcp_adjustment: str) -> dict:

@@ -6,6 +6,11 @@ sets, spatial when the images carry GPS priors), incremental mapping (or global 
 GLOMAP — Pan et al., ECCV 2024 — where pycolmap has it), then, when the intrinsics are
 self-calibrated, one final bundle adjustment that also frees the principal point: COLMAP's
 mapper keeps it at the image centre, which tilts every camera when the real one is off-centre.
+Extraction runs over runs of images and matching over blocks of the matcher's image pairs, so
+that a progress bar with the time left follows both; the mapper advances its bar with each
+registered image, and each stage's time is printed when it ends (not with ``-q``).
+:func:`orient_photos` adds the upright/scale step and the sparse cloud, as ``ws sfm`` and the
+project pipeline run them, and :func:`sfm_record` makes their stage record.
 
 ``WORKDIR`` follows COLMAP's layout: ``database.db``, ``sparse/0`` (binary model of the largest
 reconstruction), ``sparse/1``... (other, disconnected models), later ``dense/``.
@@ -13,6 +18,7 @@ reconstruction), ``sparse/1``... (other, disconnected models), later ``dense/``.
 
 from __future__ import annotations
 
+import math
 import shutil
 import time
 from contextlib import contextmanager
@@ -47,7 +53,8 @@ class SfMParams:
     exhaustive_max_images : int
         Largest image count matched exhaustively in "auto" mode (n·(n-1)/2 pairs).
     sequential_overlap : int
-        Neighbours matched on each side in sequential matching (images in name order).
+        Sequential matching (images in name order, COLMAP's quadratic overlap) pairs each image
+        with the images 1, 2, 4, ... 2^(sequential_overlap - 1) places after it.
     mapper : str
         "incremental" (COLMAP) or "global" (GLOMAP in pycolmap ≥ 3.12).
     max_image_size : int
@@ -122,8 +129,9 @@ class SfMResult:
     summary : dict
         ``images``, ``registered``, ``points``, ``observations``, ``mean_reprojection_error_px``,
         ``mean_track_length``, ``matcher``, ``mapper``, ``timings_s``, ``cameras``,
-        ``camera_sharing`` ("shared", "per-image" or "per camera group") and ``camera_count``
-        (cameras in the database; the model holds those of its registered images).
+        ``camera_sharing`` ("shared", "per-image" or "per camera group"), ``camera_count``
+        (cameras in the database; the model holds those of its registered images) and
+        ``matched_pairs`` (image pairs the matcher compared).
     unregistered : list of str
         Images not in the largest model.
     other_models : list of dict
@@ -190,10 +198,15 @@ def check_images_readable(files) -> None:
 
 @contextmanager
 def _timed(timings: dict, step: str):
-    """Record the seconds the block takes as ``timings[step]``."""
+    """Record the seconds the block takes as ``timings[step]`` and, unless progress is off
+    (``-q``, ``WS_PROGRESS=0``), say on stderr how long the stage took."""
+    from workstation.core.progress import format_duration, progress_mode, stderr_console
+
     t0 = time.perf_counter()
     yield
     timings[step] = time.perf_counter() - t0
+    if progress_mode() != "off":
+        stderr_console().print(f"sfm {step.replace('_', ' ')}: {format_duration(timings[step])}", highlight=False)
 
 
 def _input_images(image_dir: Path) -> list[Path]:
@@ -278,10 +291,18 @@ def _extraction_batches(files, camera: Camera | None, params: SfMParams) -> tupl
     return shared + ([("PER_IMAGE", alone)] if alone else []), "per-image" if not shared else "per camera group"
 
 
-def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera | None, params: SfMParams) -> tuple[str, int]:
-    """SIFT features of every image into the database; a given camera is applied to all,
-    otherwise the images share cameras as ``params.cameras`` says. Returns how the intrinsics
-    are shared (:func:`_extraction_batches`) and the number of cameras."""
+PROGRESS_STEPS = 20  # feature extraction and matching run in about this many calls, one bar step each
+
+
+def _chunks(items: list, least: int) -> list[list]:
+    """``items`` cut into about :data:`PROGRESS_STEPS` consecutive runs of at least ``least``."""
+    size = max(int(least), math.ceil(len(items) / PROGRESS_STEPS))
+    return [items[i:i + size] for i in range(0, len(items), size)]
+
+
+def _reader_options(pycolmap, camera: Camera | None, params: SfMParams, existing_camera_id: int = -1):
+    """COLMAP's image reader options: the given camera's model and parameters, or the
+    self-calibration model; ``existing_camera_id`` makes every image use that database camera."""
     from workstation.interop.pycolmap import camera_to_colmap_params
 
     reader = pycolmap.ImageReaderOptions()
@@ -291,6 +312,27 @@ def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera
         reader.camera_params = ",".join(repr(float(v)) for v in cparams)
     else:
         reader.camera_model = params.camera_model
+    reader.existing_camera_id = int(existing_camera_id)
+    return reader
+
+
+def _camera_id_of(pycolmap, db: Path, name: str) -> int:
+    """The database camera of the image ``name``."""
+    with pycolmap.Database.open(str(db)) as d:
+        return int(d.read_image_with_name(name).camera_id)
+
+
+def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera | None, params: SfMParams) -> tuple[str, int]:
+    """SIFT features of every image into the database; a given camera is applied to all,
+    otherwise the images share cameras as ``params.cameras`` says. Returns how the intrinsics
+    are shared (:func:`_extraction_batches`) and the number of cameras.
+
+    Each camera group is extracted in runs of images (:func:`_chunks`) so that a progress bar
+    with the time left follows the work: in a shared-camera group the first run makes the
+    camera and the later runs reuse it (``existing_camera_id``), so the database holds the
+    same images, ids, cameras and features as one call over the group would write."""
+    from workstation.core.progress import progress_bar
+
     ext = pycolmap.FeatureExtractionOptions()
     ext.max_image_size = int(params.max_image_size)
     ext.num_threads = int(params.num_threads)
@@ -298,30 +340,94 @@ def _extract_features(pycolmap, db: Path, image_dir: Path, files, camera: Camera
     batches, sharing = _extraction_batches(files, camera, params)
     n_cameras = sum(1 if mode == "SINGLE" else len(group) for mode, group in batches)
     log.info("extracting features from %d images (%d camera%s)", len(files), n_cameras, "s" * (n_cameras > 1))
-    for mode, group in batches:
-        pycolmap.extract_features(
-            db, image_dir, image_names=[f.name for f in group], camera_mode=getattr(pycolmap.CameraMode, mode),
-            reader_options=reader, extraction_options=ext, device=_device(pycolmap),
-        )
+    least = 2 * max(1, _threads(params))  # keep every extraction thread busy in a call
+    with progress_bar("features", len(files), unit="images") as advance:
+        for mode, group in batches:
+            existing = -1
+            for chunk in _chunks(group, least):
+                pycolmap.extract_features(
+                    db, image_dir, image_names=[f.name for f in chunk], camera_mode=getattr(pycolmap.CameraMode, mode),
+                    reader_options=_reader_options(pycolmap, camera, params, existing),
+                    extraction_options=ext, device=_device(pycolmap),
+                )
+                if mode == "SINGLE" and existing < 0:
+                    existing = _camera_id_of(pycolmap, db, chunk[0].name)
+                advance(len(chunk))
     return sharing, n_cameras
 
 
-def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> str:
-    """Match the features of the database; returns the matcher used (:func:`choose_matcher`)."""
+def _threads(params: SfMParams) -> int:
+    """Threads COLMAP uses for ``params.num_threads`` (-1: every core)."""
+    import os
+
+    return int(params.num_threads) if params.num_threads > 0 else (os.cpu_count() or 1)
+
+
+def _pairs(pycolmap, db: Path, matcher: str, params: SfMParams) -> tuple[list, dict]:
+    """The image pairs COLMAP's ``matcher`` would match (its own pair generator) and the image
+    names by id."""
+    with pycolmap.Database.open(str(db)) as d:
+        names = {int(im.image_id): im.name for im in d.read_all_images()}
+        if matcher == "exhaustive":
+            gen = pycolmap.ExhaustivePairGenerator(pycolmap.ExhaustivePairingOptions(), d)
+        elif matcher == "sequential":
+            gen = pycolmap.SequentialPairGenerator(_sequential_options(pycolmap, params), d)
+        else:
+            gen = pycolmap.SpatialPairGenerator(pycolmap.SpatialPairingOptions(), d)
+        pairs = [(int(a), int(b)) for a, b in gen.all_pairs()]
+    return pairs, names
+
+
+def _sequential_options(pycolmap, params: SfMParams):
+    """COLMAP's sequential pairing in name order with its default quadratic overlap: each image
+    with the images 1, 2, 4, ... 2^(overlap-1) places after it (``params.sequential_overlap``)."""
+    pair = pycolmap.SequentialPairingOptions()
+    pair.overlap = int(params.sequential_overlap)
+    return pair
+
+
+def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, int]:
+    """Match the features of the database; returns the matcher used (:func:`choose_matcher`)
+    and the number of image pairs it matched.
+
+    The pairs the matcher's own generator makes are matched in blocks (a pairs file each,
+    ``match_image_pairs``), one progress step per block; each pair's matching and geometric
+    verification do not depend on the other pairs, so the result is that of one call. Image
+    names with white space cannot be written to a pairs file: those sets are matched in one
+    call, without a bar."""
+    import tempfile
+
+    from workstation.core.progress import progress_bar
+
     matcher = choose_matcher(n_images, _has_gps(db, pycolmap) if params.matcher == "auto" else False, params)
     mopt = pycolmap.FeatureMatchingOptions()
     mopt.num_threads = int(params.num_threads)
-    log.info("matching (%s)", matcher)
     dev = _device(pycolmap)
+    pairs, names = _pairs(pycolmap, db, matcher, params)
+    log.info("matching (%s, %d pairs)", matcher, len(pairs))
+    if any(c.isspace() for n in names.values() for c in n):
+        _match_at_once(pycolmap, db, matcher, mopt, params, dev)
+        return matcher, len(pairs)
+    with tempfile.TemporaryDirectory(prefix="ws_sfm_pairs_") as tmp, \
+            progress_bar(f"matching ({matcher})", len(pairs), unit="pairs") as advance:
+        opt, listing = pycolmap.ImportedPairingOptions(), Path(tmp) / "pairs.txt"
+        opt.match_list_path = listing
+        for block in _chunks(pairs, 4 * _threads(params)):
+            listing.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in block))
+            pycolmap.match_image_pairs(db, matching_options=mopt, pairing_options=opt, device=dev)
+            advance(len(block))
+    return matcher, len(pairs)
+
+
+def _match_at_once(pycolmap, db: Path, matcher: str, mopt, params: SfMParams, dev) -> None:
+    """One call of COLMAP's ``matcher`` over the database."""
     if matcher == "exhaustive":
         pycolmap.match_exhaustive(db, matching_options=mopt, device=dev)
     elif matcher == "sequential":
-        pair = pycolmap.SequentialPairingOptions()
-        pair.overlap = int(params.sequential_overlap)
-        pycolmap.match_sequential(db, matching_options=mopt, pairing_options=pair, device=dev)
+        pycolmap.match_sequential(db, matching_options=mopt, pairing_options=_sequential_options(pycolmap, params),
+                                  device=dev)
     else:
         pycolmap.match_spatial(db, matching_options=mopt, device=dev)
-    return matcher
 
 
 def _map(pycolmap, db: Path, image_dir: Path, sparse: Path, n_images: int, fixed: bool, params: SfMParams) -> dict:
@@ -507,7 +613,7 @@ def run_sfm(
     with _timed(timings, "features"):
         sharing, n_cameras = _extract_features(pycolmap, db, image_dir, files, camera, params)
     with _timed(timings, "matching"):
-        matcher = _match(pycolmap, db, len(files), params)
+        matcher, n_pairs = _match(pycolmap, db, len(files), params)
     with _timed(timings, "mapping"):
         sparse.mkdir(exist_ok=True)
         recs = _map(pycolmap, db, image_dir, sparse, len(files), fixed, params)
@@ -529,10 +635,63 @@ def run_sfm(
         notes.append(note)
     cloud = cloud_from_reconstruction(rec)
     summary = _summary(names, registered, rec, best, matcher, camera, fixed, params, timings, notes)
-    summary.update(camera_sharing=sharing, camera_count=n_cameras)
+    summary.update(camera_sharing=sharing, camera_count=n_cameras, matched_pairs=n_pairs)
     if rec.points.shape[0] == 0:
         raise StageError("sfm", "the model has no 3-D points", "the images may not overlap enough")
     return SfMResult(rec, cloud, summary, unregistered, other, workdir)
+
+
+def orient_photos(image_dir, workdir, camera: Camera | None = None, params: SfMParams = SfMParams(), *,
+                  upright: bool = True, scale_bars=(), sigma_px: float = 1.0,
+                  overwrite: bool = False) -> tuple[SfMResult, dict]:
+    """The steps of ``ws sfm`` before georeferencing: :func:`run_sfm`, then the model in
+    ``workdir/sparse/0`` turned upright and scaled
+    (:func:`workstation.photogrammetry.scale.level_and_scale_model`) and its sparse cloud
+    written as ``workdir/sparse.ply``.
+
+    Parameters
+    ----------
+    image_dir, workdir, camera, params, overwrite
+        As for :func:`run_sfm`.
+    upright : bool
+        Turn the model upright (z up, main façade facing -y).
+    scale_bars : sequence of ScaleBar
+        Known lengths (:func:`~workstation.photogrammetry.scale.parse_scale_bar` /
+        ``parse_scale_distance``); none leaves the model unscaled.
+    sigma_px : float
+        Image measurement precision of the scale bars' ends, pixels.
+
+    Returns
+    -------
+    (SfMResult, dict)
+        The result (in SfM's frame) and the stage document: :meth:`SfMResult.to_dict`, the
+        frame entries ("upright", "scale", "similarity"...) and ``sparse_cloud``.
+    """
+    from workstation.io import write_cloud
+    from workstation.photogrammetry.scale import level_and_scale_model
+
+    result = run_sfm(image_dir, workdir, camera, params, overwrite=overwrite)
+    wd = Path(workdir)
+    cloud, frame = level_and_scale_model(result, wd, upright, list(scale_bars), sigma_px)
+    write_cloud(cloud, wd / "sparse.ply", overwrite=True)
+    return result, {**result.to_dict(), **frame, "sparse_cloud": str(wd / "sparse.ply")}
+
+
+def sfm_record(doc: dict, image_dir, workdir, params: SfMParams, *, upright: bool, outputs, seconds: float,
+               camera_file=None, gcp_file=None, gcp_settings: Mapping | None = None) -> dict:
+    """The sfm stage record (``WORKDIR/summary.json``) of a stage document from
+    :func:`orient_photos`: the absolute image folder, camera and GCP files in ``inputs``, and
+    in ``params`` the :class:`SfMParams`, the upright flag, how the intrinsics are shared
+    and the GCP settings when there are GCPs."""
+    import dataclasses
+
+    from workstation.io.reconstruction import stage_record
+
+    settings = {**dataclasses.asdict(params), "upright": bool(upright), "intrinsics": doc["camera_sharing"],
+                **dict(gcp_settings or {})}
+    return stage_record("sfm", doc, inputs={"image_dir": image_dir, "camera": camera_file, "gcp": gcp_file,
+                                            "workdir": workdir},
+                        params=settings, outputs=outputs, seconds=seconds)
 
 
 NADIR_BLOCK_SPREAD_DEG = 10.0  # optical axes all within this of their mean: parallel-axis block

@@ -64,21 +64,13 @@ def _link_photos(photos: list, folder: Path) -> None:
         os.symlink(p, folder / Path(p).name)
 
 
-def _upright_and_scale(result, workdir: Path, stage):
-    """Level and scale the model as ``ws sfm`` does, with the stage's upright flag, scale bars
-    and distances (:func:`workstation.photogrammetry.scale.level_and_scale_model`)."""
-    from workstation.photogrammetry.scale import level_and_scale_model, parse_scale_bar, parse_scale_distance
-
-    bars = [parse_scale_bar(t) for t in stage.scale_bars] + [parse_scale_distance(t) for t in stage.scale_distances]
-    return level_and_scale_model(result, workdir, stage.upright, bars, stage.sigma_px)
-
-
 def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
     """Orient the photos into the work folder ``OUT/sfm`` (``ws sfm`` without GCPs): the COLMAP
     model, the upright (and scaled) sparse cloud and the stage record."""
-    from workstation.io import work_folder, write_cloud
-    from workstation.io.reconstruction import SFM_RECORD, stage_record, write_stage_record
-    from workstation.photogrammetry.sfm import run_sfm
+    from workstation.io import work_folder
+    from workstation.io.reconstruction import SFM_RECORD, write_stage_record
+    from workstation.photogrammetry.scale import parse_scale_bar, parse_scale_distance
+    from workstation.photogrammetry.sfm import orient_photos, sfm_record
 
     t0 = time.perf_counter()
     workdir, image_dir = Path(out) / "sfm", Path(image_dir)
@@ -91,21 +83,17 @@ def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
         camera = read_camera(stage.camera)
     if workdir.exists():
         shutil.rmtree(workdir)  # the dense maps of an older model go with it
+    bars = [parse_scale_bar(t) for t in stage.scale_bars] + [parse_scale_distance(t) for t in stage.scale_distances]
     with work_folder(workdir):
-        result = run_sfm(image_dir, workdir, camera, stage.params, overwrite=True)
-        cloud, frame = _upright_and_scale(result, workdir, stage)
-        write_cloud(cloud, workdir / "sparse.ply", overwrite=True)
-        doc = {**result.to_dict(), **frame, "sparse_cloud": str(workdir / "sparse.ply")}
-        settings = {**dataclasses.asdict(stage.params), "upright": stage.upright,
-                    "intrinsics": result.summary["camera_sharing"]}
+        result, doc = orient_photos(image_dir, workdir, camera, stage.params, upright=stage.upright,
+                                    scale_bars=bars, sigma_px=stage.sigma_px, overwrite=True)
         outputs = [workdir / "sparse" / "0", workdir / "sparse.ply", workdir / SFM_RECORD]
-        rec = stage_record("sfm", doc, inputs={"image_dir": image_dir, "camera": stage.camera, "gcp": None,
-                                               "workdir": workdir},
-                           params=settings, outputs=outputs[:2], seconds=elapsed(t0))
+        rec = sfm_record(doc, image_dir, workdir, stage.params, upright=stage.upright, outputs=outputs[:2],
+                         seconds=elapsed(t0), camera_file=stage.camera)
         write_stage_record(rec, workdir / SFM_RECORD)
     s = result.summary
     return {"images": s["images"], "registered": s["registered"], "points": s["points"],
-            "reprojection_px": s["mean_reprojection_error_px"], "scaled": frame.get("scaled"),
+            "reprojection_px": s["mean_reprojection_error_px"], "scaled": doc.get("scaled"),
             "unregistered": list(result.unregistered), "seconds": elapsed(t0), "peak_rss_mb": peak_rss_mb(),
             "outputs": [str(p) for p in outputs]}
 
