@@ -41,9 +41,15 @@ Open3D ray casting, and works on any machine:
    gain-corrected mean colours of the face (16 samples spread over it); a mean shift finds the
    dominant colour, and views farther from it than the paper's kernel radius (3.2 times the
    colour noise, estimated robustly from all faces' view pairs) are dropped before the best
-   views are taken. Views in which the face covers fewer pixels than it has samples take no
-   part: their mean colour blends the neighbouring surfaces. The exposure gains are then
-   estimated again without the dropped views.
+   views are taken. Every view votes however few pixels the face covers (a sub-pixel face's
+   colour is that of its surroundings, which still shows an occluder). The check runs first on
+   the photos as they are (exposure gains estimated over views of an occluder would carry its
+   colour into every photo's gain), then the gains are estimated without the dropped views,
+   the check runs again on the balanced colours and the gains are estimated once more.
+
+6. **Last resort** (``last_resort``): a face no view sees frontally enough and whole gets a
+   grazing view or one that sees its centroid but not all its corners (step 1); such views
+   blend other surfaces, so they take no part in steps 4 and 5.
 
 Faces seen by no photo get their vertex colours (or grey) and ``texture_view = -1``.
 The textured mesh has one vertex per face corner (``uv`` per vertex, as OBJ and glTF store
@@ -63,6 +69,8 @@ from workstation.core.log import get_logger
 from workstation.core.products import Mesh, Reconstruction
 
 from .steps import StepRecord, Timer
+from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_KERNEL, CONSISTENCY_VIEWS, SIGMA_G, SIGMA_N,  # noqa: F401
+                             colour_noise, consistent_views, exposure_gains, face_colours)
 
 log = get_logger(__name__)
 STAGE = "texture"
@@ -99,6 +107,10 @@ class TextureParams:
         Drop the views whose colour of a face disagrees with most others (an occluder missing
         from the mesh: a tree, a passer-by) before choosing the face's views (True; step 5 of
         the module description).
+    last_resort : bool
+        A face with no view passing ``min_cos`` and the four-probe visibility test may take a
+        grazing view (cosine above 0) or one that sees its centroid but not all its corners
+        (True; see :func:`select_views`).
     """
 
     texel_size: float | None = None
@@ -111,6 +123,7 @@ class TextureParams:
     fallback_rgb: tuple = (128, 128, 128)
     exposure_balance: bool = True
     photo_consistency: bool = True
+    last_resort: bool = True
 
     def __post_init__(self):
         if self.texel_size is not None and not self.texel_size > 0:
@@ -135,16 +148,47 @@ def _corner_order(tri: np.ndarray) -> np.ndarray:
 
 
 def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), k: int | None = None):
+    """The ``k`` (default ``params.max_views``) best views of every face: (views, weights, gsd)
+    of :func:`ranked_views`, without its ``full`` mask."""
+    return ranked_views(mesh, rec, params, k)[:3]
+
+
+def _face_probes(mesh: Mesh, params: TextureParams):
+    """Per face: corners (m, 3, 3), centroid, unit normal, twice the area, the four probe points
+    (m, 4, 3: the centroid and three points 20 % of the way from each corner to it) and the
+    depth tolerance of the visibility test (mesh units)."""
+    tri = mesh.vertices[mesh.faces]
+    cen = tri.mean(axis=1)
+    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    nlen = np.linalg.norm(nrm, axis=1)
+    nrm = nrm / np.maximum(nlen, 1e-300)[:, None]
+    edges = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2)
+    tol_abs = params.depth_tolerance if params.depth_tolerance is not None else 0.05 * float(np.median(edges))
+    probes = np.concatenate([cen[:, None], 0.8 * tri + 0.2 * cen[:, None]], axis=1)
+    return tri, cen, nrm, nlen, probes, tol_abs
+
+
+def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), k: int | None = None):
     """The ``k`` (default ``params.max_views``) best views of every face.
+
+    A view is a full candidate when the face is wholly inside the image, faces the camera at a
+    cosine of at least ``params.min_cos`` and all four probe points are visible; with
+    ``params.last_resort`` a face that has no full candidate may still take a view that sees it
+    at a grazing angle (cosine above 0) or sees its centroid while up to three corner probes
+    are hidden (a face cut by another part of the mesh, such as a wall running into a roof). Full candidates always rank before last-resort views; within each
+    group, views rank by the face's visible projected area.
 
     Returns
     -------
     views : (m, k) int64
         Image ids, best first; -1 where fewer than k views see the face.
     weights : (m, k) float64
-        Projected area of the face in each view, pixels² (0 where no view).
+        Visible projected area of the face in each view, pixels²: its projected area times
+        the share of its probe points that are visible (0 where no view).
     gsd : (m,) float64
         Ground sample distance of the best view at the face (mesh units per pixel; NaN if none).
+    full : (m, k) bool
+        Whether each view is a full candidate (False for last-resort views and empty slots).
     """
     from workstation.interop.open3d_raycast import RaycastScene
     from workstation.interop.pymeshlab import default_origin
@@ -154,18 +198,10 @@ def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
     m = len(F)
     k = int(params.max_views if k is None else k)
     origin = default_origin(V)
-    tri = V[F]
-    cen = tri.mean(axis=1)
-    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    nlen = np.linalg.norm(nrm, axis=1)
-    nrm = nrm / np.maximum(nlen, 1e-300)[:, None]
-    edges = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2)
-    tol_abs = params.depth_tolerance if params.depth_tolerance is not None else 0.05 * float(np.median(edges))
-    # probe points: the centroid and three points 20 % of the way from each corner to it
-    probes = np.concatenate([cen[:, None], 0.8 * tri + 0.2 * cen[:, None]], axis=1)  # (m, 4, 3)
+    tri, cen, nrm, nlen, probes, tol_abs = _face_probes(mesh, params)
     caster = RaycastScene(V - origin, F)
     views = np.full((m, k), -1, dtype=np.int64)
-    weights = np.zeros((m, k))
+    rank = np.zeros((m, k))  # weight, plus FULL_VIEW_RANK for full candidates
     gsd_slot = np.full((m, k), np.nan)
     for iid, im in rec.images.items():
         cam = rec.cameras[im.camera_id]
@@ -177,7 +213,7 @@ def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
         ray = C - cen
         dist = np.linalg.norm(ray, axis=1)
         cosang = np.abs(np.einsum("ij,ij->i", nrm, ray)) / np.maximum(dist, 1e-300)
-        ok &= (cosang >= params.min_cos) & (nlen > 0)
+        ok &= (cosang > 0 if params.last_resort else cosang >= params.min_cos) & (nlen > 0)
         idx = np.flatnonzero(ok)
         if idx.size == 0:
             continue
@@ -185,23 +221,36 @@ def select_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
         d = p - C
         dl = np.linalg.norm(d, axis=1)
         t, _ = caster.cast(np.broadcast_to(C - origin, d.shape), d / dl[:, None])
-        seen = (t >= dl - (tol_abs + 1e-4 * dl)).reshape(-1, 4).all(axis=1)
-        idx = idx[seen]
+        vis = (t >= dl - (tol_abs + 1e-4 * dl)).reshape(-1, 4)
+        full = vis.all(axis=1) & (cosang[idx] >= params.min_cos)
+        keep = full | (params.last_resort & vis[:, 0])
+        idx, full, share = idx[keep], full[keep], vis[keep].mean(axis=1)
         if idx.size == 0:
             continue
         area = 0.5 * np.abs((u[idx, 1] - u[idx, 0]) * (v[idx, 2] - v[idx, 0])
-                            - (u[idx, 2] - u[idx, 0]) * (v[idx, 1] - v[idx, 0]))
-        slot = np.argmin(weights[idx], axis=1)
-        better = area > weights[idx, slot]
+                            - (u[idx, 2] - u[idx, 0]) * (v[idx, 1] - v[idx, 0])) * share
+        r = area + FULL_VIEW_RANK * full
+        slot = np.argmin(rank[idx], axis=1)
+        better = r > rank[idx, slot]
         j, s = idx[better], slot[better]
         views[j, s] = iid
-        weights[j, s] = area[better]
+        rank[j, s] = r[better]
         gsd_slot[j, s] = z[j].mean(axis=1) / (0.5 * (cam.fx + cam.fy))
-    order = np.argsort(-weights, axis=1, kind="stable")
+    order = np.argsort(-rank, axis=1, kind="stable")
     views = np.take_along_axis(views, order, axis=1)
-    weights = np.take_along_axis(weights, order, axis=1)
+    rank = np.take_along_axis(rank, order, axis=1)
+    # a face keeps its last-resort views only when it has no full candidate
+    has_full = rank[:, 0] >= FULL_VIEW_RANK
+    drop = has_full[:, None] & (rank < FULL_VIEW_RANK)
+    views[drop] = -1
+    weights = np.where(drop, 0.0, np.where(rank >= FULL_VIEW_RANK, rank - FULL_VIEW_RANK, rank))
     gsd = np.take_along_axis(gsd_slot, order, axis=1)[:, 0]
-    return views, weights, gsd
+    return views, weights, gsd, rank >= FULL_VIEW_RANK
+
+
+#: Added to a full candidate's weight when ranking views (above any projected area in pixels²),
+#: so that last-resort views never displace a full candidate.
+FULL_VIEW_RANK = 1e15
 
 
 # ------------------------------------------------------------------------------------- atlas
@@ -374,7 +423,7 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         raise InvalidInputError("the reconstruction has no oriented images", field="reconstruction")
     with Timer() as t:
         photos = _PhotoCache(rec, images, image_root)
-        views, weights, gsd, gains, check = _candidate_views(mesh, rec, params, photos)
+        views, weights, gsd, gains, check, full = _candidate_views(mesh, rec, params, photos)
         seen = views[:, 0] >= 0
         if not seen.any():
             raise StageError(STAGE, "no face is seen whole by any photo",
@@ -387,7 +436,7 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         _paint_unseen(tex, mesh, seen, atlas, corners, params)
         texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
         out = _textured_mesh(mesh, atlas, views, texture)
-    step = _texture_record(mesh, rec, params, atlas, views, seen, t.seconds, gains, check)
+    step = _texture_record(mesh, rec, params, atlas, views, seen, seen & ~full, t.seconds, gains, check)
     log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
              int(seen.sum()), mesh.n_faces)
     return out, step
@@ -397,26 +446,38 @@ def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, pho
     """The ``params.max_views`` views of every face (best first), after the exposure balance
     and the photo-consistency check (module description, steps 1, 4 and 5) when asked.
 
-    Returns (views (m, k), weights (m, k), gsd (m,), gains, check): ``gains`` image id -> (3,)
-    (empty without the balance), ``check`` a summary of the consistency check (empty when off)."""
+    Returns (views (m, k), weights (m, k), gsd (m,), gains, check, full (m,)): ``gains`` image
+    id -> (3,) (empty without the balance), ``check`` a summary of the consistency check (empty
+    when off), ``full`` whether the face has full candidate views (False: last-resort views or
+    none; a face never mixes the two, :func:`ranked_views`)."""
     k = params.max_views
     kc = max(k, CONSISTENCY_VIEWS if params.photo_consistency else BALANCE_VIEWS if params.exposure_balance else k)
-    views, weights, gsd = select_views(mesh, rec, params, kc)
+    views, weights, gsd, full = ranked_views(mesh, rec, params, kc)
+    face_full = full.any(axis=1)
     if kc == k:
-        return views, weights, gsd, {}, {}
+        return views, weights, gsd, {}, {}, face_full
     colour = face_colours(mesh, rec, views, photos)
     nb = BALANCE_VIEWS if params.photo_consistency else kc
-    gains = exposure_gains(views[:, :nb], colour[:, :nb]) if params.exposure_balance else {}
+    # last-resort views (grazing, partly hidden) blend other surfaces: they take no part in the
+    # exposure balance nor in the consistency vote
     check = {}
-    if params.photo_consistency:
-        g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
-        balanced = colour * g[views + 1]  # slot -1 (no view) takes row 0
-        # a face covering fewer pixels than it has colour samples blends its neighbours' colours
-        big = weights >= len(_SAMPLE_BARY)
-        sigma = colour_noise(np.where(big[..., None], balanced, np.nan))
-        keep = consistent_views(views, balanced, sigma, eligible=big)
-        if params.exposure_balance:  # the gains again, without the occluded views
-            gains = exposure_gains(np.where(keep, views, -1)[:, :nb], colour[:, :nb])
+    if not params.photo_consistency:
+        gains = exposure_gains(np.where(full, views, -1)[:, :nb], colour[:, :nb]) if params.exposure_balance else {}
+    else:
+        # every full view votes, however few pixels the face covers: a sub-pixel face's colour
+        # is its surroundings', which still shows an occluder in front of it
+        big = full
+        # the check first on the photos as they are (gains estimated over views that show an
+        # occluder would spread its colour into every photo's gain), then the gains over the
+        # views kept, the check again with them, and the gains once more
+        keep, gains = (views >= 0) & full, {}
+        for _ in range(2 if params.exposure_balance else 1):
+            g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
+            balanced = colour * g[views + 1]  # slot -1 (no view) takes row 0
+            sigma = colour_noise(np.where(big[..., None], balanced, np.nan))
+            keep = consistent_views(views, balanced, sigma, eligible=big)
+            if params.exposure_balance:  # the gains without the occluded views
+                gains = exposure_gains(np.where(keep & full, views, -1)[:, :nb], colour[:, :nb])
         dropped = (views >= 0) & ~keep
         check = {"colour_sigma": round(sigma, 3), "views_dropped": int(dropped.sum()),
                  "faces_with_dropped_views": int(dropped.any(axis=1).sum())}
@@ -425,7 +486,7 @@ def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, pho
         order = np.argsort(-weights, axis=1, kind="stable")
         views = np.take_along_axis(views, order, axis=1)
         weights = np.take_along_axis(weights, order, axis=1)
-    return views[:, :k], weights[:, :k], gsd, gains, check
+    return views[:, :k], weights[:, :k], gsd, gains, check, face_full
 
 
 class _PhotoCache:
@@ -450,122 +511,6 @@ class _PhotoCache:
                 a = np.round(a.astype(np.float64) / 257.0).clip(0, 255).astype(np.uint8)
             self.cache[iid] = a[:, :, :3]
         return self.cache[iid]
-
-
-#: Views per face compared when balancing exposure; Brown & Lowe's sigmas (grey levels, gain).
-BALANCE_VIEWS, SIGMA_N, SIGMA_G = 4, 10.0, 0.1
-#: Candidate views per face for the photo-consistency check; the Gaussian kernel value below
-#: which Waechter et al. drop a view (6e-3, a Mahalanobis distance of sqrt(-2 ln 6e-3) = 3.2).
-CONSISTENCY_VIEWS, CONSISTENCY_KERNEL = 8, 6e-3
-def _sample_bary(n: int = 4) -> np.ndarray:
-    """(n², 3) barycentric centroids of the n² triangles of a face split n times along each
-    edge: points spread evenly over the face, whose mean colour stands for the face's."""
-    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
-    up = np.stack([i, j, n - 1 - i - j], -1)[i + j <= n - 1] + 1 / 3
-    down = np.stack([i, j, n - 2 - i - j], -1)[i + j <= n - 2] + 2 / 3
-    return np.concatenate([up, down]) / n
-
-
-_SAMPLE_BARY = _sample_bary()
-
-
-def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos: _PhotoCache) -> np.ndarray:
-    """(m, k, 3) mean colour of every face in each of its ``views`` (m, k): the photo sampled
-    bilinearly at 16 points spread evenly over the face (:func:`_sample_bary`) and averaged; NaN
-    where the slot holds no view. Shared by the exposure balance and the photo-consistency
-    check."""
-    from workstation.registration.colorize import bilinear, project
-
-    pts = np.einsum("pk,mkd->mpd", _SAMPLE_BARY, mesh.vertices[mesh.faces])  # (m, p, 3)
-    npt = len(_SAMPLE_BARY)
-    colour = np.full(views.shape + (3,), np.nan)
-    for iid in np.unique(views[views >= 0]):
-        f, s = np.nonzero(views == iid)
-        im = rec.images[int(iid)]
-        cam = rec.cameras[im.camera_id]
-        u, v, _ = project(pts[f].reshape(-1, 3), cam, im.pose)
-        c = bilinear(photos(int(iid)), np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
-        colour[f, s] = c.reshape(-1, npt, 3).mean(axis=1)
-    return colour
-
-
-def exposure_gains(views: np.ndarray, colour: np.ndarray) -> dict:
-    """Per-photo, per-channel gains (image id -> (3,) float) that make the photos agree where
-    they see the same faces (Brown & Lowe 2007, section 6; module description, step 4).
-
-    ``views`` (m, k): the faces' candidate views; ``colour`` (m, k, 3): their mean colours
-    (:func:`face_colours`). For each pair of photos i, j, N_ij counts the faces both see and
-    I_ij is photo i's mean colour over those faces; the gains g minimise
-    sum N_ij ((g_i I_ij - g_j I_ji)^2 / SIGMA_N^2 + (1 - g_i)^2 / SIGMA_G^2), one linear system
-    per channel. Photos sharing no face keep gain 1."""
-    ids = np.unique(views[views >= 0])
-    if ids.size < 2 or views.shape[1] < 2:
-        return {}
-    slot = np.searchsorted(ids, np.maximum(views, ids[0]))
-    n = ids.size
-    N = np.zeros((n, n))
-    S = np.zeros((n, n, 3))  # S[i, j]: sum of photo i's colours over the faces i and j share
-    for a in range(views.shape[1]):
-        for b in range(views.shape[1]):
-            both = (views[:, a] >= 0) & (views[:, b] >= 0) & (a != b)
-            np.add.at(N, (slot[both, a], slot[both, b]), 1.0)
-            np.add.at(S, (slot[both, a], slot[both, b]), colour[both, a])
-    I = S / np.maximum(N, 1.0)[..., None]
-    gains = np.ones((n, 3))
-    alone = N.sum(axis=1) == 0
-    for c in range(3):
-        A = np.diag((N * (2 * I[..., c] ** 2 / SIGMA_N**2 + 1 / SIGMA_G**2)).sum(axis=1))
-        A -= 2 * N * I[..., c] * I[..., c].T / SIGMA_N**2 * (1 - np.eye(n))
-        b = N.sum(axis=1) / SIGMA_G**2
-        A[alone, alone], b[alone] = 1.0, 1.0
-        gains[:, c] = np.linalg.solve(A, b)
-    return {int(i): gains[k] for k, i in enumerate(ids)}
-
-
-def colour_noise(colour: np.ndarray) -> float:
-    """Robust standard deviation (grey levels, per channel) of one view's mean face colour:
-    from the differences between every two views of the same face (each difference has
-    variance 2 sigma^2), sigma = 1.4826 median |difference| / sqrt(2); views of an occluder
-    are a minority of the pairs and do not move the median. At least 1 grey level (the photos'
-    8-bit step and their resampling)."""
-    k = colour.shape[1]
-    a, b = np.triu_indices(k, 1)
-    d = np.abs(colour[:, a] - colour[:, b])
-    d = d[np.isfinite(d)]
-    if d.size == 0:
-        return 1.0
-    return max(1.0, 1.4826 * float(np.median(d)) / math.sqrt(2.0))
-
-
-def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterations: int = 5,
-                     eligible: np.ndarray | None = None) -> np.ndarray:
-    """(m, k) bool: the views whose colour agrees with the face's dominant colour (Waechter,
-    Moehrle & Goesele 2014, section 4.1, with a flat kernel of the paper's radius).
-
-    The radius is r = sqrt(-2 ln CONSISTENCY_KERNEL) sigma (3.2 sigma; ``sigma``: the colour
-    noise, :func:`colour_noise`). For faces with >= 3 views, the centre starts at the view
-    colour with the most other views within r (ties: the best view) and moves to the mean of
-    the view colours within r of it, a few times (mean shift); views farther than r from the
-    final centre are occluded by something the mesh lacks (a tree, a passer-by) and dropped.
-    Faces with fewer views, and each face's starting view, keep their views. ``eligible``
-    (m, k) bool, optional: the views that take part (the others are kept as they are)."""
-    ok = views >= 0 if eligible is None else (views >= 0) & eligible
-    col = np.where(ok[..., None], colour, 0.0)
-    r = math.sqrt(-2.0 * math.log(CONSISTENCY_KERNEL)) * sigma
-    d = np.linalg.norm(col[:, :, None] - col[:, None, :], axis=3)  # (m, k, k)
-    near = (d <= r) & ok[:, :, None] & ok[:, None, :]
-    start = np.argmax(near.sum(axis=2), axis=1)
-    rows = np.arange(len(views))
-    centre = col[rows, start]
-    for _ in range(iterations):
-        inside = ok & (np.linalg.norm(col - centre[:, None], axis=2) <= r)
-        inside[rows, start] = True
-        centre = (col * inside[..., None]).sum(axis=1) / inside.sum(axis=1)[:, None]
-    keep = ok & (np.linalg.norm(col - centre[:, None], axis=2) <= r)
-    keep[rows, start] = ok[rows, start]
-    few = ok.sum(axis=1) < 3
-    keep[few] = ok[few]
-    return keep | ((views >= 0) & ~ok)
 
 
 def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
@@ -643,21 +588,26 @@ def _textured_mesh(mesh: Mesh, atlas: Atlas, views: np.ndarray, texture: np.ndar
 
 
 def _texture_record(mesh: Mesh, rec: Reconstruction, params: TextureParams, atlas: Atlas, views: np.ndarray,
-                    seen: np.ndarray, seconds: float, gains: Mapping[int, np.ndarray], check: Mapping) -> StepRecord:
+                    seen: np.ndarray, last: np.ndarray, seconds: float, gains: Mapping[int, np.ndarray],
+                    check: Mapping) -> StepRecord:
     """The step record: texel size (mesh units) used and requested, limits, texture size (px),
-    faces and area fraction textured, number of images and of views used, the range of the
-    exposure gains and the photo-consistency check's colour noise and dropped views."""
+    faces and area fraction textured (of them, from last-resort views: ``last``), number of
+    images and of views used, the range of the exposure gains and the photo-consistency
+    check's colour noise and dropped views."""
     area = mesh.face_areas()
     g = np.array(list(gains.values())) if gains else np.ones((1, 3))
     return StepRecord(
         STAGE,
         {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
          "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos,
-         "exposure_balance": params.exposure_balance, "photo_consistency": params.photo_consistency},
+         "exposure_balance": params.exposure_balance, "photo_consistency": params.photo_consistency,
+         "last_resort": params.last_resort},
         seconds,
         {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
          "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
          "area_textured_fraction": float(area[seen].sum() / max(area.sum(), 1e-300)),
+         "faces_last_resort": int(last.sum()),
+         "area_last_resort_fraction": float(area[last].sum() / max(area.sum(), 1e-300)),
          "views_used": int(np.unique(views[seen, 0]).size),
          "exposure_gain_range": [round(float(g.min()), 4), round(float(g.max()), 4)],
          "photo_consistency": dict(check)},
