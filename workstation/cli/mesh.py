@@ -6,7 +6,7 @@ import click
 
 from workstation.cli.options import allow_outside_option
 from workstation.mesh import (BallPivotingParams, CleanParams, Delaunay25dParams, MeshChainParams, NormalParams,
-                              PoissonParams, SmoothParams, TextureParams)
+                              PoissonParams, RefineParams, SmoothParams, TextureParams)
 from workstation.mesh.chain import METHODS
 from workstation.mesh.normals import ORIENTATIONS
 from workstation.mesh.reconstruct import POISSON_BACKENDS
@@ -38,6 +38,9 @@ MIN_PIECE_FRACTION = 0.05
           help="Poisson screening weight (0 = unscreened) [default: twice the backend's B-spline degree: 2 open3d, 4 pymeshlab]."),
     bound(PoissonParams, "trim_quantile", "--trim-quantile", type=FiniteFloatRange(0, 1, max_open=True), show_default=True,
           help="Remove Poisson vertices below this quantile of sample density (fraction; 0 = keep all)."),
+    bound(PoissonParams, "support_trim", "--support-trim", type=nonneg_float, show_default=True,
+          help="Remove Poisson vertices farther than this many point spacings from every point (surface "
+               "invented over holes and unseen parts; 0 = keep)."),
     bound(PoissonParams, "backend", "--poisson-backend", type=RegistryChoice(POISSON_BACKENDS), show_default=True,
           help="Open3D's build of screened PoissonRecon, or MeshLab's filter (same code, 2x slower here: PyMeshLab #408)."),
     bound(PoissonParams, "threads", "--threads", type=nonneg_int, show_default=True,
@@ -58,6 +61,9 @@ MIN_PIECE_FRACTION = 0.05
               help="Scanner position (CRS units) the normals must face.")
 @param_group("normals", bound(NormalParams, "recompute", "--recompute-normals", is_flag=True,
                               help="Estimate normals even when the cloud has them."))
+@click.option("--refine-k", type=click.IntRange(3, 1000), default=None,
+              help="Project the vertices onto the moving-least-squares planes of this many cloud points after "
+                   "reconstruction (averages the noise of photogrammetric clouds, e.g. 48) [default: off].")
 @click.option("--target-faces", type=click.IntRange(4, None), default=None,
               help="Quadric edge-collapse decimation to this face count [default: no decimation].")
 @param_group(
@@ -92,6 +98,9 @@ MIN_PIECE_FRACTION = 0.05
           help="Texture: photos blended per face (1 = the sharpest view)."),
     bound(TextureParams, "exposure_balance", "--exposure-balance/--no-exposure-balance", show_default=True,
           help="Texture: balance the photos' exposure and white balance by per-photo gains (Brown & Lowe 2007)."),
+    bound(TextureParams, "last_resort", "--last-resort/--no-last-resort", show_default=True,
+          help="Texture: a face no photo sees frontally and whole takes a grazing or partly hidden view rather "
+               "than none."),
     bound(TextureParams, "photo_consistency", "--photo-consistency/--no-photo-consistency", show_default=True,
           help="Texture: drop the photos whose colour of a face disagrees with most others (an occluder the mesh "
                "lacks: trees, people, cars) before choosing its photo (Waechter et al. 2014)."),
@@ -100,8 +109,8 @@ MIN_PIECE_FRACTION = 0.05
 @allow_outside_option
 @read_options
 @json_option
-def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoint, target_faces, smooth, clean,
-         no_color, no_quality, workdir, image_dir, texture, overwrite, read_opts, as_json):
+def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoint, refine_k, target_faces, smooth,
+         clean, no_color, no_quality, workdir, image_dir, texture, overwrite, read_opts, as_json):
     """Mesh the cloud IN and write OUT (.ply, .obj, .glb, .gltf, .off) with a quality summary.
 
     With --reconstruction the mesh is textured from the oriented photos: OUT.obj comes with
@@ -131,7 +140,8 @@ def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoi
     params = MeshChainParams(
         method=method, normals=NormalParams(**normals), poisson=PoissonParams(**poisson),
         ball_pivoting=BallPivotingParams(**ball_pivoting), delaunay=Delaunay25dParams(**delaunay),
-        clean=CleanParams(**clean), decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
+        refine=RefineParams(k=refine_k) if refine_k else None, clean=CleanParams(**clean),
+        decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
         smooth=SmoothParams(**smooth) if smooth["method"] != "none" else None,
         color=None if no_color else ColorTransferParams(), quality=None if no_quality else QualityParams(),
         texture=TextureParams(**texture),
