@@ -174,13 +174,13 @@ def test_refine_to_cloud_averages_the_noise_of_the_points():
     from workstation.mesh import PoissonParams, poisson
     from workstation.mesh.reconstruct import RefineParams, refine_to_cloud
 
-    n = 40_000
+    n = 15_000
     i = np.arange(n) + 0.5
     phi, th = np.arccos(1 - 2 * i / n), np.pi * (1 + 5 ** 0.5) * i
     u = np.column_stack([np.cos(th) * np.sin(phi), np.sin(th) * np.sin(phi), np.cos(phi)])
     r = 2.0 + np.random.default_rng(0).normal(0, 0.02, n)  # 2 cm noise on a 2 m sphere
     cloud = Cloud(ORIGIN + r[:, None] * u, {"normal": u})
-    mesh, _ = poisson(cloud, PoissonParams(depth=7, trim_quantile=0.0, support_trim=0.0, point_weight=4.0, threads=1))
+    mesh, _ = poisson(cloud, PoissonParams(depth=6, trim_quantile=0.0, support_trim=0.0, point_weight=4.0, threads=1))
     refined, rec = refine_to_cloud(mesh, cloud, RefineParams(k=48))
     err = lambda m: np.abs(np.linalg.norm(m.vertices - ORIGIN, axis=1) - 2.0)  # noqa: E731
     assert np.sqrt(np.mean(err(refined) ** 2)) < 0.6 * np.sqrt(np.mean(err(mesh) ** 2))
