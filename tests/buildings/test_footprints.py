@@ -80,7 +80,7 @@ def test_buildings_are_separated_and_small_blobs_dropped():
 
 
 def test_trace_outline_is_contourpys_level_half_line():
-    """The direct serial generator gives contourpy.contour_generator's longest level-0.5 line."""
+    """trace_outline gives contourpy.contour_generator's longest level-0.5 line, in metres."""
     import contourpy
 
     from workstation.buildings.footprints import trace_outline
@@ -93,3 +93,70 @@ def test_trace_outline_is_contourpys_level_half_line():
     got = trace_outline(field, np.array([10.0, 20.0]), 0.25)
     assert len(ring) > 20 and np.allclose(ring[0], ring[-1])
     assert np.array_equal(got, np.array([10.0, 20.0]) + (ring[:-1] - 1 + 0.5) * 0.25)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_small_cross_t_keeps_its_stem(seed):
+    """A small T (10.4 x 7.1 m: a stem 3.8 m wide and 2.8 m long) is traced with its eight
+    corners at right angles and IoU >= 0.9, whatever its yaw."""
+    rng = np.random.default_rng(seed)
+    b = synth.SynthBuilding("cross_t", (0.0, 0.0), 10.4, 7.1, rng.uniform(0, np.pi), 6.0, 3.0, 100.0)
+    pts = synth.sample_building(b, 10.0, 0.03, rng)
+    fps, _ = extract_footprints(pts[:, :2])
+    assert len(fps) == 1
+    poly = fps[0].polygon
+    assert len(poly) == 8
+    assert np.allclose(_angles(poly), 90.0, atol=1.0)
+    assert _iou(poly, b.footprint()) >= 0.9
+
+
+def test_roof_density_is_measured_in_the_roof_cores():
+    """On small roofs (most cells near a margin) the reference density is the roofs' own, so the
+    level-0.5 outline of a 7 x 6 m rectangle crosses the middle of its sides within 0.15 m."""
+    from workstation.buildings.footprints import density_field, trace_outline
+
+    rng = np.random.default_rng(3)
+    rho, s = 10.0, 10.0 ** -0.5
+    boxes = [(x0, 0.0, x0 + 7.0, 6.0) for x0 in np.arange(0.0, 200.0, 20.0)]
+    xy = np.vstack([_uniform(rng, rho, box) for box in boxes])
+    field, origin, cell, ref = density_field(xy, s)
+    actual = len(xy) / sum((c - a) * (d - b) for a, b, c, d in boxes) * cell * cell
+    assert ref == pytest.approx(actual, rel=0.04)  # the median over all covered cells: 37 % low
+    first = np.where(np.arange(field.shape[1]) * cell + origin[0] < 10.0, field, 0.0)  # the first roof alone
+    ring = trace_outline(first, origin, cell)
+    across = ring[np.abs(ring[:, 1] - 3.0) < 0.5, 0]  # the outline across the middle of each side
+    along = ring[np.abs(ring[:, 0] - 3.5) < 0.5, 1]
+    assert np.abs([across.min(), across.max() - 7.0, along.min(), along.max() - 6.0]).max() < 0.15
+
+
+def _uniform(rng, rho, box):
+    a, b, c, d = box
+    n = rng.poisson(rho * (c - a) * (d - b))
+    return np.column_stack([rng.uniform(a, c, n), rng.uniform(b, d, n)])
+
+
+def test_edges_move_to_their_maximum_likelihood_place():
+    """Edge lines started 0.3 m off move to within 5 cm of a uniformly sampled rectangle's sides;
+    two stray points 0.5 m outside one side do not pull it."""
+    from workstation.buildings.footprints import _fit_offsets, edge_intersections
+
+    rng = np.random.default_rng(5)
+    pts = np.vstack([_uniform(rng, 10.0, (0.0, 0.0, 12.0, 8.0)), [[6.0, 8.5], [7.0, 8.5]]])
+    dirs = np.array([[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]])
+    mids = np.array([[6.0, 0.3], [11.7, 4.0], [6.0, 7.7], [0.3, 4.0]])
+    lengths = np.array([12.0, 8.0, 12.0, 8.0])
+    got = _fit_offsets(dirs, mids, lengths, pts, 0.8, 0.3, 0.6, 10.0, 3.0)
+    corners = edge_intersections(dirs, got)
+    assert np.abs(corners - np.array([[0, 0], [12, 0], [12, 8], [0, 8]])).max() < 0.05
+
+
+def test_points_direction_of_a_rectangle():
+    """The minimum-area rectangle of uniformly sampled points gives a building's yaw within 0.3 degrees."""
+    from workstation.buildings.footprints import _points_direction
+
+    rng = np.random.default_rng(6)
+    for yaw in np.radians([3.0, 27.0, 61.0]):
+        b = synth.SynthBuilding("flat", (0.0, 0.0), 12.0, 8.0, yaw, 6.0, 3.0, 0.0)
+        pts = synth.sample_building(b, 10.0, 0.03, rng)
+        err = (_points_direction(pts[:, :2]) - yaw + np.pi / 4) % (np.pi / 2) - np.pi / 4
+        assert abs(np.degrees(err)) < 0.3

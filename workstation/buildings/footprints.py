@@ -5,24 +5,27 @@ Briese 2002), with the occupancy raster replaced by a smoothed density so edges 
 without the bias of occupied cells:
 
 1. Rasterise the points (cell ``s / 2``), smooth the counts with a Gaussian (sigma
-   ``CORNER_RADIUS * s``) and divide by the typical roof density: the level 0.5 of that field
-   lies on a straight roof edge without bias (a symmetric kernel over a half-plane integrates to
-   one half at its edge), and gaps between scan lines vanish.
+   ``CORNER_RADIUS * s``) and divide by the typical roof density (measured in the cores of the
+   roofs, away from their margins): the level 0.5 of that field lies on a straight roof edge
+   without bias (a symmetric kernel over a half-plane integrates to one half at its edge), and
+   gaps between scan lines vanish.
 2. Threshold at 0.5, fill holes, label the connected components (scipy.ndimage).
 3. Trace each outline (contourpy, marching squares with sub-cell interpolation).
 4. Orthogonal buildings (Sampath & Shan 2007: most buildings are orthogonal): rotate the points
-   into the dominant direction (minimum-area rectangle, then refitted jointly on all edges),
-   open and close the mask with a square of the Douglas-Peucker tolerance, trace it, keep
-   axis-parallel edges, merge parallel runs, and move every edge onto the median of the
-   sub-cell outline along it (:func:`orthogonal_outline`).
+   into the frame of their minimum-area rectangle, rasterise them again, open and close the mask
+   with a square of the Douglas-Peucker tolerance, trace it, keep axis-parallel edges, merge
+   parallel runs, and move every edge to its maximum-likelihood place among the points
+   (:func:`orthogonal_outline`). When the points do not fit that outline (:func:`_outline`),
+   it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems) and
+   the outline under which the points are likelier is kept (:func:`_cost`).
 5. Other buildings: Douglas-Peucker (Douglas & Peucker 1973) and snapping of the edges within
    their angular uncertainty of the dominant direction (:func:`regularize`).
 
 All lengths derive from the nominal point spacing ``s = 1 / sqrt(density)`` (estimated from the
-nearest-neighbour distances when not given): cell ``s / 2``, smoothing ``2.5 s``,
+nearest-neighbour distances when not given): cell ``s / 2``, smoothing ``2.5 s`` (and ``1.5 s``),
 Douglas-Peucker tolerance ``2.5 s`` (about 3.5 times the lateral noise of the half-density
 outline of randomly sampled points, 0.7 s), snapping tolerance ``atan(2 s / L)`` for an edge of
-length L, clamped to 5-30 degrees.
+length L, clamped to 5-30 degrees, edge ends ``s`` left out when points place an edge.
 """
 
 from __future__ import annotations
@@ -141,6 +144,18 @@ CORNER_RADIUS = 2.5
 #: half-density outline of randomly sampled points (0.7 s, see :func:`regularize`).
 DP_TOLERANCE = 2.5
 
+#: Smoothing (in point spacings) of the second rectilinear candidate: it keeps wings and stems
+#: a few metres long that the wider smoothing rounds away (see :func:`_outline`).
+FINE_RADIUS = 1.5
+
+#: log(roof density / density of stray points outside a roof): what leaving a point outside an
+#: outline costs against the empty area inside it (strays at 5 % of the roof density).
+STRAY_WEIGHT = 3.0
+
+#: Length (in point spacings) left out at both ends of an edge when its points place it: the
+#: corner's own uncertainty, so points of a wing that meets the edge are not taken for its own.
+EDGE_MARGIN = 1.0
+
 
 def _dominant_direction_rect(p: np.ndarray) -> float:
     """Direction of the minimum-area rectangle of a ring (radians), refined by the
@@ -157,6 +172,17 @@ def _dominant_direction_rect(p: np.ndarray) -> float:
     if near.any():
         t0 += float((ln[near] * dev[near]).sum() / ln[near].sum())
     return t0
+
+
+def _points_direction(pts: np.ndarray) -> float:
+    """Direction (radians) of the minimum-area rectangle of a building's points: its sides rest
+    on the outermost points, whose distance to the true edge shrinks as 1 / (density x length),
+    unlike a smoothed outline's wander (square-root rate)."""
+    import shapely
+
+    rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.MultiPoint(pts)).exterior.coords)
+    e = rect[1] - rect[0]
+    return math.atan2(e[1], e[0])
 
 
 def _edges(ring, keep):
@@ -325,17 +351,19 @@ def ccw(ring: np.ndarray) -> np.ndarray:
     return ring if area > 0 else ring[::-1].copy()
 
 
-def density_field(xy: np.ndarray, spacing: float, ref: float | None = None):
-    """Smoothed point density on a raster of cell ``spacing / 2`` (Gaussian, sigma 1.5 spacing),
-    normalised so the interior of a roof is 1: the level 0.5 then lies on a straight roof edge
-    without bias (a symmetric kernel over a half-plane integrates to one half at its edge).
+def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radius: float = CORNER_RADIUS):
+    """Smoothed point density on a raster of cell ``spacing / 2`` (Gaussian, sigma ``radius``
+    spacings), normalised so the interior of a roof is 1 (by ``ref``, the smoothed count per
+    cell of a roof, estimated by :func:`_roof_density` when None): the level 0.5 then lies on a
+    straight roof edge without bias (a symmetric kernel over a half-plane integrates to one half
+    at its edge).
 
-    Returns (field (rows, cols), origin (2,), cell); rows follow y.
+    Returns (field (rows, cols), origin (2,), cell, ref); rows follow y.
     """
     from scipy import ndimage
 
     cell = spacing / 2
-    sig = CORNER_RADIUS * spacing / cell
+    sig = radius * spacing / cell
     pad = int(math.ceil(3 * sig)) + 2
     origin = xy.min(axis=0) - pad * cell
     ij = np.floor((xy - origin) / cell).astype(np.int64)
@@ -343,11 +371,28 @@ def density_field(xy: np.ndarray, spacing: float, ref: float | None = None):
     counts = np.bincount(ij[:, 1] * shape[1] + ij[:, 0], minlength=shape[0] * shape[1]).reshape(shape)
     field = ndimage.gaussian_filter(counts.astype(float), sig, mode="constant", truncate=3.0)
     if ref is None:
-        # the typical roof density: the median over covered cells, twice (the second without the
-        # thin margins); dense facade lines of a few cells do not move it, unlike the maximum
-        covered = field[field > 1e-3 * field.max()]
-        ref = float(np.median(covered[covered > 0.5 * np.median(covered)]))
+        ref = _roof_density(field, sig)
     return field / ref, origin, cell, ref
+
+
+def _roof_density(field: np.ndarray, sig: float) -> float:
+    """Typical smoothed roof density of a field smoothed with sigma ``sig`` (cells): the median
+    over the cells at least two sigmas inside the half-density mask, where the kernel lies wholly
+    on the roof (a straight edge at two sigmas still lowers the field by 2.3 %); the margins,
+    where the field falls off to half and below, would bias it low and move every outline out.
+
+    A first level comes from the median over covered cells, twice (the second without the thin
+    margins); it is kept when no core as large as the erosion square remains (tiny buildings only).
+    Dense facade lines of a few cells do not move either median, unlike the maximum.
+    """
+    from scipy import ndimage
+
+    covered = field[field > 1e-3 * field.max()]
+    first = float(np.median(covered[covered > 0.5 * np.median(covered)]))
+    size = 2 * int(math.ceil(2 * sig)) + 1
+    core = ndimage.minimum_filter((field > 0.5 * first).view(np.uint8), size=size)
+    inner = field[core.view(bool)]
+    return float(np.median(inner)) if inner.size >= size * size else first
 
 
 def fill_holes(mask: np.ndarray) -> np.ndarray:
@@ -376,13 +421,7 @@ def trace_outline(field: np.ndarray, origin: np.ndarray, cell: float) -> np.ndar
     import contourpy
 
     m = np.pad(np.asarray(field, np.float64), 1)
-    # contourpy's serial generator as contourpy.contour_generator makes it for a finite field
-    # (no mask, index coordinates), without that function's masked-array checks
-    x, y = np.meshgrid(np.arange(m.shape[1], dtype=np.float64), np.arange(m.shape[0], dtype=np.float64))
-    gen = contourpy.SerialContourGenerator(x, y, m, None, corner_mask=True, line_type=contourpy.LineType.Separate,
-                                           fill_type=contourpy.SerialContourGenerator.default_fill_type,
-                                           quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
-                                           x_chunk_size=0, y_chunk_size=0)
+    gen = contourpy.contour_generator(z=m, name="serial", line_type=contourpy.LineType.Separate)
     ring = max(gen.lines(0.5), key=len)
     if np.all(np.abs(ring[0] - ring[-1]) <= 1e-8 + 1e-5 * np.abs(ring[-1])):  # np.allclose
         ring = ring[:-1]
@@ -394,44 +433,40 @@ def _rot(p: np.ndarray, theta: float) -> np.ndarray:
     return np.column_stack([p[:, 0] * c - p[:, 1] * s, p[:, 0] * s + p[:, 1] * c])
 
 
-def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float) -> np.ndarray | None:
+def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float,
+                       radius: float = CORNER_RADIUS) -> np.ndarray | None:
     """Rectilinear outline of one building's points ``pts`` (m, 2) in its dominant frame, or
     None when the building is not orthogonal.
 
-    The points are rotated so the dominant direction (minimum-area rectangle of the traced
-    outline ``ring``, refined on its edges) is the x axis and rasterised again there; the
-    half-density mask is opened and closed with a square of the Douglas-Peucker tolerance
-    (removing teeth and notches smaller than that), traced, and reduced to axis-parallel edges;
-    each edge line is then moved to the median of the sub-cell half-density outline along it.
-    The result is kept when its symmetric difference with the traced outline is within 1.5
-    spacings times the perimeter (about 2.7 times what the outline's own lateral noise gives).
+    The points are rotated so the sides of their minimum-area rectangle
+    (:func:`_points_direction`) are the axes and rasterised again there, smoothed with sigma
+    ``radius`` spacings; the half-density mask is opened and closed with a square of the
+    Douglas-Peucker tolerance (removing teeth and notches smaller than that), traced, and reduced
+    to axis-parallel edges; each edge line is then moved to its maximum-likelihood place among
+    the points (:func:`_fit_offsets`). The result is kept when its symmetric difference with the
+    traced outline ``ring`` is within 1.5 spacings times the perimeter (about 2.7 times what the
+    outline's own lateral noise gives).
     """
     import shapely
-    from scipy import ndimage
 
-    theta0 = _dominant_direction_rect(ring)
+    theta0 = _points_direction(pts)
     centre = ring.mean(axis=0)
-    reach = float(np.linalg.norm(ring - centre, axis=1).max())
-    for _ in range(2):  # a second pass with the direction refitted on the first outline's edges
-        fit = _orthogonal_pass(_rot(pts - centre, -theta0), _rot(ring - centre, -theta0), spacing, ref)
-        if fit is None:
-            return None
-        poly, delta = fit
-        theta0 += delta
-        if abs(delta) * reach < spacing / 8:  # the refit would move no corner by a quarter cell
-            break
-    P, R = shapely.Polygon(poly), shapely.Polygon(_rot(ring - centre, -(theta0 - delta)))
+    poly = _orthogonal_pass(_rot(pts - centre, -theta0), spacing, ref, radius)
+    if poly is None:
+        return None
+    P, R = shapely.Polygon(poly), shapely.Polygon(_rot(ring - centre, -theta0))
     if not P.is_valid or P.symmetric_difference(R).area > 1.5 * spacing * R.length:
         return None
-    return ccw(_rot(poly, theta0 - delta) + centre)
+    return ccw(_rot(poly, theta0) + centre)
 
 
-def _orthogonal_pass(rp, fine, spacing, ref):
-    """One rectilinear fit in a rotated frame: (polygon (k, 2), direction correction (radians))."""
+def _orthogonal_pass(rp, spacing, ref, radius):
+    """One rectilinear fit of rotated points ``rp`` (m, 2), its edges along the axes: the
+    polygon (k, 2) or None."""
     import shapely
     from scipy import ndimage
 
-    field, origin, cell, _ = density_field(rp, spacing, ref)
+    field, origin, cell, _ = density_field(rp, spacing, ref, radius)
     lab, n = ndimage.label(fill_holes(field > 0.5))
     if n == 0:
         return None
@@ -452,45 +487,78 @@ def _orthogonal_pass(rp, fine, spacing, ref):
         return None
     segs = [sg for sg, c in zip(segs, sel) if c]
     dirs, mids = _lines(segs, chords[sel], cls[sel], 0.0, 0.0)
-    tol, trim = DP_TOLERANCE * spacing, 2 * CORNER_RADIUS * spacing
-    dirs, mids, ecls = _merge_runs(dirs, mids, cls[sel], L[sel], tol)
+    tol = DP_TOLERANCE * spacing
+    dirs, mids, _ = _merge_runs(dirs, mids, cls[sel], L[sel], tol)
     if len(dirs) < 4:
         return None
     corners = edge_intersections(dirs, mids)
     nxt = _nxt(corners)
-    mids, near = _refine_offsets(dirs, 0.5 * (corners + nxt), _norm(nxt - corners), fine, tol, trim)
+    mids = _fit_offsets(dirs, 0.5 * (corners + nxt), _norm(nxt - corners), rp, tol, EDGE_MARGIN * spacing,
+                        spacing, ref / (cell * cell), STRAY_WEIGHT)
     poly = _drop_short(edge_intersections(dirs, mids), cell / 2)
     if len(poly) < 4 or not shapely.is_valid(shapely.Polygon(poly)):
         return None
-    delta = _joint_direction(near, ecls, 0.0) if any(len(q) for q in near) else 0.0
-    return poly, (delta + math.pi / 4) % (math.pi / 2) - math.pi / 4
+    return poly
 
 
-def _refine_offsets(dirs, mids, lengths, fine, tol, trim):
-    """Move each axis-parallel edge line onto the median of the fine outline points ``fine``
-    that lie within ``tol`` of it and inside its extent less ``trim`` at both ends; returns the
-    moved points and, per edge, the fine points used."""
-    out, used = mids.copy(), []
+def _fit_offsets(dirs, mids, lengths, pts, tol, margin, min_band, density, weight):
+    """Move each edge line of a counter-clockwise polygon to its maximum-likelihood place among
+    the points ``pts`` within ``tol`` of it and inside its extent less ``margin`` at both ends
+    (the band), when that band is at least ``min_band`` (m) long.
+
+    With roof density ``density`` inside and stray points at density ``density * exp(-weight)``
+    outside, the negative log-likelihood of an edge at offset t (outward) is ``weight`` per point
+    beyond t plus ``density`` times the band area inside t; it is least at one of the points
+    (the outermost, unless the outermost few are sparse enough to be strays), to which the mean
+    gap of a Poisson process's last point, 1 / (density x band length), is added (one spacing for
+    a band one spacing long; shorter bands keep the mask's place). Edges with a band under three
+    points keep their place too.
+    """
+    out = mids.copy()
     for i, (d, m, L) in enumerate(zip(dirs, mids, lengths)):
-        used.append(np.zeros((0, 2)))
-        if not L > 2 * trim + tol:
+        band = L - 2 * margin
+        if band < min_band:
             continue
-        nrm = np.array([-d[1], d[0]])
-        rel = fine - m
+        nrm = np.array([d[1], -d[0]])  # outward (right-hand) normal of a counter-clockwise ring
+        rel = pts - m
         off = rel @ nrm
-        near = (np.abs(off) < tol) & (np.abs(rel @ d) < L / 2 - trim)
-        if np.count_nonzero(near) >= 3:
-            out[i] = m + nrm * _median(off[near])
-            used[-1] = fine[near]
-    return out, used
+        o = -np.sort(-off[(np.abs(off) < tol) & (np.abs(rel @ d) < band / 2)])
+        if len(o) < 3:
+            continue
+        j = int(np.argmin(weight * np.arange(len(o)) + density * band * o))
+        out[i] = m + nrm * (o[j] + 1.0 / (density * band))
+    return out
 
 
-def _median(v: np.ndarray) -> float:
-    """Median of a short 1-D array without NaNs (the value np.median gives, without its
-    general-axis machinery)."""
-    s = np.sort(v)
-    h = len(s) // 2
-    return float(s[h]) if len(s) % 2 else float((s[h - 1] + s[h]) / 2.0)
+def _cost(poly: np.ndarray, pts: np.ndarray, density: float, weight: float) -> float:
+    """Negative Poisson log-likelihood (up to constants) of a building's points ``pts`` (m, 2)
+    under the outline ``poly``: ``weight`` per point left outside plus ``density`` times the area
+    (the expected count of an empty area). ``weight`` is log(roof density / density of stray points)."""
+    import shapely
+
+    P = shapely.Polygon(poly)
+    n_out = len(pts) - int(np.count_nonzero(shapely.contains_xy(P, pts[:, 0], pts[:, 1])))
+    return weight * n_out + density * P.area
+
+
+def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell: float,
+             params: FootprintParams) -> np.ndarray:
+    """Footprint polygon of one building from its points and traced outline.
+
+    The rectilinear outline at ``CORNER_RADIUS`` is kept when the points explain it as well as
+    the true outline would on average: its cost (:func:`_cost`) exceeds the number of points,
+    the cost's expectation under the true outline, by less than that count's Poisson standard
+    deviation. Otherwise (a stem rounded away leaves points out, a filled notch adds empty area)
+    the outline at ``FINE_RADIUS`` is fitted too and the likelier kept; the regularised outline
+    when the building is not orthogonal at either radius."""
+    density = ref / (cell * cell)
+    first = orthogonal_outline(pts, ring, spacing, ref, CORNER_RADIUS)
+    if first is not None and _cost(first, pts, density, STRAY_WEIGHT) - len(pts) < math.sqrt(len(pts)):
+        return first
+    cands = [c for c in (first, orthogonal_outline(pts, ring, spacing, ref, FINE_RADIUS)) if c is not None]
+    if not cands:
+        return regularize(ring, spacing, params)
+    return cands[int(np.argmin([_cost(c, pts, density, STRAY_WEIGHT) for c in cands]))]
 
 
 def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams()):
@@ -523,8 +591,7 @@ def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams
         inside = fill_holes(sub)
         ring = trace_outline(np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), np.where(ndimage.binary_dilation(sub), field[sl], 0.0)), o, cell)
         remap[k] = len(out)
-        poly = orthogonal_outline(xy[point_comp == k], ring, spacing, ref)
-        out.append(Footprint(poly if poly is not None else regularize(ring, spacing, params)))
+        out.append(Footprint(_outline(xy[point_comp == k], ring, spacing, ref, cell, params)))
     if not out:
         raise StageError("footprints", f"no building larger than {params.min_area:g} m² in {len(xy)} points",
                          "check that building points are classified (class 6) or pass --footprints")
