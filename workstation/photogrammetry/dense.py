@@ -251,10 +251,35 @@ def _load_views(rec, depth_range=None, max_points: int = 200_000):
     return views, pts, ids, obs
 
 
+def _pair_point(vi: _View, vj: _View) -> np.ndarray:
+    """A scene point that view ``i`` and view ``j`` both look at, for a model without sparse
+    points: on ``i``'s optical axis, at the depth where it passes closest to ``j``'s axis
+    (two converging views aim at the scene), clamped to ``i``'s ``[near, far]``; where the
+    axes are within about 2° of parallel or meet behind a camera (nadir strips, diverging
+    views), the axis point at the harmonic mean of ``near`` and ``far``.
+
+    The harmonic mean alone is not enough: with a loose depth range (e.g. 5-120 m for a
+    building 50 m away) it lies far in front of the scene, where a neighbouring view does
+    not see it, and no source view would be chosen.
+    """
+    di, dj = vi.R[2], vj.R[2]
+    w0 = vi.center - vj.center
+    b, d, e = float(di @ dj), float(di @ w0), float(dj @ w0)
+    den = 1.0 - b * b
+    s = 2.0 / (1.0 / vi.near + 1.0 / vi.far)
+    if den > 1e-3:
+        si, sj = (b * e - d) / den, (e - b * d) / den  # closest points: Ci + si·di, Cj + sj·dj
+        if si > 0 and sj > 0:
+            s = float(np.clip(si, vi.near, vi.far))
+    return vi.center + di * s
+
+
 def select_sources(views, pts, obs, params: DenseParams) -> dict[int, list[int]]:
     """Source views per image: most shared sparse points whose median triangulation angle is in
     [min_angle_deg, max_angle_deg] (the view-selection heuristic of Goesele et al., *Multi-View
-    Stereo for Community Photo Collections*, ICCV 2007, simplified)."""
+    Stereo for Community Photo Collections*, ICCV 2007, simplified). Without sparse points
+    (given cameras) a candidate must see the pair's :func:`_pair_point` in frame, at a
+    triangulation angle in that range."""
     sets = {i: set(v) for i, v in obs.items()}
     out = {}
     for i, vi in views.items():
@@ -263,9 +288,8 @@ def select_sources(views, pts, obs, params: DenseParams) -> dict[int, list[int]]
             if j == i:
                 continue
             shared = np.fromiter(sets[i] & sets[j], np.int64)
-            if len(pts) == 0:  # no sparse points: the ray through the image centre at mid-depth
-                mid = 2.0 / (1.0 / vi.near + 1.0 / vi.far)
-                P = vi.center + vi.R[2] * mid
+            if len(pts) == 0:  # no sparse points: where the two optical axes meet
+                P = _pair_point(vi, vj)
                 xj = vj.K @ (vj.R @ P + vj.t)
                 if xj[2] <= 0 or not (0 <= xj[0] / xj[2] < vj.width and 0 <= xj[1] / xj[2] < vj.height):
                     continue
@@ -631,9 +655,9 @@ def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
     obs = {i: [] for i in views}
     tracks = []
     for i, srcs in sources.items():
-        vi = views[i]
-        mid = 2.0 / (1.0 / vi.near + 1.0 / vi.far)
-        P = vi.center + vi.R[2] * mid
+        if not srcs:
+            continue
+        P = _pair_point(views[i], views[srcs[0]])
         els = []
         for k in [i, *srcs]:
             x = views[k].K @ (views[k].R @ P + views[k].t)
@@ -668,6 +692,10 @@ def compute_depth_maps(dense_dir, params: DenseParams = DenseParams()) -> dict:
     rec = pycolmap.Reconstruction(str(d / "sparse"))
     views, pts, _, obs = _load_views(rec, params.depth_range)
     sources = select_sources(views, pts, obs, params)
+    if not any(sources.values()):
+        raise StageError("dense", f"no image has a source view (overlap and a triangulation angle of "
+                         f"{params.min_angle_deg:g}-{params.max_angle_deg:g}°)",
+                         "check the camera poses and DenseParams.depth_range")
     if len(pts) == 0:
         _add_overlap_points(rec, views, sources, d / "sparse")
     dm, nm = d / "stereo" / "depth_maps", d / "stereo" / "normal_maps"
