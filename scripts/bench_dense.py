@@ -98,7 +98,8 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
 
     ``dist``: (k1, k2) radial distortion rendered into the images; ``camera``: "self" (SfM
     self-calibrates: RADIAL with distortion, else the SfM default) or "given" (the true
-    intrinsics and distortion, held fixed, as ``ws sfm --camera``); ``samples_on``: "target"
+    intrinsics and distortion, held fixed, as ``ws sfm --camera``) or "true" (no SfM: the rig's
+    true cameras, with a loose depth range of 0.1-2.4 times the rig's distance); ``samples_on``: "target"
     (completeness on the target object) or "all" (every surface seen by ≥ 2 true cameras);
     ``scale``: image size and focal length times this (same footprint), one ray per pixel below 1.
     """
@@ -125,16 +126,19 @@ def bench_rig(work: Path, reuse: bool, render: str | None, min_consistent: int =
         make_rig(recipe, spec, rigdir, overwrite=True)
     t_render = time.perf_counter() - t0
     t0 = time.perf_counter()
-    if camera == "given":
-        sfm_cam, sfm_params = spec.camera(), SfMParams()
-    else:
-        sfm_cam, sfm_params = None, SfMParams(camera_model="RADIAL") if dist is not None else SfMParams()
-    if not (reuse and (sfmdir / "sparse" / "0").exists()):
+    extra = {}
+    if camera == "true":
+        shutil.rmtree(sfmdir, ignore_errors=True)
+        shutil.copytree(rigdir / "sparse" / "0", sfmdir / "sparse" / "0")
+        extra["depth_range"] = (0.1 * spec.distance, 2.4 * spec.distance)
+    elif not (reuse and (sfmdir / "sparse" / "0").exists()):
+        sfm_cam = spec.camera() if camera == "given" else None
+        sfm_params = SfMParams(camera_model="RADIAL") if dist is not None and camera == "self" else SfMParams()
         run_sfm(rigdir / "images", sfmdir, sfm_cam, params=sfm_params, overwrite=True)
     t_sfm = time.perf_counter() - t0
     c0, t0 = time.process_time(), time.perf_counter()
     cloud, summary = run_dense(sfmdir, rigdir / "images", _params(min_consistent=min_consistent, min_ncc=min_ncc,
-                                                                  fusion_min_pixels=fusion_min_pixels),
+                                                                  fusion_min_pixels=fusion_min_pixels, **extra),
                                overwrite=True)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     true = read_reconstruction(rigdir / "cameras.json")
@@ -331,7 +335,8 @@ def main() -> None:
     ap.add_argument("--fusion-min-pixels", type=int, default=2)
     ap.add_argument("--recipe", default="rig_heritage", help="rig: datasets_synth/NAME.toml")
     ap.add_argument("--dist", type=float, nargs=2, metavar=("K1", "K2"), help="rig: render with radial distortion")
-    ap.add_argument("--camera", choices=["self", "given"], default="self", help="rig: SfM self-calibrates or gets the true camera")
+    ap.add_argument("--camera", choices=["self", "given", "true"], default="self",
+                    help="rig: SfM self-calibrates, gets the true camera, or is skipped for the true poses")
     ap.add_argument("--scale", type=float, default=1.0, help="rig: image size and focal length times this")
     ap.add_argument("--samples-on", choices=["target", "all"], default="target", help="rig: completeness samples")
     ap.add_argument("--images", type=int, default=0, help="fountain: keep the first N images (0: all)")
