@@ -323,33 +323,100 @@ def _shapely_point(xy):
     return shapely.Point(float(xy[0]), float(xy[1]))
 
 
-def _part_outline(traced: np.ndarray, cell: float, direction: float) -> np.ndarray:
-    """Regularised outline of a part's traced raster outline (k, 2): that of
-    :func:`~workstation.buildings.footprints.regularize` at the raster cell when it stays on
-    average within half a cell of the traced outline (the symmetric difference over the
-    perimeter; the raster places an edge to half a cell), else the regularisation with the
-    simplification tolerance of one cell. The footprint
-    tolerance of several cells suits outlines of tens of metres; on a part a few metres across
-    (a dormer) it can cut a corner and its edges, which then lie too far from the points for
-    :func:`refine_step_edges` to place them."""
-    import shapely
+#: Douglas-Peucker tolerances (raster cells) of the candidate outlines of a building part: the
+#: footprints' (``footprints.DP_TOLERANCE``, 2.5) down to one cell.
+PART_DP_CELLS = (2.5, 2.0, 1.25, 1.0)
 
+
+def _part_outlines(traced: np.ndarray, cell: float, direction: float) -> list:
+    """Candidate regularised outlines of a part's traced raster outline (k, 2): the
+    regularisations (:func:`~workstation.buildings.footprints.regularize`) with the
+    simplification tolerances :data:`PART_DP_CELLS`, coarsest first, repeats left out. The
+    footprint tolerance suits outlines of tens of metres; on a part a few metres across (a
+    dormer) it can cut a corner off, whose edges then lie too far from the points for
+    :func:`refine_step_edges` to place them; a finer tolerance keeps the corner."""
     from .footprints import DP_TOLERANCE, regularize
 
-    ring = regularize(traced, cell, direction=direction)
-    ref = shapely.make_valid(shapely.Polygon(traced))
-    reg = shapely.make_valid(shapely.Polygon(ring)) if len(ring) >= 3 else shapely.Polygon()
-    if ref.length > 0 and reg.symmetric_difference(ref).area / ref.length > 0.5 * cell:
-        return regularize(traced, cell / DP_TOLERANCE, direction=direction)
-    return ring
+    out = []
+    for tol in PART_DP_CELLS:
+        ring = regularize(traced, cell * tol / DP_TOLERANCE, direction=direction)
+        if len(ring) >= 3 and not any(len(r) == len(ring) and np.allclose(r, ring) for r in out):
+            out.append(ring)
+    return out or [traced]
 
 
-def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_plane=None):
+def _part_outline(traced: np.ndarray, cell: float, direction: float) -> np.ndarray:
+    """Regularised outline of a part's traced raster outline (k, 2) when no points are at hand:
+    of :func:`_part_outlines`, the coarsest that stays within one cell of the traced outline
+    everywhere (Hausdorff distance; the staircase a raster traces along a straight edge of any
+    heading stays within sqrt(2) / 2 cell of it), else the one with the smallest Hausdorff
+    distance (a cut corner shows in the largest deviation, hardly in the average one)."""
+    import shapely
+
+    rings = _part_outlines(traced, cell, direction)
+    ref = shapely.linearrings(traced)
+    d = np.array([shapely.hausdorff_distance(shapely.linearrings(r), ref) for r in rings])
+    near = np.flatnonzero(d <= cell)
+    return rings[int(near[0]) if len(near) else int(np.argmin(d))]
+
+
+def _misfit(ring: np.ndarray, footprint, xy: np.ndarray, point_part: np.ndarray, q: int, cost: np.ndarray) -> float:
+    """Squared height error an outline (k, 2) of part ``q`` makes at the points: the labelled
+    points it puts on the wrong side (points of other parts inside it, within the footprint,
+    and points of ``q`` outside it), each with its ``cost`` (n,) (m), the vertical distance to
+    the nearest plane of the side it is put on."""
+    import shapely
+
+    poly = shapely.make_valid(shapely.Polygon(ring)).intersection(footprint)
+    inside = shapely.contains_xy(poly, xy[:, 0], xy[:, 1])
+    wrong = (point_part >= 0) & (inside != (point_part == q))
+    return float(np.sum(cost[wrong] ** 2))
+
+
+def _fitted_outline(traced, cell, direction, footprint, xy, point_part, q, cost) -> np.ndarray:
+    """Outline of part ``q`` from its traced raster outline: each candidate of
+    :func:`_part_outlines` with its step edges refitted (:func:`refine_step_edges`), the one
+    with the least squared height error at the building's labelled points (n, 2)
+    (:func:`_misfit`; the coarsest on a tie)."""
+    rings = [refine_step_edges(r, footprint, xy, point_part, q, cell) for r in _part_outlines(traced, cell, direction)]
+    if len(rings) == 1:
+        return rings[0] if len(rings[0]) >= 3 else traced
+    best, best_e = None, np.inf
+    for ring in rings:
+        if len(ring) < 3:
+            continue
+        e = _misfit(ring, footprint, xy, point_part, q, cost)
+        if e < best_e - 1e-12:
+            best, best_e = ring, e
+    return best if best is not None else traced
+
+
+def _side_cost(plane_dz, in_q: np.ndarray, own: np.ndarray) -> np.ndarray:
+    """Height error (n,) (m) of putting each point on the other side of part ``q``'s outline:
+    for a point of ``q`` (``own``), its vertical distance to the nearest plane of the other
+    parts, for any other point to the nearest plane of ``q`` (``in_q`` (planes,) bool); 1 m
+    each without ``plane_dz`` (n, planes)."""
+    if plane_dz is None or in_q.all() or not in_q.any():
+        return np.ones(len(own))
+    dz = np.abs(plane_dz)
+    return np.where(own, dz[:, ~in_q].min(axis=1), dz[:, in_q].min(axis=1))
+
+
+#: Smallest distance (m) kept between a cut of :func:`split_holes` and a vertex it passes: the
+#: CityJSON export's millimetre grid (:data:`workstation.buildings.export.SCALE`) would merge a
+#: vertex closer to the cut with the cut's own vertex into a degenerate ring.
+MIN_FEATURE = 1e-3
+
+
+def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_plane=None, plane_dz=None):
     """Shapely polygons tiling the footprint, one list per part: each smaller part is its
-    traced raster region, regularised (:func:`_part_outline`), its step edges placed between the
-    points of the parts (:func:`refine_step_edges`, when the points ``xy`` (n, 2) and their
-    plane indices ``point_plane`` (n,), -1 for none, are given) and clipped to the footprint;
-    the largest part is the rest."""
+    traced raster region, regularised (:func:`_part_outline`) and clipped to the footprint; when
+    the points ``xy`` (n, 2) and their plane indices ``point_plane`` (n,), -1 for none, are
+    given, its step edges are placed between the points of the parts (:func:`refine_step_edges`)
+    and of the candidate regularisations the one that misplaces the points least is taken
+    (:func:`_fitted_outline`; ``plane_dz`` (n, planes), each point's height above each plane
+    (m), weighs a misplaced point by its height error, else every one counts 1 m). The largest
+    part is the rest."""
     import shapely
 
     from .footprints import regularize, trace_outline
@@ -374,12 +441,15 @@ def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_p
         mask = (full == q) & near_fp
         if cells[q] < 4:
             continue
-        ring = _part_outline(trace_outline(mask.astype(float), o2, cell), cell, direction)
-        if len(ring) < 3:
-            continue
+        traced = trace_outline(mask.astype(float), o2, cell)
         if xy is not None:
             point_part = np.where(point_plane >= 0, part_of_plane[np.maximum(point_plane, 0)], -1)
-            ring = refine_step_edges(ring, footprint, xy, point_part, q, cell)
+            ring = _fitted_outline(traced, cell, direction, footprint, xy, point_part, q,
+                                   _side_cost(plane_dz, part_of_plane == q, point_part == q))
+        else:
+            ring = _part_outline(traced, cell, direction)
+        if len(ring) < 3:
+            continue
         geom = shapely.set_precision(shapely.make_valid(shapely.Polygon(ring)).intersection(footprint).difference(taken), GRID)
         polys = [g for g in getattr(geom, "geoms", [geom]) if g.geom_type == "Polygon" and g.area > 4 * cell * cell]
         if polys:
@@ -421,15 +491,20 @@ def _wall_rings(ring2d: np.ndarray, roof_xy: np.ndarray, roof_z: np.ndarray, gro
 
 def split_holes(poly) -> list:
     """A shapely polygon cut into polygons without holes (counter-clockwise): each hole is cut
-    through by the horizontal line through its centroid, and the halves are cut again while
-    they hold holes. A part around a raised part (a dormer) so becomes parts whose roof faces
-    have no holes (a :class:`RoofFace` stores the outer ring only); the cut is a wall shared by
-    two closed solids, as between the parts of a multi-level roof."""
+    through by the horizontal line through its centroid (through a vertex instead where one lies
+    within :data:`MIN_FEATURE` of that line), and the halves are cut again while they hold
+    holes. A part around a raised part (a dormer) so becomes parts whose roof faces have no
+    holes (a :class:`RoofFace` stores the outer ring only); the cut is a wall shared by two
+    closed solids, as between the parts of a multi-level roof."""
     import shapely
 
     if not len(poly.interiors):
         return [shapely.orient_polygons(poly)]
     y = shapely.Polygon(poly.interiors[0]).centroid.y
+    ys = shapely.get_coordinates(poly)[:, 1]
+    close = np.abs(ys - y) < MIN_FEATURE
+    if close.any():  # through that vertex, not a hair beside it
+        y = float(ys[close][np.argmin(np.abs(ys[close] - y))])
     x0, y0, x1, y1 = poly.bounds
     out = []
     for box in (shapely.box(x0 - 1, y0 - 1, x1 + 1, y), shapely.box(x0 - 1, y, x1 + 1, y1 + 1)):
@@ -744,7 +819,11 @@ def _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, nor
     """LoD2.2 solids and roof faces of every part polygon, and which planes (p,) bool hold a face."""
     solids, roofs = [], []
     used = np.zeros(len(normals), bool)
-    for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane, xyz[:, :2], local).items():
+    dz = None  # each point's height above each plane, for placing the outlines of several parts
+    if len(np.unique(part_of_plane)) > 1:
+        dz = xyz[:, 2:3] - np.stack([_plane_z(normals, points, np.full(len(xyz), k), xyz[:, :2])
+                                     for k in range(len(normals))], axis=1)
+    for q, polys in part_polygons(fp, grid, origin, cell, part_of_plane, xyz[:, :2], local, dz).items():
         sel = np.flatnonzero(part_of_plane == q)
         lut = np.full(len(normals), -2, np.int64)
         lut[sel] = np.arange(len(sel))

@@ -13,7 +13,8 @@ envelope stretches one plane over the whole part. This module builds such roofs 
    centres fall in it (a cell without raster cells takes the label of the nearest raster cell);
 3. where two neighbouring cells of different planes do not meet on those planes' intersection
    line (a vertical jump, which no wall closes), cells on the jumps are relabelled one at a time,
-   each time the move that shortens the jumps at the smallest loss of raster votes; if jumps
+   each time the move that shortens the jumps at the smallest loss of raster votes; cells
+   still on jumps are then relabelled jointly (every labelling of them, while few); if jumps
    remain, the plane owning the fewest raster cells is left out and the arrangement rebuilt;
 4. the cells of one plane are merged into faces.
 
@@ -227,6 +228,34 @@ def _repair(labels: np.ndarray, votes: np.ndarray, seg, meet: np.ndarray) -> np.
     return labels
 
 
+#: Most labellings :func:`_settle_jumps` tries (planes ** cells on jumps).
+MAX_LABELLINGS = 4096
+
+
+def _settle_jumps(labels: np.ndarray, votes: np.ndarray, seg, meet: np.ndarray) -> np.ndarray:
+    """Labels with the cells on the remaining jumps relabelled jointly: of every labelling of
+    those cells (when there are at most :data:`MAX_LABELLINGS`), the one without jumps that
+    loses the fewest raster votes; ``labels`` unchanged when none is free of jumps. Where more
+    than three planes meet (a cross wing's ridge ending near the main ridge), the noisy planes'
+    lines cut tiny cells without raster cells of their own, which only a joint move of two or
+    more of them makes continuous; :func:`_repair` moves one cell at a time."""
+    c0, c1, a, b = seg
+    jump = _jumps(labels, seg, meet)
+    on = np.unique(np.r_[c0[jump > 0], c1[jump > 0]])
+    p = votes.shape[1]
+    if not len(on) or p ** len(on) > MAX_LABELLINGS:
+        return labels
+    combos = np.indices((p,) * len(on)).reshape(len(on), -1).T  # (p ** k, k)
+    trial = np.repeat(labels[None, :], len(combos), axis=0)
+    trial[:, on] = combos
+    bad = ~meet[np.arange(len(c0))[None, :], trial[:, c0], trial[:, c1]]
+    free = ~(bad & (np.hypot(*(b - a).T) > 0)[None, :]).any(axis=1)
+    if not free.any():
+        return labels
+    lost = (votes[on, labels[on]][None, :] - votes[on[None, :], combos]).sum(axis=1)
+    return trial[np.flatnonzero(free)[np.argmin(lost[free])]]
+
+
 def agreement(faces: list, grid: np.ndarray, centres: np.ndarray) -> int:
     """Labelled raster cells whose centre lies in a face of their own plane; ``faces`` is
     [(plane index, shapely Polygon)], plane indices being the raster's labels."""
@@ -247,7 +276,7 @@ def _continuous_labels(poly, g: np.ndarray, h: np.ndarray, sub: np.ndarray, cent
     labels = np.where(votes.sum(axis=1) > 0, np.argmax(votes, axis=1), nearest)
     seg = _shared_segments(cells)
     meet = _meets(seg, g, h)
-    labels = _repair(labels, votes, seg, meet)
+    labels = _settle_jumps(_repair(labels, votes, seg, meet), votes, seg, meet)
     return None if _jumps(labels, seg, meet).any() else (cells, labels)
 
 
