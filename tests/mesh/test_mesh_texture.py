@@ -144,7 +144,8 @@ def test_exposure_balance_evens_out_unequal_photos(rig):
     spread (the product true x estimated gain varies 3x less than the true gains), and the
     texture, up to one global gain per channel, is closer to the true colour than without the
     balance. On equal photos the gains stay within 1 % of 1."""
-    from workstation.mesh.texture import _PhotoCache, exposure_gains, face_colours, select_views
+    from workstation.mesh.texture import _PhotoCache, select_views
+    from workstation.mesh.texture_colour import exposure_gains, face_colours
 
     rec, pix, mesh, albedo = rig
     views, _, _ = select_views(mesh, rec, TextureParams(last_resort=False), 4)  # as the texture's balance uses
@@ -168,7 +169,7 @@ def test_exposure_balance_evens_out_unequal_photos(rig):
 def test_consistent_views_drops_the_odd_colour_out():
     """Five views of a face, one of them far off (an occluder): it alone is dropped, whatever
     slot it holds; a face with two views keeps both; views within the radius stay."""
-    from workstation.mesh.texture import consistent_views
+    from workstation.mesh.texture_colour import consistent_views
 
     rng = np.random.default_rng(0)
     colour = 120 + rng.normal(0, 1, (6, 5, 3))

@@ -69,8 +69,8 @@ from workstation.core.log import get_logger
 from workstation.core.products import Mesh, Reconstruction
 
 from .steps import StepRecord, Timer
-from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_KERNEL, CONSISTENCY_VIEWS, SIGMA_G, SIGMA_N,  # noqa: F401
-                             colour_noise, consistent_views, exposure_gains, face_colours)
+from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_VIEWS, colour_noise, consistent_views, exposure_gains,
+                             face_colours)
 
 log = get_logger(__name__)
 STAGE = "texture"
