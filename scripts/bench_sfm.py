@@ -22,11 +22,15 @@ Parts (``--part``, repeatable; default all):
   through ``ws sfm`` with its defaults, as a separate process: wall and CPU time, stage
   timings, the matcher chosen and the pairs matched, registered images, mean reprojection
   error, and camera-centre errors against the rig's true poses after a 7-DoF similarity.
+  ``--matcher`` picks another pairing than ``auto``; ``--shuffled N`` runs instead ``N`` evenly
+  spaced photos of the rig linked under random names (out of name order, as photos of several
+  passes or renamed files are), where name-order pairing fails and retrieval pairs are needed.
 
 Usage::
 
     PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
     PYTHONPATH=$PWD python scripts/bench_sfm.py --part rig --images 200 --work /tmp/bench_sfm_rig [--reuse]
+        [--matcher sequential] [--shuffled 80]
 """
 
 from __future__ import annotations
@@ -463,13 +467,30 @@ def _centre_errors(model_dir: Path, centres: dict) -> dict:
     rec = pycolmap.Reconstruction(str(model_dir))
     got = {im.name: np.asarray(im.projection_center()) for im in rec.images.values() if im.has_pose}
     names = sorted(set(got) & set(centres))
+    if len(names) < 3:  # a similarity needs 3 centres
+        return {"median_centre_err_m": None, "max_centre_err_m": None, "rms_centre_err_m": None}
     est, true = np.array([got[n] for n in names]), np.array([centres[n] for n in names])
     err = np.linalg.norm(fit_similarity(est, true).apply(est) - true, axis=1)
     return {"median_centre_err_m": round(float(np.median(err)), 4), "max_centre_err_m": round(float(err.max()), 4),
             "rms_centre_err_m": round(float(np.sqrt(np.mean(err ** 2))), 4)}
 
 
-def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: bool = False):
+def _shuffled_subset(folder: Path, centres: dict, n: int, out: Path, seed: int = 7) -> tuple[Path, dict]:
+    """``n`` evenly spaced photos of ``folder/images`` linked into ``out/images`` under random
+    names; returns that folder and the true centres by the new names."""
+    files = sorted((folder / "images").iterdir())
+    pick = [files[i] for i in np.round(np.linspace(0, len(files) - 1, n)).astype(int)]
+    names = [f"p{x:04d}{f.suffix}" for x, f in zip(np.random.default_rng(seed).choice(10000, n, replace=False), pick)]
+    if out.exists():
+        shutil.rmtree(out)
+    (out / "images").mkdir(parents=True)
+    for f, name in zip(pick, names):
+        (out / "images" / name).symlink_to(f.resolve())
+    return out / "images", {name: centres[f.name] for f, name in zip(pick, names)}
+
+
+def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: bool = False, matcher: str = "auto",
+             shuffled: int = 0):
     import os
     import resource
     import subprocess
@@ -478,9 +499,13 @@ def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: boo
     work = Path(work or tempfile.mkdtemp(prefix="bench_sfm_rig_"))
     folder = work / f"rig{images}"
     centres = _rig_images(folder, images, reuse)
-    out = work / f"sfm{images}"
+    image_dir, tag = folder / "images", f"rig{images}"
+    if shuffled:
+        image_dir, centres = _shuffled_subset(folder, centres, shuffled, work / f"shuffled{shuffled}")
+        tag = f"rig{images}_shuffled{shuffled}"
+    out = work / f"sfm_{tag}_{matcher}"
     cmd = [sys.executable, "-c", "import sys; from workstation.cli.main import main; sys.exit(main())",
-           "sfm", str(folder / "images"), "-o", str(out), "--overwrite", "--json"]
+           "sfm", str(image_dir), "-o", str(out), "--overwrite", "--json", "--matcher", matcher]
     env = {**os.environ, "PYTHONPATH": str(REPO)}
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
@@ -492,7 +517,7 @@ def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: boo
     doc = json.loads(proc.stdout)
     with open("/proc/loadavg") as fh:
         load = fh.read().split()[:3]
-    emit({"bench": f"rig{images}_ws_sfm", "images": doc["images"], "registered": doc["registered"],
+    emit({"bench": f"{tag}_ws_sfm", "images": doc["images"], "registered": doc["registered"],
           "registered_pct": round(100 * doc["registered"] / doc["images"], 1), "points": doc["points"],
           "matcher": doc["matcher"], "matched_pairs": doc["matched_pairs"], "mean_reprojection_error_px": round(doc["mean_reprojection_error_px"], 4),
           **_centre_errors(out / "sparse" / "0", centres), "wall_s": round(wall, 1),
@@ -509,13 +534,16 @@ def main(argv=None):
     ap.add_argument("--images", type=int, default=200, help="rig: photos in the simulated rig")
     ap.add_argument("--work", type=Path, help="rig: folder for the rendered rig and the work folder (default: a temporary one)")
     ap.add_argument("--reuse", action="store_true", help="rig: reuse a rig rendered earlier in --work")
+    ap.add_argument("--matcher", default="auto", help="rig: ws sfm --matcher (default auto)")
+    ap.add_argument("--shuffled", type=int, default=0,
+                    help="rig: run this many evenly spaced photos of the rig under random names instead")
     a = ap.parse_args(argv)
     parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig"]
     for p in parts:
         if p == "fountain":
             part_fountain(a.data, tuple(a.fountain_mode or ("self", "camera")))
         elif p == "rig":
-            part_rig(a.data, a.images, a.work, a.reuse)
+            part_rig(a.data, a.images, a.work, a.reuse, a.matcher, a.shuffled)
         else:
             globals()[f"part_{p}"](a.data)
 

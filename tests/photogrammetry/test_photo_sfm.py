@@ -33,7 +33,7 @@ def test_camera_with_skew_refused():
 
 def test_matcher_choice_and_override():
     assert choose_matcher(30, False, SfMParams()) == "exhaustive"
-    assert choose_matcher(300, False, SfMParams()) == "sequential"
+    assert choose_matcher(300, False, SfMParams()) == "retrieval"
     assert choose_matcher(300, True, SfMParams()) == "spatial"
     assert choose_matcher(300, True, SfMParams(matcher="exhaustive")) == "exhaustive"
     with pytest.raises(InvalidInputError):

@@ -30,7 +30,8 @@ from workstation.core.jsonutil import json_clean
 @param_group(
     "given",
     bound(SfMParams, "matcher", "--matcher", type=RegistryChoice(MATCHERS), show_default=True,
-          help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or sequential."),
+          help="Image pairing: auto = exhaustive up to 60 images, then spatial (GPS) or retrieval "
+               "(sequential in name order plus each photo's 10 most similar photos, which closes loops)."),
     bound(SfMParams, "mapper", "--mapper", type=RegistryChoice(MAPPERS), show_default=True,
           help="Incremental (COLMAP) or global (GLOMAP) mapping."),
     bound(SfMParams, "max_image_size", "--max-image-size", type=SentinelIntRange(-1, min=1), show_default=True,

@@ -1,8 +1,10 @@
 """Structure from motion with pycolmap (COLMAP; Schönberger & Frahm, CVPR 2016).
 
 Feature extraction (SIFT; one self-calibrated camera per group of images of one size and one
-EXIF camera, so photos from several cameras each get their own intrinsics), matching (exhaustive for small sets; sequential for large ordered
-sets, spatial when the images carry GPS priors), incremental mapping (or global mapping,
+EXIF camera, so photos from several cameras each get their own intrinsics), matching (exhaustive for small sets; for large sets sequential
+pairs in name order plus image retrieval — each image with its most similar images by a VLAD
+descriptor of its own SIFT features, :mod:`~workstation.photogrammetry.retrieval` — so loops
+close and photos named out of order still pair; spatial when the images carry GPS priors), incremental mapping (or global mapping,
 GLOMAP — Pan et al., ECCV 2024 — where pycolmap has it), then, when the intrinsics are
 self-calibrated, one final bundle adjustment that also frees the principal point: COLMAP's
 mapper keeps it at the image centre, which tilts every camera when the real one is off-centre.
@@ -36,7 +38,7 @@ from .calibration import list_images
 
 log = get_logger(__name__)
 
-MATCHERS = ("auto", "exhaustive", "sequential", "spatial")
+MATCHERS = ("auto", "exhaustive", "sequential", "retrieval", "spatial")
 MAPPERS = ("incremental", "global")
 CAMERA_SHARING = ("auto", "single", "per-image")
 
@@ -49,12 +51,18 @@ class SfMParams:
     ----------
     matcher : str
         "auto" (exhaustive up to ``exhaustive_max_images`` images; beyond, spatial when the
-        images carry GPS priors, sequential otherwise), "exhaustive", "sequential", "spatial".
+        images carry GPS priors, retrieval otherwise), "exhaustive", "sequential", "retrieval"
+        (the sequential pairs and each image with its ``retrieval_neighbors`` most similar
+        images), "spatial".
     exhaustive_max_images : int
         Largest image count matched exhaustively in "auto" mode (n·(n-1)/2 pairs).
     sequential_overlap : int
         Sequential matching (images in name order, COLMAP's quadratic overlap) pairs each image
         with the images 1, 2, 4, ... 2^(sequential_overlap - 1) places after it.
+    retrieval_neighbors : int
+        Retrieval matching pairs each image with this many most similar images (VLAD cosine).
+    retrieval_words : int
+        Words of the retrieval codebook, learned by k-means on the set's own SIFT descriptors.
     mapper : str
         "incremental" (COLMAP) or "global" (GLOMAP in pycolmap ≥ 3.12).
     max_image_size : int
@@ -93,6 +101,8 @@ class SfMParams:
     matcher: str = "auto"
     exhaustive_max_images: int = 60
     sequential_overlap: int = 10
+    retrieval_neighbors: int = 10
+    retrieval_words: int = 64
     mapper: str = "incremental"
     max_image_size: int = -1
     max_features: int = 8192
@@ -114,6 +124,9 @@ class SfMParams:
             raise InvalidInputError(f"mapper must be one of {MAPPERS}", field="mapper")
         if self.cameras not in CAMERA_SHARING:
             raise InvalidInputError(f"cameras must be one of {CAMERA_SHARING}", field="cameras")
+        if self.retrieval_neighbors < 1 or self.retrieval_words < 2:
+            raise InvalidInputError("retrieval needs at least 1 neighbour per image and 2 codebook words",
+                                    field="retrieval_neighbors" if self.retrieval_neighbors < 1 else "retrieval_words")
 
 
 @dataclass(frozen=True)
@@ -169,13 +182,13 @@ def choose_matcher(n_images: int, has_gps: bool, params: SfMParams) -> str:
     """The matcher "auto" picks for ``n_images``.
 
     >>> choose_matcher(11, False, SfMParams()), choose_matcher(500, False, SfMParams()), choose_matcher(500, True, SfMParams())
-    ('exhaustive', 'sequential', 'spatial')
+    ('exhaustive', 'retrieval', 'spatial')
     """
     if params.matcher != "auto":
         return params.matcher
     if n_images <= params.exhaustive_max_images:
         return "exhaustive"
-    return "spatial" if has_gps else "sequential"
+    return "spatial" if has_gps else "retrieval"
 
 
 def check_images_readable(files) -> None:
@@ -365,16 +378,24 @@ def _threads(params: SfMParams) -> int:
 
 def _pairs(pycolmap, db: Path, matcher: str, params: SfMParams) -> tuple[list, dict]:
     """The image pairs COLMAP's ``matcher`` would match (its own pair generator) and the image
-    names by id."""
+    names by id; "retrieval" adds to the sequential pairs each image's
+    ``params.retrieval_neighbors`` most similar images (:func:`retrieval.retrieval_pairs`)
+    that are not already paired."""
     with pycolmap.Database.open(str(db)) as d:
         names = {int(im.image_id): im.name for im in d.read_all_images()}
         if matcher == "exhaustive":
             gen = pycolmap.ExhaustivePairGenerator(pycolmap.ExhaustivePairingOptions(), d)
-        elif matcher == "sequential":
+        elif matcher in ("sequential", "retrieval"):
             gen = pycolmap.SequentialPairGenerator(_sequential_options(pycolmap, params), d)
         else:
             gen = pycolmap.SpatialPairGenerator(pycolmap.SpatialPairingOptions(), d)
         pairs = [(int(a), int(b)) for a, b in gen.all_pairs()]
+    if matcher == "retrieval":
+        from .retrieval import retrieval_pairs
+
+        seen = {(min(a, b), max(a, b)) for a, b in pairs}
+        found = retrieval_pairs(db, pycolmap, params.retrieval_neighbors, params.retrieval_words, params.seed)
+        pairs += [p for p in found if p not in seen]
     return pairs, names
 
 
@@ -394,7 +415,7 @@ def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, i
     ``match_image_pairs``), one progress step per block; each pair's matching and geometric
     verification do not depend on the other pairs, so the result is that of one call. Image
     names with white space cannot be written to a pairs file: those sets are matched in one
-    call, without a bar."""
+    call, without a bar (and sequentially instead of with retrieval pairs)."""
     import tempfile
 
     from workstation.core.progress import progress_bar
@@ -406,6 +427,9 @@ def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, i
     pairs, names = _pairs(pycolmap, db, matcher, params)
     log.info("matching (%s, %d pairs)", matcher, len(pairs))
     if any(c.isspace() for n in names.values() for c in n):
+        if matcher == "retrieval":  # retrieval pairs reach COLMAP only through a pairs file
+            log.warning("image names with white space: sequential matching only, without retrieval pairs")
+            matcher, pairs = "sequential", _pairs(pycolmap, db, "sequential", params)[0]
         _match_at_once(pycolmap, db, matcher, mopt, params, dev)
         return matcher, len(pairs)
     with tempfile.TemporaryDirectory(prefix="ws_sfm_pairs_") as tmp, \

@@ -1,0 +1,134 @@
+"""Retrieval pairing (VLAD over the set's own SIFT descriptors): on a long strip of photos whose
+names are shuffled, retrieval finds each photo's true neighbours on the strip, and matching with
+retrieval pairs registers the strip where name-order (sequential) pairing falls apart."""
+
+from __future__ import annotations
+
+import shutil
+
+import numpy as np
+import pytest
+
+from workstation.core.errors import InvalidInputError
+from workstation.photogrammetry import retrieval
+from workstation.photogrammetry.sfm import SfMParams, _extract_features, _map, _match, choose_matcher
+
+N = 30
+
+
+@pytest.fixture(scope="module")
+def shuffled_strip(tmp_path_factory):
+    """30 views (256x192 px, 23° field of view, known camera) of the box-and-wall scene from a
+    12 m strip, the cameras looking straight at the wall 12 m away (4.8 m of wall in a view),
+    so that views more than 11 places apart on the strip see no common wall; the files are
+    named in a random order. Returns the database with their features, the image folder, the
+    camera and each name's place on the strip."""
+    import cv2
+    import pycolmap
+
+    from workstation.core.products import Camera
+    from workstation.photogrammetry.collinearity import camera_rays
+    from workstation.photogrammetry.rigs import box_wall_scene, look_at, render
+
+    root = tmp_path_factory.mktemp("strip")
+    imgs = root / "images"
+    imgs.mkdir()
+    V, F, alb = box_wall_scene()
+    cam = Camera(256, 192, 640.0, 640.0, 127.5, 95.5, 0.0, (0.0,) * 5, "PINHOLE")
+    rays = camera_rays(cam, 1)
+    order = np.random.default_rng(3).permutation(N)
+    place = {}
+    for k, x in enumerate(np.linspace(-6.0, 6.0, N)):
+        c = np.array([x, 0.0, 0.4 * (k % 2)])
+        name = f"photo_{order[k]:02d}.png"
+        cv2.imwrite(str(imgs / name), render(V, F, alb, cam, look_at(c, c + [0.0, 12.0, 0.0]), 1, rays=rays)[:, :, ::-1])
+        place[name] = k
+    db = root / "database.db"
+    pycolmap.set_random_seed(0)
+    _extract_features(pycolmap, db, imgs, sorted(imgs.iterdir()), cam, SfMParams(max_features=2000))
+    return db, imgs, cam, place
+
+
+def _places(pycolmap, db, place) -> tuple[list, np.ndarray]:
+    with pycolmap.Database.open(str(db)) as d:
+        names = {int(im.image_id): im.name for im in d.read_all_images()}
+    ids = sorted(names)
+    return ids, np.array([place[names[i]] for i in ids])
+
+
+def test_auto_uses_retrieval_above_the_exhaustive_limit():
+    assert choose_matcher(200, False, SfMParams()) == "retrieval"
+    assert choose_matcher(200, True, SfMParams()) == "spatial"
+    assert choose_matcher(200, False, SfMParams(matcher="sequential")) == "sequential"
+    for bad in ({"retrieval_neighbors": 0}, {"retrieval_words": 1}):
+        with pytest.raises(InvalidInputError, match="retrieval"):
+            SfMParams(**bad)
+
+
+def test_nearest_images_ranks_by_cosine_and_skips_itself():
+    v = np.eye(4)[[0, 0, 1, 2]] + 0.1 * np.arange(4)[:, None]
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    nn = retrieval.nearest_images(v, 1)
+    assert nn[:, 0].tolist() == [1, 0, 3, 2] and retrieval.nearest_images(v, 10).shape == (4, 3)
+
+
+def test_a_codebook_needs_more_features_than_words():
+    few = [retrieval.root_sift(np.random.default_rng(0).integers(0, 255, (20, 128)).astype(np.uint8))]
+    assert retrieval.learn_codebook(few, 8).shape == (8, 128)
+    with pytest.raises(InvalidInputError, match="too few features"):
+        retrieval.learn_codebook(few, 64)
+
+
+@pytest.mark.slow
+def test_retrieval_finds_the_strip_neighbours_of_shuffled_photos(shuffled_strip):
+    """Each photo's 4 most similar photos lie within 4 places of it on the strip for ≥ 85 % of
+    them (name order: about 1 in 4 by chance); the vectors read from the database one image at
+    a time equal those of all descriptors at once; the pairs are unique, each image id pair once."""
+    import pycolmap
+
+    db, _, _, place = shuffled_strip
+    ids, p = _places(pycolmap, db, place)
+    _, descs = retrieval.read_descriptors(db, pycolmap)
+    vectors = retrieval.global_descriptors(descs, 64)
+    streamed_ids, streamed = retrieval.database_vectors(db, pycolmap, 64)
+    assert streamed_ids == ids and np.allclose(streamed, vectors, atol=1e-6)
+    nn = retrieval.nearest_images(vectors, 4)
+    assert (np.abs(p[nn] - p[:, None]) <= 4).mean() >= 0.85
+    by_name = np.abs(np.diff(p)) <= 4  # the next photo in name order
+    assert by_name.mean() < 0.5
+    pairs = retrieval.retrieval_pairs(db, pycolmap, k=4, words=64)
+    assert len(pairs) == len(set(pairs)) and all(a < b for a, b in pairs) and len(pairs) >= N * 4 // 2
+    with pytest.raises(InvalidInputError):
+        retrieval.retrieval_pairs(db, pycolmap, k=0)
+
+
+@pytest.mark.slow
+def test_retrieval_pairs_register_a_shuffled_strip_that_sequential_pairs_break(shuffled_strip, tmp_path):
+    """Same features, overlap 1 in name order (each photo with the next name only): sequential
+    pairs alone leave the shuffled strip in pieces; with each photo's 5 retrieval neighbours
+    added every photo is registered in one model, its centres in strip order."""
+    import pycolmap
+
+    db, imgs, _, place = shuffled_strip
+    got = {}
+    for matcher in ("sequential", "retrieval"):
+        work = tmp_path / matcher
+        (work / "sparse").mkdir(parents=True)
+        shutil.copy(db, work / "database.db")
+        params = SfMParams(matcher=matcher, sequential_overlap=1, retrieval_neighbors=5, num_threads=2)
+        used, n_pairs = _match(pycolmap, work / "database.db", N, params)
+        recs = _map(pycolmap, work / "database.db", imgs, work / "sparse", N, True, params)
+        best = max(recs.values(), key=lambda r: r.num_reg_images()) if recs else None
+        got[used] = (n_pairs, best)
+    n_seq, seq = got["sequential"]
+    n_ret, ret = got["retrieval"]
+    assert n_ret > n_seq
+    assert seq is None or seq.num_reg_images() <= 0.8 * N
+    assert ret.num_reg_images() == N
+    centres = {im.name: np.asarray(im.projection_center()) for im in ret.images.values()}
+    names = sorted(centres, key=place.get)
+    xyz = np.array([centres[n] for n in names])
+    axis = np.linalg.svd(xyz - xyz.mean(axis=0))[2][0]
+    along = (xyz - xyz.mean(axis=0)) @ axis
+    rank = np.argsort(np.argsort(along * np.sign(along[-1] - along[0])))
+    assert np.abs(rank - np.arange(N)).max() <= 1
