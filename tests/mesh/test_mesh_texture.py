@@ -383,3 +383,24 @@ def test_textured_render_through_a_photo_camera_reproduces_the_photo(rig):
     assert diff <= 8.0
     plain = render(mesh, RenderParams(background="black", color="uniform"), camera=view).astype(float)
     assert np.abs(plain - pix[3].astype(float))[mask].mean() > 2 * diff
+
+
+def test_faces_far_below_a_pixel_keep_their_weight(rig):
+    """A face covering a small fraction of a pixel still weighs its projected area: every slot
+    holding a view has a positive weight (a rank that adds a large offset to the area rounds
+    such areas to zero, and the blend then paints the face black). The rig's cameras at a
+    quarter of their size (40 x 30 pixels), the mesh subdivided 64-fold."""
+    from dataclasses import replace
+
+    from workstation.core.products import Reconstruction
+    from workstation.mesh.simplify import subdivide_midpoint
+    from workstation.mesh.texture import ranked_views
+
+    rec, _, mesh, _ = rig
+    small = {cid: replace(c, width=c.width // 4, height=c.height // 4, fx=c.fx / 4, fy=c.fy / 4,
+                          cx=(c.cx + 0.5) / 4 - 0.5, cy=(c.cy + 0.5) / 4 - 0.5) for cid, c in rec.cameras.items()}
+    V, F = subdivide_midpoint(mesh.vertices, mesh.faces, times=3)[:2]
+    views, weights, _, full = ranked_views(Mesh(V, F), Reconstruction(small, rec.images), TextureParams(), 2)
+    held = views >= 0
+    assert held.any() and (weights[held] > 0).all()
+    assert (weights[full] < 1 / 16).any()  # faces well under a pixel

@@ -201,7 +201,8 @@ def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
     tri, cen, nrm, nlen, probes, tol_abs = _face_probes(mesh, params)
     caster = RaycastScene(V - origin, F)
     views = np.full((m, k), -1, dtype=np.int64)
-    rank = np.zeros((m, k))  # weight, plus FULL_VIEW_RANK for full candidates
+    rank = np.zeros((m, k))  # _view_rank of the slot's view: full candidates first, then by weight
+    weight = np.zeros((m, k))  # projected area of the face in the slot's view (pixels²)
     gsd_slot = np.full((m, k), np.nan)
     for iid, im in rec.images.items():
         cam = rec.cameras[im.camera_id]
@@ -229,28 +230,34 @@ def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
             continue
         area = 0.5 * np.abs((u[idx, 1] - u[idx, 0]) * (v[idx, 2] - v[idx, 0])
                             - (u[idx, 2] - u[idx, 0]) * (v[idx, 1] - v[idx, 0])) * share
-        r = area + FULL_VIEW_RANK * full
+        r = _view_rank(area, full)
         slot = np.argmin(rank[idx], axis=1)
         better = r > rank[idx, slot]
         j, s = idx[better], slot[better]
         views[j, s] = iid
         rank[j, s] = r[better]
+        weight[j, s] = area[better]
         gsd_slot[j, s] = z[j].mean(axis=1) / (0.5 * (cam.fx + cam.fy))
     order = np.argsort(-rank, axis=1, kind="stable")
     views = np.take_along_axis(views, order, axis=1)
-    rank = np.take_along_axis(rank, order, axis=1)
+    full_slot = np.take_along_axis(rank, order, axis=1) >= FULL_VIEW_RANK
     # a face keeps its last-resort views only when it has no full candidate
-    has_full = rank[:, 0] >= FULL_VIEW_RANK
-    drop = has_full[:, None] & (rank < FULL_VIEW_RANK)
+    drop = full_slot[:, :1] & ~full_slot
     views[drop] = -1
-    weights = np.where(drop, 0.0, np.where(rank >= FULL_VIEW_RANK, rank - FULL_VIEW_RANK, rank))
+    weights = np.where(drop | (views < 0), 0.0, np.take_along_axis(weight, order, axis=1))
     gsd = np.take_along_axis(gsd_slot, order, axis=1)[:, 0]
-    return views, weights, gsd, rank >= FULL_VIEW_RANK
+    return views, weights, gsd, full_slot
 
 
-#: Added to a full candidate's weight when ranking views (above any projected area in pixels²),
-#: so that last-resort views never displace a full candidate.
-FULL_VIEW_RANK = 1e15
+#: Lowest rank of a full candidate (:func:`_view_rank`): last-resort views rank below it.
+FULL_VIEW_RANK = 2.0
+
+
+def _view_rank(area: np.ndarray, full: np.ndarray) -> np.ndarray:
+    """Rank of views by (full candidate, projected area): ``2 full + a / (1 + a)``, increasing
+    in both and exact in float64 for any area (a full candidate always outranks a last-resort
+    view, whatever their areas)."""
+    return FULL_VIEW_RANK * full + area / (1.0 + area)
 
 
 # ------------------------------------------------------------------------------------- atlas
