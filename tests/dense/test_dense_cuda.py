@@ -71,5 +71,5 @@ def test_dense_prepare_patch_match_on_true_cameras(tmp_path):
         srcs = [s.strip() for s in lines[k].split(",")]
         assert set(srcs) <= names and lines[k - 1] not in srcs
     rec = pycolmap.Reconstruction(str(d / "sparse"))
-    assert rec.num_points3D() == 4  # one overlap point per reference image, for fusion
+    assert rec.num_points3D() == 8  # one overlap point per (image, source) pair, for fusion: 4 images, 2 sources
     assert prepare_patch_match(d, DenseParams(depth_range=(5.0, 20.0))) is None  # now it has points

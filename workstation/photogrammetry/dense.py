@@ -287,19 +287,18 @@ def select_sources(views, pts, obs, params: DenseParams) -> dict[int, list[int]]
         for j, vj in views.items():
             if j == i:
                 continue
-            shared = np.fromiter(sets[i] & sets[j], np.int64)
             if len(pts) == 0:  # no sparse points: where the two optical axes meet
                 P = _pair_point(vi, vj)
                 xj = vj.K @ (vj.R @ P + vj.t)
                 if xj[2] <= 0 or not (0 <= xj[0] / xj[2] < vj.width and 0 <= xj[1] / xj[2] < vj.height):
                     continue
-                shared = np.array([0])
                 a, b = (P - vi.center)[None], (P - vj.center)[None]
                 cosang = np.sum(a * b, 1) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
                 ang = float(np.degrees(np.arccos(np.clip(cosang[0], -1, 1))))
                 if params.min_angle_deg <= ang <= params.max_angle_deg:
                     cand.append((1.0 / (1.0 + abs(ang - 15.0)), j))  # prefer ~15° (the rig step)
                 continue
+            shared = np.fromiter(sets[i] & sets[j], np.int64)
             if shared.size < 5:
                 continue
             a = pts[shared] - vi.center
@@ -655,15 +654,14 @@ def _add_overlap_points(rec, views, sources, sparse_dir) -> None:
     obs = {i: [] for i in views}
     tracks = []
     for i, srcs in sources.items():
-        if not srcs:
-            continue
-        P = _pair_point(views[i], views[srcs[0]])
-        els = []
-        for k in [i, *srcs]:
-            x = views[k].K @ (views[k].R @ P + views[k].t)
-            els.append((k, len(obs[k])))
-            obs[k].append(x[:2] / x[2] + 0.5)  # COLMAP pixel convention (corner origin)
-        tracks.append((P, els))
+        for j in srcs:  # the point select_sources judged the pair at: both views see it
+            P = _pair_point(views[i], views[j])
+            els = []
+            for k in (i, j):
+                x = views[k].K @ (views[k].R @ P + views[k].t)
+                els.append((k, len(obs[k])))
+                obs[k].append(x[:2] / x[2] + 0.5)  # COLMAP pixel convention (corner origin)
+            tracks.append((P, els))
     for i, xy in obs.items():
         rec.images[i].points2D = pycolmap.Point2DList([pycolmap.Point2D(np.asarray(p, float)) for p in xy])
     for P, els in tracks:
