@@ -73,40 +73,37 @@ def test_nearest_images_ranks_by_cosine_and_skips_itself():
 
 
 def test_a_codebook_needs_more_features_than_words():
-    few = [retrieval.root_sift(np.random.default_rng(0).integers(0, 255, (20, 128)).astype(np.uint8))]
-    assert retrieval.learn_codebook(few, 8).shape == (8, 128)
+    few = [retrieval.unit_rows(np.random.default_rng(0).integers(0, 255, (20, 128)).astype(np.uint8))]
+    assert retrieval.kmeans(few, 8, np.random.default_rng(0)).shape == (8, 128)
     with pytest.raises(InvalidInputError, match="too few features"):
-        retrieval.learn_codebook(few, 64)
+        retrieval.kmeans(few, 64, np.random.default_rng(0))
 
 
 @pytest.mark.slow
 def test_retrieval_finds_the_strip_neighbours_of_shuffled_photos(shuffled_strip):
-    """Each photo's 4 most similar photos lie within 4 places of it on the strip for ≥ 85 % of
-    them (name order: about 1 in 4 by chance); the vectors read from the database one image at
-    a time equal those of all descriptors at once; the pairs are unique, each image id pair once."""
+    """With the default codebook, each photo's 4 most similar photos lie within 4 places of it on
+    the strip for ≥ 85 % of them (name order: about 1 in 4 by chance); the pairs are unique,
+    each image id pair once."""
     import pycolmap
 
     db, _, _, place = shuffled_strip
     ids, p = _places(pycolmap, db, place)
-    _, descs = retrieval.read_descriptors(db, pycolmap)
-    vectors = retrieval.global_descriptors(descs, 64)
-    streamed_ids, streamed = retrieval.database_vectors(db, pycolmap, 64)
-    assert streamed_ids == ids and np.allclose(streamed, vectors, atol=1e-6)
+    words = SfMParams().retrieval_words
+    streamed_ids, vectors = retrieval.database_vectors(db, pycolmap, words)
+    assert streamed_ids == ids
     nn = retrieval.nearest_images(vectors, 4)
     assert (np.abs(p[nn] - p[:, None]) <= 4).mean() >= 0.85
     by_name = np.abs(np.diff(p)) <= 4  # the next photo in name order
     assert by_name.mean() < 0.5
-    pairs = retrieval.retrieval_pairs(db, pycolmap, k=4, words=64)
+    pairs = retrieval.retrieval_pairs(db, pycolmap, k=4, words=words)
     assert len(pairs) == len(set(pairs)) and all(a < b for a, b in pairs) and len(pairs) >= N * 4 // 2
-    with pytest.raises(InvalidInputError):
-        retrieval.retrieval_pairs(db, pycolmap, k=0)
 
 
 @pytest.mark.slow
 def test_retrieval_pairs_register_a_shuffled_strip_that_sequential_pairs_break(shuffled_strip, tmp_path):
     """Same features, overlap 1 in name order (each photo with the next name only): sequential
-    pairs alone leave the shuffled strip in pieces; with each photo's 5 retrieval neighbours
-    added every photo is registered in one model, its centres in strip order."""
+    pairs alone leave the shuffled strip in pieces; with the default retrieval pairs added
+    every photo is registered in one model, its centres in strip order."""
     import pycolmap
 
     db, imgs, _, place = shuffled_strip
@@ -115,7 +112,7 @@ def test_retrieval_pairs_register_a_shuffled_strip_that_sequential_pairs_break(s
         work = tmp_path / matcher
         (work / "sparse").mkdir(parents=True)
         shutil.copy(db, work / "database.db")
-        params = SfMParams(matcher=matcher, sequential_overlap=1, retrieval_neighbors=5, num_threads=2)
+        params = SfMParams(matcher=matcher, sequential_overlap=1, num_threads=2)
         used, n_pairs = _match(pycolmap, work / "database.db", N, params)
         recs = _map(pycolmap, work / "database.db", imgs, work / "sparse", N, True, params)
         best = max(recs.values(), key=lambda r: r.num_reg_images()) if recs else None

@@ -1,8 +1,9 @@
 """Image retrieval for SfM pairing without a vocabulary file: VLAD global descriptors.
 
 Each image is summarised by a VLAD vector (Jégou et al., CVPR 2010) built from the SIFT
-descriptors COLMAP has already written to its database: the descriptors, as RootSIFT
-(Arandjelović & Zisserman, CVPR 2012), are assigned to the nearest word of a small codebook
+descriptors COLMAP has already written to its database (RootSIFT already, Arandjelović &
+Zisserman, CVPR 2012: COLMAP's default L1_ROOT normalisation, stored as bytes; here scaled to
+unit length), are assigned to the nearest word of a small codebook
 learned by k-means on a sample of this set's own descriptors, and their residuals to the words
 are summed per word, normalised per word (intra-normalisation) and over the whole vector after
 a signed square root. The cosine of two images' vectors ranks how likely they are to overlap;
@@ -24,25 +25,15 @@ SAMPLE_MAX = 60_000  # at most this many descriptors in all for k-means
 KMEANS_ITERATIONS = 20  # Lloyd iterations of the codebook k-means
 
 
-def root_sift(desc: np.ndarray) -> np.ndarray:
-    """RootSIFT of ``(n, 128)`` SIFT descriptors: L1-normalised, then the element-wise square
-    root, so that Euclidean distance compares them as the Hellinger kernel does.
+def unit_rows(desc: np.ndarray) -> np.ndarray:
+    """``(n, 128)`` float32 copy of a database's descriptors scaled to unit length (COLMAP
+    stores RootSIFT, already unit length in the Hellinger sense, as bytes times 512).
 
-    >>> d = root_sift(np.array([[4, 0, 0, 0], [1, 1, 1, 1]], dtype=np.uint8))
-    >>> np.round(np.linalg.norm(d, axis=1), 6).tolist()
-    [1.0, 1.0]
+    >>> np.round(np.linalg.norm(unit_rows(np.array([[3, 4], [0, 0]], np.uint8)), axis=1), 6).tolist()
+    [1.0, 0.0]
     """
-    x = np.asarray(desc, dtype=np.float32)
-    x /= np.maximum(x.sum(axis=1, keepdims=True), 1e-12)
-    return np.sqrt(x)
-
-
-def read_descriptors(db: Path, pycolmap) -> tuple[list[int], list[np.ndarray]]:
-    """Image ids (database order) and their SIFT descriptors as RootSIFT ``(n_i, 128)`` float32."""
-    with pycolmap.Database.open(str(db)) as d:
-        ids = sorted(int(im.image_id) for im in d.read_all_images())
-        descs = [root_sift(np.asarray(d.read_descriptors(i).data)) for i in ids]
-    return ids, descs
+    x = np.array(desc, dtype=np.float32)
+    return x / np.maximum(np.linalg.norm(x, axis=1, keepdims=True), 1e-12)
 
 
 def _per_image(n_images: int) -> int:
@@ -53,14 +44,6 @@ def _per_image(n_images: int) -> int:
 def _draw(x: np.ndarray, per: int, rng) -> np.ndarray:
     """Up to ``per`` rows of ``x`` drawn without replacement."""
     return x[rng.choice(len(x), min(per, len(x)), replace=False)]
-
-
-def learn_codebook(descs: list[np.ndarray], words: int, seed: int = 0) -> np.ndarray:
-    """``(words, 128)`` codebook: k-means centres (:func:`kmeans`) of up to
-    :data:`SAMPLE_PER_IMAGE` descriptors drawn from each image (:data:`SAMPLE_MAX` in all)."""
-    rng = np.random.default_rng(seed if seed >= 0 else None)
-    per = _per_image(len(descs))
-    return kmeans([_draw(d, per, rng) for d in descs if len(d)], words, rng)
 
 
 def kmeans(sample: list[np.ndarray], words: int, rng, iterations: int = KMEANS_ITERATIONS) -> np.ndarray:
@@ -109,12 +92,6 @@ def vlad(desc: np.ndarray, codebook: np.ndarray) -> np.ndarray:
     return flat / max(float(np.linalg.norm(flat)), 1e-12)
 
 
-def global_descriptors(descs: list[np.ndarray], words: int = 64, seed: int = 0) -> np.ndarray:
-    """``(n_images, words * 128)`` VLAD vectors of the images, on a codebook learned from them."""
-    codebook = learn_codebook(descs, words, seed)
-    return np.stack([vlad(d, codebook) for d in descs])
-
-
 def nearest_images(vectors: np.ndarray, k: int) -> np.ndarray:
     """``(n, min(k, n-1))`` indices of each image's most similar other images (cosine of the
     global vectors), most similar first.
@@ -134,28 +111,24 @@ def nearest_images(vectors: np.ndarray, k: int) -> np.ndarray:
     return np.take_along_axis(top, order, axis=1)
 
 
-def database_vectors(db: Path, pycolmap, words: int = 64, seed: int = 0) -> tuple[list[int], np.ndarray]:
-    """Image ids and VLAD vectors of the images of a COLMAP database, as
-    :func:`global_descriptors` makes them, but reading each image's descriptors twice (once for
-    the codebook sample, once for its vector) so that only one image's are held at a time."""
+def database_vectors(db: Path, pycolmap, words: int, seed: int = 0) -> tuple[list[int], np.ndarray]:
+    """Image ids and VLAD vectors (:func:`vlad`) of the images of a COLMAP database, on a
+    codebook of ``words`` learned by :func:`kmeans` from up to :data:`SAMPLE_PER_IMAGE`
+    descriptors drawn from each image (:data:`SAMPLE_MAX` in all). Each image's descriptors are
+    read twice (for the sample, then for its vector), so only one image's are held at a time."""
     rng = np.random.default_rng(seed if seed >= 0 else None)
     with pycolmap.Database.open(str(db)) as d:
         ids = sorted(int(im.image_id) for im in d.read_all_images())
         per = _per_image(len(ids))
-        descs = (root_sift(np.asarray(d.read_descriptors(i).data)) for i in ids)
+        descs = (unit_rows(d.read_descriptors(i).data) for i in ids)
         codebook = kmeans([_draw(x, per, rng) for x in descs if len(x)], words, rng)
-        vectors = np.stack([vlad(root_sift(np.asarray(d.read_descriptors(i).data)), codebook) for i in ids])
+        vectors = np.stack([vlad(unit_rows(d.read_descriptors(i).data), codebook) for i in ids])
     return ids, vectors
 
 
-def retrieval_pairs(db: Path, pycolmap, k: int = 10, words: int = 64, seed: int = 0) -> list[tuple[int, int]]:
+def retrieval_pairs(db: Path, pycolmap, k: int, words: int, seed: int = 0) -> list[tuple[int, int]]:
     """Image-id pairs ``(a, b)``, ``a < b``, joining each image of the database to its ``k``
     most similar images by VLAD retrieval (:func:`database_vectors`), without repeats."""
-    if k < 1:
-        raise InvalidInputError(f"retrieval needs at least 1 neighbour per image, got {k}", field="retrieval_neighbors")
-    with pycolmap.Database.open(str(db)) as d:
-        if d.num_images() < 2:
-            return []
     ids, vectors = database_vectors(db, pycolmap, words, seed)
     nn = nearest_images(vectors, k)
     a = np.repeat(np.arange(len(ids)), nn.shape[1])

@@ -390,7 +390,10 @@ def _pairs(pycolmap, db: Path, matcher: str, params: SfMParams) -> tuple[list, d
         else:
             gen = pycolmap.SpatialPairGenerator(pycolmap.SpatialPairingOptions(), d)
         pairs = [(int(a), int(b)) for a, b in gen.all_pairs()]
-    if matcher == "retrieval":
+    if matcher == "retrieval" and any(c.isspace() for n in names.values() for c in n):
+        log.warning("image names with white space: sequential matching only, without retrieval pairs")
+        return pairs, names  # retrieval pairs reach COLMAP only through a pairs file
+    if matcher == "retrieval" and len(names) > 1:
         from .retrieval import retrieval_pairs
 
         seen = {(min(a, b), max(a, b)) for a, b in pairs}
@@ -427,9 +430,7 @@ def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, i
     pairs, names = _pairs(pycolmap, db, matcher, params)
     log.info("matching (%s, %d pairs)", matcher, len(pairs))
     if any(c.isspace() for n in names.values() for c in n):
-        if matcher == "retrieval":  # retrieval pairs reach COLMAP only through a pairs file
-            log.warning("image names with white space: sequential matching only, without retrieval pairs")
-            matcher, pairs = "sequential", _pairs(pycolmap, db, "sequential", params)[0]
+        matcher = "sequential" if matcher == "retrieval" else matcher  # _pairs left the retrieval pairs out
         _match_at_once(pycolmap, db, matcher, mopt, params, dev)
         return matcher, len(pairs)
     with tempfile.TemporaryDirectory(prefix="ws_sfm_pairs_") as tmp, \
