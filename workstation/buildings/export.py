@@ -250,7 +250,7 @@ def read_footprints(path, cloud_crs=None) -> list:
     """Outer rings (list of (k, 2) arrays, closing vertex dropped) of the polygons of a GeoJSON
     (.geojson, .json) or GeoPackage (.gpkg, its first feature table) file, read by
     :func:`workstation.ops.vector.read_polygons`. When the file and ``cloud_crs`` both name a
-    CRS they must be the same one (:func:`workstation.io.crs.same_crs`)."""
+    CRS they must be the same one, or the cloud's horizontal part (:func:`workstation.io.crs.same_crs`)."""
     from pathlib import Path
 
     from workstation.io.crs import same_crs
@@ -261,7 +261,7 @@ def read_footprints(path, cloud_crs=None) -> list:
         raise InvalidInputError("footprints must be GeoJSON (.geojson, .json) or GeoPackage (.gpkg)",
                                 "convert with ogr2ogr -f GPKG", path=p)
     polys = read_polygons(p)
-    if polys.crs and cloud_crs and not same_crs(polys.crs, cloud_crs):
+    if polys.crs and cloud_crs and not same_crs(polys.crs, cloud_crs, horizontal=True):
         raise InvalidInputError(f"footprints are in {polys.crs} but the cloud is in {cloud_crs}",
                                 f"reproject them, e.g. ogr2ogr -t_srs {cloud_crs}", path=p)
     rings = []

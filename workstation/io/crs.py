@@ -64,19 +64,27 @@ def parse_crs(crs: str, what: str = "crs"):
 
 
 @lru_cache(maxsize=128)
-def same_crs(a, b) -> bool:
+def same_crs(a, b, horizontal: bool = False) -> bool:
     """Whether two CRS descriptions (EPSG:code, WKT, PROJ string, pyproj CRS) name the same
     CRS: equal text, or equal to pyproj with the axis order ignored (EPSG:4326 and OGC:CRS84
     hold the same coordinates, x = longitude, in LAS and GeoJSON alike). A description that
-    pyproj cannot parse equals only the same text."""
+    pyproj cannot parse equals only the same text. ``horizontal``: compare only the horizontal
+    part of compound CRSs (2-D footprints against a cloud in, e.g., EPSG:28992 + NAP height).
+
+    >>> same_crs("EPSG:7415", "EPSG:28992"), same_crs("EPSG:7415", "EPSG:28992", horizontal=True)
+    (False, True)
+    """
     if a == b:
         return True
     from pyproj import CRS
 
     try:
-        return CRS.from_user_input(a).equals(CRS.from_user_input(b), ignore_axis_order=True)
+        ca, cb = CRS.from_user_input(a), CRS.from_user_input(b)
     except Exception:  # noqa: BLE001 - an unparsable CRS string is compared as text
         return False
+    if horizontal:
+        ca, cb = (c.sub_crs_list[0] if c.is_compound else c for c in (ca, cb))
+    return ca.equals(cb, ignore_axis_order=True)
 
 
 @lru_cache(maxsize=128)
