@@ -581,6 +581,8 @@ def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams
     r, c = ij[:, 1], ij[:, 0]  # looked up at the points' cells only
     point_comp = labels[ii[r, c], jj[r, c]] * (dist[r, c] <= 2 * spacing / cell) - 1
     slices = ndimage.find_objects(labels)
+    order = np.argsort(point_comp, kind="stable")  # each building's points, in their input order
+    starts = np.searchsorted(point_comp[order], np.arange(len(slices) + 1))
     out, remap = [], np.full(len(slices), -1, np.int64)
     for k, sl in enumerate(slices):
         sl = tuple(slice(max(a.start - 2, 0), a.stop + 2) for a in sl)
@@ -589,9 +591,10 @@ def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams
             continue
         o = origin + np.array([sl[1].start, sl[0].start]) * cell
         inside = fill_holes(sub)
-        ring = trace_outline(np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), np.where(ndimage.binary_dilation(sub), field[sl], 0.0)), o, cell)
+        rim = np.where(ndimage.binary_dilation(sub), field[sl], 0.0)
+        ring = trace_outline(np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim), o, cell)
         remap[k] = len(out)
-        out.append(Footprint(_outline(xy[point_comp == k], ring, spacing, ref, cell, params)))
+        out.append(Footprint(_outline(xy[order[starts[k]:starts[k + 1]]], ring, spacing, ref, cell, params)))
     if not out:
         raise StageError("footprints", f"no building larger than {params.min_area:g} m² in {len(xy)} points",
                          "check that building points are classified (class 6) or pass --footprints")

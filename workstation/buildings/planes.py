@@ -514,8 +514,6 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
       nearest plane among each point's neighbours' planes (all planes where none has one).
 
     Returns the labels with the new faces numbered after the existing planes."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
     from scipy.stats import chi2
 
     free = np.flatnonzero(labels < 0)
@@ -525,8 +523,7 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
     pos = np.full(len(xyz), -1, np.int64)
     pos[free] = np.arange(len(free))
     a, b = np.repeat(np.arange(len(free)), idx.shape[1] - 1), pos[idx[free, 1:]].ravel()
-    _, comp = connected_components(coo_matrix((np.ones(int((b >= 0).sum())), (a[b >= 0], b[b >= 0])),
-                                              shape=(len(free),) * 2), directed=False)
+    comp = small_components(len(free), a[b >= 0], b[b >= 0])
     d_all = np.abs(xyz[free] @ normals.T + offsets)  # (u, p)
     cand = labels[idx[free]]
     near = np.where(cand >= 0, np.take_along_axis(d_all, np.maximum(cand, 0), axis=1), np.inf).min(axis=1)
