@@ -419,7 +419,7 @@ def part_polygons(footprint, grid, origin, cell, part_of_plane, xy=None, point_p
     part is the rest."""
     import shapely
 
-    from .footprints import regularize, trace_outline
+    from .footprints import trace_outline
 
     parts = np.unique(part_of_plane)
     if len(parts) == 1:
@@ -662,7 +662,7 @@ def is_watertight(solid: Solid) -> bool:
     return bool(m.is_watertight and m.is_winding_consistent and m.volume > 0)
 
 
-def roof_type(faces: list, n_parts: int) -> str:
+def roof_type(faces: list) -> str:
     """``flat``, ``shed``, ``gabled``, ``hipped``, ``multilevel`` (several flat parts) or
     ``complex`` (several parts, flat and sloped faces mixed, or valleys), from the faces that
     hold at least 5 % of the roof area; the parts are counted over all faces, so that a small
@@ -770,7 +770,7 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
         raised = _lod2(fp, xyz, labels, np.union1d(keep, small), planes, ground, height, cell, least)
     solids, roofs, _ = raised if raised is not None and raised[2] else _lod2(fp, xyz, labels, keep, planes, ground,
                                                                              height, cell)
-    return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs, len(solids)), lod1, solids, roofs)
+    return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs), lod1, solids, roofs)
 
 
 def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):

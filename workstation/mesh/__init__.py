@@ -20,7 +20,8 @@ from .texture import TextureParams, texture_from_photos
 __all__ = [
     "METHODS", "MeshChainParams", "MeshResult", "mesh_cloud", "CleanParams", "clean", "ColorTransferParams",
     "transfer_colors", "NormalParams", "estimate_normals", "QualityParams", "mesh_quality", "BallPivotingParams",
-    "Delaunay25dParams", "PoissonParams", "RefineParams", "refine_to_cloud", "ball_pivoting", "delaunay25d", "keep_vertices", "poisson",
+    "Delaunay25dParams", "PoissonParams", "RefineParams", "refine_to_cloud", "ball_pivoting", "delaunay25d",
+    "keep_vertices", "poisson",
     "DecimateParams", "SmoothParams", "decimate", "smooth", "StepRecord", "point_spacing", "TextureParams",
     "texture_from_photos", "subdivide_midpoint",
 ]

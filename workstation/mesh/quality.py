@@ -19,7 +19,7 @@ cameras see) within τ of the reconstruction, and F = 2PR / (P + R).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -73,11 +73,6 @@ def sample_surface(mesh: Mesh, n: int, seed: int = 0) -> tuple[np.ndarray, np.nd
     u, v = np.where(flip, 1 - u, u), np.where(flip, 1 - v, v)
     t = mesh.vertices[mesh.faces[f]]
     return t[:, 0] + u[:, None] * (t[:, 1] - t[:, 0]) + v[:, None] * (t[:, 2] - t[:, 0]), f
-
-
-def _sample_surface(mesh: Mesh, n: int, seed: int = 0) -> np.ndarray:
-    """n points (n, 3) sampled uniformly by area on the faces (seeded)."""
-    return sample_surface(mesh, n, seed)[0]
 
 
 def _hausdorff(surface, points, sample_faces: bool, n: int, maxdist: float) -> np.ndarray:
@@ -195,7 +190,7 @@ def mesh_quality(mesh: Mesh, cloud: Cloud | None = None, params: QualityParams =
         diag = float(np.linalg.norm(np.ptp(np.vstack([mesh.vertices, ref.xyz]), axis=0)))
         n_samples = params.mesh_samples or max(10_000, mesh.n_faces)
         out["mesh_to_cloud"] = _stats(_hausdorff(m, c, True, n_samples, diag))
-        samples = _sample_surface(mesh, n_samples)
+        samples = sample_surface(mesh, n_samples)[0]
         out["mesh_to_cloud_local_plane"] = _stats(local_plane_distance(samples, ref.xyz))
         out["mesh_to_cloud_floor"] = _stats(nearest_point_floor(samples, ref.xyz))
         out["cloud_to_mesh"] = _stats(_hausdorff(m, c, False, ref.n, diag))
@@ -225,7 +220,7 @@ class FScoreParams:
     seed : int
     """
 
-    taus: tuple = field(default=(0.01, 0.02, 0.05))
+    taus: tuple = (0.01, 0.02, 0.05)
     truth_samples: int = 200_000
     recon_samples: int = 200_000
     min_views: int = 2
@@ -234,8 +229,9 @@ class FScoreParams:
     def __post_init__(self):
         if not self.taus or any(not np.isfinite(t) or t <= 0 for t in self.taus):
             raise InvalidInputError("every tolerance τ must be a positive number", field="taus")
-        if self.truth_samples < 1 or self.recon_samples < 1 or self.min_views < 1:
-            raise InvalidInputError("sample counts and min_views must be ≥ 1", field="truth_samples")
+        for name in ("truth_samples", "recon_samples", "min_views"):
+            if getattr(self, name) < 1:
+                raise InvalidInputError(f"{name} must be ≥ 1", field=name)
 
 
 def closest_on_mesh(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -290,7 +286,8 @@ def fscore(precision_dist: np.ndarray, recall_dist: np.ndarray, taus) -> dict:
     pd_, rd = np.asarray(precision_dist, float), np.asarray(recall_dist, float)
     if pd_.size == 0 or rd.size == 0:
         raise InvalidInputError("an F-score needs reconstruction and truth samples",
-                                "the reconstruction may lie outside the true target, or no camera sees it")
+                                "the reconstruction may lie outside the true target, or no camera sees it",
+                                field="precision_dist" if pd_.size == 0 else "recall_dist")
     out = {}
     for tau in taus:
         p, r = float(np.mean(pd_ <= tau)), float(np.mean(rd <= tau))

@@ -175,8 +175,9 @@ def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
     cosine of at least ``params.min_cos`` and all four probe points are visible; with
     ``params.last_resort`` a face that has no full candidate may still take a view that sees it
     at a grazing angle (cosine above 0) or sees its centroid while up to three corner probes
-    are hidden (a face cut by another part of the mesh, such as a wall running into a roof). Full candidates always rank before last-resort views; within each
-    group, views rank by the face's visible projected area.
+    are hidden (a face cut by another part of the mesh, such as a wall running into a roof).
+    Full candidates always rank before last-resort views; within each group, views rank by the
+    face's visible projected area.
 
     Returns
     -------
@@ -433,7 +434,7 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
         views, weights, gsd, gains, check, full = _candidate_views(mesh, rec, params, photos)
         seen = views[:, 0] >= 0
         if not seen.any():
-            raise StageError(STAGE, "no face is seen whole by any photo",
+            raise StageError(STAGE, "no face is seen by any photo",
                              "check that the mesh and the reconstruction share one frame and unit")
         texel = params.texel_size if params.texel_size is not None else float(np.nanmedian(gsd[seen]))
         atlas = build_atlas(mesh, texel, params)
@@ -471,18 +472,17 @@ def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, pho
     if not params.photo_consistency:
         gains = exposure_gains(np.where(full, views, -1)[:, :nb], colour[:, :nb]) if params.exposure_balance else {}
     else:
-        # every full view votes, however few pixels the face covers: a sub-pixel face's colour
-        # is its surroundings', which still shows an occluder in front of it
-        big = full
-        # the check first on the photos as they are (gains estimated over views that show an
-        # occluder would spread its colour into every photo's gain), then the gains over the
-        # views kept, the check again with them, and the gains once more
-        keep, gains = (views >= 0) & full, {}
+        # every full view votes, however few pixels the face covers (a sub-pixel face's colour
+        # is its surroundings', which still shows an occluder in front of it). The check runs
+        # first on the photos as they are (gains estimated over views that show an occluder
+        # would spread its colour into every photo's gain), then the gains over the views
+        # kept, the check again with them, and the gains once more
+        gains = {}
         for _ in range(2 if params.exposure_balance else 1):
             g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
             balanced = colour * g[views + 1]  # slot -1 (no view) takes row 0
-            sigma = colour_noise(np.where(big[..., None], balanced, np.nan))
-            keep = consistent_views(views, balanced, sigma, eligible=big)
+            sigma = colour_noise(np.where(full[..., None], balanced, np.nan))
+            keep = consistent_views(views, balanced, sigma, eligible=full)
             if params.exposure_balance:  # the gains without the occluded views
                 gains = exposure_gains(np.where(keep & full, views, -1)[:, :nb], colour[:, :nb])
         dropped = (views >= 0) & ~keep
