@@ -80,3 +80,13 @@ def test_edge_information_is_moved_to_the_pose_graph_source_frame():
     direct = np.asarray(info_of(points_to_legacy(tgt_graph), points_to_legacy(src_graph), 0.05, invert(L)))
     assert np.abs(moved - direct).max() < 1e-6 * np.abs(direct).max()
     assert np.abs(info_pair - direct).max() > 0.1 * np.abs(direct).max()  # the frames do differ
+
+
+def test_a_similarity_pair_method_is_refused_before_any_work():
+    """The pose graph holds rigid poses: a 7-DoF pair method is refused, naming the field."""
+    from workstation.core.errors import InvalidInputError
+
+    clouds = [Cloud(np.random.default_rng(k).random((50, 3))) for k in range(2)]
+    with pytest.raises(InvalidInputError, match="rigid") as err:
+        register_multiway(clouds, MultiwayParams(pair=RegisterParams(method="similarity")))
+    assert err.value.field == "pair.method"

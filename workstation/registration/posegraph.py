@@ -133,6 +133,10 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
         raise InvalidInputError(f"{len(params.initial_poses)} initial poses for {n} scans", field="initial_poses")
     if not 0 <= params.reference < n:
         raise InvalidInputError(f"reference {params.reference} out of range", field="reference")
+    if params.pair.method == "similarity":
+        raise InvalidInputError("the pose graph holds rigid poses; a similarity (scale) between scans is not one",
+                                "register the scans rigidly, or scale the odd one first (ws register --method "
+                                "similarity)", field="pair.method")
     origin = default_origin(clouds[params.reference].xyz)
     edges, infos = _pair_edges(clouds, params, origin)
     voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
