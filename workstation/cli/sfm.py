@@ -135,9 +135,9 @@ def _read_inputs(images, camera_file, gcp_file, scale_bars, scale_distances):
             )
     if not Path(images).is_dir():
         raise InvalidInputError("image folder not found", path=images)
-    from workstation.photogrammetry.scale import parse_scale_bar, parse_scale_distance
+    from workstation.photogrammetry.scale import parse_scale_texts
 
-    bars = [parse_scale_bar(t) for t in scale_bars] + [parse_scale_distance(t) for t in scale_distances]
+    bars = parse_scale_texts(scale_bars, scale_distances)
     if bars and gcps is not None:
         raise click.UsageError("--scale-bar/--scale-distance with --gcp: the control points already fix the scale")
     return camera, gcps, bars

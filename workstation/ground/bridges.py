@@ -374,7 +374,7 @@ def _edges(xy: np.ndarray, u: np.ndarray, cell: float):
     a = np.column_stack([np.concatenate([centre, centre]), np.repeat([[1.0, 0.0], [0.0, 1.0]], len(centre), axis=0)])
     b = np.concatenate([lo[ok], hi[ok]])
     res = np.abs(b - a @ np.linalg.lstsq(a, b, rcond=None)[0])
-    good = res <= 2.5 * 1.4826 * max(float(np.median(res)), 1e-3)
+    good = _robust_keep(res)
     k = float(np.linalg.lstsq(a[good], b[good], rcond=None)[0][0])
     return k, float(np.percentile(lo[ok], 10.0)), float(np.percentile(hi[ok], 90.0))
 
@@ -514,7 +514,7 @@ def _hinge_end(off, dt, dz, end: float, reach: float, rise: float) -> float:
         f1, f2 = a @ p1, a @ p2
         beyond = f2 < f1
         res = zz - np.minimum(f1, f2)
-        keep = np.abs(res) <= 2.5 * 1.4826 * max(float(np.median(np.abs(res))), 1e-3)
+        keep = _robust_keep(res)
     d = p1 - p2
     if d[1] * reach < rise:  # the slope must rise towards the ground beyond
         return end
@@ -676,3 +676,10 @@ def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.
     for comp, along in comps:  # the ends over sloping abutments, where the cells see no drop
         on |= _ends(xyz, surface, on & comp[r, c], along, p)
     return on
+
+
+def _robust_keep(res: np.ndarray) -> np.ndarray:
+    """Residuals within 2.5 robust standard deviations (1.4826 x the median absolute residual,
+    at least 1 mm) of zero."""
+    a = np.abs(res)
+    return a <= 2.5 * 1.4826 * max(float(np.median(a)), 1e-3)

@@ -177,6 +177,12 @@ def parse_scale_distance(text: str, option: str = "--scale-distance") -> ScaleBa
     return bar
 
 
+def parse_scale_texts(bars: Sequence[str] = (), distances: Sequence[str] = ()) -> list[ScaleBar]:
+    """Every ``--scale-bar`` (:func:`parse_scale_bar`) and ``--scale-distance``
+    (:func:`parse_scale_distance`) text, parsed, bars first."""
+    return [parse_scale_bar(t) for t in bars] + [parse_scale_distance(t) for t in distances]
+
+
 def _end_point(end: BarEnd, rec: Reconstruction, lookup: Mapping[str, Image], sigma_px: float, label: str):
     """(point (3,), covariance (3, 3), info dict) of a bar end in the model frame."""
     from .collinearity import intersect

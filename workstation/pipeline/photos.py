@@ -69,7 +69,7 @@ def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
     model, the upright (and scaled) sparse cloud and the stage record."""
     from workstation.io import work_folder
     from workstation.io.reconstruction import SFM_RECORD, write_stage_record
-    from workstation.photogrammetry.scale import parse_scale_bar, parse_scale_distance
+    from workstation.photogrammetry.scale import parse_scale_texts
     from workstation.photogrammetry.sfm import orient_photos, sfm_record
 
     t0 = time.perf_counter()
@@ -83,7 +83,7 @@ def sfm_task(out: str, photos: list, image_dir: str, link: bool, stage) -> dict:
         camera = read_camera(stage.camera)
     if workdir.exists():
         shutil.rmtree(workdir)  # the dense maps of an older model go with it
-    bars = [parse_scale_bar(t) for t in stage.scale_bars] + [parse_scale_distance(t) for t in stage.scale_distances]
+    bars = parse_scale_texts(stage.scale_bars, stage.scale_distances)
     with work_folder(workdir):
         result, doc = orient_photos(image_dir, workdir, camera, stage.params, upright=stage.upright,
                                     scale_bars=bars, sigma_px=stage.sigma_px, overwrite=True)

@@ -156,15 +156,14 @@ def _first_z(chunk) -> float | None:
     return float(np.median(chunk.xyz[keep, 2])) if keep.any() else None
 
 
-def pass1_file(state_root: Path, path: str, params: QCParams, cat: dict | None = None) -> dict:
+def pass1_file(state_root: Path, path: str, params: QCParams, cat: dict) -> dict:
     """Pass 1 of ``ws qc`` on one file of the catalog, into ``<its folder>/pass1.npz``;
-    ``cat`` is ``catalog.json`` when the caller has read it already."""
+    ``cat``: the catalog (``catalog.json``, read once by the caller for every file)."""
     from .coverage import DensityPass
     from .classes import ClassPass1
     from .validate import FormatCheck
 
     t0, c0 = time.perf_counter(), time.process_time()
-    cat = read_json(Path(state_root) / "catalog.json") if cat is None else cat
     grid, cp = _class_grid(cat, params)
     fmt, dens = FormatCheck(Path(path)), DensityPass(_units(cat))
     cls1 = ClassPass1(grid.window_over(cat["file_bounds"][path], pad=1), cp)
@@ -269,13 +268,12 @@ def _off_window(grid, win, xy: np.ndarray) -> int:
     return int(np.count_nonzero(inside & ~in_win))
 
 
-def pass2_file(state_root: Path, path: str, params: QCParams, cat: dict | None = None) -> dict:
+def pass2_file(state_root: Path, path: str, params: QCParams, cat: dict) -> dict:
     """Pass 2 of ``ws qc`` on one file, into ``<its folder>/pass2.npz`` and the swath sums
     ``swath_keys.npy`` / ``swath_sums.npy`` (sorted (swath, cell) keys on the 2×ANPS grid);
-    ``cat`` is ``catalog.json`` when the caller has read it already."""
+    ``cat``: the catalog (``catalog.json``, read once by the caller for every file)."""
     t0, c0 = time.perf_counter(), time.process_time()
     root = Path(state_root)
-    cat = read_json(root / "catalog.json") if cat is None else cat
     p1 = read_json(root / "pass1.json")
     folder = root / cat["names"][path]
     _, surf = load_state(root / "surface.npz")
