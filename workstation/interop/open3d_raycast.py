@@ -1,9 +1,10 @@
-"""Ray casting against a scene mesh with Open3D's ``t.geometry.RaycastingScene`` (Embree).
+"""Ray casting and closest-point queries against a triangle mesh with Open3D's
+``t.geometry.RaycastingScene`` (Embree): the one place the project builds such a scene.
 
-The scene's local coordinates (metres from the scene origin, see
-:class:`workstation.lidar.scene.Scene`) are converted to float32 here; callers pass rays in
-that same local frame, never absolute map coordinates, so float32 keeps sub-millimetre
-precision over a few kilometres.
+The mesh's local coordinates (metres from a local origin, e.g. the scene origin of
+:class:`workstation.lidar.scene.Scene` or the mesh's centre) are converted to float32 here;
+callers pass rays and query points in that same local frame, never absolute map coordinates,
+so float32 keeps sub-millimetre precision over a few kilometres.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ def _o3d():
 
 
 class RaycastScene:
-    """First-hit ray casting against one triangle mesh.
+    """First-hit ray casting and closest-point queries against one triangle mesh.
 
     Parameters
     ----------
@@ -73,3 +74,21 @@ class RaycastScene:
         prim[~np.isfinite(t)] = -1
         return t, prim
 
+    def closest(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Nearest point of the mesh's surface to each query point, and its triangle.
+
+        Parameters
+        ----------
+        points : (n, 3) float
+            Query points (local m); converted to float32.
+
+        Returns
+        -------
+        nearest : (n, 3) float32
+            Closest surface point (local m).
+        prim : (n,) int64
+            Triangle holding it.
+        """
+        q = self._o3c.Tensor.from_numpy(np.ascontiguousarray(points, np.float32))
+        out = self.scene.compute_closest_points(q, nthreads=self.nthreads)
+        return out["points"].numpy(), out["primitive_ids"].numpy().astype(np.int64)

@@ -236,19 +236,16 @@ class FScoreParams:
 
 def closest_on_mesh(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Distance (n,) from each point (n, 3) to the nearest point of a triangle mesh, and the
-    index (n,) of that nearest face (Open3D's closest-point query, in float32 around the
-    mesh's centre so that map coordinates keep their precision)."""
-    import open3d as o3d
+    index (n,) of that nearest face (:meth:`RaycastScene.closest
+    <workstation.interop.open3d_raycast.RaycastScene.closest>`, in float32 around the mesh's
+    centre so that map coordinates keep their precision)."""
+    from workstation.interop.open3d_raycast import RaycastScene
 
     V = np.asarray(vertices, np.float64)
     o = V.mean(axis=0)
-    rs = o3d.t.geometry.RaycastingScene()
-    rs.add_triangles(o3d.core.Tensor((V - o).astype(np.float32)),
-                     o3d.core.Tensor(np.ascontiguousarray(faces, np.uint32)))
     p = np.asarray(points, np.float64) - o
-    q = rs.compute_closest_points(o3d.core.Tensor(p.astype(np.float32)))
-    return (np.linalg.norm(q["points"].numpy().astype(np.float64) - p, axis=1),
-            q["primitive_ids"].numpy().astype(np.int64))
+    q, prim = RaycastScene(V - o, faces).closest(p)
+    return np.linalg.norm(q.astype(np.float64) - p, axis=1), prim
 
 
 def views_seeing(points: np.ndarray, rec, vertices: np.ndarray, faces: np.ndarray,

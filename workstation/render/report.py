@@ -568,11 +568,12 @@ def _meshes_html(meshes: list[Path], root: Path, params: ReportParams) -> list[s
 def _previews_html(root: Path, rasters: list[Path], params: ReportParams, meta_of) -> list[str]:
     """Previews: a plot per raster (ortho, hillshade, DTM, density...; a note for an
     unreadable one), then the PNG images of the folder (renders, plots; up to 2 MB, embedded as
-    they are; not the photos in an ``images`` folder). ``meta_of(path)``: a raster's metadata."""
+    they are; not the photos in an ``images`` folder). ``meta_of(path)``: a raster's metadata,
+    which orders the previews (:func:`~.report_rasters.preview_rasters`)."""
     out = []
     for p in preview_rasters(root, rasters, params.max_files, meta_of):
         try:
-            r = plot_raster(p, meta_of(p))
+            r = plot_raster(p)
         except Exception as e:  # noqa: BLE001
             out.append(f'<p class="note">{html.escape(p.name)}: {html.escape(str(e))}</p>')
             continue

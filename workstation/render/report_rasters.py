@@ -81,10 +81,10 @@ def _tags_meta(ds) -> dict:
     return meta if isinstance(meta, dict) else {}
 
 
-def _read_preview(path: Path, meta: dict | None = None):
-    """(bands (b, h, w) float with NaN for no data, cell size, dtype, nodata, metadata) of a
-    GeoTIFF, decimated so that its longer side is at most :data:`MAX_PREVIEW_PX`; the
-    metadata is ``meta`` when given (already read), else read from the file."""
+def _read_preview(path: Path):
+    """(bands (b, h, w) float with NaN for no data, cell size, dtype, nodata, ``ws`` metadata)
+    of a GeoTIFF, decimated so that its longer side is at most :data:`MAX_PREVIEW_PX`; the
+    metadata comes from the same open file."""
     import rasterio
 
     with rasterio.open(path) as ds:
@@ -92,9 +92,7 @@ def _read_preview(path: Path, meta: dict | None = None):
         shape = (min(ds.count, 3), max(1, ds.height // step), max(1, ds.width // step))
         a = ds.read(list(range(1, shape[0] + 1)), out_shape=shape, masked=True).astype(np.float64).filled(np.nan)
         cell = (abs(ds.transform.a) or 1.0) * ds.width / shape[2]
-        dtype, nodata = ds.dtypes[0], ds.nodata
-        if meta is None:
-            meta = _tags_meta(ds)
+        dtype, nodata, meta = ds.dtypes[0], ds.nodata, _tags_meta(ds)
     return a, cell, dtype, nodata, meta
 
 
@@ -111,17 +109,17 @@ def _rgb(a: np.ndarray, dtype) -> np.ndarray:
     return np.dstack([rgb, valid.astype(float)])
 
 
-def plot_raster(path: Path, meta: dict | None = None) -> tuple[str, str] | None:
+def plot_raster(path: Path) -> tuple[str, str] | None:
     """(caption, b64 png) for a GeoTIFF: an ortho (3 bands) in colour, hillshades in grey
     (0-255 shading, never tinted), elevations as a hillshade with an elevation tint, slope,
-    aspect, density and accuracy with their scales, diverging map for errors. ``meta``: the
-    file's ``ws`` metadata when already read (:func:`raster_meta`), else read here."""
+    aspect, density and accuracy with their scales, diverging map for errors. The kind comes
+    from the file's ``ws`` metadata, read from the file opened for the picture."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    bands, cell, dtype, nodata, meta = _read_preview(path, meta)
+    bands, cell, dtype, nodata, meta = _read_preview(path)
     kind = "image" if bands.shape[0] >= 3 else raster_kind(path, meta, dtype, nodata)
     a = bands[0]
     fig, ax = plt.subplots(figsize=(6, 6 * a.shape[0] / max(a.shape[1], 1) + 0.5))
