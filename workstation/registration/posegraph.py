@@ -123,7 +123,7 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     StageError
         When an odometry edge fails (the chain would break).
     """
-    from workstation.interop.open3d import local_transform, require_open3d, world_transform
+    from workstation.interop.open3d import require_open3d, world_transform
 
     require_open3d()
     n = len(clouds)
@@ -138,13 +138,12 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
                                 "register the scans rigidly, or scale the odd one first (ws register --method "
                                 "similarity)", field="pair.method")
     origin = default_origin(clouds[params.reference].xyz)
-    edges, infos = _pair_edges(clouds, params, origin)
+    edges, L, infos = _pair_edges(clouds, params, origin)
     voxel = float(params.pair.voxel_size) if params.pair.voxel_size else None
     if voxel is None:
         from .preprocess import estimate_voxel_size
 
         voxel = estimate_voxel_size(clouds[params.reference].xyz - origin)
-    L = {(e.source, e.target): local_transform(e.transform, origin, origin) for e in edges}
     P, kept_pairs = _optimise_pose_graph(n, edges, L, infos, voxel, params)
     out_edges = [_edge_residuals(e, L[(e.source, e.target)], P, clouds[e.source].xyz.mean(axis=0) - origin, kept_pairs)
                  for e in edges]
@@ -152,16 +151,19 @@ def register_multiway(clouds: list[Cloud], params: MultiwayParams = MultiwayPara
     return MultiwayResult(poses, out_edges, params.reference, {"voxel_size": voxel, "n_scans": n})
 
 
-def _pair_edges(clouds: list[Cloud], params: MultiwayParams, origin: np.ndarray) -> tuple[list[EdgeRecord], dict]:
+def _pair_edges(clouds: list[Cloud], params: MultiwayParams,
+                origin: np.ndarray) -> tuple[list[EdgeRecord], dict, dict]:
     """Register each consecutive pair (odometry edges, which must succeed) and, with
     ``params.loop_closure``, every other pair (loop edges, kept only when they pass
     ``params.loop_min_fitness``); from the initial poses when given (ICP only). Returns the
-    edges and their 6 x 6 information matrices by ``(i, j)``, expressed in the pose graph's
-    local frame (world minus ``origin``) as its residuals are (:func:`_graph_information`)."""
+    edges, their transforms in the pose graph's local frame (world minus ``origin``) by
+    ``(i, j)``, and their 6 x 6 information matrices by ``(i, j)``, expressed in that frame as
+    the graph's residuals are (:func:`_graph_information`)."""
     from workstation.interop.open3d import local_transform
 
     n = len(clouds)
     edges: list[EdgeRecord] = []
+    L: dict = {}
     infos: dict = {}
     for i in range(n):
         for j in range(i + 1, n):
@@ -181,11 +183,11 @@ def _pair_edges(clouds: list[Cloud], params: MultiwayParams, origin: np.ndarray)
                 log.info("no loop closure %d-%d: %s", i, j, e.message)
                 continue
             edges.append(EdgeRecord(i, j, "odometry" if odo else "loop", r.transform, r.fitness, r.inlier_rmse))
+            L[(i, j)] = local_transform(r.transform, origin, origin)
             infos[(i, j)] = np.eye(6) if r.information is None else _graph_information(
-                r.information, np.asarray(r.meta["origin"], float) - origin,
-                local_transform(r.transform, origin, origin))
+                r.information, np.asarray(r.meta["origin"], float) - origin, L[(i, j)])
             log.info("edge %d->%d (%s): fitness %.3f", i, j, edges[-1].kind, r.fitness)
-    return edges, infos
+    return edges, L, infos
 
 
 def _graph_information(info: np.ndarray, shift: np.ndarray, L: np.ndarray) -> np.ndarray:
