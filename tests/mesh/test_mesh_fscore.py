@@ -169,6 +169,52 @@ def test_poisson_support_trim_removes_invented_surface_only():
         PoissonParams(support_trim=-1.0)
 
 
+
+def _scan_lines(gap: float, step: float, size: float = 10.0, hole: float = 3.0):
+    """Scan lines across a smooth 10 m square (points ``step`` apart along lines ``gap`` apart,
+    at 30° to x), with a ``hole`` m square without data in the middle; its true height."""
+    h = lambda x, y: 0.5 * np.sin(x / 3.0) * np.cos(y / 4.0)  # noqa: E731
+    u, v = np.meshgrid(np.arange(-size, 2 * size, step), np.arange(-size, 2 * size, gap))
+    c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
+    x, y = (c * u - s * v).ravel(), (s * u + c * v).ravel()
+    keep = (x >= 0) & (x <= size) & (y >= 0) & (y <= size) & \
+        ((np.abs(x - size / 2) > hole / 2) | (np.abs(y - size / 2) > hole / 2))
+    x, y = x[keep], y[keep]
+    gx = np.cos(x / 3.0) * np.cos(y / 4.0) / 6.0
+    gy = -np.sin(x / 3.0) * np.sin(y / 4.0) / 8.0
+    nrm = np.column_stack([-gx, -gy, np.ones_like(x)])
+    return np.column_stack([x, y, h(x, y)]), nrm / np.linalg.norm(nrm, axis=1, keepdims=True), h
+
+
+def test_poisson_support_trim_keeps_the_surface_between_scan_lines():
+    """Lines 0.5 m apart, points 5 cm apart on them: the nearest-neighbour spacing (5 cm) is a
+    tenth of the gap, and 3 of them would cut the true surface between the lines (the middle
+    lies 25 cm from every point). The trim measures the spacing across the lines: the surface
+    between lines stays, the surface Poisson invents over the 3 m hole goes."""
+    from workstation.core.cloud import Cloud
+    from workstation.mesh import PoissonParams, poisson
+    from workstation.mesh.reconstruct import across_spacing
+
+    xyz, nrm, h = _scan_lines(0.5, 0.05)
+    assert across_spacing(xyz) == pytest.approx(0.5, rel=0.02)
+    cloud = Cloud(ORIGIN + xyz, {"normal": nrm})
+    closed, _ = poisson(cloud, PoissonParams(depth=8, trim_quantile=0.0, support_trim=0.0, threads=1))
+    trimmed, rec = poisson(cloud, PoissonParams(depth=8, trim_quantile=0.0, support_trim=3.0, threads=1))
+    assert rec.summary["point_spacing"] == pytest.approx(0.05, rel=0.02)
+    assert rec.summary["support_reach"] == pytest.approx(3 * 0.5 * rec.summary["across_spacing"])
+    # the true surface over the data, away from the edges and the hole, is all still meshed
+    rng = np.random.default_rng(1)
+    x, y = rng.uniform(0.5, 9.5, (2, 20000))
+    data = (np.abs(x - 5) > 2.0) | (np.abs(y - 5) > 2.0)
+    t = ORIGIN + np.column_stack([x, y, h(x, y)])[data]
+    d, _ = closest_on_mesh(t, trimmed.vertices, trimmed.faces)
+    assert np.mean(d > 0.05) < 0.001
+    # Poisson spans the hole; the trim takes its middle (farther than the 0.75 m reach from data)
+    hole = (np.abs(x - 5) < 0.6) & (np.abs(y - 5) < 0.6)
+    t = ORIGIN + np.column_stack([x, y, h(x, y)])[hole]
+    assert np.median(closest_on_mesh(t, closed.vertices, closed.faces)[0]) < 0.05
+    assert closest_on_mesh(t, trimmed.vertices, trimmed.faces)[0].min() > 0.3
+
 def test_refine_to_cloud_averages_the_noise_of_the_points():
     from workstation.core.cloud import Cloud
     from workstation.mesh import PoissonParams, poisson

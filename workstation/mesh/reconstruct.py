@@ -69,13 +69,16 @@ class PoissonParams:
         Vertices whose density is below this quantile of the output vertices' densities are
         removed, with their faces (fraction in [0, 1); 0 = keep the closed surface).
     support_trim : float
-        Vertices farther from the nearest input point than this many point spacings (the
-        median nearest-neighbour distance, :func:`~workstation.mesh.steps.point_spacing`) are
-        removed, with their faces (dimensionless; 0 = off). Poisson closes the surface over
-        holes and unseen parts; such invented surface has no data near it, while surface over
-        the data lies within about one spacing of a point. The density trim misses invented
-        sheets spanning small gaps, whose density is interpolated from their rims. Default 3
-        (chosen on the F-score of a simulated photo rig's dense cloud, checked on laser scans).
+        Vertices farther from the nearest input point than this many point spacings are
+        removed, with their faces (dimensionless; 0 = off). The spacing is the median
+        nearest-neighbour distance (:func:`~workstation.mesh.steps.point_spacing`), or half
+        the spacing across scan lines where that is larger (:func:`support_spacing`: points
+        close along lines far apart, whose surface between the lines lies up to half the gap
+        from every point). Poisson closes the surface over holes and unseen parts; such
+        invented surface has no data near it, while surface over the data lies within about
+        one spacing of a point. The density trim misses invented sheets spanning small gaps,
+        whose density is interpolated from their rims. Default 3 (chosen on the F-score of a
+        simulated photo rig's dense cloud, checked on laser scans).
     backend : {"open3d", "pymeshlab"}
         Open3D's build of Kazhdan's screened PoissonRecon (default) or MeshLab's filter (the
         same algorithm and parameters). MeshLab's build is the slow Linux Poisson of PyMeshLab
@@ -202,10 +205,10 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
             q = np.asarray(mesh.vertex_attrs["quality"], dtype=np.float64)
             thr = float(np.quantile(q, params.trim_quantile))
             mesh = keep_vertices(mesh, q >= thr)
-        spacing, n_support = None, 0
+        spacing, across, reach, n_support = None, None, None, 0
         if params.support_trim > 0 and mesh.n_faces:
-            spacing = point_spacing(cloud.xyz)
-            reach = params.support_trim * spacing
+            spacing, across = point_spacing(cloud.xyz), across_spacing(cloud.xyz)
+            reach = params.support_trim * max(spacing, 0.5 * across)
             far = support_distance(mesh.vertices, cloud.xyz, reach) > reach
             n_support = int(far.sum())
             mesh = keep_vertices(mesh, ~far)
@@ -217,7 +220,8 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
          "threads": threads},
         t.seconds,
         {"faces_untrimmed": n_before, "faces": mesh.n_faces, "vertices": mesh.n_vertices,
-         "density_threshold": thr, "point_spacing": spacing, "vertices_without_support": n_support,
+         "density_threshold": thr, "point_spacing": spacing, "across_spacing": across, "support_reach": reach,
+         "vertices_without_support": n_support,
          "cpu_seconds": round(t.cpu, 3)},
     )
     return _check_mesh("poisson", mesh), rec
@@ -323,6 +327,71 @@ def support_distance(vertices: np.ndarray, xyz: np.ndarray, upper: float = np.in
     origin = np.asarray(xyz, np.float64).mean(axis=0)
     return cKDTree(np.asarray(xyz, np.float64) - origin).query(np.asarray(vertices, np.float64) - origin,
                                                               distance_upper_bound=float(upper))[0]
+
+
+def across_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0, k_max: int = 512) -> float:
+    """Median spacing across the lines a cloud's points may lie on, in coordinate units.
+
+    For each query point (a seeded random sample of at most ``sample``, as
+    :func:`~workstation.mesh.steps.point_spacing` draws), the distance to the nearest point at
+    least 45° off the line through it and its nearest neighbour. On scan lines (airborne or
+    terrestrial strips: points close along each line, lines far apart) that is the gap between
+    lines; on a regular grid it is the grid step, the nearest-neighbour spacing; on an
+    irregular isotropic cloud about 1.9 times that spacing (the nearest point in half of the
+    directions, beyond the nearest). So half of it exceeds the nearest-neighbour spacing only
+    where lines lie more than about twice as far apart as the points on them, which is when
+    the surface between lines lies farther from every point than the nearest-neighbour
+    spacing says. The search takes the 16 nearest points, doubled up to ``k_max`` for the
+    points whose nearest ones all lie along their line; past ``k_max`` the farthest of them
+    stands in (a lower bound).
+    """
+    from scipy.spatial import cKDTree
+
+    xyz = np.asarray(xyz, dtype=np.float64)
+    if xyz.shape[0] < 3:
+        raise InvalidInputError(f"{xyz.shape[0]} points: need at least 3 to measure the spacing across lines")
+    pts = xyz - xyz.mean(axis=0)
+    rng = np.random.default_rng(seed)
+    q = pts if len(pts) <= sample else pts[rng.choice(len(pts), sample, replace=False)]
+    tree = cKDTree(pts)
+    out = np.full(len(q), np.nan)
+    todo, k = np.arange(len(q)), 16
+    while todo.size:
+        k = min(k, len(pts) - 1)
+        val, found = _across_block(tree, pts, q[todo], k)
+        out[todo[found]] = val[found]
+        if k >= min(k_max, len(pts) - 1):
+            out[todo[~found]] = val[~found]
+            break
+        todo, k = todo[~found], 2 * k
+    out = out[np.isfinite(out)]
+    if out.size == 0:
+        raise InvalidInputError("all points coincide: the spacing across lines is zero", "remove duplicate points")
+    return float(np.median(out))
+
+
+def _across_block(tree, pts: np.ndarray, q: np.ndarray, k: int, chunk: int = 1 << 20) -> tuple[np.ndarray, np.ndarray]:
+    """For the query points ``q`` (m, 3), among their k nearest points of ``pts`` (``tree``):
+    the distance (m,) to the nearest one at least 45° off the line to the nearest distinct
+    point, and whether one was found (m,) bool; where none was, the distance is the k-th
+    neighbour's (``inf`` when every neighbour coincides with the query). Queries run in
+    blocks of about ``chunk`` neighbours."""
+    val, found = np.empty(len(q)), np.zeros(len(q), bool)
+    step = max(1, chunk // (k + 1))
+    for s in range(0, len(q), step):
+        qq = q[s:s + step]
+        d, idx = tree.query(qq, k=k + 1)
+        off = pts[idx] - qq[:, None, :]
+        valid = d > 0
+        m = np.arange(len(qq))
+        first = np.argmax(valid, axis=1)
+        d1 = off[m, first] / np.where(valid[m, first], d[m, first], np.inf)[:, None]
+        across = valid & (np.abs(np.einsum("mki,mi->mk", off, d1)) <= np.sqrt(0.5) * d)
+        hit = across.any(axis=1) & valid.any(axis=1)
+        val[s:s + step] = np.where(hit, np.where(across, d, np.inf).min(axis=1),
+                                   np.where(valid.any(axis=1), d[:, -1], np.inf))
+        found[s:s + step] = hit
+    return val, found
 
 
 def keep_vertices(mesh: Mesh, keep: np.ndarray) -> Mesh:
