@@ -12,7 +12,9 @@ The roof is built as in geoflow / 3DBAG (Peters et al. 2022, "Automated 3D recon
 and LoD1 models for all 10 million buildings of the Netherlands") in a reduced form: every roof
 plane claims the raster cells where its points dominate; neighbouring planes whose heights
 differ at their shared border by more than the step tolerance start a new *part* (a step edge
-with a wall), planes meeting continuously stay in one part. Inside a part the roof is the lower
+with a wall), planes meeting continuously stay in one part. The planes are first regularised
+(:func:`regular_planes`: azimuths along the building's directions, one tilt for both sides of a
+ridge, where the points do not contradict it). Inside a part the roof is the lower
 envelope of its planes clipped to the part outline: exact for flat, shed, gabled, hipped and
 pyramid roofs and for any convex roof; planes whose envelope face disagrees with their own
 points are dropped. Where that drops planes, the arrangement of the planes' intersection lines
@@ -740,6 +742,22 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     return local, np.array(out_n), np.array(out_p)
 
 
+def regular_planes(xyz, local, normals, points, spacing):
+    """The building's planes (``normals`` (p, 3), ``points`` (p, 3)) of its points ``xyz`` labelled
+    ``local``, refitted by :func:`~workstation.buildings.planes.regularise_planes` (azimuths along
+    the building's directions, one tilt for the two sides of a ridge, each where the points do not
+    reject it) at the noise pooled over the planes, with touching meaning within three point
+    spacings (the neighbour reach of region growing). Returns (normals, points)."""
+    from .planes import pooled_noise, regularise_planes
+
+    o = xyz.min(axis=0)
+    loc = xyz - o
+    d = -np.einsum("ij,ij->i", normals, points - o)
+    n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing)
+    q = points - o
+    return n, q - (np.einsum("ij,ij->i", n, q) + d)[:, None] * n + o
+
+
 def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.ndarray, planes, ground: float,
                    params: ModelParams = ModelParams(), cell: float = 0.5) -> BuildingModel:
     """LoD1.2 and LoD2.2 of one building from its footprint (k, 2), its points (m, 3), their
@@ -789,6 +807,7 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):
         m = np.isin(labels, keep)
         local[m] = np.searchsorted(keep, labels[m])
         local, normals, points = merge_building_planes(xyz, local, planes.normals[keep], planes.threshold, planes.angle_deg)
+        normals, points = regular_planes(xyz, local, normals, points, planes.spacing)
     else:  # no plane: a flat roof at the median height
         c = fp.centroid
         normals = np.array([[0.0, 0.0, 1.0]])

@@ -24,6 +24,10 @@ clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
    proposals accepted on statistical grounds (tilt standard error at the pooled noise, a
    chi-square test of the residuals, a surface test and the Bayesian information criterion
    against the planes already there) instead of a point count.
+7. Regularisation of a building's planes (:func:`regularise_planes`, used by
+   :mod:`workstation.buildings.models` and by step 6): azimuths along the building's dominant
+   direction and its quarter turns, and one tilt for the two sides of a ridge, each imposed
+   where the Bayes factor of the constrained against the free fit favours it.
 
 The distance threshold combines the noise and the spacing: ``eps = sqrt((3 sigma)^2 +
 (s tan(angle))^2)``: 3 sigma keeps 99.7 % of Gaussian noise and the second term is the offset a
@@ -488,21 +492,41 @@ def _surface(xyz: np.ndarray, pts: np.ndarray, normal: np.ndarray, d: float, eps
     import shapely
 
     hull = shapely.MultiPoint(pts[:, :2]).convex_hull
-    inside = shapely.contains_xy(hull, xyz[:, 0], xyz[:, 1])
+    x0, y0, x1, y1 = pts[:, 0].min(), pts[:, 1].min(), pts[:, 0].max(), pts[:, 1].max()
+    near = np.flatnonzero((xyz[:, 0] >= x0) & (xyz[:, 0] <= x1) & (xyz[:, 1] >= y0) & (xyz[:, 1] <= y1))
+    inside = near[shapely.contains_xy(hull, xyz[near, 0], xyz[near, 1])]  # only points in its box can be in it
     on = np.abs(xyz[inside] @ normal + d) < eps
     return bool(on.sum() > (~on).sum())
 
 
-def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
+def _regular_tilt_se(xyz, labels, normals, offsets, members, nrm, d, sigma, reach) -> float:
+    """Tilt standard error (degrees) of a proposed face (points ``members``, plane (nrm, d)) once
+    regularised with the planes already found (``labels``, ``normals``, ``offsets``) by
+    :func:`regularise_planes`: its azimuth fixed along the building's directions and its tilt
+    shared with the other side of its ridge, where the Bayes factors favour them; inf when they
+    do not (the face's own free fit then decides)."""
+    trial = labels.copy()
+    trial[members] = len(normals)
+    _, _, se = regularise_planes(xyz, trial, np.vstack([normals, nrm]), np.r_[offsets, d], sigma, reach)
+    return float(se[-1]) if np.isfinite(se[-1]) else float("inf")
+
+
+def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
     """Faces too small for the count ``min_points`` among the points still on no plane (a dormer
     cheek of 1-3 m^2 has 10-30 points at 10 points/m^2), accepted on statistical grounds
     instead of a count. The free points are joined into clusters (two free points are linked
     when one is among the other's ``idx`` neighbours, the neighbourhoods of the normals);
-    sequential RANSAC proposes planes in each, and a proposal with n inliers becomes a face when
+    sequential RANSAC proposes planes in each, whose inliers are then the points within 3 sigma
+    of the least-squares plane (twice refitted): the band ``eps`` also admits points of a
+    neighbouring surface within the normals' angle tolerance over a spacing, which on a face of
+    20 points fail the chi-square test below; a proposal with n inliers becomes a face when
 
     * its tilt is determined to :data:`MAX_TILT_SE_DEG` (:func:`tilt_standard_error` at the
       pooled noise sigma of the planes found, :func:`pooled_noise`): the support needed follows
-      from the noise, the spacing and the face's extent, not from a fixed count;
+      from the noise, the spacing and the face's extent, not from a fixed count. A face whose
+      free fit misses it may pass as the model will carry it: regularised with the planes found
+      (:func:`_regular_tilt_se`, touching within three ``spacing``), its azimuth along the
+      building's directions and its tilt shared with the other side of its ridge;
     * its points lie on it as the noise predicts: RSS_1 / sigma^2 is not in the upper
       :data:`PLANAR_LEVEL` tail of the chi-square law with n - 3 degrees of freedom (points
       scattered through the slab of half-width ``eps``, a tree crown, give about three times
@@ -530,6 +554,7 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
     rss0 = np.where(np.isfinite(near), near, d_all.min(axis=1)) ** 2
     rng = np.random.default_rng(params.seed)
     out, nxt = labels.copy(), int(labels.max()) + 1
+    known_n, known_d = normals, offsets
     order = np.argsort(comp, kind="stable")
     start = np.searchsorted(comp[order], np.arange(comp.max() + 2))
     for c in np.flatnonzero(np.diff(start) >= 4):
@@ -538,6 +563,12 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
             if len(members) < 4:
                 break
             nrm, d, inl = ransac_plane(xyz[free[members]], eps, params, rng)
+            for _ in range(2 if nrm is not None else 0):  # the noise band of the fitted plane
+                band = np.abs(xyz[free[members]] @ nrm + d) < 3.0 * sigma
+                if band.sum() < 4:
+                    break
+                inl = band
+                nrm, d = fit_plane(xyz[free[members[inl]]])
             m = int(inl.sum()) if nrm is not None else 0
             if m < 4:
                 break
@@ -545,14 +576,200 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params):
             rss1 = float(np.sum((pts @ nrm + d) ** 2))
             gain = (float(rss0[members[inl]].sum()) - rss1) / sigma ** 2
             if (gain <= 3.0 * math.log(m) or chi2.sf(rss1 / sigma ** 2, m - 3) < PLANAR_LEVEL
-                    or tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
+                    or (tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
+                        and _regular_tilt_se(xyz, out, known_n, known_d, free[members[inl]], nrm, d, sigma,
+                                             3.0 * spacing) > MAX_TILT_SE_DEG)
                     or not _surface(xyz, pts, nrm, d, eps)):
                 break
             out[free[members[inl]]] = nxt
+            known_n, known_d = np.vstack([known_n, nrm]), np.r_[known_d, d]
             nxt += 1
             members = members[~inl]
     return out
 
+
+#: Range (degrees) of a free plane's azimuth modulo a quarter turn, and of a free roof plane's
+#: tilt (the steepest roof plane, ``models.ModelParams.max_roof_tilt_deg``): the widths of the
+#: uniform priors of the free parameters in the Bayes factors of :func:`regularise_planes`.
+AZIMUTH_RANGE_DEG = 90.0
+TILT_RANGE_DEG = 70.0
+
+#: Tilt (degrees) from which a plane's azimuth is regularised (as ``models.FLAT_TILT_DEG``: below
+#: it a roof face counts as flat and has no direction worth a constraint).
+REGULAR_MIN_TILT_DEG = 5.0
+
+
+def plane_moments(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray):
+    """Centroids (p, 3), unit downslope in-plane directions e1 (p, 3), level in-plane directions
+    e2 (p, 3) and second moments M (p, 2, 2) = sum of [p1 p2]^T [p1 p2] over each plane's points,
+    p1 and p2 their centred coordinates along e1 and e2 (a level plane takes e1 along x)."""
+    p = len(normals)
+    on = labels >= 0
+    q = labels[on]
+    cnt = np.maximum(np.bincount(q, minlength=p), 1).astype(float)
+    cen = np.column_stack([np.bincount(q, xyz[on, k], minlength=p) for k in range(3)]) / cnt[:, None]
+    h = np.hypot(normals[:, 0], normals[:, 1])
+    d = np.where(h[:, None] > 1e-12, normals[:, :2] / np.maximum(h, 1e-300)[:, None], [1.0, 0.0])
+    e1 = np.column_stack([d * normals[:, 2:3], -h])  # (cos t d, -sin t): along the plane, downhill
+    e2 = np.cross(normals, e1)
+    c = xyz[on] - cen[q]
+    p1, p2 = np.einsum("ij,ij->i", c, e1[q]), np.einsum("ij,ij->i", c, e2[q])
+    m = np.stack([np.bincount(q, a * b, minlength=p) for a, b in ((p1, p1), (p1, p2), (p2, p2))], axis=1)
+    return cen, e1, e2, m[:, [0, 1, 1, 2]].reshape(p, 2, 2)
+
+
+def log_bayes_equal(x: np.ndarray, var: np.ndarray, group: np.ndarray, width: float) -> np.ndarray:
+    """Log Bayes factor, per group, of "the values of the group are one value" against "each is
+    free": estimates ``x`` (k,) with Gaussian variances ``var``, each free value and the common one
+    uniform over a range ``width`` (same units), groups numbered ``group`` (k,) from 0. With the
+    weighted mean m, its variance V = 1 / sum(1 / var) and chi^2 = sum((x - m)^2 / var):
+    ln B = (k - 1) ln(width) + ln(2 pi V) / 2 - sum(ln(2 pi var)) / 2 - chi^2 / 2 (Jeffreys 1961,
+    ch. 5: the nested model wins when B > 1). A value taken as known (variance 0 is not allowed;
+    pass its own variance) counts as a member of the group.
+
+    >>> round(float(log_bayes_equal(np.array([0.0, 1.0]), np.array([0.5, 0.5]), np.array([0, 0]), 90.0)[0]), 3)
+    3.081
+    """
+    w = 1.0 / var
+    sw = np.bincount(group, w)
+    m = np.bincount(group, w * x) / sw
+    chi = np.bincount(group, w * (x - m[group]) ** 2)
+    k = np.bincount(group)
+    return ((k - 1) * math.log(width) + 0.5 * np.log(2 * math.pi / sw) - 0.5 * np.bincount(group, np.log(2 * math.pi * var))
+            - 0.5 * chi)
+
+
+def _along(az: np.ndarray, var: np.ndarray, theta: float, v0: float) -> np.ndarray:
+    """Whether each azimuth (degrees, variance ``var``) is better explained as the direction
+    ``theta`` (variance ``v0``) or a quarter turn of it than as free over a quarter turn: the Bayes
+    factor of :func:`log_bayes_equal` for the two values."""
+    tot = var + v0
+    r = (az - theta + 45.0) % 90.0 - 45.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.isfinite(var) & (math.log(AZIMUTH_RANGE_DEG) - 0.5 * np.log(2 * math.pi * tot) - 0.5 * r * r / tot > 0)
+
+
+def dominant_direction(az: np.ndarray, var: np.ndarray):
+    """The building's dominant direction (degrees, 0-90) from plane azimuths ``az`` (degrees) with
+    variances ``var`` (degrees^2, inf for none): the inverse-variance weighted mean of the azimuths
+    modulo 90 degrees (a rectilinear building's faces look along one direction and its quarter
+    turns) over the planes that agree with it (:func:`_along`). Starts from the best-determined
+    plane and alternates mean and test until the set is stable. Returns (direction, its variance,
+    agreeing (p,) bool); NaN and none without a finite var."""
+    ok = np.isfinite(var)
+    if not ok.any():
+        return float("nan"), float("nan"), np.zeros(len(az), bool)
+    theta, v0 = float(az[ok][np.argmin(var[ok])] % 90.0), float(var[ok].min())
+    use = _along(az, var, theta, v0)
+    for _ in range(len(az) + 1):
+        if not use.any():
+            break
+        w = 1.0 / var[use]
+        r = (az[use] - theta + 45.0) % 90.0 - 45.0
+        theta, v0 = float((theta + np.sum(w * r) / np.sum(w)) % 90.0), float(1.0 / np.sum(w))
+        new = _along(az, var, theta, v0)
+        if np.array_equal(new, use) or not new.any():
+            break
+        use = new
+    return theta, v0, use
+
+
+def _line_scatter(xyz, labels, cen, down) -> np.ndarray:
+    """(p, 2, 2) scatter of each plane's centred points in (w, z), w the horizontal coordinate
+    along its unit horizontal direction ``down`` (p, 2): what a plane containing the level
+    direction across ``down`` is fitted to."""
+    p = len(cen)
+    on = labels >= 0
+    q = labels[on]
+    c = xyz[on] - cen[q]
+    w, z = np.einsum("ij,ij->i", c[:, :2], down[q]), c[:, 2]
+    s = np.stack([np.bincount(q, a * b, minlength=p) for a, b in ((w, w), (w, z), (z, z))], axis=1)
+    return s[:, [0, 1, 1, 2]].reshape(p, 2, 2)
+
+
+def _line_fits(scatter, down, groups):
+    """Planes through each plane's centroid containing the level direction across ``down``
+    (p, 2), one tilt per group (``groups`` (p,), the group's lowest plane): the total
+    least-squares line of the group's pooled (w, z) scatters (:func:`_line_scatter`). Returns
+    normals (p, 3), tilts (p,) (radians) and the sums of squared downslope coordinates (p,)."""
+    pooled = np.zeros_like(scatter)
+    np.add.at(pooled, groups, scatter)
+    vals, vecs = np.linalg.eigh(pooled[groups])
+    v = vecs[:, :, 0] * np.where(vecs[:, 1:2, 0] < 0, -1.0, 1.0)  # smallest: (sin t, cos t), up
+    return np.column_stack([v[:, :1] * down, v[:, 1]]), np.arctan2(v[:, 0], v[:, 1]), vals[:, 1]
+
+
+def _touching(xyz: np.ndarray, labels: np.ndarray, pairs: np.ndarray, reach: float) -> np.ndarray:
+    """(pairs,) bool: whether a point of each pair's first plane lies within ``reach`` (m) of a
+    point of its second (the planes meet, as the two sides of a ridge do)."""
+    from scipy.spatial import cKDTree
+
+    trees = {q: cKDTree(xyz[labels == q]) for q in np.unique(pairs[:, 0])}
+    return np.array([bool(np.isfinite(trees[a].query(xyz[labels == b], distance_upper_bound=reach)[0]).any())
+                     for a, b in pairs], bool)
+
+
+def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, offsets: np.ndarray, sigma: float,
+                      reach: float):
+    """Roof planes of one building refitted under the regularities of buildings (Zhou & Neumann
+    2012, "global regularities"; geoflow's orthogonal rules), each imposed where the Bayes factor
+    of the constrained against the free plane (:func:`log_bayes_equal`, free parameters uniform
+    over :data:`AZIMUTH_RANGE_DEG` and :data:`TILT_RANGE_DEG`) favours it:
+
+    * azimuth: the fitted normal of a plane of points ``xyz`` (n, 3) turns by a small vector with
+      covariance sigma^2 M^-1 (:func:`plane_moments`, noise ``sigma`` (m) along the normal), whose
+      level component over sin(tilt) is the azimuth's error. Planes of at least
+      :data:`REGULAR_MIN_TILT_DEG` whose azimuth agrees with the building's dominant direction
+      (:func:`dominant_direction`) or a quarter turn of it take that azimuth and are refitted with
+      it fixed (a line fit in the vertical plane along it);
+    * tilt: two such planes facing opposite ways whose points touch (within ``reach`` (m): the two
+      sides of a gable or a dormer) and whose constrained tilts (variance sigma^2 over the sum of
+      squared downslope coordinates) agree share one tilt, fitted to the pooled points of both;
+      chains of such pairs are pooled when the Bayes factor of the whole chain favours it.
+
+    ``labels`` (n,) index ``normals`` (p, 3, up) and ``offsets`` (p,) (n . x + d = 0). Returns
+    (normals, offsets, tilt standard error (p,) in degrees of the constrained planes, NaN for
+    planes left free)."""
+    p = len(normals)
+    se = np.full(p, np.nan)
+    sin_t = np.hypot(normals[:, 0], normals[:, 1])
+    if not (sin_t >= math.sin(math.radians(REGULAR_MIN_TILT_DEG))).any() or not np.isfinite(sigma) or sigma <= 0:
+        return normals, offsets, se
+    cen, _, _, m = plane_moments(xyz, labels, normals)
+    det = m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] ** 2
+    sloped = (np.degrees(np.arcsin(np.minimum(sin_t, 1.0))) >= REGULAR_MIN_TILT_DEG)
+    sloped &= (np.bincount(labels[labels >= 0], minlength=p) >= 4) & (det > 1e-12 * (m[:, 0, 0] + m[:, 1, 1]) ** 2)
+    var_az = np.full(p, np.inf)
+    var_az[sloped] = np.degrees(sigma) ** 2 * m[sloped, 0, 0] / det[sloped] / sin_t[sloped] ** 2
+    az = azimuth_of(normals)
+    theta, _, snap = dominant_direction(az, var_az)
+    if not snap.any():
+        return normals, offsets, se
+    k = np.round((az - theta) / 90.0).astype(np.int64) % 4
+    a = np.radians(theta + 90.0 * k)
+    down = np.column_stack([np.sin(a), np.cos(a)])
+    scatter = _line_scatter(xyz, labels, cen, down)
+    n1, t1, l1 = _line_fits(scatter, down, np.arange(p))
+    t1, vt = np.degrees(t1), np.degrees(sigma) ** 2 / l1
+    i, j = np.triu_indices(p, 1)
+    pair = snap[i] & snap[j] & ((k[i] - k[j]) % 4 == 2)
+    i, j = i[pair], j[pair]
+    if len(i):
+        b = log_bayes_equal(np.r_[t1[i], t1[j]], np.r_[vt[i], vt[j]], np.tile(np.arange(len(i)), 2), TILT_RANGE_DEG)
+        i, j = i[b > 0], j[b > 0]
+    if len(i):
+        touch = _touching(xyz, labels, np.column_stack([i, j]), reach)
+        i, j = i[touch], j[touch]
+    comp = small_components(p, i, j)
+    good = log_bayes_equal(t1, vt, comp, TILT_RANGE_DEG) >= 0  # a single plane: ln B = 0
+    first = np.full(len(good), p)
+    np.minimum.at(first, comp, np.arange(p))
+    groups = np.where(good[comp], first[comp], np.arange(p))
+    n2, _, l2 = _line_fits(scatter, down, groups)
+    normals = np.where(snap[:, None], n2, normals)
+    offsets = np.where(snap, -np.einsum("ij,ij->i", normals, cen), offsets)
+    se[snap] = np.degrees(sigma / np.sqrt(l2[snap]))
+    return normals, offsets, se
 
 def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> RoofPlanes:
     """Planes of a cloud of roof points (n, 3) (m) by region growing, RANSAC and merging.
@@ -592,7 +809,7 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
     # pieces of one plane split by a gap of unassigned points touch only now
     labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
     labels, pn, pd, rmse, counts = _refit(loc, labels, params.min_points)
-    small = _residual_faces(loc, labels, pn, pd, idx, eps, params)
+    small = _residual_faces(loc, labels, pn, pd, idx, eps, params, spacing)
     if small.max(initial=-1) > labels.max(initial=-1):  # faces accepted by test, not by count
         labels, pn, pd, _, _ = _refit(loc, small, 3)
         labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
