@@ -227,6 +227,69 @@ def test_photo_consistency_removes_an_occluder_missing_from_the_mesh(rig):
     assert plain_on <= 1.02 * plain_off, (plain_off, plain_on)
 
 
+def test_occlusion_mask_spreads_the_votes_to_faces_without_a_majority():
+    """A wall seen frontally by one photo in which an occluder (a disc 1 m across, a tree's
+    crown) hides some faces: the voting faces lose that view inside the disc. Faces with too
+    few views to vote (every third face) are rejected there too, and so is a face one of whose
+    sample points lies on the disc; faces away from it keep the view whether they voted or not."""
+    from workstation.mesh.texture_colour import occluded_views
+    from workstation.photogrammetry.rigs import look_at
+
+    x, z = np.meshgrid(np.linspace(-4, 4, 41), np.linspace(-3, 3, 31), indexing="xy")
+    V = np.column_stack([x.ravel(), np.full(x.size, 10.0), z.ravel()])
+    i = (np.arange(30)[:, None] * 41 + np.arange(40)[None, :]).ravel()
+    F = np.concatenate([np.column_stack([i, i + 1, i + 42]), np.column_stack([i, i + 42, i + 41])])
+    mesh = Mesh(V, F)
+    rec = Reconstruction({1: Camera(200, 150, 190.0, 185.0, 100.0, 75.0)},
+                         {1: Image("a.png", 1, look_at(np.zeros(3), np.array([0.0, 10.0, 0.0])))})
+    tri = V[F]
+    cen = tri.mean(axis=1)
+    r_in = np.linalg.norm(cen[:, [0, 2]] - [1.0, 0.5], axis=1)
+    r_far = np.linalg.norm(tri[:, :, [0, 2]] - [1.0, 0.5], axis=2).min(axis=1)  # nearest corner
+    views = np.ones((len(F), 1), np.int64)
+    voted = (np.arange(len(F)) % 3 != 0)[:, None]
+    dropped = voted & (r_in < 1.0)[:, None]
+    occ = occluded_views(mesh, rec, views, voted, dropped)[:, 0]
+    inside, outside = r_in < 0.8, r_far > 1.6  # 1.6 m: beyond the 9 px pooling box (0.47 m here)
+    assert (inside & ~voted[:, 0]).sum() > 10 and (outside & ~voted[:, 0]).sum() > 100
+    assert occ[inside].all()
+    assert not occ[outside].any()
+    straddle = (r_in > 1.0) & (r_far < 0.9)  # centroid outside the disc, a corner well inside
+    assert straddle.any() and occ[straddle].all()
+    assert not occluded_views(mesh, rec, views, voted, np.zeros_like(voted)).any()
+
+
+def test_occluder_colour_kept_off_faces_without_a_majority(rig):
+    """The rig's photos with the green "branch" of the test above: no face is textured from a
+    view in which the branch hides its centroid, including the faces the branch hides that have
+    fewer than three full views (seen only at grazing angles), which cannot vote on their own
+    and take their colour from the occlusion masks of their neighbours' votes."""
+    from workstation.interop.open3d_raycast import RaycastScene
+    from workstation.mesh.texture import select_views
+    from workstation.photogrammetry.rigs import box_wall_scene, render
+
+    rec, pix, mesh, albedo = rig
+    V, F, alb = box_wall_scene()
+    cube = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], float)
+    bv, bf = np.array([1.0, 5.0, 1.0]) + 0.5 * cube * [0.8, 0.4, 0.6], F[2:] - 4
+    Vo, Fo = np.vstack([V, bv]), np.vstack([F, bf + len(V)])
+    Ao = np.vstack([alb, np.tile([0.25, 0.55, 0.1], (len(bf), 1))])
+    photos = {k: render(Vo, Fo, Ao, rec.cameras[1], im.pose, 1) for k, im in rec.images.items()}
+    out, step = texture_from_photos(mesh, rec, TextureParams(), images=photos)
+    view = out.face_attrs["texture_view"]
+    cen = mesh.vertices[mesh.faces].mean(axis=1)
+    full = (select_views(mesh, rec, TextureParams(last_resort=False), 8)[0] >= 0).sum(axis=1)
+    hides = np.zeros((mesh.n_faces, 6), bool)  # [face, image id]: the branch hides the centroid
+    for iid, im in rec.images.items():
+        d = cen - im.pose.center
+        dl = np.linalg.norm(d, axis=1)
+        hides[:, iid] = RaycastScene(bv, bf).cast(np.broadcast_to(im.pose.center, d.shape), d / dl[:, None])[0] < dl
+    seen = view >= 1
+    few = seen & (full < 3) & hides[:, 1:].any(axis=1)
+    assert few.sum() >= 2 and step.summary["photo_consistency"]["views_occluded"] > 0
+    assert not hides[np.flatnonzero(seen), view[seen]].any()
+
+
 def test_atlas_cells_disjoint_and_in_bounds():
     """Every face's texels lie inside the texture, and no texel belongs to two faces."""
     from workstation.mesh.texture import _texels_of

@@ -42,14 +42,23 @@ Open3D ray casting, and works on any machine:
    dominant colour, and views farther from it than the paper's kernel radius (3.2 times the
    colour noise, estimated robustly from all faces' view pairs) are dropped before the best
    views are taken. Every view votes however few pixels the face covers (a sub-pixel face's
-   colour is that of its surroundings, which still shows an occluder). The check runs first on
-   the photos as they are (exposure gains estimated over views of an occluder would carry its
-   colour into every photo's gain), then the gains are estimated without the dropped views,
-   the check runs again on the balanced colours and the gains are estimated once more.
+   colour is that of its surroundings, which still shows an occluder). A face with fewer than
+   three full views has no majority of its own, so the votes are also pooled in each photo: an
+   occluder is one connected blob in a photo, and where, over a small box of pixels, the votes
+   of the faces behind it reject that photo more often than they keep it, the photo's view of
+   any face with a sample point there is rejected too (an occlusion mask per photo,
+   :func:`~workstation.mesh.texture_colour.occluded_views`), and the faces vote again without
+   those views. A face then takes the full views it keeps; if none, its last-resort views
+   (step 6) outside the masks; if none, the rejected views (a face some photo sees stays
+   textured). The check runs first on the photos as they are (exposure gains estimated over
+   views of an occluder would carry its colour into every photo's gain), then the gains are
+   estimated without the rejected views, the check runs again on the balanced colours and the
+   gains are estimated once more.
 
 6. **Last resort** (``last_resort``): a face no view sees frontally enough and whole gets a
-   grazing view or one that sees its centroid but not all its corners (step 1); such views
-   blend other surfaces, so they take no part in steps 4 and 5.
+   grazing view or one that sees its centroid but not all its corners (step 1), and so does a
+   face whose full views step 5 all rejects; such views blend other surfaces, so they take no
+   part in the exposure balance nor in the vote of step 5 (only its occlusion masks).
 
 Faces seen by no photo get their vertex colours (or grey) and ``texture_view = -1``.
 The textured mesh has one vertex per face corner (``uv`` per vertex, as OBJ and glTF store
@@ -70,7 +79,7 @@ from workstation.core.products import Mesh, Reconstruction
 
 from .steps import StepRecord, Timer
 from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_VIEWS, colour_noise, consistent_views, exposure_gains,
-                             face_colours)
+                             face_colours, occluded_views, view_samples)
 
 log = get_logger(__name__)
 STAGE = "texture"
@@ -104,9 +113,10 @@ class TextureParams:
         Balance the photos' exposure and white balance by per-photo gains (True; step 4
         of the module description).
     photo_consistency : bool
-        Drop the views whose colour of a face disagrees with most others (an occluder missing
-        from the mesh: a tree, a passer-by) before choosing the face's views (True; step 5 of
-        the module description).
+        Drop the views whose colour of a face disagrees with most others, or that fall in a
+        photo's region where the neighbouring faces' views do (an occluder missing from the
+        mesh: a tree, a passer-by), before choosing the face's views (True; step 5 of the
+        module description).
     last_resort : bool
         A face with no view passing ``min_cos`` and the four-probe visibility test may take a
         grazing view (cosine above 0) or one that sees its centroid but not all its corners
@@ -168,7 +178,8 @@ def _face_probes(mesh: Mesh, params: TextureParams):
     return tri, cen, nrm, nlen, probes, tol_abs
 
 
-def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), k: int | None = None):
+def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = TextureParams(), k: int | None = None,
+                 keep_last_resort: bool = False):
     """The ``k`` (default ``params.max_views``) best views of every face.
 
     A view is a full candidate when the face is wholly inside the image, faces the camera at a
@@ -177,7 +188,9 @@ def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
     at a grazing angle (cosine above 0) or sees its centroid while up to three corner probes
     are hidden (a face cut by another part of the mesh, such as a wall running into a roof).
     Full candidates always rank before last-resort views; within each group, views rank by the
-    face's visible projected area.
+    face's visible projected area. A face with a full candidate keeps no last-resort view,
+    unless ``keep_last_resort`` (then they fill the slots after its full candidates, for when
+    the photo-consistency check rejects all of those).
 
     Returns
     -------
@@ -242,8 +255,8 @@ def ranked_views(mesh: Mesh, rec: Reconstruction, params: TextureParams = Textur
     order = np.argsort(-rank, axis=1, kind="stable")
     views = np.take_along_axis(views, order, axis=1)
     full_slot = np.take_along_axis(rank, order, axis=1) >= FULL_VIEW_RANK
-    # a face keeps its last-resort views only when it has no full candidate
-    drop = full_slot[:, :1] & ~full_slot
+    # a face keeps its last-resort views only when it has no full candidate (or when asked)
+    drop = full_slot[:, :1] & ~full_slot & (not keep_last_resort)
     views[drop] = -1
     weights = np.where(drop | (views < 0), 0.0, np.take_along_axis(weight, order, axis=1))
     gsd = np.take_along_axis(gsd_slot, order, axis=1)[:, 0]
@@ -456,44 +469,71 @@ def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, pho
 
     Returns (views (m, k), weights (m, k), gsd (m,), gains, check, full (m,)): ``gains`` image
     id -> (3,) (empty without the balance), ``check`` a summary of the consistency check (empty
-    when off), ``full`` whether the face has full candidate views (False: last-resort views or
-    none; a face never mixes the two, :func:`ranked_views`)."""
+    when off), ``full`` whether the face is textured from full candidate views (False:
+    last-resort views or none; a face never mixes the two, :func:`ranked_views`)."""
     k = params.max_views
     kc = max(k, CONSISTENCY_VIEWS if params.photo_consistency else BALANCE_VIEWS if params.exposure_balance else k)
-    views, weights, gsd, full = ranked_views(mesh, rec, params, kc)
-    face_full = full.any(axis=1)
+    views, weights, gsd, full = ranked_views(mesh, rec, params, kc, keep_last_resort=params.photo_consistency)
     if kc == k:
-        return views, weights, gsd, {}, {}, face_full
-    colour = face_colours(mesh, rec, views, photos)
-    nb = BALANCE_VIEWS if params.photo_consistency else kc
-    # last-resort views (grazing, partly hidden) blend other surfaces: they take no part in the
-    # exposure balance nor in the consistency vote
-    check = {}
+        return views, weights, gsd, {}, {}, full.any(axis=1)
+    samples = view_samples(mesh, rec, views)
+    colour = face_colours(mesh, rec, views, photos, samples)
     if not params.photo_consistency:
-        gains = exposure_gains(np.where(full, views, -1)[:, :nb], colour[:, :nb]) if params.exposure_balance else {}
-    else:
-        # every full view votes, however few pixels the face covers (a sub-pixel face's colour
-        # is its surroundings', which still shows an occluder in front of it). The check runs
-        # first on the photos as they are (gains estimated over views that show an occluder
-        # would spread its colour into every photo's gain), then the gains over the views
-        # kept, the check again with them, and the gains once more
-        gains = {}
-        for _ in range(2 if params.exposure_balance else 1):
-            g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
-            balanced = colour * g[views + 1]  # slot -1 (no view) takes row 0
-            sigma = colour_noise(np.where(full[..., None], balanced, np.nan))
-            keep = consistent_views(views, balanced, sigma, eligible=full)
-            if params.exposure_balance:  # the gains without the occluded views
-                gains = exposure_gains(np.where(keep & full, views, -1)[:, :nb], colour[:, :nb])
-        dropped = (views >= 0) & ~keep
-        check = {"colour_sigma": round(sigma, 3), "views_dropped": int(dropped.sum()),
-                 "faces_with_dropped_views": int(dropped.any(axis=1).sum())}
-        views = np.where(keep, views, -1)
-        weights = np.where(keep, weights, 0.0)
-        order = np.argsort(-weights, axis=1, kind="stable")
-        views = np.take_along_axis(views, order, axis=1)
-        weights = np.take_along_axis(weights, order, axis=1)
+        # last-resort views (grazing, partly hidden) blend other surfaces: no part in the balance
+        gains = exposure_gains(np.where(full, views, -1)[:, :kc], colour) if params.exposure_balance else {}
+        return views[:, :k], weights[:, :k], gsd, gains, {}, full.any(axis=1)
+    # the check runs first on the photos as they are (gains estimated over views that show an
+    # occluder would spread its colour into every photo's gain), then the gains over the views
+    # kept, the check again with them, and the gains once more
+    gains = {}
+    for _ in range(2 if params.exposure_balance else 1):
+        g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
+        keep, occluded, check = _consistency_check(mesh, rec, views, full, colour * g[views + 1], samples)
+        if params.exposure_balance:  # the gains without the occluded views
+            good = np.where(keep & full & ~occluded, views, -1)
+            gains = exposure_gains(good[:, :BALANCE_VIEWS], colour[:, :BALANCE_VIEWS])
+    views, weights, face_full = _preferred_views(views, weights, full, keep, occluded)
     return views[:, :k], weights[:, :k], gsd, gains, check, face_full
+
+
+def _consistency_check(mesh: Mesh, rec: Reconstruction, views: np.ndarray, full: np.ndarray, balanced: np.ndarray,
+                       samples: dict):
+    """The photo-consistency check (module description, step 5) on the faces' view colours
+    ``balanced`` (m, k, 3, after the current gains): the vote among each face's full views
+    (:func:`consistent_views`), the photos' occlusion masks from its outcome
+    (:func:`occluded_views`; ``samples``: :func:`view_samples` of ``views``), and the vote again
+    without the views the masks reject.
+
+    Returns (keep (m, k): views the votes keep, occluded (m, k): views the masks reject, check:
+    the summary for the step record)."""
+    sigma = colour_noise(np.where(full[..., None], balanced, np.nan))
+    keep = consistent_views(views, balanced, sigma, eligible=full)
+    voted = full & (((views >= 0) & full).sum(axis=1, keepdims=True) >= 3)
+    occluded = occluded_views(mesh, rec, views, voted, voted & ~keep, samples=samples)
+    keep = consistent_views(views, balanced, sigma, eligible=full & ~occluded) & ~occluded
+    dropped = (views >= 0) & ~keep
+    check = {"colour_sigma": round(sigma, 3), "views_dropped": int((dropped & full).sum()),
+             "views_occluded": int(occluded.sum()), "faces_with_dropped_views": int((dropped & full).any(axis=1).sum())}
+    return keep, occluded, check
+
+
+def _preferred_views(views: np.ndarray, weights: np.ndarray, full: np.ndarray, keep: np.ndarray,
+                     occluded: np.ndarray):
+    """Each face's views after the photo-consistency check, best first: the full views it
+    keeps if any, else its last-resort views outside the occlusion masks, else (so that a face
+    some photo sees stays textured) the rejected ones; within a tier by weight, and views of
+    a lower tier than the face's best are dropped (a face never mixes them). Returns (views,
+    weights, full (m,): whether the face is textured from full views)."""
+    tier = np.where(views < 0, 0, np.where(full & keep, 3, np.where(~full & ~occluded, 2, 1)))
+    best = tier.max(axis=1, keepdims=True)
+    use = (tier == best) & (views >= 0)
+    views = np.where(use, views, -1)
+    weights = np.where(use, weights, 0.0)
+    order = np.argsort(-(weights + 1.0) * use, axis=1, kind="stable")
+    first = order[:, 0]
+    rows = np.arange(len(views))
+    return (np.take_along_axis(views, order, axis=1), np.take_along_axis(weights, order, axis=1),
+            full[rows, first] & use[rows, first])
 
 
 class _PhotoCache:

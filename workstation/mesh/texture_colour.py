@@ -1,7 +1,7 @@
 """Colour agreement between the views of a face, for :mod:`workstation.mesh.texture`: mean
-face colours in each view, per-photo exposure gains (Brown & Lowe 2007, section 6) and the
-photo-consistency vote (Waechter, Moehrle & Goesele 2014, section 4.1); steps 4 and 5 of that
-module's description."""
+face colours in each view, per-photo exposure gains (Brown & Lowe 2007, section 6), the
+photo-consistency vote (Waechter, Moehrle & Goesele 2014, section 4.1) and the per-photo
+occlusion masks pooled from its outcome; steps 4 and 5 of that module's description."""
 
 from __future__ import annotations
 
@@ -17,6 +17,9 @@ BALANCE_VIEWS, SIGMA_N, SIGMA_G = 4, 10.0, 0.1
 #: Candidate views per face for the photo-consistency check; the Gaussian kernel value below
 #: which Waechter et al. drop a view (6e-3, a Mahalanobis distance of sqrt(-2 ln 6e-3) = 3.2).
 CONSISTENCY_VIEWS, CONSISTENCY_KERNEL = 8, 6e-3
+#: Side, in pixels, of the box over which the photo-consistency votes of neighbouring faces are
+#: pooled into a photo's occlusion mask (:func:`occluded_views`).
+OCCLUSION_WINDOW = 9
 
 
 def _sample_bary(n: int = 4) -> np.ndarray:
@@ -31,23 +34,38 @@ def _sample_bary(n: int = 4) -> np.ndarray:
 _SAMPLE_BARY = _sample_bary()
 
 
-def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos) -> np.ndarray:
-    """(m, k, 3) mean colour of every face in each of its ``views`` (m, k): the photo sampled
-    bilinearly at 16 points spread evenly over the face (:func:`_sample_bary`) and averaged; NaN
-    where the slot holds no view; ``photos`` maps an image id to its (h, w, 3) pixels. Shared
-    by the exposure balance and the photo-consistency check."""
-    from workstation.registration.colorize import bilinear, project
+def view_samples(mesh: Mesh, rec: Reconstruction, views: np.ndarray) -> dict:
+    """Where the faces' sample points (:func:`_sample_bary`, 16 per face) fall in each of their
+    ``views`` (m, k): image id -> (faces (n,), slots (n,), u (n, 16), v (n, 16)), image
+    coordinates clipped to the image, float32. Computed once and shared by
+    :func:`face_colours` and :func:`occluded_views`."""
+    from workstation.registration.colorize import project
 
-    pts = np.einsum("pk,mkd->mpd", _SAMPLE_BARY, mesh.vertices[mesh.faces])  # (m, p, 3)
-    npt = len(_SAMPLE_BARY)
-    colour = np.full(views.shape + (3,), np.nan)
+    out = {}
     for iid in np.unique(views[views >= 0]):
         f, s = np.nonzero(views == iid)
+        pts = np.einsum("pk,nkd->npd", _SAMPLE_BARY, mesh.vertices[mesh.faces[f]])
         im = rec.images[int(iid)]
         cam = rec.cameras[im.camera_id]
-        u, v, _ = project(pts[f].reshape(-1, 3), cam, im.pose)
-        c = bilinear(photos(int(iid)), np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
-        colour[f, s] = c.reshape(-1, npt, 3).mean(axis=1)
+        u, v, _ = project(pts.reshape(-1, 3), cam, im.pose)
+        shape = (len(f), len(_SAMPLE_BARY))
+        out[int(iid)] = (f, s, np.clip(u, 0, cam.width - 1).reshape(shape).astype(np.float32),
+                         np.clip(v, 0, cam.height - 1).reshape(shape).astype(np.float32))
+    return out
+
+
+def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos, samples: dict | None = None) -> np.ndarray:
+    """(m, k, 3) mean colour of every face in each of its ``views`` (m, k): the photo sampled
+    bilinearly at 16 points spread evenly over the face (:func:`_sample_bary`) and averaged; NaN
+    where the slot holds no view; ``photos`` maps an image id to its (h, w, 3) pixels;
+    ``samples``: :func:`view_samples` of ``views`` when already computed. Shared by the
+    exposure balance and the photo-consistency check."""
+    from workstation.registration.colorize import bilinear
+
+    colour = np.full(views.shape + (3,), np.nan)
+    for iid, (f, s, u, v) in (view_samples(mesh, rec, views) if samples is None else samples).items():
+        c = bilinear(photos(int(iid)), u.ravel().astype(np.float64), v.ravel().astype(np.float64))[:, :3]
+        colour[f, s] = c.reshape(len(f), -1, 3).mean(axis=1)
     return colour
 
 
@@ -128,3 +146,35 @@ def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterat
     few = ok.sum(axis=1) < 3
     keep[few] = ok[few]
     return keep | ((views >= 0) & ~ok)
+
+
+def occluded_views(mesh: Mesh, rec: Reconstruction, views: np.ndarray, voted: np.ndarray, dropped: np.ndarray,
+                   window: int = OCCLUSION_WINDOW, samples: dict | None = None) -> np.ndarray:
+    """(m, k) bool: the views (``views`` (m, k)) whose image of a face overlaps a region of
+    the photo where an occluder missing from the mesh stands.
+
+    An occluder (a tree, a passer-by) is one connected blob in each photo, and the faces
+    behind it that have enough views to vote (``voted`` (m, k): the views that took part in
+    :func:`consistent_views`) lose that photo's view there (``dropped`` (m, k)). In each photo
+    the votes are counted per pixel at the faces' 16 sample points, dropped and kept
+    separately, and summed over a ``window`` x ``window`` pixel box: a pixel is occluded where
+    the dropped votes outnumber the kept ones. A view of any face (voted or not: the faces with
+    one or two views have no majority of their own) is occluded when one of the face's sample
+    points falls on an occluded pixel, as a view is a full candidate only when all the face's
+    probes are visible (:func:`workstation.mesh.texture.ranked_views`). ``samples``:
+    :func:`view_samples` of ``views`` when already computed."""
+    from scipy.ndimage import uniform_filter
+
+    out = np.zeros(views.shape, bool)
+    samples = view_samples(mesh, rec, views) if samples is None else samples
+    for iid in np.unique(views[dropped]):
+        f, s, u, v = samples[int(iid)]
+        cam = rec.cameras[rec.images[int(iid)].camera_id]
+        pix = np.round(v).astype(np.int64) * cam.width + np.round(u).astype(np.int64)
+        n = cam.width * cam.height
+        dr, kept = dropped[f, s], voted[f, s] & ~dropped[f, s]
+        count = [uniform_filter(np.bincount(pix[sel].ravel(), minlength=n).reshape(cam.height, cam.width)
+                                .astype(np.float64), window, mode="constant") for sel in (dr, kept)]
+        occluded = (count[0] > np.maximum(count[1], 0.5 / window**2)).ravel()  # half a vote: not rounding
+        out[f, s] = occluded[pix].any(axis=1)
+    return out
