@@ -5,6 +5,11 @@ from unorganized points", SIGGRAPH 1992). Their sign is then chosen, in order of
 toward the scanner or camera that saw each point when those positions are known (the only
 choice that is right on thin and multi-sided objects), straight up for terrain, or by
 MeshLab's propagation over the neighbour graph (Hoppe's minimum-spanning-tree orientation).
+
+Scan lines (airborne, terrestrial and mobile strips: points close along each line, lines far
+apart) give neighbourhoods of k points that all lie on one line; their plane is undetermined
+about the line. Those points (and only those) get their normals from neighbourhoods widened
+until they span more than one line (:func:`widen_collinear`).
 """
 
 from __future__ import annotations
@@ -23,6 +28,11 @@ from .steps import StepRecord, Timer, import_pymeshlab
 log = get_logger(__name__)
 
 ORIENTATIONS = ("auto", "viewpoint", "up", "propagate", "keep")
+
+#: A neighbourhood is one line of points when its spread across (the second principal
+#: standard deviation) is below half the step between its points along the first axis: two
+#: rows at least one step apart, in any split of the points, spread at least that far.
+LINE_WIDTH_IN_STEPS = 0.5
 
 
 @dataclass(frozen=True)
@@ -130,6 +140,9 @@ def estimate_normals(cloud: Cloud, params: NormalParams = NormalParams(), viewpo
             raise StageError("normals", "normal estimation failed for some points",
                              "remove duplicate points or raise k")
         n = n / norm[:, None]
+        widened = 0
+        if not reused:
+            n, widened = _fix_collinear(cloud.xyz, n, params.k, propagate=orient in ("propagate", "keep"))
         if orient == "viewpoint":
             n = orient_toward(cloud.xyz, n, viewpoints)
         elif orient == "up":
@@ -137,6 +150,132 @@ def estimate_normals(cloud: Cloud, params: NormalParams = NormalParams(), viewpo
         elif reused and orient == "propagate":
             orient = "keep"  # given normals are taken as oriented
     rec = StepRecord("normals", {"k": params.k, "smooth_iterations": params.smooth_iterations, "orient": orient,
-                                 "reused_existing": bool(reused)}, t.seconds)
+                                 "reused_existing": bool(reused)}, t.seconds,
+                     {"points_widened": int(widened)})
     out = cloud.with_attrs(normal=n.astype(np.float32)).with_history("mesh.normals", rec.params, t.seconds)
     return out, rec
+
+
+def _fix_collinear(xyz: np.ndarray, n: np.ndarray, k: int, propagate: bool) -> tuple[np.ndarray, int]:
+    """Replace the normals (n, 3) of the points whose k neighbours lie on one line by
+    :func:`widen_collinear`'s; with ``propagate``, orient those over their widened neighbour
+    graph from the others (:func:`orient_from_anchors`). Returns the normals and the count
+    replaced; the input comes back unchanged (the same array) when there are none."""
+    idx, fit, rows, cols = widen_collinear(xyz, k)
+    if idx.size == 0:
+        return n, 0
+    out = n.copy()
+    out[idx] = fit
+    if propagate:
+        anchored = np.ones(len(out), dtype=bool)
+        anchored[idx] = False
+        out = orient_from_anchors(out, anchored, rows, cols)
+    return out, int(idx.size)
+
+
+def _pca_block(tree, pts: np.ndarray, q: np.ndarray, k: int,
+               normals: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """PCA of the k nearest points of ``pts`` (``tree``) to each query point of ``q`` (m, 3):
+    eigenvalues (m, 3) ascending, then, if ``normals``, the unit normal (m, 3)
+    (smallest-eigenvalue axis) and the neighbour indices (m, k) (else two empty arrays), in
+    chunks of about 4 million neighbours."""
+    m = len(q) if normals else 0
+    lam, nrm, nbr = np.empty((len(q), 3)), np.empty((m, 3)), np.empty((m, k), dtype=np.int64)
+    step = max(1, (1 << 22) // k)
+    for s in range(0, len(q), step):
+        _, ii = tree.query(q[s:s + step], k)
+        nb = pts[ii]
+        nb -= nb.mean(axis=1, keepdims=True)
+        cov = np.matmul(nb.transpose(0, 2, 1), nb) / k
+        if normals:
+            lam[s:s + step], v = np.linalg.eigh(cov)
+            nrm[s:s + step], nbr[s:s + step] = v[:, :, 0], ii
+        else:
+            lam[s:s + step] = np.linalg.eigvalsh(cov)
+    return lam, nrm, nbr
+
+
+def widen_collinear(xyz: np.ndarray, k: int, k_max: int | None = None):
+    """Normals of the points whose ``k`` nearest points (themselves included) lie on one line,
+    from neighbourhoods doubled until they do not.
+
+    A neighbourhood is a line when its spread across is under :data:`LINE_WIDTH_IN_STEPS`
+    point steps along it: with eigenvalues λ1 ≥ λ2 of its covariance, k points evenly
+    spaced by d along a line have λ1 = d² (k² − 1) / 12, so the test is
+    λ2 < (w² · 12 / (k² − 1)) · λ1 with w = 0.5. A patch of a surface, or a neighbourhood
+    reaching a second line, spreads across by half the gap between lines or more. The
+    points so found are searched again with 2k, 4k, ... neighbours (vectorised per
+    doubling) up to ``k_max`` (default 16 k, capped by the cloud's size); past it the
+    widest fit is kept.
+
+    Returns
+    -------
+    idx : (m,) int
+        The points whose neighbourhood was widened.
+    normals : (m, 3) float
+        Their unit normals, unoriented.
+    rows, cols : (e,) int
+        Edges from each of them to k of the neighbours of its final fit, every (k_i / k)-th
+        by distance so that they reach as far as the fit (self-loops removed).
+    """
+    from scipy.spatial import cKDTree
+
+    pts = np.asarray(xyz, dtype=np.float64)
+    pts = pts - pts.mean(axis=0)
+    k_max = min(16 * k if k_max is None else k_max, len(pts))
+    tree = cKDTree(pts)
+    todo, kk = np.arange(len(pts)), min(k, len(pts))
+    idx, fits, rows, cols = [], [], [], []
+    while todo.size:
+        lam, nrm, nbr = _pca_block(tree, pts, pts[todo], kk, normals=kk > k)
+        line = lam[:, 1] * (kk * kk - 1) < LINE_WIDTH_IN_STEPS ** 2 * 12.0 * lam[:, 2]
+        done = ~line if kk > k else np.zeros(len(todo), dtype=bool)
+        if kk >= k_max:
+            done[:] = True
+        if kk > k:
+            idx.append(todo[done]), fits.append(nrm[done])
+            r = np.repeat(todo[done], k)
+            c = nbr[done][:, ::kk // k][:, :k].ravel()  # k of them, spread over the whole neighbourhood
+            rows.append(r[r != c]), cols.append(c[r != c])
+        todo = todo[line & ~done] if kk == k else todo[~done]
+        kk = min(2 * kk, k_max)
+    if not idx:
+        e = np.empty(0, dtype=np.int64)
+        return e, np.empty((0, 3)), e, e
+    return np.concatenate(idx), np.concatenate(fits), np.concatenate(rows), np.concatenate(cols)
+
+
+def orient_from_anchors(n: np.ndarray, anchored: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Flip the non-anchored normals of ``n`` (n, 3) consistently with the anchored ones
+    (whose signs are kept), over the graph of edges ``rows`` → ``cols``.
+
+    Hoppe's orientation: a minimum spanning tree with edge cost 2 − |n_i · n_j| (nearly
+    parallel normals first) plus a virtual root tied to every anchored point (cheaper than any
+    edge) and, for a part of the graph without one, to its first point (dearer than any edge,
+    keeping that point's sign). Signs then multiply down the tree from the root (pointer
+    jumping, vectorised).
+    """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import breadth_first_order, connected_components, minimum_spanning_tree
+
+    m = len(n)
+    g = coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(m, m)).tocsr()
+    _, lab = connected_components(g, directed=False)
+    has_anchor = np.bincount(lab, weights=anchored, minlength=lab.max() + 1) > 0
+    first = np.unique(lab, return_index=True)[1]
+    free = first[~has_anchor[lab[first]]]
+    tied = np.flatnonzero(anchored)
+    cost = 2.0 - np.abs(np.einsum("ij,ij->i", n[rows], n[cols]))
+    r = np.concatenate([rows, np.full(tied.size + free.size, m)])
+    c = np.concatenate([cols, tied, free])
+    w = np.concatenate([cost, np.full(tied.size, 0.5), np.full(free.size, 3.0)])
+    tree = minimum_spanning_tree(coo_matrix((w, (r, c)), shape=(m + 1, m + 1)).tocsr())
+    _, pred = breadth_first_order(tree, m, directed=False, return_predecessors=True)
+    par = np.where(pred[:m] < 0, m, pred[:m])
+    par = np.append(par, m)
+    nn = np.vstack([n, np.zeros(3)])
+    sign = np.where((par[:m] == m) | (np.einsum("ij,ij->i", nn[par[:m]], n) >= 0), 1.0, -1.0)
+    sign = np.append(sign, 1.0)
+    while np.any(par != m):
+        sign, par = sign * sign[par], par[par]
+    return n * sign[:m, None]
