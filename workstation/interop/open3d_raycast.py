@@ -92,3 +92,9 @@ class RaycastScene:
         q = self._o3c.Tensor.from_numpy(np.ascontiguousarray(points, np.float32))
         out = self.scene.compute_closest_points(q, nthreads=self.nthreads)
         return out["points"].numpy(), out["primitive_ids"].numpy().astype(np.int64)
+
+    def distance(self, points: np.ndarray) -> np.ndarray:
+        """Unsigned distance (n,) float32 from each query point (n, 3) (local m; converted to
+        float32) to the mesh's surface."""
+        q = self._o3c.Tensor.from_numpy(np.ascontiguousarray(points, np.float32))
+        return self.scene.compute_distance(q, nthreads=self.nthreads).numpy()

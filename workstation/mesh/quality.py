@@ -234,33 +234,41 @@ class FScoreParams:
                 raise InvalidInputError(f"{name} must be ≥ 1", field=name)
 
 
-def closest_on_mesh(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Distance (n,) from each point (n, 3) to the nearest point of a triangle mesh, and the
-    index (n,) of that nearest face (:meth:`RaycastScene.closest
-    <workstation.interop.open3d_raycast.RaycastScene.closest>`, in float32 around the mesh's
-    centre so that map coordinates keep their precision)."""
+def mesh_scene(vertices: np.ndarray, faces: np.ndarray):
+    """Ray-casting scene (:class:`~workstation.interop.open3d_raycast.RaycastScene`) of a
+    triangle mesh in float32 around its vertices' mean, and that origin (3,), so that map
+    coordinates keep their precision. Built once, it serves :func:`closest_on_mesh` and
+    :func:`views_seeing` on the same mesh."""
     from workstation.interop.open3d_raycast import RaycastScene
 
     V = np.asarray(vertices, np.float64)
     o = V.mean(axis=0)
+    return RaycastScene(V - o, faces), o
+
+
+def closest_on_mesh(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray,
+                    scene=None) -> tuple[np.ndarray, np.ndarray]:
+    """Distance (n,) from each point (n, 3) to the nearest point of a triangle mesh, and the
+    index (n,) of that nearest face (:meth:`RaycastScene.closest
+    <workstation.interop.open3d_raycast.RaycastScene.closest>` on :func:`mesh_scene`, or on
+    ``scene``, that function's result for this mesh, when given)."""
+    rs, o = mesh_scene(vertices, faces) if scene is None else scene
     p = np.asarray(points, np.float64) - o
-    q, prim = RaycastScene(V - o, faces).closest(p)
+    q, prim = rs.closest(p)
     return np.linalg.norm(q.astype(np.float64) - p, axis=1), prim
 
 
 def views_seeing(points: np.ndarray, rec, vertices: np.ndarray, faces: np.ndarray,
-                 rel_tol: float = 0.002, abs_tol: float = 1e-3) -> np.ndarray:
+                 rel_tol: float = 0.002, abs_tol: float = 1e-3, scene=None) -> np.ndarray:
     """How many cameras of ``rec`` (a Reconstruction in the points' frame) see each point
     (n, 3) of a surface: in front of the camera, inside its frame (OpenCV distortion
     included), and not hidden by the occluding mesh ``vertices``/``faces`` (the ray from the
     camera centre hits the mesh no nearer than the point, within ``rel_tol`` × range +
-    ``abs_tol``). The loop runs over the cameras; each is one vectorised ray cast."""
-    from workstation.interop.open3d_raycast import RaycastScene
+    ``abs_tol``). ``scene``: :func:`mesh_scene` of that mesh, when already built. The loop
+    runs over the cameras; each is one vectorised ray cast."""
     from workstation.photogrammetry.collinearity import project
 
-    V = np.asarray(vertices, np.float64)
-    o = V.mean(axis=0)
-    scene = RaycastScene(V - o, faces)
+    scene, o = mesh_scene(vertices, faces) if scene is None else scene
     P = np.asarray(points, np.float64)
     count = np.zeros(len(P), np.int64)
     for im in rec.images.values():
@@ -319,7 +327,8 @@ def fscore_against_truth(recon, truth: Mesh, rec, target: np.ndarray | None = No
         raise InvalidInputError("target must be one bool per true face, with at least one True", field="target")
     tm = Mesh(truth.vertices, faces[target])
     ts, _ = sample_surface(tm, params.truth_samples, params.seed)
-    seen = views_seeing(ts, rec, truth.vertices, faces) >= params.min_views
+    scene = mesh_scene(truth.vertices, faces)  # one scene for the visibility and the precision queries
+    seen = views_seeing(ts, rec, truth.vertices, faces, scene=scene) >= params.min_views
     ts = ts[seen]
     if isinstance(recon, Mesh):
         rs, _ = sample_surface(recon, params.recon_samples, params.seed + 1)
@@ -331,7 +340,7 @@ def fscore_against_truth(recon, truth: Mesh, rec, target: np.ndarray | None = No
         rd = cKDTree(rs).query(ts)[0]
         if len(rs) > params.recon_samples:
             rs = rs[np.sort(np.random.default_rng(params.seed).choice(len(rs), params.recon_samples, replace=False))]
-    pdist, pf = closest_on_mesh(rs, truth.vertices, faces)
+    pdist, pf = closest_on_mesh(rs, truth.vertices, faces, scene=scene)
     pdist = pdist[target[pf]]
     out = {"scores": fscore(pdist, rd, params.taus), "recon_samples": int(pdist.size), "truth_samples": int(len(ts)),
            "truth_seen_share": float(seen.mean())}

@@ -886,13 +886,12 @@ def evaluate(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray, extent
         ``accuracy_median`` (m, point-to-mesh), ``accuracy_rel`` (of extent), ``accuracy_p90``,
         ``completeness`` (share of samples with a dense point within 1 % of the extent).
     """
-    import open3d as o3d
     from scipy.spatial import cKDTree
 
-    sc = o3d.t.geometry.RaycastingScene()
+    from workstation.interop.open3d_raycast import RaycastScene
+
     off = vertices.mean(0)
-    sc.add_triangles(o3d.core.Tensor((vertices - off).astype(np.float32)), o3d.core.Tensor(faces.astype(np.uint32)))
-    dist = sc.compute_distance(o3d.core.Tensor((points - off).astype(np.float32))).numpy()
+    dist = RaycastScene(vertices - off, faces).distance(points - off)
     nn, _ = cKDTree(points).query(samples, k=1)
     return {"points": len(points), "accuracy_median": float(np.median(dist)),
             "accuracy_rel": float(np.median(dist) / extent), "accuracy_p90": float(np.percentile(dist, 90)),

@@ -138,12 +138,10 @@ class AerialScene:
         return np.vstack(verts), np.vstack(tris), np.concatenate(kinds)
 
     def _raycaster(self):
-        import open3d as o3d
+        from workstation.interop.open3d_raycast import RaycastScene
 
         V, T, kind = self.mesh()
-        scene = o3d.t.geometry.RaycastingScene()
-        scene.add_triangles(o3d.core.Tensor(V.astype(np.float32) - self._o32()), o3d.core.Tensor(T.astype(np.uint32)))
-        return scene, kind
+        return RaycastScene(V.astype(np.float32) - self._o32(), T), kind
 
     def _o32(self) -> np.ndarray:
         """Origin subtracted before float32 ray casting (Open3D works in float32)."""
@@ -151,16 +149,12 @@ class AerialScene:
 
     def cast(self, origins: np.ndarray, dirs: np.ndarray, scene=None):
         """First hits of rays: (points (n, 3) world, kind (n,) 0/1/2, -1 for a miss)."""
-        import open3d as o3d
-
         if scene is None:
             scene = self._raycaster()
         sc, kind = scene
         o = (origins - self._o32().astype(float)).astype(np.float32)
-        rays = o3d.core.Tensor(np.hstack([o, dirs.astype(np.float32)]))
-        ans = sc.cast_rays(rays)
-        t = ans["t_hit"].numpy().astype(float)
-        prim = ans["primitive_ids"].numpy().astype(np.int64)
+        t, prim = sc.cast_rays(np.hstack([o, dirs.astype(np.float32)]))
+        t = t.astype(float)
         hit = np.isfinite(t)
         pts = origins + dirs * np.where(hit, t, 0)[:, None]
         k = np.full(len(t), -1, np.int64)
