@@ -1,11 +1,13 @@
 """A real low-overlap indoor RGB-D pair (3DLoMatch, 7-scenes redkitchen fragments 21 and 34,
 about 25 % overlap; issue 24): the figures of "Registration" in docs/benchmarks.md.
 
-Three lines against the benchmark's true pose (`gt.txt`, p_21 = T p_34):
+Four lines against the benchmark's true pose (`gt.txt`, p_21 = T p_34):
 1. `register()` with defaults (refused, or the pose error);
-2. Open3D's FPFH + RANSAC on its own (4 M iterations, 0.9999 confidence) at voxel sizes
+2. `register(method="planes")` (coarse from matched planes) with the point-to-plane and the
+   point-to-point fine stage: pose error, CPU and wall seconds;
+3. Open3D's FPFH + RANSAC on its own (4 M iterations, 0.9999 confidence) at voxel sizes
    2.5, 4 and 5 cm: the hand-crafted baseline of the 3DLoMatch papers;
-3. the fine stage (three ICP variants) started from the true pose: where it settles, and the
+4. the fine stage (three ICP variants) started from the true pose: where it settles, and the
    share of source points within 1, 2 and 3 cm of the target at the truth and at that pose.
 
     PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py [--data ../shared/data]
@@ -54,6 +56,18 @@ def fpfh_ransac(folder: Path, T: np.ndarray, voxel: float) -> str:
     return f"{rot:.1f} deg {shift:.3f} m, fitness {r.fitness:.3f}, {time.process_time() - c0:.1f} s CPU"
 
 
+def planes_line(src, tgt, T: np.ndarray, fine: str) -> str:
+    """``register(method="planes")`` with one fine method: pose error, overlap, CPU and wall time."""
+    c0, w0 = time.process_time(), time.perf_counter()
+    try:
+        r = register(src, tgt, RegisterParams(method="planes", fine=ICPParams(method=fine)))
+    except StageError as ex:
+        return f"refused ({ex.args[0] if ex.args else ex}), {time.process_time() - c0:.1f} s CPU"
+    rot, shift = pose_error(r.transform, T)
+    return (f"{rot:.2f} deg {shift:.3f} m, fitness {r.fitness:.3f}, {time.process_time() - c0:.1f} s CPU, "
+            f"{time.perf_counter() - w0:.1f} s wall (coarse {r.meta['seconds']['coarse']:.1f} s wall)")
+
+
 def near_shares(src: np.ndarray, tgt: np.ndarray, M: np.ndarray) -> str:
     """Shares of source points within 1, 2 and 3 cm of the target under M."""
     from scipy.spatial import cKDTree
@@ -75,6 +89,8 @@ def main() -> None:
         print(f"register (defaults): {rot:.2f} deg {shift:.3f} m, fitness {r.fitness:.3f}, {time.process_time() - c0:.1f} s CPU")
     except StageError as ex:
         print(f"register (defaults): refused, {time.process_time() - c0:.1f} s CPU ({ex.args[0] if ex.args else ex})")
+    for fine in ("point_to_plane", "point_to_point"):
+        print(f"register (planes, fine {fine}): {planes_line(src, tgt, T, fine)}")
     for voxel in (0.025, 0.04, 0.05):
         print(f"open3d fpfh+ransac, voxel {voxel} m: {fpfh_ransac(folder, T, voxel)}")
     print(f"source points within 1/2/3 cm of the target at the true pose: {near_shares(src.xyz, tgt.xyz, T)}")

@@ -78,7 +78,8 @@ def write_matrix(result, tmp: Path) -> None:
 @click.argument("target", type=click.Path(exists=True, dir_okay=False))
 @output_option
 @field_option(RegisterParams, "method", "--method", type=RegistryChoice(METHODS, extra=["pairs"]), show_default=True,
-              help="Coarse method (auto tries clique and RANSAC, verified by ICP); icp = fine only from --init; "
+              help="Coarse method (auto tries clique and RANSAC, verified by ICP; planes matches large planes, for "
+                   "indoor scans); icp = fine only from --init; "
                    "similarity = 7 DoF for SfM <-> LiDAR (a search over scale hypotheses unless --init or "
                    "--pairs --scale gives a start, then 7-DoF point-to-plane ICP); pairs = only the --pairs fit.")
 @param_group(

@@ -294,4 +294,11 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
                      "hypotheses": [{"scale": round(x[1], 6), "score": round(x[0], 4)} for x in cands]}
 
 
-COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration}
+def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
+    """Coarse registration from matched planes (:func:`~workstation.registration.planes.plane_registration`)."""
+    from .planes import plane_registration
+
+    return plane_registration(src, tgt)
+
+
+COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration, "planes": _planes}

@@ -42,7 +42,7 @@ from .preprocess import Radii, estimate_spacing, estimate_voxel_size, prepare
 
 log = get_logger(__name__)
 
-METHODS = ("auto", "fpfh_ransac", "fgr", "clique", "icp", "similarity")
+METHODS = ("auto", "fpfh_ransac", "fgr", "clique", "planes", "icp", "similarity")
 STAGE = "register"
 #: Consistency (:func:`consistency`) difference under which two distinct coarse poses are
 #: reported as ambiguous.
@@ -57,7 +57,9 @@ class RegisterParams:
     ----------
     method : str
         ``auto`` (clique + RANSAC hypotheses verified by ICP), ``fpfh_ransac``, ``fgr``,
-        ``clique`` (coarse then fine), ``icp`` (fine only, from ``init`` or identity) or
+        ``clique``, ``planes`` (matched planes, for rooms and other scenes of large planes:
+        :mod:`~workstation.registration.planes`) (coarse then fine), ``icp`` (fine only, from
+        ``init`` or identity) or
         ``similarity`` (7 DoF, for SfM <-> LiDAR: from ``init`` when given, else a coarse
         search over scale hypotheses, :func:`~workstation.registration.coarse.scale_search`;
         then 7-DoF point-to-plane ICP, :func:`~workstation.registration.icp.similarity_plane_icp`).
@@ -210,7 +212,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     meta: dict = {"voxel_size": voxel, "origin": origin.tolist()}
     T0 = None if init is None else local_transform(np.asarray(init, float), origin, origin)
     method = params.method
-    need_coarse = method in ("fpfh_ransac", "fgr", "clique") or (method == "auto" and T0 is None)
+    need_coarse = method in COARSE_METHODS or (method == "auto" and T0 is None)
     scale_coarse = method == "similarity" and T0 is None
     timings = {}
 

@@ -1,0 +1,365 @@
+"""Coarse registration from planes, for scenes made of planar surfaces (rooms, buildings).
+
+Indoor fragments are dominated by a few large planes (floor, worktops, walls, cabinet
+fronts) on which point features such as FPFH are not distinctive, and a fragment often
+shows only one plane direction well (a worktop and the floor below it), too few for
+plane-pair rotations. One plane seen in both clouds still fixes three of the six degrees of
+freedom; the other three are searched exhaustively:
+
+1. **Extraction.** Planes are peeled off the downsampled cloud one at a time by RANSAC
+   (Open3D ``segment_plane``), keeping the inliers whose normal agrees with the plane's, and
+   described by unit normal ``n``, offset ``d`` (``n . x = d``), centroid and point count.
+2. **Plane alignment.** For each of the largest source planes, each of the largest target
+   planes and both normal signs, the source is turned and shifted so that the two planes
+   coincide (the gravity prior of indoor scenes when the planes are floors or worktops).
+3. **Turn and shift in the plane** (:func:`plane_yaw_search`). Each cloud becomes a stack of
+   2-D occupancy images, one per height slice above the plane, high-pass filtered so that
+   edges (a worktop's border, a cabinet's side) count rather than areas; for every turn
+   about the normal (3 degree steps) the in-plane shift is read off the peaks of the FFT
+   cross-correlation of the two stacks.
+4. **Verification.** Every pose is scored by the surface agreement of a source subsample
+   (:class:`_Scorer`); the best distinct ones are refined by a short point-to-plane ICP and
+   ranked by two-way surface consistency
+   (:func:`~workstation.registration.register.consistency`), which penalises surfaces of
+   either cloud that come near the other but off its surface.
+
+Plane correspondences drive plane-based SLAM and range-image registration (e.g. Pathak et
+al. 2010, "Fast registration based on noisy planes with unknown correspondences for 3-D
+mapping", IEEE T-RO; Taguchi et al. 2013, "Point-plane SLAM using supporting planes for 3D
+mapping", ICRA); the remaining 3-DoF search by correlation of height-slice images is the
+phase-correlation idea of 2.5-D map matching, applied above a matched plane.
+
+Limits: two-way consistency cannot tell a room from its mirror-symmetric turn without the
+cameras' free space, so in nearly symmetric rooms a wrong turn can rank first; the method is
+opt-in (``--method planes``) and its result should be checked.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from workstation.core.log import get_logger
+from workstation.core.products import RegistrationResult
+
+from .preprocess import Prepared
+from .transforms import make_transform
+
+log = get_logger(__name__)
+
+
+@dataclass(frozen=True)
+class PlaneCoarseParams:
+    """Parameters of :func:`plane_registration` (distances are multiples of the voxel size).
+
+    Attributes
+    ----------
+    max_planes : int
+        Largest number of planes extracted per cloud (largest first).
+    min_share : float
+        Smallest plane, as a share of the downsampled points (and at least 30 points).
+    distance : float
+        RANSAC inlier distance of plane extraction.
+    normal_angle_deg : float
+        Largest angle between a point's normal and its plane's normal for the point to count.
+    align_planes : int
+        The plane directions (families of parallel planes, most points first) of each cloud
+        tried against each other, both normal signs and every pair of their offsets.
+    step_deg : float
+        Turn step about the plane normal.
+    peaks : int
+        Cross-correlation peaks (in-plane shifts) kept per turn.
+    sample : int
+        Source points of the fast agreement score.
+    verify : int
+        Distinct best-scoring poses refined by ICP and ranked by consistency.
+    """
+
+    max_planes: int = 8
+    min_share: float = 0.02
+    distance: float = 0.75
+    normal_angle_deg: float = 30.0
+    align_planes: int = 2
+    step_deg: float = 3.0
+    peaks: int = 3
+    sample: int = 800
+    verify: int = 32
+
+
+@dataclass(frozen=True)
+class Planes:
+    """Planes of one cloud, largest first: ``normal`` (k, 3) unit, ``offset`` (k,) with
+    ``normal . x = offset`` on the plane, ``centroid`` (k, 3) and ``count`` (k,) points."""
+
+    normal: np.ndarray
+    offset: np.ndarray
+    centroid: np.ndarray
+    count: np.ndarray
+
+
+def extract_planes(xyz: np.ndarray, normals: np.ndarray, voxel: float,
+                   params: PlaneCoarseParams = PlaneCoarseParams(), seed: int = 0) -> Planes:
+    """Peel planes off a downsampled cloud by repeated RANSAC (see the module docstring).
+
+    A RANSAC plane keeps only its inliers whose normal lies within ``normal_angle_deg`` of the
+    plane normal (a plane cutting through a curved or slanted surface keeps few); extraction
+    stops at ``max_planes``, when the remaining points are too few, or after several planes in
+    a row fall below ``min_share``.
+    """
+    from workstation.interop.open3d import points_to_legacy, require_open3d
+
+    o3d = require_open3d()
+    o3d.utility.random.seed(int(seed))
+    xyz = np.asarray(xyz, dtype=np.float64)
+    normals = np.asarray(normals, dtype=np.float64)
+    least = max(30, int(params.min_share * xyz.shape[0]))
+    cos_n = np.cos(np.radians(params.normal_angle_deg))
+    left = np.arange(xyz.shape[0])
+    out, misses = [], 0
+    while len(out) < params.max_planes and left.size >= least and misses < 3:
+        model, inl = points_to_legacy(xyz[left]).segment_plane(float(params.distance * voxel), 3, 200)
+        inl = np.asarray(inl, dtype=np.int64)
+        n = np.asarray(model[:3], dtype=np.float64)
+        n /= np.linalg.norm(n)
+        good = inl[np.abs(normals[left[inl]] @ n) >= cos_n]
+        if good.size < least:
+            misses += 1
+            left = np.delete(left, inl)  # drop the slice so the next RANSAC sees other surfaces
+            continue
+        p = xyz[left[good]]
+        c = p.mean(axis=0)
+        w, v = np.linalg.eigh(np.cov((p - c).T))  # refit on the kept points
+        n = v[:, 0] * np.sign(v[:, 0] @ n)
+        out.append((n, float(n @ c), c, good.size))
+        left = np.delete(left, good)
+        misses = 0
+    if not out:
+        return Planes(np.zeros((0, 3)), np.zeros(0), np.zeros((0, 3)), np.zeros(0, dtype=np.int64))
+    out.sort(key=lambda o: -o[3])
+    return Planes(np.array([o[0] for o in out]), np.array([o[1] for o in out]),
+                  np.array([o[2] for o in out]), np.array([o[3] for o in out], dtype=np.int64))
+
+
+class _Scorer:
+    """Fast surface agreement of a source subsample with the target under many poses.
+
+    A sampled source point *agrees* when a target point lies within ``1.5 * voxel`` with a
+    normal within 37 degrees (either sign) and the point within ``voxel`` of its tangent
+    plane (loose enough for a pose before ICP); it *conflicts* when the target comes within
+    ``3 * voxel`` but it does not agree. The score of a pose is (agreeing - conflicting) /
+    sampled points."""
+
+    def __init__(self, src: Prepared, tgt: Prepared, n: int, seed: int = 0):
+        from scipy.spatial import cKDTree
+
+        ps = np.asarray(src.down.points)
+        idx = np.random.default_rng(seed).choice(ps.shape[0], size=min(n, ps.shape[0]), replace=False)
+        self.q, self.qn = ps[idx], np.asarray(src.down.normals)[idx]
+        self.y, self.yn = np.asarray(tgt.down.points), np.asarray(tgt.down.normals)
+        self.tree = cKDTree(self.y)
+        self.voxel = src.radii.voxel
+
+    def __call__(self, Ts: np.ndarray, n: int | None = None) -> np.ndarray:
+        """Scores of the poses ``Ts`` (k, 4, 4) on the first ``n`` sampled points (all by
+        default; the sample is random, so any prefix is too)."""
+        v = self.voxel
+        q, qn = self.q[:n], self.qn[:n]
+        Rt = np.transpose(Ts[:, :3, :3], (0, 2, 1))
+        x = (q @ Rt + Ts[:, None, :3, 3]).reshape(-1, 3)
+        nx = (qn @ Rt).reshape(-1, 3)
+        dist, j = self.tree.query(x, distance_upper_bound=3.0 * v, workers=-1)
+        found = np.isfinite(dist)
+        jj = np.minimum(j, self.y.shape[0] - 1)
+        ny = self.yn[jj]
+        on = np.abs(np.einsum("ij,ij->i", ny, x - self.y[jj])) < v
+        par = np.abs(np.einsum("ij,ij->i", ny, nx)) > 0.8
+        agree = found & (dist < 1.5 * v) & on & par
+        score = agree.astype(np.float64) - (found & ~agree)
+        return score.reshape(Ts.shape[0], -1).sum(axis=1) / q.shape[0]
+
+
+def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = PlaneCoarseParams()):
+    """Poses laying a large source plane onto a large target plane (module docstring, steps
+    1-3), with their fast agreement scores: ``(scores (k,), transforms (k, 4, 4), source
+    planes, target planes)``, best first."""
+    v = src.radii.voxel
+    xs, xt = np.asarray(src.down.points), np.asarray(tgt.down.points)
+    ps = extract_planes(xs, np.asarray(src.down.normals), v, params)
+    pt = extract_planes(xt, np.asarray(tgt.down.normals), v, params)
+    log.info("planes: %d in the source, %d in the target", len(ps.count), len(pt.count))
+    Ts = []
+    for a, da, _ in _direction_groups(ps)[: params.align_planes]:
+        for b, db, _ in _direction_groups(pt)[: params.align_planes]:
+            for sg in (1.0, -1.0):
+                Ts += [T for _, T in plane_yaw_search(xs, xt, a, da, sg * b, sg * db, v, params.step_deg, params.peaks)]
+    if not Ts:
+        return np.zeros(0), np.zeros((0, 4, 4)), ps, pt
+    Ts = np.array(Ts)
+    score = _Scorer(src, tgt, params.sample)
+    first = np.concatenate([score(Ts[k:k + 512], params.sample // 4) for k in range(0, len(Ts), 512)])
+    Ts = Ts[np.argsort(-first, kind="stable")[: max(10 * params.verify, len(Ts) // 10)]]  # the rest cannot compete
+    sc = np.concatenate([score(Ts[k:k + 512]) for k in range(0, len(Ts), 512)])
+    order = np.argsort(-sc, kind="stable")
+    return sc[order], Ts[order], ps, pt
+
+
+def plane_registration(src: Prepared, tgt: Prepared, params=None) -> RegistrationResult:
+    """Coarse registration from planes (module docstring): the pose of best two-way surface
+    consistency among the ``verify`` best distinct plane hypotheses, each refined by a short
+    point-to-plane ICP. Only poses whose verified overlap reaches half the best one's are
+    ranked (a pose barely touching the other cloud has neither agreement nor conflict).
+
+    ``params`` may be a :class:`PlaneCoarseParams`; anything else (the coarse stage's
+    :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults.
+
+    ``meta["hypotheses"]`` holds the verified poses, best first."""
+    from .icp import ICPParams, refine
+    from .register import _distinct_pose, consistency
+
+    params = params if isinstance(params, PlaneCoarseParams) else PlaneCoarseParams()
+    v = src.radii.voxel
+    scores, Ts, ps, pt = plane_hypotheses(src, tgt, params)
+    meta = {"planes_source": int(len(ps.count)), "planes_target": int(len(pt.count)), "plane_poses": len(Ts)}
+    if not len(Ts):
+        return RegistrationResult(transform=np.eye(4), scale=1.0, fitness=0.0, inlier_rmse=float("nan"),
+                                  converged=True, correspondences=0, meta={"method": "planes", **meta})
+    picked = []
+    for s, T in zip(scores, Ts):
+        if all(_distinct_pose(T, k[1], v) for k in picked):
+            picked.append((s, T))
+        if len(picked) >= params.verify:
+            break
+    quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
+    cands = []
+    for s, T in picked:
+        q = refine(src.down, tgt.down, v, T, quick)
+        cands.append((consistency(src.down, tgt.down, q.transform, v), float(q.fitness), q))
+        log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f",
+                 s, q.fitness, cands[-1][0])
+    least = 0.5 * max(c[1] for c in cands)
+    order = sorted((c for c in cands if c[1] >= least), key=lambda c: -c[0])
+    best = order[0][2]
+    meta.update({"consistency": [round(c[0], 4) for c in order], "hypotheses": [c[2].transform for c in order]})
+    return RegistrationResult(transform=best.transform, scale=1.0, fitness=best.fitness, inlier_rmse=best.inlier_rmse,
+                              converged=True, correspondences=best.correspondences, meta={"method": "planes", **meta})
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def _align(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The smallest rotation taking unit vector ``a`` onto unit vector ``b``."""
+    v, c = np.cross(a, b), float(a @ b)
+    if c < -1.0 + 1e-9:  # opposite: half a turn about any axis normal to a
+        p = _unit(np.cross(a, np.eye(3)[np.argmin(np.abs(a))]))
+        return 2.0 * np.outer(p, p) - np.eye(3)
+    K = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + K + K @ K / (1.0 + c)
+
+
+def _height_images(uv: np.ndarray, ch: np.ndarray, n_ch: int, lo: np.ndarray, shape, cell: float) -> np.ndarray:
+    """Occupancy images (n_ch, *shape), float32, of points at plane coordinates ``uv`` (n, 2)
+    in channels ``ch`` (n,; -1 for none) on a grid of ``cell`` from ``lo``."""
+    ij = np.floor((uv - lo) / cell).astype(np.int64)
+    ok = (ij >= 0).all(axis=1) & (ij[:, 0] < shape[0]) & (ij[:, 1] < shape[1]) & (ch >= 0)
+    img = np.zeros((n_ch, *shape), dtype=np.float32)
+    img[ch[ok], ij[ok, 0], ij[ok, 1]] = 1.0
+    return img
+
+
+def _edge_filter(P) -> np.ndarray:
+    """Squared magnitude of the transfer function, on an ``rfft2`` grid of shape ``P``, of the
+    high-pass filter "occupancy minus its 3 x 3 mean": applied to both images of a
+    cross-correlation it makes the interior of an area cancel and its edges count."""
+    from scipy.fft import rfft2
+
+    k = np.zeros(P, dtype=np.float32)
+    k[np.ix_([0, 1, -1], [0, 1, -1])] = -1.0 / 9.0
+    k[0, 0] += 1.0
+    return np.abs(rfft2(k)) ** 2
+
+
+def _direction_groups(pl: Planes, angle_deg: float = 5.0) -> list[tuple[np.ndarray, np.ndarray, int]]:
+    """Planes grouped by direction (normals within ``angle_deg``, either sign), heaviest group
+    first: ``(normal of the group's largest plane, offsets of its planes in that normal's sign,
+    total point count)``."""
+    cos_tol = np.cos(np.radians(angle_deg))
+    group = np.full(len(pl.count), -1)
+    for k in range(len(pl.count)):  # planes come largest first: each seeds the group of its parallels
+        if group[k] < 0:
+            group[(group < 0) & (np.abs(pl.normal @ pl.normal[k]) >= cos_tol)] = k
+    out = []
+    for k in np.unique(group):
+        sel = group == k
+        sgn = np.sign(pl.normal[sel] @ pl.normal[k])
+        out.append((pl.normal[k], sgn * pl.offset[sel], int(pl.count[sel].sum())))
+    return sorted(out, key=lambda g: -g[2])
+
+
+def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray,
+                     voxel: float, step_deg: float = 3.0, peaks: int = 3) -> list[tuple[float, np.ndarray]]:
+    """Poses laying a source plane ``a . x = da[i]`` onto a target plane ``b . y = db[j]`` (every
+    pair of offsets of the two parallel families): the three remaining degrees of freedom (the
+    turn about the normal and the shift in the plane) by an exhaustive search over the turn in
+    ``step_deg`` steps and, for each, the in-plane shifts at the ``peaks`` highest peaks of the
+    FFT cross-correlation of the two clouds' occupancy images in height slices along the
+    normal, high-passed (:func:`_edge_filter`; cell and slice ``2 * voxel``; slices holding 10
+    points of each cloud). The turn does not change the heights, so each turn's source
+    spectra serve every offset pair (a shift of the slices). Returns ``(correlation, T)``
+    pairs."""
+    from scipy.fft import irfft2, next_fast_len, rfft2
+
+    cell = 2.0 * voxel
+    R0 = _align(a, b)
+    e1 = _unit(np.cross(b, np.eye(3)[np.argmin(np.abs(b))]))
+    E = np.stack([e1, np.cross(b, e1)])  # in-plane axes of the target plane
+    xr = xs @ R0.T
+    ys, us = xt @ E.T, xr @ E.T
+    vt, ct = _slices(xt @ b, cell)
+    vs, cs = _slices(xr @ b, cell)
+    shifts = np.unique(np.round(np.subtract.outer(np.asarray(db), np.asarray(da)).ravel() / cell).astype(int))
+    pairs = [(d, np.flatnonzero(np.isin(vs + d, vt)), np.searchsorted(vt, vs[np.isin(vs + d, vt)] + d)) for d in shifts]
+    pairs = [p for p in pairs if p[1].size]
+    if not pairs:
+        return []
+    used = np.unique(np.concatenate([p[1] for p in pairs]))  # only these source slices need spectra
+    remap = np.full(vs.size, -1)
+    remap[used] = np.arange(used.size)
+    cs = np.where(cs >= 0, remap[cs], -1)
+    pairs = [(d, remap[i_s], i_t) for d, i_s, i_t in pairs]
+    lo_t = ys.min(axis=0)
+    nt = np.ceil((ys.max(axis=0) - lo_t) / cell).astype(int) + 1
+    rs = float(np.sqrt((us**2).sum(axis=1).max()))
+    ns = int(np.ceil(2 * rs / cell)) + 1
+    P = (next_fast_len(int(nt[0] + ns), real=True), next_fast_len(int(nt[1] + ns), real=True))
+    FT = rfft2(_height_images(ys, ct, vt.size, lo_t, nt, cell), P) * _edge_filter(P)
+    lo_s = -np.array([rs, rs])
+    diff = np.subtract.outer(np.asarray(db), np.asarray(da)).ravel()
+    # offset pairs in one slice shift share its correlation; the pose lifts by their mean offset
+    lift = {d: float(diff[np.round(diff / cell).astype(int) == d].mean()) for d in shifts}
+    out = []
+    for th in np.radians(np.arange(0.0, 360.0, step_deg)):
+        c, s = np.cos(th), np.sin(th)
+        FS = np.conj(rfft2(_height_images(us @ np.array([[c, s], [-s, c]]), cs, used.size, lo_s, (ns, ns), cell), P))
+        R = (E.T @ np.array([[c, -s], [s, c]]) @ E + np.outer(b, b)) @ R0  # the turn about b, after R0
+        for d, i_s, i_t in pairs:
+            corr = irfft2((FT[i_t] * FS[i_s]).sum(axis=0), P)
+            for _ in range(peaks):
+                k = np.array(np.unravel_index(np.argmax(corr), corr.shape))
+                shift = lo_t - lo_s + np.where(k > np.array(P) // 2, k - np.array(P), k) * cell
+                out.append((float(corr[k[0], k[1]]), make_transform(R, lift[d] * b + shift @ E)))
+                corr[max(k[0] - 1, 0):k[0] + 2, max(k[1] - 1, 0):k[1] + 2] = -np.inf
+    return out
+
+
+def _slices(h: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
+    """Height slices of thickness ``cell`` holding at least 10 points: their indices (sorted)
+    and each point's channel among them (-1 for a point in a sparser slice)."""
+    k = np.floor(h / cell + 0.5).astype(np.int64)
+    v, n = np.unique(k, return_counts=True)
+    v = v[n >= 10]
+    ch = np.searchsorted(v, k)
+    ok = (ch < v.size) & (v[np.minimum(ch, max(v.size - 1, 0))] == k) if v.size else np.zeros(k.size, bool)
+    return v, np.where(ok, ch, -1)
