@@ -17,7 +17,11 @@
   alone as the control (``--with-truth-pose``: also the dense cloud placed by the camera truth).
 - fscore: the heritage rig's 24 photos through ws sfm (rig intrinsics) and ws dense (CPU), the
   dense cloud and its ws mesh (per ``--support-trims``) against the true church seen by ≥ 2
-  cameras: precision / recall / F-score at 1, 2, 5, 10 cm (rig and SfM kept in ``--work``).
+  cameras: precision / recall / F-score at 1, 2, 5, 10 cm (rig and SfM kept in ``--work``);
+  ``--image-size WxH`` renders the rig at another size with the same field of view (in
+  ``WORK_WxH``), ``--fscore-camera true`` skips SfM for the rig's true cameras (dense accuracy
+  without the SfM frame error), ``--dense-size`` and ``--poisson-depth`` set ws dense's image
+  size and ws mesh's Poisson depth.
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 - texture: the true heritage-church mesh (and the ground around it) textured from the 24
   photos of the synthetic rig, texture colour vs the true surface colour (``--tree``: a tree
@@ -560,7 +564,7 @@ def tree_share(rec, scene, with_tree, P, view, err, stats) -> dict:
 
 
 def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consistency: bool = True,
-                     tree: bool = False, last_resort: bool = True):
+                     tree: bool = False, last_resort: bool = True, max_views: int = 1, texel_size: float | None = None):
     """Texture the church and ground of :func:`heritage_texture_scene` from the 24 photos;
     texture colour at random points of the textured church faces against the scene's true
     surface colour (0-255). The textured share of the church is given of all its area and of
@@ -570,7 +574,8 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     one gain per channel that best fits the truth. With ``tree``, the photos show
     :func:`heritage_tree` (not in the mesh); the points its crown or trunk hides from some
     camera are the façade behind it, and a point takes the tree's colour when the tree hides
-    it from the view its face is textured from."""
+    it from the view its face is textured from. ``max_views`` and ``texel_size`` are passed to
+    :class:`TextureParams` (views blended per face; texel size, m)."""
     from workstation.mesh import TextureParams, texture_from_photos
     from workstation.mesh.texture import ranked_views
     from workstation.photogrammetry.rigs import render, surface_colour
@@ -597,7 +602,8 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
                   for i, a in images.items()}
     (out, step), wall, cpu = timed(texture_from_photos, mesh, rec,
                                    TextureParams(exposure_balance=balance, photo_consistency=consistency,
-                                                 last_resort=last_resort), images=images, image_root=workdir)
+                                                 last_resort=last_resort, max_views=max_views, texel_size=texel_size),
+                                   images=images, image_root=workdir)
     church = vals[:, 3] > 0.5
     tex = out.meta["texture"]
     h, w = tex.shape[:2]
@@ -621,7 +627,8 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     visible = cameras_seeing(rec, V0, F0, mesh.vertices[mesh.faces].mean(axis=1)).any(axis=1)
     extra = tree_share(rec, (V0, F0), (sv, sf), P, view[faces], err, stats) if tree else {}
     emit(bench="texture_heritage_rig", images=len(rec.images), faces=mesh.n_faces, church_faces=int(church.sum()),
-         tree=tree, last_resort=last_resort, texture_px=[int(w), int(h)], texel_size_m=round(step.params["texel_size"], 4),
+         tree=tree, last_resort=last_resort, max_views=max_views, texture_px=[int(w), int(h)],
+         texel_size_m=round(step.params["texel_size"], 4),
          church_area_textured_fraction=round(float(area[church & seen].sum() / area[church].sum()), 3),
          church_area_seen_fraction=round(float(area[church & visible].sum() / area[church].sum()), 3),
          seen_area_textured_fraction=round(float(area[church & visible & seen].sum() / area[church & visible].sum()), 3),
@@ -705,40 +712,91 @@ def texture_occluder(name: str):
                  texture_wall_s=round(wall, 2), texture_cpu_s=round(cpu, 2))
 
 
-def fscore_heritage(work: Path, support_trims=(0.0, 3.0), refine_ks=(0,)):
+def rig_spec_at(spec, image_size: tuple[int, int] | None):
+    """The rig ``spec`` at another image size (width, height) with the same field of view: the
+    focal length scales with the width; the aspect ratio must be the rig's. None: ``spec``."""
+    from dataclasses import replace
+
+    from workstation.core.errors import InvalidInputError
+
+    if image_size is None or tuple(image_size) == (spec.width, spec.height):
+        return spec
+    w, h = (int(x) for x in image_size)
+    if w < 8 or h < 8 or w * spec.height != h * spec.width:
+        raise InvalidInputError(f"--image-size {w}x{h}: needs the rig's aspect ratio {spec.width}:{spec.height}",
+                                field="image_size")
+    return replace(spec, width=w, height=h, focal_px=spec.focal_px * w / spec.width)
+
+
+def fscore_data(work: Path, spec, camera: str = "sfm", dense_size: int = 1600):
+    """The rendered rig (``work``), its oriented workdir and dense cloud, both kept between
+    runs: ``camera`` "sfm" runs ``ws sfm`` with the rig's intrinsics held fixed
+    (``WORK_sfm``); "true" copies the rig's true cameras (``WORK_true``; dense depth range
+    0.1-2.4 times the rig's distance, as there are no sparse points). ``ws dense`` on the CPU
+    at ``dense_size`` (longest side, pixels; -1: full size; 1600 is its default). Returns
+    (cloud, workdir, {sfm,dense}_{wall,cpu}_s of the steps run now: 0 when cached)."""
+    import shutil
+
+    from workstation.io import read_cloud
+    from workstation.photogrammetry.dense import DenseParams, run_dense
+    from workstation.photogrammetry.rigs import load_rig, make_rig
+    from workstation.photogrammetry.sfm import run_sfm
+
+    recipe, _ = load_rig("rig_heritage")
+    if not (work / "cameras.json").exists():
+        make_rig(recipe, spec, work, overwrite=True)
+    times = {"sfm_wall_s": 0.0, "sfm_cpu_s": 0.0, "dense_wall_s": 0.0, "dense_cpu_s": 0.0}
+    wall0, cpu0 = time.perf_counter(), time.process_time()
+    sparse_dir = work.parent / f"{work.name}_{camera}"
+    wd = sparse_dir if dense_size == 1600 else work.parent / f"{work.name}_{camera}_dense{dense_size}"
+    extra = {}
+    if camera == "true":
+        extra["depth_range"] = (0.1 * spec.distance, 2.4 * spec.distance)
+        if not (sparse_dir / "sparse" / "0").exists():
+            shutil.copytree(work / "sparse" / "0", sparse_dir / "sparse" / "0")
+    elif not (sparse_dir / "sparse" / "0").exists():
+        run_sfm(work / "images", sparse_dir, spec.camera(), overwrite=True)
+        times.update(sfm_wall_s=time.perf_counter() - wall0, sfm_cpu_s=time.process_time() - cpu0)
+    if not (wd / "sparse" / "0").exists():
+        shutil.copytree(sparse_dir / "sparse" / "0", wd / "sparse" / "0")
+    fused = wd / "dense" / "fused.ply"
+    if fused.exists():
+        return read_cloud(fused), wd, times
+    wall0, cpu0 = time.perf_counter(), time.process_time()
+    cloud = run_dense(wd, work / "images", DenseParams(device="cpu", max_image_size=dense_size, **extra),
+                      overwrite=True)[0]
+    times.update(dense_wall_s=time.perf_counter() - wall0, dense_cpu_s=time.process_time() - cpu0)
+    return cloud, wd, times
+
+
+def fscore_heritage(work: Path, support_trims=(0.0, 3.0), refine_ks=(0,), image_size=None, camera: str = "sfm",
+                    dense_size: int = 1600, depth: int = 9):
     """Dense and mesh F-score on the synthetic heritage rig (issue 24): the rig's 24 photos
-    (rendered into ``work`` when missing) through ``ws sfm`` with the rig's intrinsics held
-    fixed and ``ws dense`` (CPU default; ``WORK_sfm``, both kept between runs), the cloud placed
-    in the truth frame by the similarity of the SfM camera centres to the true ones, meshed by
-    the chain of ``ws mesh`` with its defaults (normals toward the cameras, Poisson depth 9,
+    (rendered into ``work`` when missing; ``image_size`` (width, height): the rig at that size
+    and the same field of view, in ``WORK_WxH``) oriented and densified by :func:`fscore_data`,
+    the cloud placed in the truth frame by the similarity of the SfM camera centres to the true
+    ones (the identity for true cameras), meshed by
+    the chain of ``ws mesh`` with its defaults (normals toward the cameras, Poisson ``depth`` 9,
     density trim 5 %, pieces < 5 % removed) for each support trim and MLS refinement (k points, 0 =
     none); precision, recall and F at
     1, 2, 5 and 10 cm against the true church seen by ≥ 2 true cameras
     (:func:`workstation.mesh.quality.fscore_against_truth`)."""
     from workstation.core.products import Mesh
-    from workstation.io import read_cloud
     from workstation.mesh import CleanParams, MeshChainParams, PoissonParams, mesh_cloud
     from workstation.mesh.quality import FScoreParams, fscore_against_truth
     from workstation.mesh.reconstruct import RefineParams
-    from workstation.photogrammetry.dense import DenseParams, run_dense
     from workstation.photogrammetry.georef import fit_similarity, transform_reconstruction
-    from workstation.photogrammetry.rigs import load_rig, load_truth, make_rig
-    from workstation.photogrammetry.sfm import read_reconstruction, run_sfm
+    from workstation.photogrammetry.rigs import load_rig, load_truth
+    from workstation.photogrammetry.sfm import read_reconstruction
 
-    recipe, spec = load_rig("rig_heritage")
+    _, spec0 = load_rig("rig_heritage")
+    spec = rig_spec_at(spec0, image_size)
     work = Path(work)
-    sfm_dir = work.parent / f"{work.name}_sfm"
-    if not (work / "cameras.json").exists():
-        make_rig(recipe, spec, work, overwrite=True)
-    wall0, cpu0 = time.perf_counter(), time.process_time()
-    if not (sfm_dir / "sparse" / "0").exists():
-        run_sfm(work / "images", sfm_dir, spec.camera(), overwrite=True)
-    fused = sfm_dir / "dense" / "fused.ply"
-    cloud = read_cloud(fused) if fused.exists() else run_dense(sfm_dir, work / "images", DenseParams(device="cpu"),
-                                                              overwrite=True)[0]
-    data_wall, data_cpu = time.perf_counter() - wall0, time.process_time() - cpu0
+    if spec is not spec0:
+        work = work.parent / f"{work.name}_{spec.width}x{spec.height}"
+    cloud, wd, times = fscore_data(work, spec, camera, dense_size)
     true = read_reconstruction(work / "cameras.json")
-    est = read_reconstruction(sfm_dir / "sparse" / "0")
+    est = read_reconstruction(wd / "sparse" / "0")
     by_name = {im.name: im.pose.center for im in true.images.values()}
     names = [im.name for im in est.images.values() if im.name in by_name]
     src = np.array([im.pose.center for im in est.images.values() if im.name in by_name])
@@ -749,11 +807,13 @@ def fscore_heritage(work: Path, support_trims=(0.0, 3.0), refine_ks=(0,)):
     T = load_truth(work)
     truth, target = Mesh(T["vertices"], T["faces"]), T["target"]
     fp = FScoreParams(taus=(0.01, 0.02, 0.05, 0.1))
+    common = dict(image_size=f"{spec.width}x{spec.height}", camera=camera, dense_size=dense_size,
+                  pixel_at_rig_distance_m=round(spec.distance / spec.focal_px, 4))
 
     def row(label, recon, **kw):
         t, c = time.perf_counter(), time.process_time()
         out = fscore_against_truth(recon, truth, true, target, fp)
-        emit(bench=f"fscore_heritage_{label}", **kw, registered=len(names), images=len(true.images),
+        emit(bench=f"fscore_heritage_{label}", **common, **kw, registered=len(names), images=len(true.images),
              camera_truth_rms_m=round(cam_rms, 4),
              scores={f"{tau * 100:g}cm": {k: round(v, 3) for k, v in d.items()} for tau, d in out["scores"].items()},
              recon_samples=out["recon_samples"], truth_samples=out["truth_samples"],
@@ -763,14 +823,15 @@ def fscore_heritage(work: Path, support_trims=(0.0, 3.0), refine_ks=(0,)):
              fscore_wall_s=round(time.perf_counter() - t, 1), fscore_cpu_s=round(time.process_time() - c, 1),
              load1=os.getloadavg()[0])
 
-    row("dense", cloud.xyz, points=cloud.n, sfm_dense_wall_s=round(data_wall, 1), sfm_dense_cpu_s=round(data_cpu, 1))
+    row("dense", cloud.xyz, points=cloud.n, **{k: round(v, 1) for k, v in times.items()})
     for trim in support_trims:
         for k in refine_ks:
-            params = MeshChainParams(poisson=PoissonParams(support_trim=trim), refine=RefineParams(k=k) if k else None,
+            params = MeshChainParams(poisson=PoissonParams(depth=depth, support_trim=trim),
+                                     refine=RefineParams(k=k) if k else None,
                                      clean=CleanParams(min_piece_fraction=0.05), color=None, quality=None, texture=None)
             res, wall, cpu = timed(mesh_cloud, cloud, params, rec)
-            row("mesh", res.mesh, support_trim=trim, refine_k=k, faces=res.mesh.n_faces, mesh_wall_s=round(wall, 1),
-                mesh_cpu_s=round(cpu, 1))
+            row("mesh", res.mesh, depth=depth, support_trim=trim, refine_k=k, faces=res.mesh.n_faces,
+                mesh_wall_s=round(wall, 1), mesh_cpu_s=round(cpu, 1))
 
 
 def render_10m():
@@ -802,6 +863,9 @@ if __name__ == "__main__":
     ap.add_argument("--no-photo-consistency", action="store_true", help="texture: without the photo-consistency check")
     ap.add_argument("--tree", action="store_true", help="texture: a tree in front of the church in the photos only")
     ap.add_argument("--no-last-resort", action="store_true", help="texture: without grazing / partly hidden views")
+    ap.add_argument("--max-views", type=int, default=1, help="texture (heritage rig): views blended per face")
+    ap.add_argument("--texel-size", type=float, default=None,
+                    help="texture (heritage rig): texel size, m (default: the median ground sample distance)")
     ap.add_argument("--occluder", choices=sorted(OCCLUDERS), default=None,
                     help="texture: instead of the heritage rig, the box-and-wall rig with this occluder in the photos")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
@@ -809,6 +873,13 @@ if __name__ == "__main__":
                     help="fscore: Poisson support trims (point spacings, 0 = off), comma separated")
     ap.add_argument("--refine-ks", default="0",
                     help="fscore: MLS refinement neighbours (0 = none), comma separated")
+    ap.add_argument("--image-size", default=None, metavar="WxH",
+                    help="fscore: render the rig at this size, same field of view (default: the rig's 640x480)")
+    ap.add_argument("--fscore-camera", choices=("sfm", "true"), default="sfm",
+                    help="fscore: orient by ws sfm (rig intrinsics fixed) or use the rig's true cameras")
+    ap.add_argument("--dense-size", type=int, default=1600,
+                    help="fscore: ws dense --max-image-size (longest side, px; -1 full size; 1600 its default)")
+    ap.add_argument("--poisson-depth", type=int, default=9, help="fscore: Poisson octree depth (9: ws mesh's default)")
     ap.add_argument("--trims", default="0.05", help="bunny: density trim quantiles, comma separated")
     ap.add_argument("--samples-per-node", type=float, default=2.0, help="poisson, poisson_backend_open3d (2: the package default)")
     ap.add_argument("--variants", default="1.5:4:5,5:4:5,1.5:0:5",
@@ -835,9 +906,11 @@ if __name__ == "__main__":
             texture_occluder(a.occluder)
         else:
             texture_heritage(Path(a.work), a.exposure_jitter, not a.no_exposure_balance, not a.no_photo_consistency,
-                             a.tree, not a.no_last_resort)
+                             a.tree, not a.no_last_resort, a.max_views, a.texel_size)
     if "fscore" in todo:
         fscore_heritage(Path(a.work), tuple(float(t) for t in a.support_trims.split(",")),
-                        tuple(int(k) for k in a.refine_ks.split(",")))
+                        tuple(int(k) for k in a.refine_ks.split(",")),
+                        tuple(int(x) for x in a.image_size.lower().split("x")) if a.image_size else None,
+                        a.fscore_camera, a.dense_size, a.poisson_depth)
     if "heritage_fused" in todo:
         heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)
