@@ -96,11 +96,12 @@ def _norm(v: np.ndarray) -> np.ndarray:
     return np.sqrt(np.add.reduce(v * v, axis=1))
 
 
-def nominal_spacing(xy: np.ndarray) -> float:
-    """1/sqrt(density) (m) from the median 2-D nearest-neighbour distance (Poisson: d = 0.5 s)."""
+def nominal_spacing(xy: np.ndarray, threads: int = 1) -> float:
+    """1/sqrt(density) (m) from the median 2-D nearest-neighbour distance (Poisson: d = 0.5 s),
+    the neighbours looked up on ``threads`` threads."""
     from scipy.spatial import cKDTree
 
-    d, _ = cKDTree(xy).query(xy, k=2)
+    d, _ = cKDTree(xy).query(xy, k=2, workers=threads)
     return float(2.0 * np.median(d[:, 1]))
 
 
@@ -177,10 +178,12 @@ def _dominant_direction_rect(p: np.ndarray) -> float:
 def _points_direction(pts: np.ndarray) -> float:
     """Direction (radians) of the minimum-area rectangle of a building's points: its sides rest
     on the outermost points, whose distance to the true edge shrinks as 1 / (density x length),
-    unlike a smoothed outline's wander (square-root rate)."""
+    unlike a smoothed outline's wander (square-root rate). The points go to GEOS as one line
+    string (its rectangle is that of the vertices' convex hull, as for a multipoint, without
+    making a point object per vertex)."""
     import shapely
 
-    rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.MultiPoint(pts)).exterior.coords)
+    rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.linestrings(pts)).exterior.coords)
     e = rect[1] - rect[0]
     return math.atan2(e[1], e[0])
 
@@ -351,17 +354,16 @@ def ccw(ring: np.ndarray) -> np.ndarray:
     return ring if area > 0 else ring[::-1].copy()
 
 
-def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radius: float = CORNER_RADIUS):
+def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radius: float = CORNER_RADIUS,
+                  threads: int = 1):
     """Smoothed point density on a raster of cell ``spacing / 2`` (Gaussian, sigma ``radius``
     spacings), normalised so the interior of a roof is 1 (by ``ref``, the smoothed count per
     cell of a roof, estimated by :func:`_roof_density` when None): the level 0.5 then lies on a
     straight roof edge without bias (a symmetric kernel over a half-plane integrates to one half
-    at its edge).
+    at its edge). The smoothing runs on ``threads`` threads (:func:`_smooth`).
 
     Returns (field (rows, cols), origin (2,), cell, ref); rows follow y.
     """
-    from scipy import ndimage
-
     cell = spacing / 2
     sig = radius * spacing / cell
     pad = int(math.ceil(3 * sig)) + 2
@@ -369,10 +371,38 @@ def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radi
     ij = np.floor((xy - origin) / cell).astype(np.int64)
     shape = (int(ij[:, 1].max()) + pad + 1, int(ij[:, 0].max()) + pad + 1)
     counts = np.bincount(ij[:, 1] * shape[1] + ij[:, 0], minlength=shape[0] * shape[1]).reshape(shape)
-    field = ndimage.gaussian_filter(counts.astype(float), sig, mode="constant", truncate=3.0)
+    field = _smooth(counts.astype(float), sig, threads)
     if ref is None:
         ref = _roof_density(field, sig)
     return field / ref, origin, cell, ref
+
+
+def _smooth(counts: np.ndarray, sig: float, threads: int) -> np.ndarray:
+    """``scipy.ndimage.gaussian_filter(counts, sig, mode="constant", truncate=3.0)``, by bands
+    of rows on ``threads`` threads (ndimage lets go of the GIL). Each band is smoothed with the
+    kernel's reach of rows on either side, so every value is summed from the same inputs in the
+    same order as over the whole raster: the same bits."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from scipy import ndimage
+
+    def smooth(a):
+        return ndimage.gaussian_filter(a, sig, mode="constant", truncate=3.0)
+
+    rows = counts.shape[0]
+    if threads <= 1 or rows < 64 * threads:
+        return smooth(counts)
+    reach = int(3.0 * sig + 0.5) + 1  # the kernel's radius in scipy, plus one
+    cuts = np.linspace(0, rows, 2 * threads + 1).astype(int)
+    out = np.empty_like(counts)
+
+    def band(a, b):
+        lo, hi = max(a - reach, 0), min(b + reach, rows)
+        out[a:b] = smooth(counts[lo:hi])[a - lo:b - lo]
+
+    with ThreadPoolExecutor(threads) as ex:
+        list(ex.map(band, cuts[:-1], cuts[1:]))
+    return out
 
 
 def _roof_density(field: np.ndarray, sig: float) -> float:
@@ -561,41 +591,140 @@ def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell
     return cands[int(np.argmin([_cost(c, pts, density, STRAY_WEIGHT) for c in cands]))]
 
 
+@dataclass(frozen=True)
+class Component:
+    """One connected region of the half-density mask, cut out of the district raster.
+
+    Attributes
+    ----------
+    label : int
+        Its label in the district mask (1-based, in :func:`scipy.ndimage.label` order).
+    inside : (r, c) bool
+        The region with its holes filled, on its bounding box widened by two cells.
+    field : (r, c) float64
+        The normalised density over the same cells, raised to just above 0.5 inside the
+        region and zero beyond one cell outside it, so its level-0.5 line is the region's edge.
+    origin : (2,) float64
+        Lower-left corner of the cut (m).
+    """
+
+    label: int
+    inside: np.ndarray
+    field: np.ndarray
+    origin: np.ndarray
+
+
+@dataclass(frozen=True)
+class District:
+    """The district-wide pass of :func:`district_components`.
+
+    Attributes
+    ----------
+    spacing, cell, ref : float
+        Nominal point spacing (m), raster cell (m) and the roof's smoothed count per cell.
+    components : list of Component
+        The regions of at least ``min_area``, in label order.
+    point_label : (n,) int64
+        Label of the region of every point (0 for none).
+    n_labels : int
+        Number of regions, small ones included.
+    """
+
+    spacing: float
+    cell: float
+    ref: float
+    components: list
+    point_label: np.ndarray
+    n_labels: int
+
+
+def _nearest_label(labels: np.ndarray, rows: np.ndarray, cols: np.ndarray, reach: float,
+                   threads: int = 1) -> np.ndarray:
+    """Label of the nearest labelled cell (centre to centre) within ``reach`` cells of each cell
+    (``rows``, ``cols``), 0 when none is that close; a labelled cell gives its own label.
+
+    The nearest labelled cell to an unlabelled one lies on the region's edge (a step from it
+    towards the query would otherwise be closer and labelled), so only edge cells (with an
+    unlabelled 4-neighbour) enter the k-d tree; of equidistant cells of two regions one is taken.
+    """
+    from scipy import ndimage
+    from scipy.spatial import cKDTree
+
+    out = labels[rows, cols].astype(np.int64)
+    free = np.flatnonzero(out == 0)
+    fg = labels > 0
+    edge = np.argwhere(fg & ~ndimage.binary_erosion(fg))
+    if not len(free) or not len(edge):
+        return out
+    d, i = cKDTree(edge).query(np.column_stack([rows[free], cols[free]]), distance_upper_bound=reach * (1 + 1e-9),
+                               workers=threads)
+    near = np.isfinite(d) & (d <= reach)
+    out[free[near]] = labels[edge[i[near], 0], edge[i[near], 1]]
+    return out
+
+
+def district_components(xy: np.ndarray, params: FootprintParams = FootprintParams(), threads: int = 1) -> District:
+    """The district-wide step of :func:`extract_footprints` on building points ``xy`` (n, 2) (m):
+    density field, half-density mask and its regions, and the region of every point (points just
+    outside the outline, the edge itself, join the nearest region within two spacings).
+    Regions under ``min_area`` are left out of ``components`` but keep their points. The spacing,
+    the smoothing and the nearest regions are computed on ``threads`` threads (the same result)."""
+    from scipy import ndimage
+
+    xy = np.asarray(xy, float)
+    spacing = params.spacing or nominal_spacing(xy, threads)
+    field, origin, cell, ref = density_field(xy, spacing, threads=threads)
+    labels = building_mask(field)
+    ij = np.floor((xy - origin) / cell).astype(np.int64)
+    point_label = _nearest_label(labels, ij[:, 1], ij[:, 0], 2 * spacing / cell, threads)
+    comps, slices = [], ndimage.find_objects(labels)
+    for k, sl in enumerate(slices):
+        sl = tuple(slice(max(a.start - 2, 0), a.stop + 2) for a in sl)
+        sub = labels[sl] == k + 1
+        if sub.sum() * cell * cell < params.min_area:
+            continue
+        inside = fill_holes(sub)
+        rim = np.where(ndimage.binary_dilation(sub), field[sl], 0.0)
+        comps.append(Component(k + 1, inside, np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim),
+                               origin + np.array([sl[1].start, sl[0].start]) * cell))
+    return District(spacing, cell, ref, comps, point_label, len(slices))
+
+
+def component_footprint(comp: Component, pts: np.ndarray, spacing: float, ref: float, cell: float,
+                        params: FootprintParams = FootprintParams()) -> Footprint:
+    """Footprint of one region of :func:`district_components` from its points ``pts`` (m, 2)."""
+    ring = trace_outline(comp.field, comp.origin, cell)
+    return Footprint(_outline(pts, ring, spacing, ref, cell, params))
+
+
+def points_by_label(point_label: np.ndarray, n_labels: int):
+    """(order, starts): ``order[starts[k]:starts[k + 1]]`` are the indices of the points of
+    label k, in their input order."""
+    order = np.argsort(point_label, kind="stable")
+    return order, np.searchsorted(point_label[order], np.arange(n_labels + 2))
+
+
+def no_footprint_error(params: FootprintParams, n: int):
+    """The error of a district without any footprint."""
+    from workstation.core.errors import StageError
+
+    return StageError("footprints", f"no building larger than {params.min_area:g} m² in {n} points",
+                      "check that building points are classified (class 6) or pass --footprints")
+
+
 def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams()):
     """Footprints of building points ``xy`` (n, 2) (m).
 
     Returns ``(footprints list, point_building (n,) int64)``: the regularised outlines and the
     footprint index of every point (-1 for points of discarded components).
     """
-    from scipy import ndimage
-
-    from workstation.core.errors import StageError
-
     xy = np.asarray(xy, float)
-    spacing = params.spacing or nominal_spacing(xy)
-    field, origin, cell, ref = density_field(xy, spacing)
-    labels = building_mask(field)
-    ij = np.floor((xy - origin) / cell).astype(np.int64)
-    # points just outside the half-density outline (the edge itself) join the nearest building
-    dist, (ii, jj) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
-    r, c = ij[:, 1], ij[:, 0]  # looked up at the points' cells only
-    point_comp = labels[ii[r, c], jj[r, c]] * (dist[r, c] <= 2 * spacing / cell) - 1
-    slices = ndimage.find_objects(labels)
-    order = np.argsort(point_comp, kind="stable")  # each building's points, in their input order
-    starts = np.searchsorted(point_comp[order], np.arange(len(slices) + 1))
-    out, remap = [], np.full(len(slices), -1, np.int64)
-    for k, sl in enumerate(slices):
-        sl = tuple(slice(max(a.start - 2, 0), a.stop + 2) for a in sl)
-        sub = labels[sl] == k + 1
-        if sub.sum() * cell * cell < params.min_area:
-            continue
-        o = origin + np.array([sl[1].start, sl[0].start]) * cell
-        inside = fill_holes(sub)
-        rim = np.where(ndimage.binary_dilation(sub), field[sl], 0.0)
-        ring = trace_outline(np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim), o, cell)
-        remap[k] = len(out)
-        out.append(Footprint(_outline(xy[order[starts[k]:starts[k + 1]]], ring, spacing, ref, cell, params)))
+    d = district_components(xy, params)
+    order, starts = points_by_label(d.point_label, d.n_labels)
+    out = [component_footprint(c, xy[order[starts[c.label]:starts[c.label + 1]]], d.spacing, d.ref, d.cell, params)
+           for c in d.components]
     if not out:
-        raise StageError("footprints", f"no building larger than {params.min_area:g} m² in {len(xy)} points",
-                         "check that building points are classified (class 6) or pass --footprints")
-    return out, np.where(point_comp >= 0, remap[np.maximum(point_comp, 0)], -1)
+        raise no_footprint_error(params, len(xy))
+    remap = np.full(d.n_labels + 1, -1, np.int64)
+    remap[[c.label for c in d.components]] = np.arange(len(out))
+    return out, remap[d.point_label]

@@ -1,0 +1,69 @@
+"""The district-wide pass of the footprints: banded smoothing on threads, nearest regions from a
+k-d tree of edge cells, and the points' direction from one GEOS line string."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from workstation.buildings import synth
+from workstation.buildings.footprints import (FootprintParams, _nearest_label, _points_direction, _smooth,
+                                              district_components, extract_footprints)
+
+
+def test_banded_smoothing_is_the_whole_rasters_bit_for_bit():
+    """Bands of rows smoothed on threads with the kernel's reach around them give the same bits
+    as one gaussian_filter over the raster, whatever the number of bands."""
+    from scipy import ndimage
+
+    counts = np.random.default_rng(0).poisson(0.3, (700, 300)).astype(float)
+    whole = ndimage.gaussian_filter(counts, 5.0, mode="constant", truncate=3.0)
+    for threads in (2, 3):
+        assert np.array_equal(_smooth(counts, 5.0, threads), whole)
+
+
+def test_nearest_region_agrees_with_the_distance_transform():
+    """Every cell gets the label of the nearest labelled cell within the reach, as the feature
+    transform of scipy gives it (regions far enough apart that no cell is equidistant)."""
+    from scipy import ndimage
+
+    labels = np.zeros((60, 80), np.int64)
+    labels[5:20, 5:30] = 1
+    labels[35:55, 10:25] = 2
+    labels[10:50, 50:70] = 3
+    labels[40:45, 52:56] = 0  # a hole: its cells take the surrounding label
+    rows, cols = np.divmod(np.arange(labels.size), labels.shape[1])
+    dist, (ii, jj) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
+    want = (labels[ii, jj] * (dist <= 4.0)).ravel()
+    got = _nearest_label(labels, rows, cols, 4.0, threads=2)
+    assert np.array_equal(got, want)
+    assert set(np.unique(got)) == {0, 1, 2, 3}
+
+
+@pytest.mark.parametrize("decimals", [None, 2])
+def test_points_direction_equals_the_multipoints(decimals):
+    """The line string of the points has the rectangle of their multipoint (random and
+    centimetre-rounded points, which have many collinear hull vertices)."""
+    import shapely
+
+    rng = np.random.default_rng(1)
+    for _ in range(200):
+        pts = rng.uniform(0, rng.uniform(3, 30), (int(rng.integers(5, 800)), 2)) @ rng.normal(size=(2, 2))
+        pts = pts + 5e5 if decimals is None else np.round(pts + 5e5, decimals)
+        rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.MultiPoint(pts)).exterior.coords)
+        assert _points_direction(pts) == math.atan2(*(rect[1] - rect[0])[::-1])
+
+
+def test_threads_do_not_change_the_footprints():
+    xyz, cls, _ = synth.district(6, seed=4, density=8.0)
+    xy = xyz[cls == 6][:, :2]
+    one = district_components(xy, FootprintParams(), threads=1)
+    two = district_components(xy, FootprintParams(), threads=2)
+    assert one.spacing == two.spacing and one.ref == two.ref and np.array_equal(one.point_label, two.point_label)
+    assert all(np.array_equal(a.field, b.field) and np.array_equal(a.origin, b.origin)
+               for a, b in zip(one.components, two.components))
+    fps, owner = extract_footprints(xy)
+    assert len(fps) == len(one.components) == 6
+    assert np.array_equal(owner >= 0, one.point_label > 0)
