@@ -2,7 +2,7 @@
 
 Prints one JSON line per result. Usage::
 
-    PYTHONPATH=. python scripts/bench_buildings.py speed [--buildings 500]   # buildings/min, LoD2 from classified points
+    PYTHONPATH=. python scripts/bench_buildings.py speed [--buildings 500] [--workers 2]  # buildings/min, LoD2 from classified points
     PYTHONPATH=. python scripts/bench_buildings.py accuracy [--buildings 60] [--seed 5] # IoU, tilt, azimuth, roof RMS per roof kind
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex [--seed 5]  # the same on cross-gabled L / T and dormer roofs
     PYTHONPATH=. python scripts/bench_buildings.py solar                     # clear-sky kWh/m2/year at 48 N; against PVGIS
@@ -29,19 +29,32 @@ def emit(**kw):
     print(json.dumps(kw, default=float), flush=True)
 
 
-def speed(n: int, seed: int = 0, solar: bool = False):
-    """Footprints + planes + LoD1.2/LoD2.2 (no solar unless asked) on a simulated district."""
+def speed(n: int, seed: int = 0, solar: bool = False, workers: int = 1):
+    """Footprints + planes + LoD1.2/LoD2.2 (no solar unless asked) on a simulated district, in this
+    process or on a local Dask cluster of ``workers`` processes (started within the time measured).
+    CPU seconds count this process and, with workers, the workers' own (their tasks' process time)."""
     from workstation.buildings import synth
     from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
 
     xyz, cls, _ = synth.district(n, seed=seed, density=8.0)
     reconstruct_buildings(*synth.district(4, seed=1, density=8.0)[:2], BuildingsParams(solar=None))  # imports
-    t, c = time.perf_counter(), time.process_time()
-    r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None) if not solar else BuildingsParams())
-    dt, dc = time.perf_counter() - t, time.process_time() - c
+    load0 = os.getloadavg()[0]
+    t, c, ch = time.perf_counter(), time.process_time(), _children_cpu()
+    params = BuildingsParams(solar=None) if not solar else BuildingsParams()
+    r = reconstruct_buildings(xyz, cls, params, workers=workers)
+    dt, dc = time.perf_counter() - t, time.process_time() - c + _children_cpu() - ch
     emit(bench="speed", buildings=len(r.models), points=len(xyz), building_points=int((cls == 6).sum()), seconds=dt,
          cpu_seconds=dc, buildings_per_min=len(r.models) / dt * 60, buildings_per_cpu_min=len(r.models) / dc * 60,
-         timings=r.timings, solar=solar, load=os.getloadavg()[0])
+         timings=r.timings, solar=solar, workers=workers, load_before=load0, load=os.getloadavg()[0])
+
+
+def _children_cpu() -> float:
+    """CPU seconds (user + system) of this process's ended child processes (the local cluster's
+    workers once it is closed)."""
+    import resource
+
+    u = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return u.ru_utime + u.ru_stime
 
 
 def accuracy(n: int, seed: int = 5, kinds: str = "basic"):
@@ -149,6 +162,7 @@ def main():
     s = sub.add_parser("speed")
     s.add_argument("--buildings", type=int, default=500)
     s.add_argument("--solar", action="store_true")
+    s.add_argument("--workers", type=int, default=1, help="processes of a local Dask cluster (1: this process)")
     a = sub.add_parser("accuracy")
     a.add_argument("--buildings", type=int, default=60)
     a.add_argument("--seed", type=int, default=5, help="district seed (5: the reported one; 7, 11: validation)")
@@ -158,7 +172,7 @@ def main():
     sub.add_parser("real")
     args = ap.parse_args()
     if args.cmd == "speed":
-        speed(args.buildings, solar=args.solar)
+        speed(args.buildings, solar=args.solar, workers=args.workers)
     elif args.cmd == "accuracy":
         accuracy(args.buildings, args.seed, args.kinds)
     elif args.cmd == "solar":

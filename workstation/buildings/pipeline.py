@@ -3,6 +3,7 @@ solar potential out (:func:`reconstruct_buildings`)."""
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import time
 from dataclasses import dataclass, field, replace
@@ -12,7 +13,8 @@ import numpy as np
 from workstation.core.classes import ASPRSClass
 from workstation.core.errors import InvalidInputError, StageError
 
-from .footprints import Footprint, FootprintParams, extract_footprints, nominal_spacing
+from .footprints import (Component, Footprint, FootprintParams, component_footprint, district_components,
+                         no_footprint_error, nominal_spacing, points_by_label)
 from .models import ModelParams, build_building
 from .planes import PlaneParams, segment_planes
 from .solar import SolarParams
@@ -120,13 +122,21 @@ def assign_to_footprints(xy: np.ndarray, polygons: list) -> np.ndarray:
 
 
 def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: BuildingsParams = BuildingsParams(),
-                          footprints: list | None = None) -> BuildingsResult:
+                          footprints: list | None = None, workers: int = 1,
+                          scheduler: str | None = None) -> BuildingsResult:
     """Footprints, roof planes, LoD1.2/LoD2.2 models and solar potential of the buildings in a
     classified cloud (``xyz`` (n, 3) in metres, ``classification`` (n,) ASPRS codes).
 
     ``footprints`` (list of (k, 2) polygons, metres) are used instead of traced ones when given.
+    The district-wide raster of the footprints is made here; each building's outline, roof
+    planes and model (:func:`build_unit`) follow one after the other, or, with ``workers`` > 1
+    or a ``scheduler`` address, in batches on a Dask cluster (a local one of ``workers``
+    single-threaded processes, or the running one at ``scheduler``): the same models, in the
+    same order, either way. Spawned worker processes need the ``if __name__ == "__main__":``
+    guard in a script that asks for them.
     """
-    t: dict = {}
+    if workers < 1:
+        raise InvalidInputError(f"workers {workers} is below 1", "use 1 or more processes", field="workers")
     t0 = time.perf_counter()
     cls = np.asarray(classification)
     bmask = cls == params.building_class
@@ -134,23 +144,18 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
         raise StageError("buildings", f"only {int(bmask.sum())} points of class {params.building_class}",
                          "classify the cloud first (ws classify) or pass --classify")
     bxyz = np.asarray(xyz, float)[bmask]
-    spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2])
-    if footprints is None:
-        fps, owner = extract_footprints(bxyz[:, :2], replace(params.footprints, spacing=spacing))
-        source = "points"
+    t: dict = {}
+    if workers == 1 and not scheduler:
+        models, spacing, coverage = _buildings(xyz, cls, bxyz, params, footprints, None, 1, t)
     else:
-        if not footprints:
-            raise InvalidInputError("no footprint polygons given", field="footprints")
-        fps = [Footprint(np.asarray(p, float), "given") for p in footprints]
-        owner = assign_to_footprints(bxyz[:, :2], [f.polygon for f in fps])
-        source = "given"
-    t["footprints_s"] = time.perf_counter() - t0
-    coverage = {"building_points_outside": float(np.mean(owner < 0)),
-                "footprints_without_points": int(len(fps) - len(np.unique(owner[owner >= 0])))}
-    if source == "given" and coverage["building_points_outside"] > 0.2:
-        log.warning("%.0f %% of the building points lie outside the given footprints",
-                    100 * coverage["building_points_outside"])
-    models = _models(bxyz, owner, fps, xyz, cls, params, spacing, t)
+        with _dask_client(workers, scheduler) as client:
+            t["cluster_s"] = time.perf_counter() - t0
+            # the workers import while the district raster is made here (futures held till the end)
+            warm = [client.submit(_warm_up, pure=False, workers=[w]) for w in client.scheduler_info()["workers"]]
+            models, spacing, coverage = _buildings(xyz, cls, bxyz, params, footprints, client,
+                                                   1 if scheduler else workers, t)
+            del warm
+    source = "points" if footprints is None else "given"
     solar = _solar(models, xyz, params, spacing, t)
     smap = None
     if params.solar is not None and params.solar_map_cell and any(m.roofs for m in models):
@@ -161,36 +166,167 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
     return BuildingsResult(models, solar, source, t, spacing, coverage, smap)
 
 
-def _models(bxyz, owner, fps, xyz, cls, params, spacing, t):
-    """One model per footprint with points, its roof planes segmented on its own points (so
-    the scan-line frame is local); ground heights from the DTM of the ground class."""
-    t1 = time.perf_counter()
+def _buildings(xyz, cls, bxyz, params, footprints, client, threads, t):
+    """The models of the building points ``bxyz`` (the district raster on ``threads`` threads,
+    the buildings here (``client`` None) or on the Dask ``client``), the point spacing and the
+    coverage figures of :class:`BuildingsResult`; seconds per step into ``t``."""
+    t0 = time.perf_counter()
+    spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
+    shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
+    t["district_s"] = time.perf_counter() - t0
+    coverage = {"building_points_outside": float(np.mean(owner < 0)),
+                "footprints_without_points": int(len(shapes) - len(np.unique(owner[owner >= 0])))}
+    if footprints is not None and coverage["building_points_outside"] > 0.2:
+        log.warning("%.0f %% of the building points lie outside the given footprints",
+                    100 * coverage["building_points_outside"])
     gmask = cls == params.ground_class
-    if gmask.sum() >= 3:
-        dtm, dorigin = ground_dtm(np.asarray(xyz, float)[gmask], params.dtm_cell)
-    else:
+    dtm = ground_dtm(np.asarray(xyz, float)[gmask], params.dtm_cell) if gmask.sum() >= 3 else None
+    if dtm is None:
         log.warning("no ground points (class %d): walls reach down to each building's lowest point",
                     params.ground_class)
-        dtm = None
     order = np.argsort(owner, kind="stable")
-    bounds = np.searchsorted(owner[order], np.arange(len(fps) + 1))
-    cell = params.models.cell or spacing
-    models, t_planes = [], 0.0
-    for i, fp in enumerate(fps):
-        idx = order[bounds[i]:bounds[i + 1]]
-        if len(idx) < max(3, params.planes.min_points):
+    bounds = np.searchsorted(owner[order], np.arange(len(shapes) + 1))
+    items = [(s, bxyz[order[bounds[i]:bounds[i + 1]]]) for i, s in enumerate(shapes)]
+    setup = UnitSetup(params, spacing, ref, cell)
+    done = build_unit(items, setup, dtm) if client is None else _on_dask(client, items, setup, dtm)
+    return _collect(done, t), spacing, coverage
+
+
+def _district(bxyz, footprints, fparams, threads):
+    """What each building is made from: a :class:`Component` of the traced district raster (on
+    ``threads`` threads) or a given :class:`Footprint` per building, the building of every point
+    (-1: none), and the raster's roof density and cell (NaN with given footprints)."""
+    if footprints is not None:
+        if not footprints:
+            raise InvalidInputError("no footprint polygons given", field="footprints")
+        fps = [Footprint(np.asarray(p, float), "given") for p in footprints]
+        return fps, assign_to_footprints(bxyz[:, :2], [f.polygon for f in fps]), float("nan"), float("nan")
+    d = district_components(bxyz[:, :2], fparams, threads)
+    if not d.components:
+        raise no_footprint_error(fparams, len(bxyz))
+    remap = np.full(d.n_labels + 1, -1, np.int64)
+    remap[[c.label for c in d.components]] = np.arange(len(d.components))
+    return d.components, remap[d.point_label], d.ref, d.cell
+
+
+@dataclass(frozen=True)
+class UnitSetup:
+    """What every building of :func:`build_unit` shares: the stage parameters, the point
+    spacing (m), and the traced raster's roof density and cell (m)."""
+
+    params: BuildingsParams
+    spacing: float
+    ref: float
+    cell: float
+
+
+def build_unit(items: list, setup: UnitSetup, dtm) -> list:
+    """Footprint, roof planes and model of each building of ``items`` ((shape, points (m, 3))
+    pairs, the shape a traced :class:`Component` or a given :class:`Footprint`), the ground
+    height from ``dtm`` ((z, origin) of :func:`ground_dtm`, or None: the lowest point).
+
+    Returns per building (footprint, model with id -1 or None when it has too few points,
+    seconds of the footprint, of the planes and of the model, CPU seconds of all three). Module
+    level, on plain data: a worker process receives it pickled."""
+    p = setup.params
+    fparams = replace(p.footprints, spacing=setup.spacing)
+    cell = p.models.cell or setup.spacing
+    out = []
+    for shape, pts in items:
+        t0, c0 = time.perf_counter(), time.thread_time()
+        fp = component_footprint(shape, pts[:, :2], setup.spacing, setup.ref, setup.cell, fparams) \
+            if isinstance(shape, Component) else shape
+        t1 = time.perf_counter()
+        if len(pts) < max(3, p.planes.min_points):
+            out.append((fp, None, t1 - t0, 0.0, 0.0, time.thread_time() - c0))
             continue
-        pts = bxyz[idx]
-        tp = time.perf_counter()
-        planes = segment_planes(pts, params.planes)
-        t_planes += time.perf_counter() - tp
-        ground = float(sample_grid(dtm, dorigin, params.dtm_cell, fp.polygon).min()) if dtm is not None else float(pts[:, 2].min())
-        models.append(build_building(len(models), fp.polygon, pts, planes.labels, planes, ground, params.models, cell))
+        planes = segment_planes(pts, p.planes)
+        t2 = time.perf_counter()
+        ground = float(sample_grid(dtm[0], dtm[1], p.dtm_cell, fp.polygon).min()) if dtm is not None \
+            else float(pts[:, 2].min())
+        model = build_building(-1, fp.polygon, pts, planes.labels, planes, ground, p.models, cell)
+        out.append((fp, model, t1 - t0, t2 - t1, time.perf_counter() - t2, time.thread_time() - c0))
+    return out
+
+
+def _collect(done: list, t: dict) -> list:
+    """The models of :func:`build_unit`'s results in building order, numbered from 0; the
+    seconds per step summed over the buildings into ``t`` (over all workers: work, not wall
+    time), and their CPU seconds (``buildings_cpu_s``)."""
+    models = [replace(m, id=i) for i, m in enumerate(r[1] for r in done if r[1] is not None)]
     if not models:
         raise StageError("buildings", "no footprint holds building points", "check the footprints' CRS and extent")
-    t["planes_s"] = t_planes
-    t["models_s"] = time.perf_counter() - t1 - t_planes
+    for k, key in ((2, "footprints_s"), (3, "planes_s"), (4, "models_s"), (5, "buildings_cpu_s")):
+        t[key] = float(sum(r[k] for r in done))
     return models
+
+
+def _warm_up() -> None:
+    """Import what :func:`build_unit` needs (run on each worker before the first batch)."""
+    import contourpy  # noqa: F401
+    import scipy.ndimage  # noqa: F401
+    import scipy.sparse.csgraph  # noqa: F401
+    import scipy.spatial  # noqa: F401
+    import scipy.stats  # noqa: F401
+    import shapely  # noqa: F401
+
+
+def _on_dask(client, items: list, setup: UnitSetup, dtm) -> list:
+    """:func:`build_unit` on batches of consecutive buildings on a Dask cluster, at most two
+    batches per worker in flight (a batch's copy is made when a worker is nearly free for it);
+    the results in building order. Batches hold about a quarter of a worker's share (at most 32
+    buildings), so a slow batch does not keep the others waiting at the end."""
+    from workstation.core.signals import caught_signals
+
+    with caught_signals() as latch:
+        n = max(1, sum(client.nthreads().values()))
+        size = max(1, min(32, -(-len(items) // (4 * n))))
+        dtm_f = client.scatter(dtm, broadcast=True) if dtm is not None else None
+        results: dict = {}
+        running: dict = {}
+
+        def collect_done(at_most: int) -> None:
+            while len(running) > at_most:
+                for f in [f for f in running if f.done()]:
+                    results[running.pop(f)] = f.result()
+                if len(running) > at_most:
+                    latch.sleep(0.02)
+
+        for k, a in enumerate(range(0, len(items), size)):
+            collect_done(2 * n - 1)
+            running[client.submit(build_unit, items[a:a + size], setup, dtm_f, pure=False)] = k
+        collect_done(0)
+    return [r for k in sorted(results) for r in results[k]]
+
+
+@contextlib.contextmanager
+def _dask_client(workers: int, scheduler: str | None):
+    """A Dask client on the running scheduler at ``scheduler``, or on a new local cluster of
+    ``workers`` single-threaded processes (the cluster closed with the client)."""
+    import logging
+
+    import dask
+    from distributed import Client, LocalCluster
+
+    from workstation.core.signals import workers_starting
+
+    if scheduler:
+        try:
+            client = Client(scheduler, timeout="20s")
+        except (OSError, TimeoutError) as e:
+            raise InvalidInputError(f"cannot reach the Dask scheduler at {scheduler}: {e}",
+                                    "start it with `dask scheduler` and workers with `dask worker ADDRESS`",
+                                    field="scheduler") from None
+        with client:
+            yield client
+        return
+    # no statistical profiler in the workers: its stack sampling every 10 ms costs a worker more
+    # CPU than the buildings' outlines do
+    with workers_starting(), dask.config.set({"distributed.worker.profile.enabled": False}):
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.CRITICAL)
+    with cluster, Client(cluster) as client:
+        yield client
 
 
 def _solar(models, xyz, params, spacing, t):

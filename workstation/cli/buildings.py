@@ -52,15 +52,22 @@ NODATA = -9999.0
     bound(BuildingsParams, "solar_map_cell", "--solar-cell", show_default=True, type=positive_float,
           help="Cell (m) of the roof solar map solar_roofs.tif (kWh/m2/year per cell, each shaded by the DSM)."),
 )
+@click.option("--workers", type=click.IntRange(1, 512), default=None,
+              help="Worker processes of a local Dask cluster that model the buildings in batches (default: all in "
+                   "this process); the same models either way.")
+@click.option("--scheduler", default=None, help="Address of a running Dask scheduler, e.g. tcp://host:8786, that "
+                                                "models the buildings instead of a local cluster.")
 @click.option("--no-solar", is_flag=True, help="Skip the solar potential (solar_kwh_m2_year becomes null, no solar_roofs.tif or .png).")
 @overwrite_option
 @read_options
 @json_option
-def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps, no_solar, overwrite, read_opts, as_json):
+def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps, workers, scheduler, no_solar,
+              overwrite, read_opts, as_json):
     """Model the buildings of IN: roof planes (region growing + RANSAC), footprints (traced and
     regularised, or --footprints), LoD1.2 blocks and LoD2.2 roofs (closed solids, as CityJSON,
     glTF and OBJ), and the clear-sky annual irradiation of every roof face shaded by the DSM,
-    also mapped per roof cell in solar_roofs.tif."""
+    also mapped per roof cell in solar_roofs.tif. With --workers N or --scheduler the footprint
+    outlines, roof planes and models are made on a Dask cluster, batches of buildings at once."""
     import time
     from pathlib import Path
 
@@ -70,6 +77,8 @@ def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps
     from workstation.core.errors import doing
     from workstation.io import check_outputs, read_cloud, work_folder
 
+    if scheduler and workers:
+        raise click.UsageError("--workers sizes a local cluster; an external --scheduler has its own workers")
     t0 = time.perf_counter()
     out = Path(out_dir)
     paths = [out / name for name in OUTPUTS] + ([] if no_solar else [out / SOLAR_MAP, out / SOLAR_PNG])
@@ -93,7 +102,8 @@ def buildings(src, out_dir, footprints_path, run_classifier, classes, site, maps
     solar = None if no_solar else _solar_params(cloud, site)
     params = BuildingsParams(**classes, **maps, solar=solar)
     with doing(f"modelling the buildings of {src}"):
-        result = reconstruct_buildings(cloud.xyz, np.asarray(cloud.attrs["classification"]), params, footprints)
+        result = reconstruct_buildings(cloud.xyz, np.asarray(cloud.attrs["classification"]), params, footprints,
+                                       workers=workers or 1, scheduler=scheduler)
     with work_folder(out):
         _write(result, paths, cloud.crs, overwrite, src)
     _report(src, out, result, solar, time.perf_counter() - t0, as_json, paths)
