@@ -1,11 +1,13 @@
-"""PTD's facet test and mirroring, and CSF's own cloth simulation, on hand-made cases."""
+"""PTD's facet test, mirroring and TIN updates, and CSF's own cloth simulation, on hand-made cases."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from workstation.ground.csf import CSFParams, simulate
-from workstation.ground.ptd import PTDParams, densify, facet_test
+from scipy.spatial import Delaunay
+
+from workstation.ground.ptd import PTDParams, _Tin, densify, facet_test
 
 
 def _tri(k):
@@ -54,3 +56,78 @@ def test_cloth_bridges_a_pit_and_rests_on_the_ground():
     assert np.allclose(cloth[:10, :10], 0.0, atol=0.05)
     # the cloth stays far above the roof: the roof is 8 m from the cloth, not ground
     assert cloth[25:35, 25:35].min() > -4.0
+
+
+def _triangles(simp):
+    return set(map(tuple, np.sort(simp, axis=1).tolist()))
+
+
+def test_tin_update_is_the_delaunay_triangulation_of_all_points():
+    rng = np.random.default_rng(3)
+    xy = rng.uniform(0.0, 100.0, (3000, 2))
+    ground = np.zeros(3000, dtype=bool)
+    ground[:2000] = True
+    ground[[2000, 2001, 2002, 2003]] = False
+    tin = _Tin(xy, np.flatnonzero(ground))
+    rest = np.flatnonzero(~ground)
+    s_rest = tin.tri.find_simplex(xy[rest])
+    inside = s_rest >= 0
+    new = rest[inside][:40]  # 40 points join (2 % of the TIN: the cavity is small)
+    s = tin.insert(new, s_rest[inside][:40], rest, s_rest)
+    assert s is not None and tin.tri is None
+    ground[new] = True
+    full = Delaunay(xy[ground])
+    assert _triangles(tin.simp) == _triangles(np.flatnonzero(ground)[full.simplices])
+    # every remaining candidate is in the triangle the full triangulation puts it in
+    left = ~np.isin(rest, new)
+    want = full.find_simplex(xy[rest[left]])
+    got = s[left]
+    assert ((got >= 0) == (want >= 0)).all()
+    g = np.flatnonzero(ground)
+    assert (np.sort(tin.simp[got[got >= 0]], axis=1) == np.sort(g[full.simplices[want[want >= 0]]], axis=1)).all()
+    # the neighbours: shared edges both ways, the walk finds what scipy finds
+    t = tin.nbr
+    for j in range(3):
+        has = t[:, j] >= 0
+        assert (t[t[has, j]] == np.flatnonzero(has)[:, None]).any(axis=1).all()
+    q = rng.uniform(-10.0, 110.0, (500, 2))
+    w = tin.walk(q, np.zeros(500, dtype=np.int64))
+    f = full.find_simplex(q)
+    assert ((w >= 0) == (f >= 0)).all()
+    assert (np.sort(tin.simp[w[w >= 0]], axis=1) == np.sort(g[full.simplices[f[f >= 0]]], axis=1)).all()
+
+
+def test_tin_update_falls_back_on_a_large_cavity():
+    rng = np.random.default_rng(4)
+    xy = rng.uniform(0.0, 100.0, (400, 2))
+    tin = _Tin(xy, np.arange(100))
+    rest = np.arange(100, 400)
+    s_rest = tin.tri.find_simplex(xy[rest])
+    inside = s_rest >= 0
+    assert tin.insert(rest[inside], s_rest[inside], rest, s_rest) is None  # 3x the TIN: rebuild
+
+
+def test_densify_with_tin_updates_equals_full_triangulations(monkeypatch):
+    # rolling terrain with low objects: many iterations, the late ones add few points
+    rng = np.random.default_rng(5)
+    n = 6000
+    xy = rng.uniform(0.0, 100.0, (n, 2))
+    z = 3.0 * np.sin(xy[:, 0] / 20.0) + 2.0 * np.cos(xy[:, 1] / 15.0) + rng.normal(0.0, 0.05, n)
+    obj = rng.random(n) < 0.3
+    z[obj] += rng.uniform(0.5, 8.0, obj.sum())
+    cand = np.column_stack([xy, z])[np.lexsort((xy[:, 0], np.floor(xy[:, 1])))]
+    updates = []
+    insert = _Tin.insert
+
+    def counted(self, *args):
+        s = insert(self, *args)
+        updates.append(s is not None)
+        return s
+
+    monkeypatch.setattr(_Tin, "insert", counted)
+    updated = densify(cand, PTDParams())
+    assert sum(updates) >= 3  # the late iterations updated the TIN around the new points
+    monkeypatch.setattr(_Tin, "MAX_CAVITY", 0.0)  # every iteration triangulates in full
+    full = densify(cand, PTDParams())
+    assert 0.5 < updated.mean() < 0.8
+    assert (updated == full).all()

@@ -7,9 +7,11 @@ Int. Arch. Photogramm. Remote Sens. 33(B4):110-117.
    against the final TIN); isolated low points among them are set aside;
 2. seeds: the lowest candidate of every ``seed_cell`` (larger than the largest building) and
    the lowest near each corner of the extent;
-3. iterations: a Delaunay TIN of the ground points (scipy/Qhull, rebuilt per iteration); every
-   remaining candidate is located in its facet in bulk (``find_simplex``, queries in raster
-   order so each directed walk starts next to its target); it passes when its distance to
+3. iterations: a Delaunay TIN of the ground points (scipy/Qhull; once few points join, only
+   the cavity of the joining points is triangulated again, :class:`_Tin`); every remaining
+   candidate is located in its facet in bulk (``find_simplex``, queries in raster order so
+   each directed walk starts next to its target; after an update only the candidates whose
+   facet changed); it passes when its distance to
    the facet's plane is below ``max_distance`` and the largest angle between that plane and
    the lines to the facet's vertices is below ``max_angle``;
    **mirroring** near breaklines: a candidate that fails the angle test although it lies
@@ -26,8 +28,11 @@ Int. Arch. Photogramm. Remote Sens. 33(B4):110-117.
    points outside the TIN's hull compare with the nearest ground point.
 
 Cost per iteration: one Qhull triangulation of the ground points and one bulk point location
-of the remaining candidates; on a 1 m candidate grid 15-20 iterations, see
-docs/benchmarks.md (Ground filtering).
+of the remaining candidates while many join, then one of the cavity's points and the location
+of the candidates in it; on a 1 m candidate grid 15-20 iterations, see docs/benchmarks.md
+(Ground filtering). The updated TIN is the full one (Delaunay triangulations are unique up
+to cocircular points); a candidate exactly on an edge shared by two facets may be located in
+the other one of the two than a full triangulation's walk would find.
 """
 
 from __future__ import annotations
@@ -151,11 +156,151 @@ def facet_test(q: np.ndarray, a: np.ndarray, b: np.ndarray, c: np.ndarray, tan_a
     return dist_ok & (s / np.sqrt(1.0 - s * s) < tan_angle), d, dist_ok
 
 
+def _orient(a: np.ndarray, b: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Twice the signed area of (a, b, q), rows of (n, 2): positive when q is left of a -> b."""
+    return (b[:, 0] - a[:, 0]) * (q[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (q[:, 0] - a[:, 0])
+
+
+def _neighbors(simp: np.ndarray) -> np.ndarray:
+    """(T, 3) int64: the triangle across the edge opposite each vertex of ``simp`` (T, 3), -1 on
+    the hull (the layout of scipy's ``Delaunay.neighbors``)."""
+    t = simp.shape[0]
+    lo = np.concatenate([np.minimum(simp[:, (i + 1) % 3], simp[:, (i + 2) % 3]) for i in range(3)])
+    hi = np.concatenate([np.maximum(simp[:, (i + 1) % 3], simp[:, (i + 2) % 3]) for i in range(3)])
+    key = lo * (int(simp.max()) + 1) + hi
+    order = np.argsort(key, kind="stable")
+    ks = key[order]
+    pair = np.flatnonzero(ks[1:] == ks[:-1])
+    nbr = np.full(3 * t, -1, dtype=np.int64)
+    a, b = order[pair], order[pair + 1]
+    nbr[a], nbr[b] = b % t, a % t
+    return nbr.reshape(3, t).T.copy()
+
+
+def _in_circle(xy: np.ndarray, tri: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """(n,) bool: ``q`` (n, 2) strictly inside the circumcircle of the triangles ``tri`` (n, 3)."""
+    a, b, c = (xy[tri[:, i]] - q for i in range(3))
+    det = ((a * a).sum(1) * (b[:, 0] * c[:, 1] - c[:, 0] * b[:, 1]) - (b * b).sum(1) * (a[:, 0] * c[:, 1] - c[:, 0] * a[:, 1])
+           + (c * c).sum(1) * (a[:, 0] * b[:, 1] - b[:, 0] * a[:, 1]))
+    return det * np.sign(_orient(xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]])) > 0
+
+
+class _Tin:
+    """The Delaunay TIN of the ground points of :func:`densify`, kept up to date between
+    iterations: a full Qhull triangulation, then, while few points join, only the cavity of the
+    joining points is triangulated again (the triangles whose circumcircle holds a new point,
+    Bowyer-Watson); everywhere else the Delaunay triangles stay as they were.
+
+    ``simp`` (T, 3) indexes the candidates, ``nbr`` (T, 3) the triangle across each edge,
+    ``tri`` is the scipy ``Delaunay`` of the last full triangulation (None after an update).
+    """
+
+    #: cavity (its vertices and the new points) above this fraction of the ground points: a
+    #: full triangulation is as cheap
+    MAX_CAVITY = 0.25
+
+    def __init__(self, xy: np.ndarray, gi: np.ndarray):
+        self.xy = xy
+        self.tri = common.delaunay(xy[gi])
+        self.simp = gi[self.tri.simplices]
+        self.nbr = self.tri.neighbors.astype(np.int64)
+
+    def cavity(self, pts: np.ndarray, start: np.ndarray) -> np.ndarray:
+        """(T,) bool: the triangles whose circumcircle holds one of the points ``pts`` (candidate
+        indices), found by a breadth-first search over (point, triangle) pairs from the
+        triangles ``start`` that hold them."""
+        t = self.simp.shape[0]
+        bad = np.zeros(t, dtype=bool)
+        bad[start] = True
+        seen = np.sort(np.arange(pts.size, dtype=np.int64) * t + start)  # pairs found in the cavity
+        fp, ft = np.arange(pts.size), start
+        while fp.size:
+            nb = self.nbr[ft].ravel()
+            pp = np.repeat(fp, 3)
+            key = np.sort(pp[nb >= 0] * t + nb[nb >= 0])
+            key = key[np.r_[True, key[1:] != key[:-1]]] if key.size else key
+            at = np.minimum(np.searchsorted(seen, key), seen.size - 1)
+            key = key[seen[at] != key]
+            fp, ft = key // t, key % t
+            inside = _in_circle(self.xy, self.simp[ft], self.xy[pts[fp]])
+            fp, ft = fp[inside], ft[inside]
+            bad[ft] = True
+            seen = np.sort(np.concatenate([seen, key[inside]]))
+        return bad
+
+    def walk(self, q: np.ndarray, start: np.ndarray, max_steps: int = 10000) -> np.ndarray:
+        """Triangle (n,) of each point ``q`` (n, 2) by a visibility walk from the triangles
+        ``start``, -1 outside the hull; -2 where the walk did not end (degenerate input)."""
+        t = np.asarray(start, dtype=np.int64).copy()
+        act = np.flatnonzero(t >= 0)
+        for _ in range(max_steps):
+            if act.size == 0:
+                return t
+            v = self.xy[self.simp[t[act]]]
+            sgn = np.sign(_orient(v[:, 0], v[:, 1], v[:, 2]))[:, None]
+            qa = q[act]
+            o = np.column_stack([_orient(v[:, 1], v[:, 2], qa), _orient(v[:, 2], v[:, 0], qa),
+                                 _orient(v[:, 0], v[:, 1], qa)]) * sgn
+            j = np.argmin(o, axis=1)
+            out = o[np.arange(act.size), j] < 0
+            t[act[out]] = self.nbr[t[act[out]], j[out]]
+            act = act[out & (t[act] >= 0)]
+        t[act] = -2
+        return t
+
+    def insert(self, new: np.ndarray, start: np.ndarray, rest: np.ndarray, s_rest: np.ndarray) -> np.ndarray | None:
+        """Add the candidates ``new``, inside the TIN in the triangles ``start``, by
+        triangulating their cavity again; return the triangles (-1 outside) of the candidates
+        ``rest`` that were in the triangles ``s_rest``, or None where a full triangulation is
+        needed (a large cavity, or one whose new triangles are not the Delaunay ones: a new
+        point on the hull, degenerate input)."""
+        from scipy.spatial import QhullError
+
+        bad = self.cavity(new, start)
+        bt = np.flatnonzero(bad)
+        verts = np.unique(np.concatenate([self.simp[bt].ravel(), new]))
+        if verts.size > self.MAX_CAVITY * self.simp.shape[0] / 2:  # T ~ 2 n triangles
+            return None
+        try:
+            sub = common.delaunay(self.xy[verts])
+        except QhullError:
+            return None
+        # the Delaunay triangles of the cavity are those of its points' triangulation that
+        # touch a new point; n interior points add 2n triangles
+        sel = np.isin(verts, new)[sub.simplices].any(axis=1)
+        if sel.sum() != bt.size + 2 * new.size:
+            return None
+        keep = ~bad
+        old2new = np.where(keep, np.cumsum(keep) - 1, -1)
+        sub2new = np.where(sel, keep.sum() + np.cumsum(sel) - 1, -1)
+        s = np.where(s_rest >= 0, old2new[s_rest], -1)
+        moved = np.flatnonzero((s_rest >= 0) & (s < 0))
+        sm = common.locate(sub, self.xy[rest[moved]])
+        if (sm < 0).any() or (sub2new[sm] < 0).any():
+            return None
+        s[moved] = sub2new[sm]
+        self.simp = np.concatenate([self.simp[keep], verts[sub.simplices[sel]]])
+        self.nbr = _neighbors(self.simp)
+        self.tri = None
+        return s
+
+    def locate(self, q: np.ndarray, near: np.ndarray) -> np.ndarray:
+        """Triangle (n,) of each point ``q`` (n, 2), -1 outside; ``near`` (n,): a triangle
+        close to each point, where the walk of an updated TIN starts (a walk that does not
+        end, on degenerate input, counts as outside)."""
+        if self.tri is not None:
+            return common.locate(self.tri, q)
+        t = self.walk(q, near)
+        return np.where(t == -2, -1, t)
+
+
 def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> np.ndarray:
     """Ground flags (k,) bool of candidate points (k, 3), metres, in raster order (the point
     location walks from one query to the next, so spatially coherent order is ~100x faster).
 
-    ``seeds`` (k,) bool replaces the lowest points per ``seed_cell`` as the initial TIN.
+    ``seeds`` (k,) bool replaces the lowest points per ``seed_cell`` as the initial TIN. The
+    TIN is triangulated in full while many points join, then updated around the joining
+    points (:class:`_Tin`); the remaining candidates keep their triangle unless it changed.
     """
     from scipy.spatial import QhullError
 
@@ -166,42 +311,26 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
     else:
         ground = np.asarray(seeds, dtype=bool).copy()
     tan_a = np.tan(np.radians(p.max_angle))
+    xy = np.ascontiguousarray(cand[:, :2])
+    tin, add, s_all = None, None, np.full(k, -1, dtype=np.int64)
     for _ in range(int(p.max_iterations)):
         gi = np.flatnonzero(ground)
         oi = np.flatnonzero(~ground)
         if gi.size < 3 or oi.size == 0:
             break
-        try:
-            tri = common.delaunay(cand[gi, :2])
-        except QhullError:  # collinear seeds
-            break
-        s = common.locate(tri, cand[oi, :2])
+        s = None if tin is None else tin.insert(add, s_all[add], oi, s_all[oi])
+        if s is None:
+            try:
+                tin = _Tin(xy, gi)
+            except QhullError:  # collinear seeds
+                break
+            s = common.locate(tin.tri, xy[oi])
+        s_all[oi] = s
         inside = s >= 0
         oi, s = oi[inside], s[inside]
         if oi.size == 0:
             break
-        q = cand[oi]
-        v = gi[tri.simplices[s]]
-        a, b, c = cand[v[:, 0]], cand[v[:, 1]], cand[v[:, 2]]
-        e = np.maximum.reduce([np.hypot(*(b - a)[:, :2].T), np.hypot(*(c - b)[:, :2].T), np.hypot(*(a - c)[:, :2].T)])
-        big = e > p.min_edge
-        ok, d, _ = facet_test(q, a, b, c, tan_a, p.max_distance)
-        ok &= big
-        if p.mirror:
-            f = np.flatnonzero(~ok & big & (np.abs(d) < p.mirror_distance))
-            if f.size:
-                verts = np.stack([a[f], b[f], c[f]], axis=1)
-                hd = np.linalg.norm(verts[:, :, :2] - q[f, None, :2], axis=2)
-                jn = np.argmin(hd, axis=1)
-                near = hd[np.arange(f.size), jn] < p.mirror_radius * e[f]
-                f, vn = f[near], verts[near, jn[near]]
-                mq = 2.0 * vn - q[f]
-                sm = common.locate(tri, mq[:, :2])
-                inn = sm >= 0
-                f, mq, sm = f[inn], mq[inn], sm[inn]
-                vm = gi[tri.simplices[sm]]
-                okm, _, _ = facet_test(mq, cand[vm[:, 0]], cand[vm[:, 1]], cand[vm[:, 2]], tan_a, p.max_distance)
-                ok[f[okm]] = True
+        ok, d = _iteration_test(cand, tin, oi, s, p, tan_a)
         if not ok.any():
             break
         oi, s, d = oi[ok], s[ok], d[ok]
@@ -216,6 +345,36 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
         if add.size < p.min_added * k:
             break
     return ground
+
+
+def _iteration_test(cand: np.ndarray, tin: _Tin, oi: np.ndarray, s: np.ndarray, p: PTDParams,
+                    tan_a: float) -> tuple[np.ndarray, np.ndarray]:
+    """Which candidates ``oi``, in the triangles ``s`` of ``tin``, pass an iteration's test
+    (:func:`facet_test` on facets longer than ``min_edge``, or on the facet across the nearest
+    vertex by mirroring), and their signed distances to their facet's plane."""
+    q = cand[oi]
+    v = tin.simp[s]
+    a, b, c = cand[v[:, 0]], cand[v[:, 1]], cand[v[:, 2]]
+    e = np.maximum.reduce([np.hypot(*(b - a)[:, :2].T), np.hypot(*(c - b)[:, :2].T), np.hypot(*(a - c)[:, :2].T)])
+    big = e > p.min_edge
+    ok, d, _ = facet_test(q, a, b, c, tan_a, p.max_distance)
+    ok &= big
+    if p.mirror:
+        f = np.flatnonzero(~ok & big & (np.abs(d) < p.mirror_distance))
+        if f.size:
+            verts = np.stack([a[f], b[f], c[f]], axis=1)
+            hd = np.linalg.norm(verts[:, :, :2] - q[f, None, :2], axis=2)
+            jn = np.argmin(hd, axis=1)
+            near = hd[np.arange(f.size), jn] < p.mirror_radius * e[f]
+            f, vn = f[near], verts[near, jn[near]]
+            mq = 2.0 * vn - q[f]
+            sm = tin.locate(np.ascontiguousarray(mq[:, :2]), s[f])
+            inn = sm >= 0
+            f, mq, sm = f[inn], mq[inn], sm[inn]
+            vm = tin.simp[sm]
+            okm, _, _ = facet_test(mq, cand[vm[:, 0]], cand[vm[:, 1]], cand[vm[:, 2]], tan_a, p.max_distance)
+            ok[f[okm]] = True
+    return ok, d
 
 
 def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: float,
