@@ -11,6 +11,8 @@ from workstation.mesh.quality import (FScoreParams, closest_on_mesh, fscore, fsc
                                       views_seeing)
 from workstation.photogrammetry.rigs import look_at
 
+from scanline_synth import scan_line_xy  # tests/mesh/ is on the path
+
 ORIGIN = np.array([500_000.0, 4_000_000.0, 100.0])  # map coordinates: the float32 queries must keep mm
 
 
@@ -169,17 +171,11 @@ def test_poisson_support_trim_removes_invented_surface_only():
         PoissonParams(support_trim=-1.0)
 
 
-
 def _scan_lines(gap: float, step: float, size: float = 10.0, hole: float = 3.0):
     """Scan lines across a smooth 10 m square (points ``step`` apart along lines ``gap`` apart,
     at 30° to x), with a ``hole`` m square without data in the middle; its true height."""
     h = lambda x, y: 0.5 * np.sin(x / 3.0) * np.cos(y / 4.0)  # noqa: E731
-    u, v = np.meshgrid(np.arange(-size, 2 * size, step), np.arange(-size, 2 * size, gap))
-    c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
-    x, y = (c * u - s * v).ravel(), (s * u + c * v).ravel()
-    keep = (x >= 0) & (x <= size) & (y >= 0) & (y <= size) & \
-        ((np.abs(x - size / 2) > hole / 2) | (np.abs(y - size / 2) > hole / 2))
-    x, y = x[keep], y[keep]
+    x, y = scan_line_xy(gap, step, 30.0, size, hole)
     gx = np.cos(x / 3.0) * np.cos(y / 4.0) / 6.0
     gy = -np.sin(x / 3.0) * np.sin(y / 4.0) / 8.0
     nrm = np.column_stack([-gx, -gy, np.ones_like(x)])
@@ -214,6 +210,7 @@ def test_poisson_support_trim_keeps_the_surface_between_scan_lines():
     t = ORIGIN + np.column_stack([x, y, h(x, y)])[hole]
     assert np.median(closest_on_mesh(t, closed.vertices, closed.faces)[0]) < 0.05
     assert closest_on_mesh(t, trimmed.vertices, trimmed.faces)[0].min() > 0.3
+
 
 def test_refine_to_cloud_averages_the_noise_of_the_points():
     from workstation.core.cloud import Cloud

@@ -11,6 +11,8 @@ from workstation.core.cloud import Cloud
 from workstation.mesh import NormalParams, estimate_normals
 from workstation.mesh.normals import orient_from_anchors, widen_collinear
 
+from scanline_synth import scan_line_xy  # tests/mesh/ is on the path
+
 ORIGIN = np.array([500_000.0, 4_000_000.0, 100.0])
 
 
@@ -28,11 +30,7 @@ def surface_normal(x, y):
 def scan_lines(gap=0.5, along=0.05, angle_deg=30.0, size=20.0, noise=0.003, seed=0):
     """Lines ``gap`` apart, points ``along`` apart on each, at ``angle_deg`` from x, over a
     size x size square of :func:`surface`, with Gaussian height noise (m)."""
-    u, v = np.meshgrid(np.arange(-size, 2 * size, along), np.arange(-size, 2 * size, gap))
-    c, s = np.cos(np.radians(angle_deg)), np.sin(np.radians(angle_deg))
-    x, y = (c * u - s * v).ravel(), (s * u + c * v).ravel()
-    keep = (x >= 0) & (x <= size) & (y >= 0) & (y <= size)
-    x, y = x[keep], y[keep]
+    x, y = scan_line_xy(gap, along, angle_deg, size)
     return x, y, surface(x, y) + np.random.default_rng(seed).normal(0, noise, x.size)
 
 
@@ -74,13 +72,38 @@ def test_isotropic_neighbourhoods_are_not_widened():
     rng = np.random.default_rng(0)
     g = np.stack(np.meshgrid(np.arange(60.0), np.arange(60.0)), -1).reshape(-1, 2) * 0.1
     g = g + rng.uniform(-0.03, 0.03, g.shape)
-    idx, fit, rows, cols = widen_collinear(np.column_stack([g, surface(g[:, 0], g[:, 1])]), 10)
-    assert idx.size == fit.shape[0] == rows.size == cols.size == 0
+    idx, fit, rows, cols, unresolved = widen_collinear(np.column_stack([g, surface(g[:, 0], g[:, 1])]), 10)
+    assert idx.size == fit.shape[0] == rows.size == cols.size == unresolved.size == 0
     i = np.arange(3000) + 0.5
     phi, th = np.arccos(1 - 2 * i / 3000), np.pi * (1 + 5 ** 0.5) * i
     u = np.column_stack([np.cos(th) * np.sin(phi), np.sin(th) * np.sin(phi), np.cos(phi)])
     _, rec = estimate_normals(Cloud(ORIGIN + 2.0 * u), NormalParams(k=10))
     assert rec.summary["points_widened"] == 0
+
+
+def test_lines_farther_apart_than_k_max_reaches_are_unresolved():
+    """Lines 1 m apart, points 5 cm apart: 20 neighbours reach 0.5 m along their own line and
+    never the next one, so with k_max = 20 all points but a few at the short lines' ends
+    (whose 20 nearest reach a second line) are unresolved; 80 neighbours resolve them all."""
+    x, y, z = scan_lines(gap=1.0, along=0.05, angle_deg=10.0, size=6.0)
+    idx, fit, rows, cols, unresolved = widen_collinear(np.column_stack([x, y, z]), 10, k_max=20)
+    assert unresolved.size > 0.99 * x.size and fit.shape[0] == idx.size
+    assert np.array_equal(np.sort(np.concatenate([idx, unresolved])), np.arange(x.size))
+    assert np.array_equal(np.unique(rows), np.arange(x.size))  # their edges still reach along the line
+    _, fit80, _, _, unresolved80 = widen_collinear(np.column_stack([x, y, z]), 10, k_max=80)
+    assert unresolved80.size == 0 and fit80.shape[0] == x.size
+
+
+def test_the_sampled_pretest_finds_lines_and_skips_surfaces():
+    """With a sample of 200 points the line test still flags every scan-line point; on a
+    jittered grid (no line-shaped neighbourhood) it finds none and the full pass is skipped."""
+    x, y, z = scan_lines(gap=0.5, along=0.05, angle_deg=30.0, size=8.0)
+    idx, _, _, _, unresolved = widen_collinear(np.column_stack([x, y, z]), 10, sample=200)
+    assert idx.size + unresolved.size == x.size > 200
+    g = np.stack(np.meshgrid(np.arange(60.0), np.arange(60.0)), -1).reshape(-1, 2) * 0.1
+    g = g + np.random.default_rng(0).uniform(-0.03, 0.03, g.shape)
+    idx, _, rows, _, unresolved = widen_collinear(np.column_stack([g, surface(g[:, 0], g[:, 1])]), 10, sample=200)
+    assert idx.size == rows.size == unresolved.size == 0
 
 
 def test_widened_normals_take_the_sign_of_the_dense_part_of_the_cloud():

@@ -1,5 +1,5 @@
 """Ray casting and closest-point queries against a triangle mesh with Open3D's
-``t.geometry.RaycastingScene`` (Embree): the one place the project builds such a scene.
+``t.geometry.RaycastingScene`` (Embree): the library's one place that builds such a scene.
 
 The mesh's local coordinates (metres from a local origin, e.g. the scene origin of
 :class:`workstation.lidar.scene.Scene` or the mesh's centre) are converted to float32 here;

@@ -207,9 +207,10 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
             mesh = keep_vertices(mesh, q >= thr)
         spacing, across, reach, n_support = None, None, None, 0
         if params.support_trim > 0 and mesh.n_faces:
-            spacing, across = point_spacing(cloud.xyz), across_spacing(cloud.xyz)
+            tree = centred_tree(cloud.xyz)
+            spacing, across = point_spacing(cloud.xyz), across_spacing(cloud.xyz, tree=tree)
             reach = params.support_trim * max(spacing, 0.5 * across)
-            far = support_distance(mesh.vertices, cloud.xyz, reach) > reach
+            far = support_distance(mesh.vertices, cloud.xyz, reach, tree=tree) > reach
             n_support = int(far.sum())
             mesh = keep_vertices(mesh, ~far)
     rec = StepRecord(
@@ -319,17 +320,25 @@ def _mls_plane_foot(v: np.ndarray, xyz: np.ndarray, tree, k: int, h: float) -> n
     return v - np.einsum("mi,mi->m", v - c, n)[:, None] * n
 
 
-def support_distance(vertices: np.ndarray, xyz: np.ndarray, upper: float = np.inf) -> np.ndarray:
-    """Distance (n,) from each vertex to the nearest point of ``xyz`` (cKDTree); distances
-    beyond ``upper`` come back as ``inf`` (the search stops there, which keeps it fast)."""
+def centred_tree(xyz: np.ndarray):
+    """A cKDTree of ``xyz`` (n, 3) less its mean (float64), the tree that
+    :func:`support_distance` and :func:`across_spacing` search; build it once to share it."""
     from scipy.spatial import cKDTree
 
+    xyz = np.asarray(xyz, np.float64)
+    return cKDTree(xyz - xyz.mean(axis=0))
+
+
+def support_distance(vertices: np.ndarray, xyz: np.ndarray, upper: float = np.inf, tree=None) -> np.ndarray:
+    """Distance (n,) from each vertex to the nearest point of ``xyz`` (cKDTree); distances
+    beyond ``upper`` come back as ``inf`` (the search stops there, which keeps it fast).
+    ``tree``: :func:`centred_tree` of ``xyz``, built here when not given."""
     origin = np.asarray(xyz, np.float64).mean(axis=0)
-    return cKDTree(np.asarray(xyz, np.float64) - origin).query(np.asarray(vertices, np.float64) - origin,
-                                                              distance_upper_bound=float(upper))[0]
+    tree = centred_tree(xyz) if tree is None else tree
+    return tree.query(np.asarray(vertices, np.float64) - origin, distance_upper_bound=float(upper))[0]
 
 
-def across_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0, k_max: int = 512) -> float:
+def across_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0, k_max: int = 512, tree=None) -> float:
     """Median spacing across the lines a cloud's points may lie on, in coordinate units.
 
     For each query point (a seeded random sample of at most ``sample``, as
@@ -343,17 +352,16 @@ def across_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0, k_max: i
     the surface between lines lies farther from every point than the nearest-neighbour
     spacing says. The search takes the 16 nearest points, doubled up to ``k_max`` for the
     points whose nearest ones all lie along their line; past ``k_max`` the farthest of them
-    stands in (a lower bound).
+    stands in (a lower bound). ``tree``: :func:`centred_tree` of ``xyz``, built here when not
+    given.
     """
-    from scipy.spatial import cKDTree
-
     xyz = np.asarray(xyz, dtype=np.float64)
     if xyz.shape[0] < 3:
         raise InvalidInputError(f"{xyz.shape[0]} points: need at least 3 to measure the spacing across lines")
     pts = xyz - xyz.mean(axis=0)
     rng = np.random.default_rng(seed)
     q = pts if len(pts) <= sample else pts[rng.choice(len(pts), sample, replace=False)]
-    tree = cKDTree(pts)
+    tree = centred_tree(xyz) if tree is None else tree
     out = np.full(len(q), np.nan)
     todo, k = np.arange(len(q)), 16
     while todo.size:

@@ -141,7 +141,8 @@ class AerialScene:
         from workstation.interop.open3d_raycast import RaycastScene
 
         V, T, kind = self.mesh()
-        return RaycastScene(V.astype(np.float32) - self._o32(), T), kind
+        # origin subtracted in float64, then cast: float32 steps are 0.5 m at a northing of 5e6
+        return RaycastScene((V - self._o32().astype(np.float64)).astype(np.float32), T), kind
 
     def _o32(self) -> np.ndarray:
         """Origin subtracted before float32 ray casting (Open3D works in float32)."""
