@@ -42,6 +42,27 @@ def test_nearest_region_agrees_with_the_distance_transform():
     assert set(np.unique(got)) == {0, 1, 2, 3}
 
 
+def test_nearest_region_between_two_regions_within_reach():
+    """Two regions 5 cells apart, both within the reach of the cells between them: a cell off
+    the middle takes the nearer region (2 cells against 4; below region 2's end, 2.8 diagonally
+    against 4), as the distance transform says for every cell not equidistant from both."""
+    from scipy import ndimage
+
+    labels = np.zeros((30, 30), np.int64)
+    labels[5:25, 5:10] = 1   # columns 5-9
+    labels[10:20, 15:20] = 2  # columns 15-19: columns 10-14 lie between
+    got = _nearest_label(labels, np.array([12, 12, 21, 21]), np.array([11, 13, 11, 13]), 4.0)
+    assert got.tolist() == [1, 2, 1, 2]
+    rows, cols = np.divmod(np.arange(labels.size), labels.shape[1])
+    d1 = ndimage.distance_transform_edt(labels != 1)
+    d2 = ndimage.distance_transform_edt(labels != 2)
+    sure = (np.abs(d1 - d2) > 1e-9).ravel()
+    dist, (ii, jj) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
+    want = (labels[ii, jj] * (dist <= 4.0)).ravel()
+    full = _nearest_label(labels, rows, cols, 4.0)
+    assert np.array_equal(full[sure], want[sure]) and {1, 2} <= set(full[sure & (cols > 9) & (cols < 15)])
+
+
 @pytest.mark.parametrize("decimals", [None, 2])
 def test_points_direction_equals_the_multipoints(decimals):
     """The line string of the points has the rectangle of their multipoint (random and

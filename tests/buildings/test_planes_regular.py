@@ -143,6 +143,7 @@ def test_small_dormer_face_passes_once_regularised():
     small = int(np.argmin(r.counts))
     on = r.labels == small
     assert tilt_standard_error(pts[on] - r.origin, r.normals[small], r.noise) > 1.0
+    assert r.regular.tolist() == [q == small for q in range(4)]  # the model must regularise it
 
 
 def test_small_face_proposal_keeps_to_the_noise_band():
@@ -161,3 +162,90 @@ def test_small_face_proposal_keeps_to_the_noise_band():
     for tilt, az in b.true_tilt_azimuth():
         d = np.hypot(found[:, 0] - tilt, (found[:, 1] - az + 180) % 360 - 180)
         assert d.min() < (5.0 if tilt < 40 else 0.5), (tilt, az, found)
+
+
+def _flat_and_patch(rng):
+    """A flat 10 x 10 m roof (1000 points) and a 14-point patch of a 30 degree face turned 17
+    degrees off the axes beside it: points, labels (patch -1) and the patch's indices."""
+    flat = np.column_stack([rng.uniform(0.0, 10.0, (1000, 2)), 10.0 + rng.normal(0.0, NOISE, 1000)])
+    s = rng.uniform(0.0, 1.2, (14, 2))
+    a, t = math.radians(17.0), math.radians(30.0)
+    xy = np.array([12.0, 5.0]) + s[:, :1] * [math.sin(a), math.cos(a)] + s[:, 1:] * [math.cos(a), -math.sin(a)]
+    patch = np.column_stack([xy, 11.0 - math.tan(t) * s[:, 0] + rng.normal(0.0, NOISE, 14)])
+    return np.vstack([flat, patch]), np.r_[np.zeros(1000, np.int64), np.full(14, -1)], np.arange(1000, 1014)
+
+
+def test_lone_sloped_face_is_not_regularised_by_its_own_direction():
+    """A flat roof and one small sloped patch: no other plane gives a direction, so the patch is
+    not snapped to its own azimuth (its tilt error would leave out the azimuth's) and its free
+    tilt error, over the 1 degree rule, is what counts: the regularised error is inf."""
+    from workstation.buildings.planes import _regular_tilt_se, pooled_noise
+
+    for seed in range(5):
+        rng = np.random.default_rng(seed)
+        xyz, labels, patch = _flat_and_patch(rng)
+        n0, d0 = fit_plane(xyz[labels == 0])
+        n1, d1 = fit_plane(xyz[patch])
+        sigma = pooled_noise(xyz, labels, n0[None], np.array([d0]))
+        assert tilt_standard_error(xyz[patch], n1, sigma) > 1.0
+        assert _regular_tilt_se(xyz, labels, n0[None], np.array([d0]), patch, n1, d1, sigma, 1.0) == np.inf
+        both = labels.copy()
+        both[patch] = 1
+        n2, d2, se = regularise_planes(xyz, both, np.array([n0, n1]), np.array([d0, d1]), sigma, 1.0)
+        assert np.isnan(se).all() and np.array_equal(n2, np.array([n0, n1]))
+
+
+def test_dominant_direction_needs_two_agreeing_planes():
+    """One plane gives no direction; two agreeing ones give their weighted mean (modulo a quarter
+    turn) and a third 20 degrees off stays out; the direction returned is the mean of the set
+    returned."""
+    from workstation.buildings.planes import dominant_direction
+
+    theta, v, use = dominant_direction(np.array([31.0, 200.0]), np.array([0.5, np.inf]))
+    assert math.isnan(theta) and math.isnan(v) and not use.any()
+    az, var = np.array([31.0, 121.4, 50.0, 300.2]), np.array([0.5, 1.0, 0.3, 2.0])
+    theta, v, use = dominant_direction(az, var)
+    assert use.tolist() == [True, True, False, True]
+    w = 1.0 / var[use]
+    r = (az[use] - 31.0 + 45.0) % 90.0 - 45.0
+    assert theta == pytest.approx(31.0 + np.sum(w * r) / np.sum(w)) and v == pytest.approx(1.0 / np.sum(w))
+
+
+def test_forced_faces_are_regularised_and_empty_planes_warn_nothing():
+    """Faces marked as accepted on their regularised fit take the building's direction and one
+    tilt even where the Bayes factors would leave them free (a dormer 20 degrees off the quarter
+    turn); planes of no or one point raise no floating-point warning."""
+    import warnings
+
+    rng = np.random.default_rng(5)
+    xyz, labels, truth = _building(rng, dormer_turn=70.0)
+    normals, offsets = _free_planes(xyz, labels)
+    force = np.array([False, False, True, True])
+    n2, _, s = regularise_planes(xyz, labels, normals, offsets, NOISE * 0.8, 1.0, force)
+    assert np.isfinite(s).all()
+    az = azimuth_of(n2)
+    assert np.ptp((az - az[0] + 45) % 90 - 45) < 1e-9 and n2[2, 2] == pytest.approx(n2[3, 2], abs=1e-12)
+    extra = np.vstack([normals, [[0.0, 0.0, 1.0], [0.6, 0.0, 0.8]]])
+    lab = labels.copy()
+    lab[0] = 5  # plane 4 has no point, plane 5 one
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        regularise_planes(xyz, lab, extra, np.r_[offsets, 0.0, 0.0], NOISE * 0.8, 1.0)
+
+
+def test_model_regularises_the_faces_segmentation_accepted_as_regular():
+    """models.regular_planes leaves a dormer 20 degrees off the quarter turn free by its Bayes
+    factors, but regularises it (the building's direction, one tilt) when segmentation marked
+    its faces as accepted on their regularised fit (RoofPlanes.regular)."""
+    from workstation.buildings.models import regular_planes
+
+    rng = np.random.default_rng(5)
+    xyz, labels, _ = _building(rng, dormer_turn=70.0)
+    normals, offsets = _free_planes(xyz, labels)
+    points = np.array([xyz[labels == q].mean(axis=0) for q in range(4)])
+    free, _ = regular_planes(xyz, labels, normals, points, 0.33)
+    forced, fp = regular_planes(xyz, labels, normals, points, 0.33, np.array([False, False, True, True]))
+    assert np.allclose(free[2:], normals[2:])
+    az = azimuth_of(forced)
+    assert np.ptp((az - az[0] + 45) % 90 - 45) < 1e-9 and forced[2, 2] == pytest.approx(forced[3, 2], abs=1e-12)
+    assert np.allclose(np.einsum("ij,ij->i", forced, fp - points), 0.0, atol=1e-9)  # through the centroids

@@ -599,17 +599,15 @@ class Component:
     ----------
     label : int
         Its label in the district mask (1-based, in :func:`scipy.ndimage.label` order).
-    inside : (r, c) bool
-        The region with its holes filled, on its bounding box widened by two cells.
     field : (r, c) float64
-        The normalised density over the same cells, raised to just above 0.5 inside the
-        region and zero beyond one cell outside it, so its level-0.5 line is the region's edge.
+        The normalised density over the region's bounding box widened by two cells, raised to
+        just above 0.5 inside the region (its holes filled) and zero beyond one cell outside it,
+        so its level-0.5 line is the region's edge.
     origin : (2,) float64
         Lower-left corner of the cut (m).
     """
 
     label: int
-    inside: np.ndarray
     field: np.ndarray
     origin: np.ndarray
 
@@ -636,6 +634,13 @@ class District:
     components: list
     point_label: np.ndarray
     n_labels: int
+
+    def point_component(self) -> np.ndarray:
+        """(n,) int64: index into ``components`` of every point's region, -1 for none (no region
+        or one under ``min_area``)."""
+        remap = np.full(self.n_labels + 1, -1, np.int64)
+        remap[[c.label for c in self.components]] = np.arange(len(self.components))
+        return remap[self.point_label]
 
 
 def _nearest_label(labels: np.ndarray, rows: np.ndarray, cols: np.ndarray, reach: float,
@@ -685,7 +690,7 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
             continue
         inside = fill_holes(sub)
         rim = np.where(ndimage.binary_dilation(sub), field[sl], 0.0)
-        comps.append(Component(k + 1, inside, np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim),
+        comps.append(Component(k + 1, np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim),
                                origin + np.array([sl[1].start, sl[0].start]) * cell))
     return District(spacing, cell, ref, comps, point_label, len(slices))
 
@@ -725,6 +730,4 @@ def extract_footprints(xy: np.ndarray, params: FootprintParams = FootprintParams
            for c in d.components]
     if not out:
         raise no_footprint_error(params, len(xy))
-    remap = np.full(d.n_labels + 1, -1, np.int64)
-    remap[[c.label for c in d.components]] = np.arange(len(out))
-    return out, remap[d.point_label]
+    return out, d.point_component()

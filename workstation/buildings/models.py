@@ -33,13 +33,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .planes import FLAT_TILT_DEG, MAX_ROOF_TILT_DEG
 from .roof_faces import lower_envelope, roof_faces
 
 #: Coordinate grid (m) to which part polygons are snapped, so that overlays leave no slivers.
 GRID = 1e-5
-
-#: Tilt (degrees) below which a roof plane counts as flat (drainage slopes are a few degrees).
-FLAT_TILT_DEG = 5.0
 
 
 @dataclass(frozen=True)
@@ -51,7 +49,9 @@ class ModelParams:
     lod1_percentile : float
         Percentile of the roof point heights used as the LoD1.2 block height (%).
     max_roof_tilt_deg : float
-        Planes steeper than this are walls and not used for the roof (degrees).
+        Planes steeper than this are walls and not used for the roof (degrees; default
+        :data:`~workstation.buildings.planes.MAX_ROOF_TILT_DEG`). Flat below
+        :data:`~workstation.buildings.planes.FLAT_TILT_DEG`.
     min_plane_share : float
         Smallest plane of the main roof, as a share of the building's roof-plane points (0-1).
         Smaller planes are modelled only where they form parts of their own standing on the
@@ -62,7 +62,7 @@ class ModelParams:
     """
 
     lod1_percentile: float = 70.0
-    max_roof_tilt_deg: float = 70.0
+    max_roof_tilt_deg: float = MAX_ROOF_TILT_DEG
     min_plane_share: float = 0.05
     cell: float | None = None
 
@@ -742,18 +742,20 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     return local, np.array(out_n), np.array(out_p)
 
 
-def regular_planes(xyz, local, normals, points, spacing):
+def regular_planes(xyz, local, normals, points, spacing, force=None):
     """The building's planes (``normals`` (p, 3), ``points`` (p, 3)) of its points ``xyz`` labelled
     ``local``, refitted by :func:`~workstation.buildings.planes.regularise_planes` (azimuths along
     the building's directions, one tilt for the two sides of a ridge, each where the points do not
     reject it) at the noise pooled over the planes, with touching meaning within three point
-    spacings (the neighbour reach of region growing). Returns (normals, points)."""
+    spacings (the neighbour reach of region growing). Planes marked in ``force`` (p,) bool (small
+    faces that segmentation accepted as regularised, :attr:`~workstation.buildings.planes.RoofPlanes.regular`)
+    are regularised whatever the Bayes factors at this noise say. Returns (normals, points)."""
     from .planes import pooled_noise, regularise_planes
 
     o = xyz.min(axis=0)
     loc = xyz - o
     d = -np.einsum("ij,ij->i", normals, points - o)
-    n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing)
+    n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing, force)
     q = points - o
     return n, q - (np.einsum("ij,ij->i", n, q) + d)[:, None] * n + o
 
@@ -806,8 +808,14 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):
         local = np.full(len(xyz), -1, np.int64)
         m = np.isin(labels, keep)
         local[m] = np.searchsorted(keep, labels[m])
+        before = local
         local, normals, points = merge_building_planes(xyz, local, planes.normals[keep], planes.threshold, planes.angle_deg)
-        normals, points = regular_planes(xyz, local, normals, points, planes.spacing)
+        force = None
+        if planes.regular is not None and planes.regular[keep].any():  # a merged plane all of such faces
+            on = before >= 0
+            mixed = np.bincount(local[on], ~planes.regular[keep][before[on]], minlength=len(normals))
+            force = mixed == 0
+        normals, points = regular_planes(xyz, local, normals, points, planes.spacing, force)
     else:  # no plane: a flat roof at the median height
         c = fp.centroid
         normals = np.array([[0.0, 0.0, 1.0]])

@@ -65,7 +65,13 @@ class BuildingsResult:
     footprint_source : str
         ``points`` or ``given``.
     timings : dict
-        Seconds per step.
+        Seconds per step. Wall time of the stage: ``cluster_s`` (starting or reaching the Dask
+        cluster, only with one), ``district_s`` (point spacing, district density raster and its
+        regions), ``solar_s``, ``solar_map_s`` and ``total_s``. Summed over the buildings, each
+        timed where it ran (on a cluster the workers' time, not the wall time, which is less
+        with several workers): ``outlines_sum_s`` (each building's footprint traced from its
+        region), ``planes_sum_s`` (roof planes), ``models_sum_s`` (LoD1.2/LoD2.2 models), and
+        ``buildings_cpu_s``, the CPU seconds of all three.
     spacing : float
         Nominal point spacing of the building points (m).
     coverage : dict
@@ -184,11 +190,16 @@ def _buildings(xyz, cls, bxyz, params, footprints, client, threads, t):
     if dtm is None:
         log.warning("no ground points (class %d): walls reach down to each building's lowest point",
                     params.ground_class)
-    order = np.argsort(owner, kind="stable")
-    bounds = np.searchsorted(owner[order], np.arange(len(shapes) + 1))
-    items = [(s, bxyz[order[bounds[i]:bounds[i + 1]]]) for i, s in enumerate(shapes)]
+    order, starts = points_by_label(owner + 1, len(shapes))  # building i: label i + 1
+
+    def items(a: int, b: int) -> list:  # buildings a to b - 1 with their points, copied when asked for
+        return [(shapes[i], bxyz[order[starts[i + 1]:starts[i + 2]]]) for i in range(a, min(b, len(shapes)))]
+
     setup = UnitSetup(params, spacing, ref, cell)
-    done = build_unit(items, setup, dtm) if client is None else _on_dask(client, items, setup, dtm)
+    if client is None:  # one building's points copied at a time
+        done = [r for i in range(len(shapes)) for r in build_unit(items(i, i + 1), setup, dtm)]
+    else:
+        done = _on_dask(client, items, len(shapes), setup, dtm)
     return _collect(done, t), spacing, coverage
 
 
@@ -204,9 +215,7 @@ def _district(bxyz, footprints, fparams, threads):
     d = district_components(bxyz[:, :2], fparams, threads)
     if not d.components:
         raise no_footprint_error(fparams, len(bxyz))
-    remap = np.full(d.n_labels + 1, -1, np.int64)
-    remap[[c.label for c in d.components]] = np.arange(len(d.components))
-    return d.components, remap[d.point_label], d.ref, d.cell
+    return d.components, d.point_component(), d.ref, d.cell
 
 
 @dataclass(frozen=True)
@@ -251,12 +260,12 @@ def build_unit(items: list, setup: UnitSetup, dtm) -> list:
 
 def _collect(done: list, t: dict) -> list:
     """The models of :func:`build_unit`'s results in building order, numbered from 0; the
-    seconds per step summed over the buildings into ``t`` (over all workers: work, not wall
-    time), and their CPU seconds (``buildings_cpu_s``)."""
+    seconds per step summed over the buildings into ``t`` (``*_sum_s``, over all workers: work,
+    not wall time), and their CPU seconds (``buildings_cpu_s``; see :class:`BuildingsResult`)."""
     models = [replace(m, id=i) for i, m in enumerate(r[1] for r in done if r[1] is not None)]
     if not models:
         raise StageError("buildings", "no footprint holds building points", "check the footprints' CRS and extent")
-    for k, key in ((2, "footprints_s"), (3, "planes_s"), (4, "models_s"), (5, "buildings_cpu_s")):
+    for k, key in ((2, "outlines_sum_s"), (3, "planes_sum_s"), (4, "models_sum_s"), (5, "buildings_cpu_s")):
         t[key] = float(sum(r[k] for r in done))
     return models
 
@@ -271,16 +280,17 @@ def _warm_up() -> None:
     import shapely  # noqa: F401
 
 
-def _on_dask(client, items: list, setup: UnitSetup, dtm) -> list:
-    """:func:`build_unit` on batches of consecutive buildings on a Dask cluster, at most two
-    batches per worker in flight (a batch's copy is made when a worker is nearly free for it);
-    the results in building order. Batches hold about a quarter of a worker's share (at most 32
-    buildings), so a slow batch does not keep the others waiting at the end."""
+def _on_dask(client, items, n_items: int, setup: UnitSetup, dtm) -> list:
+    """:func:`build_unit` on batches of consecutive buildings of the ``n_items`` that ``items(a, b)``
+    gives on a Dask cluster, at most two batches per worker in flight (a batch's points are
+    copied only when a worker is nearly free for it); the results in building order. Batches
+    hold about a quarter of a worker's share (at most 32 buildings), so a slow batch does not
+    keep the others waiting at the end."""
     from workstation.core.signals import caught_signals
 
     with caught_signals() as latch:
         n = max(1, sum(client.nthreads().values()))
-        size = max(1, min(32, -(-len(items) // (4 * n))))
+        size = max(1, min(32, -(-n_items // (4 * n))))
         dtm_f = client.scatter(dtm, broadcast=True) if dtm is not None else None
         results: dict = {}
         running: dict = {}
@@ -292,10 +302,11 @@ def _on_dask(client, items: list, setup: UnitSetup, dtm) -> list:
                 if len(running) > at_most:
                     latch.sleep(0.02)
 
-        for k, a in enumerate(range(0, len(items), size)):
+        for k, a in enumerate(range(0, n_items, size)):
             collect_done(2 * n - 1)
-            running[client.submit(build_unit, items[a:a + size], setup, dtm_f, pure=False)] = k
+            running[client.submit(build_unit, items(a, a + size), setup, dtm_f, pure=False)] = k
         collect_done(0)
+        latch.check()  # a signal caught while scattering, submitting or collecting the last batches
     return [r for k in sorted(results) for r in results[k]]
 
 

@@ -42,7 +42,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from workstation.core.errors import InvalidInputError
-from workstation.core.pca import grouped_plane_fit, local_pca
+from workstation.core.pca import group_moments, grouped_plane_fit, local_pca
 
 
 @dataclass(frozen=True)
@@ -107,6 +107,11 @@ class RoofPlanes:
         Noise sigma and point spacing used (m).
     angle_deg : float
         Angle tolerance used (degrees).
+    regular : (p,) bool or None
+        Small faces accepted only because their regularised tilt is determined (azimuth along
+        the building's directions, tilt shared across their ridge; :func:`_residual_faces`):
+        the model regularises them whatever its own Bayes factors say (``force`` of
+        :func:`regularise_planes`). None where not recorded (as all False).
     """
 
     labels: np.ndarray
@@ -119,6 +124,7 @@ class RoofPlanes:
     noise: float
     spacing: float
     angle_deg: float = 10.0
+    regular: np.ndarray | None = None
 
     @property
     def tilt_deg(self) -> np.ndarray:
@@ -537,13 +543,14 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
       RSS_1 the squared residuals to the new plane (three parameters) and RSS_0 those to the
       nearest plane among each point's neighbours' planes (all planes where none has one).
 
-    Returns the labels with the new faces numbered after the existing planes."""
+    Returns the labels with the new faces numbered after the existing planes, and (planes,) bool:
+    the faces accepted only as regularised (their free tilt error over the rule)."""
     from scipy.stats import chi2
 
     free = np.flatnonzero(labels < 0)
     sigma = pooled_noise(xyz, labels, normals, offsets)
     if len(free) < 4 or not len(normals) or not np.isfinite(sigma) or sigma <= 0:
-        return labels
+        return labels, np.zeros(len(normals), bool)
     pos = np.full(len(xyz), -1, np.int64)
     pos[free] = np.arange(len(free))
     a, b = np.repeat(np.arange(len(free)), idx.shape[1] - 1), pos[idx[free, 1:]].ravel()
@@ -554,7 +561,7 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
     rss0 = np.where(np.isfinite(near), near, d_all.min(axis=1)) ** 2
     rng = np.random.default_rng(params.seed)
     out, nxt = labels.copy(), int(labels.max()) + 1
-    known_n, known_d = normals, offsets
+    known_n, known_d, promised = normals, offsets, []
     order = np.argsort(comp, kind="stable")
     start = np.searchsorted(comp[order], np.arange(comp.max() + 2))
     for c in np.flatnonzero(np.diff(start) >= 4):
@@ -575,47 +582,53 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
             pts = xyz[free[members[inl]]]
             rss1 = float(np.sum((pts @ nrm + d) ** 2))
             gain = (float(rss0[members[inl]].sum()) - rss1) / sigma ** 2
+            loose = tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
             if (gain <= 3.0 * math.log(m) or chi2.sf(rss1 / sigma ** 2, m - 3) < PLANAR_LEVEL
-                    or (tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
-                        and _regular_tilt_se(xyz, out, known_n, known_d, free[members[inl]], nrm, d, sigma,
-                                             3.0 * spacing) > MAX_TILT_SE_DEG)
+                    or (loose and _regular_tilt_se(xyz, out, known_n, known_d, free[members[inl]], nrm, d, sigma,
+                                                   3.0 * spacing) > MAX_TILT_SE_DEG)
                     or not _surface(xyz, pts, nrm, d, eps)):
                 break
             out[free[members[inl]]] = nxt
+            promised.append(loose)
             known_n, known_d = np.vstack([known_n, nrm]), np.r_[known_d, d]
             nxt += 1
             members = members[~inl]
-    return out
+    return out, np.r_[np.zeros(len(normals), bool), np.array(promised, bool)]
 
+
+#: Tilt (degrees) below which a roof plane counts as flat (drainage slopes are a few degrees):
+#: the models' flat roofs (:mod:`workstation.buildings.models`) and the tilt from which a
+#: plane's azimuth is regularised (below it a face has no direction worth a constraint).
+FLAT_TILT_DEG = 5.0
+REGULAR_MIN_TILT_DEG = FLAT_TILT_DEG
+
+#: Steepest roof plane (degrees; the default of ``models.ModelParams.max_roof_tilt_deg``, steeper
+#: planes are walls).
+MAX_ROOF_TILT_DEG = 70.0
 
 #: Range (degrees) of a free plane's azimuth modulo a quarter turn, and of a free roof plane's
-#: tilt (the steepest roof plane, ``models.ModelParams.max_roof_tilt_deg``): the widths of the
-#: uniform priors of the free parameters in the Bayes factors of :func:`regularise_planes`.
+#: tilt (up to :data:`MAX_ROOF_TILT_DEG`): the widths of the uniform priors of the free
+#: parameters in the Bayes factors of :func:`regularise_planes`.
 AZIMUTH_RANGE_DEG = 90.0
-TILT_RANGE_DEG = 70.0
-
-#: Tilt (degrees) from which a plane's azimuth is regularised (as ``models.FLAT_TILT_DEG``: below
-#: it a roof face counts as flat and has no direction worth a constraint).
-REGULAR_MIN_TILT_DEG = 5.0
+TILT_RANGE_DEG = MAX_ROOF_TILT_DEG
 
 
 def plane_moments(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray):
     """Centroids (p, 3), unit downslope in-plane directions e1 (p, 3), level in-plane directions
-    e2 (p, 3) and second moments M (p, 2, 2) = sum of [p1 p2]^T [p1 p2] over each plane's points,
-    p1 and p2 their centred coordinates along e1 and e2 (a level plane takes e1 along x)."""
+    e2 (p, 3), second moments M (p, 2, 2) = sum of [p1 p2]^T [p1 p2] over each plane's points,
+    p1 and p2 their centred coordinates along e1 and e2 (a level plane takes e1 along x), and the
+    scatter matrices S (p, 3, 3), the sums of the centred coordinates' outer products
+    (:func:`workstation.core.pca.group_moments` times the counts): M = E^T S E with E = [e1 e2]."""
     p = len(normals)
     on = labels >= 0
-    q = labels[on]
-    cnt = np.maximum(np.bincount(q, minlength=p), 1).astype(float)
-    cen = np.column_stack([np.bincount(q, xyz[on, k], minlength=p) for k in range(3)]) / cnt[:, None]
+    cnt, cen, cov = group_moments(xyz[on], labels[on], p)
+    s = cov * cnt[:, None, None]
     h = np.hypot(normals[:, 0], normals[:, 1])
     d = np.where(h[:, None] > 1e-12, normals[:, :2] / np.maximum(h, 1e-300)[:, None], [1.0, 0.0])
     e1 = np.column_stack([d * normals[:, 2:3], -h])  # (cos t d, -sin t): along the plane, downhill
     e2 = np.cross(normals, e1)
-    c = xyz[on] - cen[q]
-    p1, p2 = np.einsum("ij,ij->i", c, e1[q]), np.einsum("ij,ij->i", c, e2[q])
-    m = np.stack([np.bincount(q, a * b, minlength=p) for a, b in ((p1, p1), (p1, p2), (p2, p2))], axis=1)
-    return cen, e1, e2, m[:, [0, 1, 1, 2]].reshape(p, 2, 2)
+    e = np.stack([e1, e2], axis=2)  # (p, 3, 2)
+    return cen, e1, e2, np.einsum("pia,pij,pjb->pab", e, s, e), s
 
 
 def log_bayes_equal(x: np.ndarray, var: np.ndarray, group: np.ndarray, width: float) -> np.ndarray:
@@ -639,52 +652,73 @@ def log_bayes_equal(x: np.ndarray, var: np.ndarray, group: np.ndarray, width: fl
             - 0.5 * chi)
 
 
-def _along(az: np.ndarray, var: np.ndarray, theta: float, v0: float) -> np.ndarray:
+def _along(az: np.ndarray, var: np.ndarray, theta, v0) -> np.ndarray:
     """Whether each azimuth (degrees, variance ``var``) is better explained as the direction
-    ``theta`` (variance ``v0``) or a quarter turn of it than as free over a quarter turn: the Bayes
-    factor of :func:`log_bayes_equal` for the two values."""
+    ``theta`` (variance ``v0``; scalars or one per azimuth) or a quarter turn of it than as free
+    over a quarter turn: the Bayes factor of :func:`log_bayes_equal` for the two values."""
     tot = var + v0
     r = (az - theta + 45.0) % 90.0 - 45.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.isfinite(var) & (math.log(AZIMUTH_RANGE_DEG) - 0.5 * np.log(2 * math.pi * tot) - 0.5 * r * r / tot > 0)
+        return np.isfinite(tot) & (math.log(AZIMUTH_RANGE_DEG) - 0.5 * np.log(2 * math.pi * tot) - 0.5 * r * r / tot > 0)
+
+
+def _agreeing(az: np.ndarray, w: np.ndarray, var: np.ndarray, use: np.ndarray, ref: float) -> np.ndarray:
+    """The planes whose azimuth agrees (:func:`_along`) with the weighted mean direction of the
+    *other* planes of ``use`` (weights ``w`` = 1 / ``var``): for a member i the leave-one-out mean
+    ref + (sum(w r) - w_i r_i) / (W - w_i), of variance 1 / (W - w_i), with r the azimuths'
+    offsets from ``ref`` within a quarter turn and W = sum(w) over ``use``; for a non-member the
+    mean of all of ``use``. A plane thus never agrees with a direction taken from itself alone."""
+    r = (az - ref + 45.0) % 90.0 - 45.0
+    wu = np.where(use, w, 0.0)
+    others = ~np.eye(len(az), dtype=bool)
+    sw = others @ wu  # W - w_i for members, W for the rest (exact: no subtraction)
+    swr = others @ (wu * r)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        theta, v = ref + swr / sw, 1.0 / sw
+    return (sw > 0) & _along(az, var, theta, v)
 
 
 def dominant_direction(az: np.ndarray, var: np.ndarray):
     """The building's dominant direction (degrees, 0-90) from plane azimuths ``az`` (degrees) with
     variances ``var`` (degrees^2, inf for none): the inverse-variance weighted mean of the azimuths
     modulo 90 degrees (a rectilinear building's faces look along one direction and its quarter
-    turns) over the planes that agree with it (:func:`_along`). Starts from the best-determined
-    plane and alternates mean and test until the set is stable. Returns (direction, its variance,
-    agreeing (p,) bool); NaN and none without a finite var."""
+    turns) over a set of planes each of which agrees with the mean of the others
+    (:func:`_agreeing`), so at least two planes. Each plane seeds a set (itself and the planes
+    agreeing with it), refined by the leave-one-out test until it is stable; the set of the
+    largest total weight wins. Returns (direction, its variance, set (p,) bool), the direction
+    the mean of that set; NaN, NaN and an empty set when no two planes agree."""
     ok = np.isfinite(var)
-    if not ok.any():
+    best, best_w = np.zeros(len(az), bool), 0.0
+    w = np.where(ok, 1.0 / np.where(ok, var, 1.0), 0.0)
+    seen = np.zeros(len(az), bool)
+    for s in np.flatnonzero(ok)[np.argsort(var[ok], kind="stable")]:
+        if seen[s]:  # already in a stable set: it would seed the same one
+            continue
+        use = _along(az, var, az[s], var[s])
+        for _ in range(len(az) + 1):
+            new = _agreeing(az, w, var, use, float(az[s]))
+            if np.array_equal(new, use) or not new.any():
+                use = new
+                break
+            use = new
+        seen |= use
+        if use.sum() >= 2 and w[use].sum() > best_w:
+            best, best_w = use, float(w[use].sum())
+    if best.sum() < 2:
         return float("nan"), float("nan"), np.zeros(len(az), bool)
-    theta, v0 = float(az[ok][np.argmin(var[ok])] % 90.0), float(var[ok].min())
-    use = _along(az, var, theta, v0)
-    for _ in range(len(az) + 1):
-        if not use.any():
-            break
-        w = 1.0 / var[use]
-        r = (az[use] - theta + 45.0) % 90.0 - 45.0
-        theta, v0 = float((theta + np.sum(w * r) / np.sum(w)) % 90.0), float(1.0 / np.sum(w))
-        new = _along(az, var, theta, v0)
-        if np.array_equal(new, use) or not new.any():
-            break
-        use = new
-    return theta, v0, use
+    ref = float(az[best][np.argmax(w[best])])
+    r = (az[best] - ref + 45.0) % 90.0 - 45.0
+    return float((ref + np.sum(w[best] * r) / best_w) % 90.0), 1.0 / best_w, best
 
 
-def _line_scatter(xyz, labels, cen, down) -> np.ndarray:
+def _line_scatter(s: np.ndarray, down: np.ndarray) -> np.ndarray:
     """(p, 2, 2) scatter of each plane's centred points in (w, z), w the horizontal coordinate
-    along its unit horizontal direction ``down`` (p, 2): what a plane containing the level
-    direction across ``down`` is fitted to."""
-    p = len(cen)
-    on = labels >= 0
-    q = labels[on]
-    c = xyz[on] - cen[q]
-    w, z = np.einsum("ij,ij->i", c[:, :2], down[q]), c[:, 2]
-    s = np.stack([np.bincount(q, a * b, minlength=p) for a, b in ((w, w), (w, z), (z, z))], axis=1)
-    return s[:, [0, 1, 1, 2]].reshape(p, 2, 2)
+    along its unit horizontal direction ``down`` (p, 2), from the planes' scatter matrices ``s``
+    (p, 3, 3) of :func:`plane_moments`: what a plane containing the level direction across
+    ``down`` is fitted to."""
+    e = np.zeros((len(down), 3, 2))
+    e[:, :2, 0], e[:, 2, 1] = down, 1.0
+    return np.einsum("pia,pij,pjb->pab", e, s, e)
 
 
 def _line_fits(scatter, down, groups):
@@ -710,7 +744,7 @@ def _touching(xyz: np.ndarray, labels: np.ndarray, pairs: np.ndarray, reach: flo
 
 
 def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, offsets: np.ndarray, sigma: float,
-                      reach: float):
+                      reach: float, force: np.ndarray | None = None):
     """Roof planes of one building refitted under the regularities of buildings (Zhou & Neumann
     2012, "global regularities"; geoflow's orthogonal rules), each imposed where the Bayes factor
     of the constrained against the free plane (:func:`log_bayes_equal`, free parameters uniform
@@ -727,6 +761,11 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
       squared downslope coordinates) agree share one tilt, fitted to the pooled points of both;
       chains of such pairs are pooled when the Bayes factor of the whole chain favours it.
 
+    Planes marked in ``force`` (p,) bool (small faces accepted because they would be regularised,
+    :attr:`RoofPlanes.regular`) take the building's direction and pool their tilt with a touching
+    opposite face without the Bayes factors (with the mean of their own azimuths when no two other
+    planes agree).
+
     ``labels`` (n,) index ``normals`` (p, 3, up) and ``offsets`` (p,) (n . x + d = 0). Returns
     (normals, offsets, tilt standard error (p,) in degrees of the constrained planes, NaN for
     planes left free)."""
@@ -735,7 +774,7 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
     sin_t = np.hypot(normals[:, 0], normals[:, 1])
     if not (sin_t >= math.sin(math.radians(REGULAR_MIN_TILT_DEG))).any() or not np.isfinite(sigma) or sigma <= 0:
         return normals, offsets, se
-    cen, _, _, m = plane_moments(xyz, labels, normals)
+    cen, _, _, m, smat = plane_moments(xyz, labels, normals)
     det = m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] ** 2
     sloped = (np.degrees(np.arcsin(np.minimum(sin_t, 1.0))) >= REGULAR_MIN_TILT_DEG)
     sloped &= (np.bincount(labels[labels >= 0], minlength=p) >= 4) & (det > 1e-12 * (m[:, 0, 0] + m[:, 1, 1]) ** 2)
@@ -743,25 +782,32 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
     var_az[sloped] = np.degrees(sigma) ** 2 * m[sloped, 0, 0] / det[sloped] / sin_t[sloped] ** 2
     az = azimuth_of(normals)
     theta, _, snap = dominant_direction(az, var_az)
+    force = np.zeros(p, bool) if force is None else np.asarray(force, bool) & sloped
+    if not snap.any() and force.any():  # no two other planes agree: the forced planes' own mean
+        w, ref = 1.0 / var_az[force], float(az[force][np.argmin(var_az[force])])
+        theta = float((ref + np.sum(w * ((az[force] - ref + 45.0) % 90.0 - 45.0)) / np.sum(w)) % 90.0)
+    snap |= force & np.isfinite(theta)
     if not snap.any():
         return normals, offsets, se
     k = np.round((az - theta) / 90.0).astype(np.int64) % 4
     a = np.radians(theta + 90.0 * k)
     down = np.column_stack([np.sin(a), np.cos(a)])
-    scatter = _line_scatter(xyz, labels, cen, down)
+    scatter = _line_scatter(smat, down)
     n1, t1, l1 = _line_fits(scatter, down, np.arange(p))
-    t1, vt = np.degrees(t1), np.degrees(sigma) ** 2 / l1
+    t1, vt = np.degrees(t1), np.ones(p)  # planes left free are alone in their group: any variance
+    vt[snap] = np.degrees(sigma) ** 2 / l1[snap]  # sloped, so l1 > 0
     i, j = np.triu_indices(p, 1)
     pair = snap[i] & snap[j] & ((k[i] - k[j]) % 4 == 2)
     i, j = i[pair], j[pair]
     if len(i):
         b = log_bayes_equal(np.r_[t1[i], t1[j]], np.r_[vt[i], vt[j]], np.tile(np.arange(len(i)), 2), TILT_RANGE_DEG)
-        i, j = i[b > 0], j[b > 0]
+        i, j = i[(b > 0) | force[i] | force[j]], j[(b > 0) | force[i] | force[j]]
     if len(i):
         touch = _touching(xyz, labels, np.column_stack([i, j]), reach)
         i, j = i[touch], j[touch]
     comp = small_components(p, i, j)
     good = log_bayes_equal(t1, vt, comp, TILT_RANGE_DEG) >= 0  # a single plane: ln B = 0
+    good |= np.bincount(comp, force, minlength=len(good)) > 0
     first = np.full(len(good), p)
     np.minimum.at(first, comp, np.arange(p))
     groups = np.where(good[comp], first[comp], np.arange(p))
@@ -809,10 +855,15 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
     # pieces of one plane split by a gap of unassigned points touch only now
     labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
     labels, pn, pd, rmse, counts = _refit(loc, labels, params.min_points)
-    small = _residual_faces(loc, labels, pn, pd, idx, eps, params, spacing)
+    small, promised = _residual_faces(loc, labels, pn, pd, idx, eps, params, spacing)
+    regular = np.zeros(len(pn), bool)
     if small.max(initial=-1) > labels.max(initial=-1):  # faces accepted by test, not by count
         labels, pn, pd, _, _ = _refit(loc, small, 3)
         labels = _assign_leftovers(loc, labels, pn, pd, idx, eps)
         labels = _merge_coplanar(loc, labels, pn, pd, idx, eps, params.angle_deg)
         labels, pn, pd, rmse, counts = _refit(loc, labels, 3)
-    return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg)
+        # a final plane is such a face when most of its points come from one
+        on = (labels >= 0) & (small >= 0)
+        votes = np.bincount(labels[on], promised[small[on]], minlength=len(pn))
+        regular = votes > 0.5 * np.maximum(counts, 1)
+    return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg, regular)

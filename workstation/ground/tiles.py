@@ -175,6 +175,7 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
             collect_done(workers - 1)
             running[client.submit(_filter_tile, *task(core, sel), pure=False)] = core
         collect_done(0)
+        latch.check()  # a signal caught while the last tiles were submitted or collected
 
 
 def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TileParams()) -> Cloud:
