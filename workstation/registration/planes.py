@@ -40,6 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from workstation.core.errors import StageError
 from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
@@ -213,7 +214,9 @@ def plane_registration(src: Prepared, tgt: Prepared, params=None) -> Registratio
     ``params`` may be a :class:`PlaneCoarseParams`; anything else (the coarse stage's
     :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults.
 
-    ``meta["hypotheses"]`` holds the verified poses, best first."""
+    ``meta["hypotheses"]`` holds the verified poses, best first. Raises
+    :class:`~workstation.core.errors.StageError` when no plane pair gives a pose (a cloud with
+    no plane, or no slice of the two clouds at matching heights)."""
     from .icp import ICPParams, refine
     from .register import _distinct_pose, consistency
 
@@ -222,8 +225,8 @@ def plane_registration(src: Prepared, tgt: Prepared, params=None) -> Registratio
     scores, Ts, ps, pt = plane_hypotheses(src, tgt, params)
     meta = {"planes_source": int(len(ps.count)), "planes_target": int(len(pt.count)), "plane_poses": len(Ts)}
     if not len(Ts):
-        return RegistrationResult(transform=np.eye(4), scale=1.0, fitness=0.0, inlier_rmse=float("nan"),
-                                  converged=True, correspondences=0, meta={"method": "planes", **meta})
+        raise StageError("register", f"no common planes to align ({len(ps.count)} planes found in the source, "
+                         f"{len(pt.count)} in the target)", "try --method auto")
     picked = []
     for s, T in zip(scores, Ts):
         if all(_distinct_pose(T, k[1], v) for k in picked):
@@ -307,8 +310,9 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
     FFT cross-correlation of the two clouds' occupancy images in height slices along the
     normal, high-passed (:func:`_edge_filter`; cell and slice ``2 * voxel``; slices holding 10
     points of each cloud). The turn does not change the heights, so each turn's source
-    spectra serve every offset pair (a shift of the slices). Returns ``(correlation, T)``
-    pairs."""
+    spectra serve every offset pair (a shift of the slices). The source image is centred on
+    the source's own centroid, so its size is that of the source, wherever its frame lies.
+    Returns ``(correlation, T)`` pairs."""
     from scipy.fft import irfft2, next_fast_len, rfft2
 
     cell = 2.0 * voxel
@@ -331,10 +335,12 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
     pairs = [(d, remap[i_s], i_t) for d, i_s, i_t in pairs]
     lo_t = ys.min(axis=0)
     nt = np.ceil((ys.max(axis=0) - lo_t) / cell).astype(int) + 1
+    cu = us.mean(axis=0)  # the source image is centred on its own centroid, wherever its frame lies
+    us = us - cu
     rs = float(np.sqrt((us**2).sum(axis=1).max()))
     ns = int(np.ceil(2 * rs / cell)) + 1
-    P = (next_fast_len(int(nt[0] + ns), real=True), next_fast_len(int(nt[1] + ns), real=True))
-    FT = rfft2(_height_images(ys, ct, vt.size, lo_t, nt, cell), P) * _edge_filter(P)
+    P = np.array([next_fast_len(int(nt[0] + ns), real=True), next_fast_len(int(nt[1] + ns), real=True)])
+    FT = rfft2(_height_images(ys, ct, vt.size, lo_t, nt, cell), tuple(P)) * _edge_filter(tuple(P))
     lo_s = -np.array([rs, rs])
     diff = np.subtract.outer(np.asarray(db), np.asarray(da)).ravel()
     # offset pairs in one slice shift share its correlation; the pose lifts by their mean offset
@@ -342,16 +348,30 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
     out = []
     for th in np.radians(np.arange(0.0, 360.0, step_deg)):
         c, s = np.cos(th), np.sin(th)
-        FS = np.conj(rfft2(_height_images(us @ np.array([[c, s], [-s, c]]), cs, used.size, lo_s, (ns, ns), cell), P))
+        M = np.array([[c, s], [-s, c]])  # the turn, on row vectors
+        FS = np.conj(rfft2(_height_images(us @ M, cs, used.size, lo_s, (ns, ns), cell), tuple(P)))
         R = (E.T @ np.array([[c, -s], [s, c]]) @ E + np.outer(b, b)) @ R0  # the turn about b, after R0
+        base = lo_t - lo_s - cu @ M  # the shift at lag 0, with the source's centroid added back
         for d, i_s, i_t in pairs:
-            corr = irfft2((FT[i_t] * FS[i_s]).sum(axis=0), P)
-            for _ in range(peaks):
-                k = np.array(np.unravel_index(np.argmax(corr), corr.shape))
-                shift = lo_t - lo_s + np.where(k > np.array(P) // 2, k - np.array(P), k) * cell
-                out.append((float(corr[k[0], k[1]]), make_transform(R, lift[d] * b + shift @ E)))
-                corr[max(k[0] - 1, 0):k[0] + 2, max(k[1] - 1, 0):k[1] + 2] = -np.inf
+            val, k = _top_peaks(irfft2((FT[i_t] * FS[i_s]).sum(axis=0), tuple(P)), peaks)
+            # lags run from -(ns - 1) to nt - 1 and P >= nt + ns: indices from nt up are negative lags
+            shift = base + np.where(k >= nt, k - P, k) * cell
+            out += [(float(c_), make_transform(R, lift[d] * b + t @ E)) for c_, t in zip(val, shift)]
     return out
+
+
+def _top_peaks(corr: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The ``n`` highest peaks of a circular cross-correlation ``corr`` (2-D, overwritten):
+    values (n,) and indices (n, 2), each the maximum left after masking the 3 x 3
+    neighbourhoods of those before it; the neighbourhoods wrap around the edges, as the
+    lags do (index 0 neighbours index -1)."""
+    val, idx = np.empty(n), np.empty((n, 2), dtype=np.int64)
+    near = np.arange(-1, 2)
+    for m in range(n):
+        i, j = idx[m] = np.unravel_index(np.argmax(corr), corr.shape)
+        val[m] = corr[i, j]
+        corr[np.ix_((i + near) % corr.shape[0], (j + near) % corr.shape[1])] = -np.inf
+    return val, idx
 
 
 def _slices(h: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
