@@ -467,3 +467,87 @@ def test_faces_far_below_a_pixel_keep_their_weight(rig):
     held = views >= 0
     assert held.any() and (weights[held] > 0).all()
     assert (weights[full] < 1 / 16).any()  # faces well under a pixel
+
+
+def _frontal_wall(n_x: int = 41, n_z: int = 31):
+    """A 8 x 6 m wall of n_x x n_z vertices 10 m in front of one 200 x 150 px camera looking at
+    it frontally: (mesh, reconstruction)."""
+    from workstation.photogrammetry.rigs import look_at
+
+    x, z = np.meshgrid(np.linspace(-4, 4, n_x), np.linspace(-3, 3, n_z), indexing="xy")
+    V = np.column_stack([x.ravel(), np.full(x.size, 10.0), z.ravel()])
+    i = (np.arange(n_z - 1)[:, None] * n_x + np.arange(n_x - 1)[None, :]).ravel()
+    F = np.concatenate([np.column_stack([i, i + 1, i + n_x + 1]), np.column_stack([i, i + n_x + 1, i + n_x])])
+    rec = Reconstruction({1: Camera(200, 150, 190.0, 185.0, 100.0, 75.0)},
+                         {1: Image("a.png", 1, look_at(np.zeros(3), np.array([0.0, 10.0, 0.0])))})
+    return Mesh(V, F), rec
+
+
+def test_occlusion_mask_counts_votes_exactly_and_spares_ties():
+    """Every face votes, dropped and kept alternating in a fine checkerboard, so that many
+    pixels' boxes hold exactly as many dropped as kept votes: the mask equals the one from an
+    integer reference count (a 9 x 9 box of ones convolved with the per-pixel votes), in which
+    a view is occluded only where the dropped votes strictly outnumber the kept ones at one of
+    its sample points; ties, present by the hundred (420 sample points), are never occluded."""
+    from scipy.signal import convolve2d
+
+    from workstation.mesh.texture_colour import OCCLUSION_WINDOW, occluded_views, view_samples
+
+    mesh, rec = _frontal_wall(81, 61)
+    m = mesh.n_faces
+    views = np.ones((m, 1), np.int64)
+    voted = np.ones((m, 1), bool)
+    rng = np.random.default_rng(5)
+    dropped = (rng.random((m, 1)) < 0.5) & voted
+    cam = rec.cameras[1]
+    (f, s, u, v), = view_samples(mesh, rec, views, 1)
+    x, y = np.rint(u).astype(int), np.rint(v).astype(int)
+    count = np.zeros((2, cam.height, cam.width), np.int64)
+    for c, sel in enumerate((dropped[f, s], ~dropped[f, s])):
+        np.add.at(count[c], (y[sel].ravel(), x[sel].ravel()), 1)
+    box = np.ones((OCCLUSION_WINDOW, OCCLUSION_WINDOW), np.int64)
+    dr, kept = (convolve2d(c, box, mode="same") for c in count)
+    ties = (dr == kept) & (dr > 0)
+    assert ties[y, x].sum() > 200
+    expect = np.zeros((m, 1), bool)
+    expect[f, s] = (dr > kept)[y, x].any(axis=1)
+    occ = occluded_views(mesh, rec, views, voted, dropped)
+    assert 0 < expect.sum() < m
+    assert np.array_equal(occ, expect)
+
+
+@pytest.mark.parametrize("max_views", [3, 8])
+def test_faces_with_full_views_never_blend_last_resort_views(rig, max_views):
+    """With the photo-consistency check on (for any ``max_views``, also at or above the check's
+    8 candidate views), every face is textured either from full candidate views only or from
+    last-resort views only, and the flag ``full`` says which."""
+    from workstation.mesh.texture import _PhotoCache, _candidate_views, ranked_views
+
+    rec, pix, mesh, _ = rig
+    params = TextureParams(max_views=max_views)
+    views, weights, _, _, check, full = _candidate_views(mesh, rec, params, _PhotoCache(rec, pix, None))
+    assert check and views.shape[1] == max_views
+    candidates = ranked_views(mesh, rec, TextureParams(last_resort=False), 8)[0]
+    used = views >= 0
+    is_full = (views[:, :, None] == candidates[:, None, :]).any(axis=2) & used
+    assert (used.sum(axis=1) >= 2).sum() > 100 and (used & ~is_full).any()
+    assert np.array_equal(is_full.sum(axis=1), np.where(full, used.sum(axis=1), 0))
+    assert np.all(weights[used] > 0) and np.all(weights[~used] == 0)
+
+
+def test_preferred_views_tiers_never_mix_full_and_last_resort_views():
+    """Each face takes the first non-empty tier: full views kept, last-resort views outside the
+    masks, rejected full views, rejected last-resort views; best weight first, nothing else."""
+    from workstation.mesh.texture import _preferred_views
+
+    views = np.array([[1, 2, 3], [1, 2, 3], [1, 2, 3], [1, 2, -1]])
+    weights = np.array([[5.0, 9.0, 7.0], [5.0, 9.0, 7.0], [5.0, 9.0, 7.0], [5.0, 9.0, 0.0]])
+    full = np.array([[True, True, False]] * 3 + [[False, False, False]])
+    keep = np.array([[True, False, True], [False, False, True], [False, False, True], [True, True, False]])
+    occluded = np.array([[False, False, False], [False, False, False], [False, False, True], [True, False, False]])
+    v, w, f = _preferred_views(views, weights, full, keep, occluded)
+    assert v.tolist() == [[1, -1, -1], [3, -1, -1], [2, 1, -1], [2, -1, -1]]
+    assert w.tolist() == [[5.0, 0, 0], [7.0, 0, 0], [9.0, 5.0, 0], [9.0, 0, 0]]
+    assert f.tolist() == [True, False, True, False]
+    v, _, f = _preferred_views(views[3:], weights[3:], full[3:], keep[3:], np.ones((1, 3), bool))
+    assert v.tolist() == [[2, 1, -1]] and f.tolist() == [False]

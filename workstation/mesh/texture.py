@@ -49,8 +49,9 @@ Open3D ray casting, and works on any machine:
    any face with a sample point there is rejected too (an occlusion mask per photo,
    :func:`~workstation.mesh.texture_colour.occluded_views`), and the faces vote again without
    those views. A face then takes the full views it keeps; if none, its last-resort views
-   (step 6) outside the masks; if none, the rejected views (a face some photo sees stays
-   textured). The check runs first on the photos as they are (exposure gains estimated over
+   (step 6) outside the masks; if none, its rejected full views, else its rejected last-resort
+   views (a face some photo sees stays textured; it never mixes full and last-resort views).
+   The check runs first on the photos as they are (exposure gains estimated over
    views of an occluder would carry its colour into every photo's gain), then the gains are
    estimated without the rejected views, the check runs again on the balanced colours and the
    gains are estimated once more.
@@ -79,7 +80,7 @@ from workstation.core.products import Mesh, Reconstruction
 
 from .steps import StepRecord, Timer
 from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_VIEWS, colour_noise, consistent_views, exposure_gains,
-                             face_colours, occluded_views, view_samples)
+                             face_colours, occluded_views)
 
 log = get_logger(__name__)
 STAGE = "texture"
@@ -470,46 +471,46 @@ def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, pho
     Returns (views (m, k), weights (m, k), gsd (m,), gains, check, full (m,)): ``gains`` image
     id -> (3,) (empty without the balance), ``check`` a summary of the consistency check (empty
     when off), ``full`` whether the face is textured from full candidate views (False:
-    last-resort views or none; a face never mixes the two, :func:`ranked_views`)."""
-    k = params.max_views
-    kc = max(k, CONSISTENCY_VIEWS if params.photo_consistency else BALANCE_VIEWS if params.exposure_balance else k)
-    views, weights, gsd, full = ranked_views(mesh, rec, params, kc, keep_last_resort=params.photo_consistency)
-    if kc == k:
+    last-resort views or none; a face never mixes the two, :func:`ranked_views` and
+    :func:`_preferred_views`)."""
+    k, check_on, balance_on = params.max_views, params.photo_consistency, params.exposure_balance
+    kc = max(k, CONSISTENCY_VIEWS if check_on else BALANCE_VIEWS)
+    # the last-resort views of faces with full ones are kept only for the check to fall back on
+    views, weights, gsd, full = ranked_views(mesh, rec, params, kc if check_on or balance_on else k,
+                                             keep_last_resort=check_on)
+    if not (check_on or balance_on):
         return views, weights, gsd, {}, {}, full.any(axis=1)
-    samples = view_samples(mesh, rec, views)
-    colour = face_colours(mesh, rec, views, photos, samples)
-    if not params.photo_consistency:
+    colour = face_colours(mesh, rec, views, photos)
+    if not check_on:
         # last-resort views (grazing, partly hidden) blend other surfaces: no part in the balance
-        gains = exposure_gains(np.where(full, views, -1)[:, :kc], colour) if params.exposure_balance else {}
+        gains = exposure_gains(np.where(full, views, -1)[:, :BALANCE_VIEWS], colour[:, :BALANCE_VIEWS])
         return views[:, :k], weights[:, :k], gsd, gains, {}, full.any(axis=1)
     # the check runs first on the photos as they are (gains estimated over views that show an
     # occluder would spread its colour into every photo's gain), then the gains over the views
     # kept, the check again with them, and the gains once more
     gains = {}
-    for _ in range(2 if params.exposure_balance else 1):
+    for _ in range(2 if balance_on else 1):
         g = np.stack([np.ones(3)] + [gains.get(int(i), np.ones(3)) for i in range(int(views.max()) + 1)])
-        keep, occluded, check = _consistency_check(mesh, rec, views, full, colour * g[views + 1], samples)
-        if params.exposure_balance:  # the gains without the occluded views
+        keep, occluded, check = _consistency_check(mesh, rec, views, full, colour * g[views + 1])
+        if balance_on:  # the gains without the occluded views
             good = np.where(keep & full & ~occluded, views, -1)
             gains = exposure_gains(good[:, :BALANCE_VIEWS], colour[:, :BALANCE_VIEWS])
     views, weights, face_full = _preferred_views(views, weights, full, keep, occluded)
     return views[:, :k], weights[:, :k], gsd, gains, check, face_full
 
 
-def _consistency_check(mesh: Mesh, rec: Reconstruction, views: np.ndarray, full: np.ndarray, balanced: np.ndarray,
-                       samples: dict):
+def _consistency_check(mesh: Mesh, rec: Reconstruction, views: np.ndarray, full: np.ndarray, balanced: np.ndarray):
     """The photo-consistency check (module description, step 5) on the faces' view colours
     ``balanced`` (m, k, 3, after the current gains): the vote among each face's full views
     (:func:`consistent_views`), the photos' occlusion masks from its outcome
-    (:func:`occluded_views`; ``samples``: :func:`view_samples` of ``views``), and the vote again
-    without the views the masks reject.
+    (:func:`occluded_views`), and the vote again without the views the masks reject.
 
     Returns (keep (m, k): views the votes keep, occluded (m, k): views the masks reject, check:
     the summary for the step record)."""
     sigma = colour_noise(np.where(full[..., None], balanced, np.nan))
     keep = consistent_views(views, balanced, sigma, eligible=full)
     voted = full & (((views >= 0) & full).sum(axis=1, keepdims=True) >= 3)
-    occluded = occluded_views(mesh, rec, views, voted, voted & ~keep, samples=samples)
+    occluded = occluded_views(mesh, rec, views, voted, voted & ~keep)
     keep = consistent_views(views, balanced, sigma, eligible=full & ~occluded) & ~occluded
     dropped = (views >= 0) & ~keep
     check = {"colour_sigma": round(sigma, 3), "views_dropped": int((dropped & full).sum()),
@@ -519,12 +520,13 @@ def _consistency_check(mesh: Mesh, rec: Reconstruction, views: np.ndarray, full:
 
 def _preferred_views(views: np.ndarray, weights: np.ndarray, full: np.ndarray, keep: np.ndarray,
                      occluded: np.ndarray):
-    """Each face's views after the photo-consistency check, best first: the full views it
-    keeps if any, else its last-resort views outside the occlusion masks, else (so that a face
-    some photo sees stays textured) the rejected ones; within a tier by weight, and views of
-    a lower tier than the face's best are dropped (a face never mixes them). Returns (views,
-    weights, full (m,): whether the face is textured from full views)."""
-    tier = np.where(views < 0, 0, np.where(full & keep, 3, np.where(~full & ~occluded, 2, 1)))
+    """Each face's views after the photo-consistency check, best first, from the first of these
+    tiers that holds one: the full views it keeps; its last-resort views outside the occlusion
+    masks; (so that a face some photo sees stays textured) its rejected full views; its
+    rejected last-resort views. Within the tier by weight; the views of the other tiers are
+    dropped, so a face never mixes full and last-resort views. Returns (views, weights, full
+    (m,): whether the face is textured from full views)."""
+    tier = np.where(views < 0, 0, np.where(full, np.where(keep, 4, 2), np.where(occluded, 1, 3)))
     best = tier.max(axis=1, keepdims=True)
     use = (tier == best) & (views >= 0)
     views = np.where(use, views, -1)

@@ -20,6 +20,10 @@ CONSISTENCY_VIEWS, CONSISTENCY_KERNEL = 8, 6e-3
 #: Side, in pixels, of the box over which the photo-consistency votes of neighbouring faces are
 #: pooled into a photo's occlusion mask (:func:`occluded_views`).
 OCCLUSION_WINDOW = 9
+#: Faces whose sample points are projected at once (16 points each), and faces whose view
+#: colours are compared at once (k² pairs each): bound the memory of :func:`view_samples` and
+#: :func:`consistent_views` whatever the mesh's size.
+SAMPLE_CHUNK, CONSISTENCY_CHUNK = 1 << 16, 1 << 14
 
 
 def _sample_bary(n: int = 4) -> np.ndarray:
@@ -34,38 +38,36 @@ def _sample_bary(n: int = 4) -> np.ndarray:
 _SAMPLE_BARY = _sample_bary()
 
 
-def view_samples(mesh: Mesh, rec: Reconstruction, views: np.ndarray) -> dict:
-    """Where the faces' sample points (:func:`_sample_bary`, 16 per face) fall in each of their
-    ``views`` (m, k): image id -> (faces (n,), slots (n,), u (n, 16), v (n, 16)), image
-    coordinates clipped to the image, float32. Computed once and shared by
-    :func:`face_colours` and :func:`occluded_views`."""
+def view_samples(mesh: Mesh, rec: Reconstruction, views: np.ndarray, iid: int, chunk: int = SAMPLE_CHUNK):
+    """Where the sample points (:func:`_sample_bary`, 16 per face) of the faces one of whose
+    ``views`` (m, k) is image ``iid`` fall in that photo, ``chunk`` faces at a time: yields
+    (faces (n,), slots (n,), u (n, 16), v (n, 16)), image coordinates clipped to the image.
+    One photo and one chunk at a time, so that the memory does not grow with the mesh."""
     from workstation.registration.colorize import project
 
-    out = {}
-    for iid in np.unique(views[views >= 0]):
-        f, s = np.nonzero(views == iid)
+    im = rec.images[int(iid)]
+    cam = rec.cameras[im.camera_id]
+    faces, slots = np.nonzero(views == iid)
+    for a in range(0, len(faces), chunk):
+        f, s = faces[a:a + chunk], slots[a:a + chunk]
         pts = np.einsum("pk,nkd->npd", _SAMPLE_BARY, mesh.vertices[mesh.faces[f]])
-        im = rec.images[int(iid)]
-        cam = rec.cameras[im.camera_id]
         u, v, _ = project(pts.reshape(-1, 3), cam, im.pose)
         shape = (len(f), len(_SAMPLE_BARY))
-        out[int(iid)] = (f, s, np.clip(u, 0, cam.width - 1).reshape(shape).astype(np.float32),
-                         np.clip(v, 0, cam.height - 1).reshape(shape).astype(np.float32))
-    return out
+        yield f, s, np.clip(u, 0, cam.width - 1).reshape(shape), np.clip(v, 0, cam.height - 1).reshape(shape)
 
 
-def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos, samples: dict | None = None) -> np.ndarray:
+def face_colours(mesh: Mesh, rec: Reconstruction, views: np.ndarray, photos) -> np.ndarray:
     """(m, k, 3) mean colour of every face in each of its ``views`` (m, k): the photo sampled
-    bilinearly at 16 points spread evenly over the face (:func:`_sample_bary`) and averaged; NaN
-    where the slot holds no view; ``photos`` maps an image id to its (h, w, 3) pixels;
-    ``samples``: :func:`view_samples` of ``views`` when already computed. Shared by the
-    exposure balance and the photo-consistency check."""
+    bilinearly at 16 points spread evenly over the face (:func:`view_samples`) and averaged; NaN
+    where the slot holds no view; ``photos`` maps an image id to its (h, w, 3) pixels. Shared by
+    the exposure balance and the photo-consistency check."""
     from workstation.registration.colorize import bilinear
 
     colour = np.full(views.shape + (3,), np.nan)
-    for iid, (f, s, u, v) in (view_samples(mesh, rec, views) if samples is None else samples).items():
-        c = bilinear(photos(int(iid)), u.ravel().astype(np.float64), v.ravel().astype(np.float64))[:, :3]
-        colour[f, s] = c.reshape(len(f), -1, 3).mean(axis=1)
+    for iid in np.unique(views[views >= 0]):
+        for f, s, u, v in view_samples(mesh, rec, views, int(iid)):
+            c = bilinear(photos(int(iid)), u.ravel(), v.ravel())[:, :3]
+            colour[f, s] = c.reshape(len(f), -1, 3).mean(axis=1)
     return colour
 
 
@@ -107,14 +109,21 @@ def colour_noise(colour: np.ndarray) -> float:
     from the differences between every two views of the same face (each difference has
     variance 2 sigma^2), sigma = 1.4826 median |difference| / sqrt(2); views of an occluder
     are a minority of the pairs and do not move the median. At least 1 grey level (the photos'
-    8-bit step and their resampling)."""
-    k = colour.shape[1]
-    a, b = np.triu_indices(k, 1)
-    d = np.abs(colour[:, a] - colour[:, b])
-    d = d[np.isfinite(d)]
-    if d.size == 0:
+    8-bit step and their resampling). The differences fill one array, pair by pair, and their
+    median (that of :func:`numpy.median` over the finite ones) is found by partitioning it in
+    place, the missing ones (NaN) set to +inf above them."""
+    d = np.empty((math.comb(colour.shape[1], 2),) + colour.shape[:1] + colour.shape[2:])
+    for i, (a, b) in enumerate(zip(*np.triu_indices(colour.shape[1], 1))):
+        np.subtract(colour[:, a], colour[:, b], out=d[i])
+    d = np.abs(d, out=d).reshape(-1)
+    missing = np.isnan(d)
+    n = d.size - int(missing.sum())
+    if n == 0:
         return 1.0
-    return max(1.0, 1.4826 * float(np.median(d)) / math.sqrt(2.0))
+    d[missing] = np.inf
+    lo, hi = (n - 1) // 2, n // 2
+    d.partition([lo, hi])
+    return max(1.0, 1.4826 * float(0.5 * (d[lo] + d[hi])) / math.sqrt(2.0))
 
 
 def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterations: int = 5,
@@ -128,14 +137,25 @@ def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterat
     the view colours within r of it, a few times (mean shift); views farther than r from the
     final centre are occluded by something the mesh lacks (a tree, a passer-by) and dropped.
     Faces with fewer views, and each face's starting view, keep their views. ``eligible``
-    (m, k) bool, optional: the views that take part (the others are kept as they are)."""
+    (m, k) bool, optional: the views that take part (the others are kept as they are). Faces
+    are processed ``CONSISTENCY_CHUNK`` at a time (the view-pair distances take k² values per face)."""
     ok = views >= 0 if eligible is None else (views >= 0) & eligible
-    col = np.where(ok[..., None], colour, 0.0)
     r = math.sqrt(-2.0 * math.log(CONSISTENCY_KERNEL)) * sigma
+    keep = np.zeros(views.shape, bool)
+    for a in range(0, len(views), CONSISTENCY_CHUNK):
+        b = slice(a, a + CONSISTENCY_CHUNK)
+        keep[b] = _mean_shift_keep(colour[b], ok[b], r, iterations)
+    return keep | ((views >= 0) & ~ok)
+
+
+def _mean_shift_keep(colour: np.ndarray, ok: np.ndarray, r: float, iterations: int) -> np.ndarray:
+    """(m, k) bool: the views ``ok`` (m, k) whose ``colour`` (m, k, 3) lies within ``r`` of the
+    face's dominant colour, found by the flat-kernel mean shift of :func:`consistent_views`."""
+    col = np.where(ok[..., None], colour, 0.0)
     d = np.linalg.norm(col[:, :, None] - col[:, None, :], axis=3)  # (m, k, k)
     near = (d <= r) & ok[:, :, None] & ok[:, None, :]
     start = np.argmax(near.sum(axis=2), axis=1)
-    rows = np.arange(len(views))
+    rows = np.arange(len(ok))
     centre = col[rows, start]
     for _ in range(iterations):
         inside = ok & (np.linalg.norm(col - centre[:, None], axis=2) <= r)
@@ -145,36 +165,62 @@ def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterat
     keep[rows, start] = ok[rows, start]
     few = ok.sum(axis=1) < 3
     keep[few] = ok[few]
-    return keep | ((views >= 0) & ~ok)
+    return keep
 
 
 def occluded_views(mesh: Mesh, rec: Reconstruction, views: np.ndarray, voted: np.ndarray, dropped: np.ndarray,
-                   window: int = OCCLUSION_WINDOW, samples: dict | None = None) -> np.ndarray:
+                   window: int = OCCLUSION_WINDOW) -> np.ndarray:
     """(m, k) bool: the views (``views`` (m, k)) whose image of a face overlaps a region of
     the photo where an occluder missing from the mesh stands.
 
     An occluder (a tree, a passer-by) is one connected blob in each photo, and the faces
     behind it that have enough views to vote (``voted`` (m, k): the views that took part in
     :func:`consistent_views`) lose that photo's view there (``dropped`` (m, k)). In each photo
-    the votes are counted per pixel at the faces' 16 sample points, dropped and kept
-    separately, and summed over a ``window`` x ``window`` pixel box: a pixel is occluded where
-    the dropped votes outnumber the kept ones. A view of any face (voted or not: the faces with
-    one or two views have no majority of their own) is occluded when one of the face's sample
-    points falls on an occluded pixel, as a view is a full candidate only when all the face's
-    probes are visible (:func:`workstation.mesh.texture.ranked_views`). ``samples``:
-    :func:`view_samples` of ``views`` when already computed."""
-    from scipy.ndimage import uniform_filter
-
+    the votes are counted per pixel at the faces' 16 sample points (+1 dropped, -1 kept) and
+    summed exactly, in integers, over a ``window`` x ``window`` pixel box (:func:`_vote_table`,
+    :func:`_box_sum`): a pixel is occluded where the dropped votes outnumber the kept ones (a
+    tie is not). A view of any face (voted or not: the faces with one or two views have no
+    majority of their own) is occluded when one of the face's sample points falls on an
+    occluded pixel, as a view is a full candidate only when all the face's probes are visible
+    (:func:`workstation.mesh.texture.ranked_views`). One photo at a time; the table covers only
+    the bounding box of the photo's voting sample points."""
     out = np.zeros(views.shape, bool)
-    samples = view_samples(mesh, rec, views) if samples is None else samples
     for iid in np.unique(views[dropped]):
-        f, s, u, v = samples[int(iid)]
-        cam = rec.cameras[rec.images[int(iid)].camera_id]
-        pix = np.round(v).astype(np.int64) * cam.width + np.round(u).astype(np.int64)
-        n = cam.width * cam.height
-        dr, kept = dropped[f, s], voted[f, s] & ~dropped[f, s]
-        count = [uniform_filter(np.bincount(pix[sel].ravel(), minlength=n).reshape(cam.height, cam.width)
-                                .astype(np.float64), window, mode="constant") for sel in (dr, kept)]
-        occluded = (count[0] > np.maximum(count[1], 0.5 / window**2)).ravel()  # half a vote: not rounding
-        out[f, s] = occluded[pix].any(axis=1)
+        parts = [(f, s, np.rint(u).astype(np.int32), np.rint(v).astype(np.int32))
+                 for f, s, u, v in view_samples(mesh, rec, views, int(iid))]
+        f, s, x, y = (np.concatenate(a) for a in zip(*parts))
+        vote = dropped[f, s].astype(np.int32) - (voted[f, s] & ~dropped[f, s])
+        table, x0, y0 = _vote_table(x, y, vote)
+        for a in range(0, len(f), SAMPLE_CHUNK):
+            b = slice(a, a + SAMPLE_CHUNK)
+            out[f[b], s[b]] = (_box_sum(table, x[b] - x0, y[b] - y0, window) > 0).any(axis=1)
     return out
+
+
+def _vote_table(x: np.ndarray, y: np.ndarray, vote: np.ndarray):
+    """The votes (``vote`` (n,) int32, one per row, cast at each of the row's pixels ``x``,
+    ``y`` (n, p) int32: columns and rows) as an exact int32 summed-area table over the bounding
+    box of the pixels that vote: (table (h + 1, w + 1), table[i, j] the sum over the box's rows
+    < i and columns < j; the box's first column x0 and row y0)."""
+    cast = vote != 0
+    if not cast.any():
+        return np.zeros((1, 1), np.int32), 0, 0
+    xs, ys = x[cast], y[cast]
+    x0, y0 = int(xs.min()), int(ys.min())
+    table = np.zeros((int(ys.max()) - y0 + 2, int(xs.max()) - x0 + 2), np.int32)
+    np.add.at(table, (ys.ravel() - y0 + 1, xs.ravel() - x0 + 1), np.repeat(vote[cast], x.shape[1]))
+    np.cumsum(table, axis=0, dtype=np.int32, out=table)
+    np.cumsum(table, axis=1, dtype=np.int32, out=table)
+    return table, x0, y0
+
+
+def _box_sum(table: np.ndarray, x: np.ndarray, y: np.ndarray, window: int) -> np.ndarray:
+    """The sums of a summed-area ``table`` (:func:`_vote_table`) over the ``window`` x
+    ``window`` boxes centred at the pixels ``x``, ``y`` (any shape, int, relative to the table's
+    box; each box placed as :func:`scipy.ndimage.uniform_filter` places it and clipped to the
+    table's box, outside which no vote lies)."""
+    h, w = table.shape[0] - 1, table.shape[1] - 1
+    lo, hi = window // 2, window - 1 - window // 2
+    c0, c1 = np.clip(x - lo, 0, w), np.clip(x + hi + 1, 0, w)
+    r0, r1 = np.clip(y - lo, 0, h), np.clip(y + hi + 1, 0, h)
+    return table[r1, c1] - table[r0, c1] - table[r1, c0] + table[r0, c0]
