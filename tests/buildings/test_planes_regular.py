@@ -8,8 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from workstation.buildings import synth
-from workstation.buildings.planes import (azimuth_of, fit_plane, log_bayes_equal, regularise_planes, segment_planes,
+from district_faces import segment_building, true_face_misfits
+
+from workstation.buildings.planes import (azimuth_of, fit_plane, log_bayes_equal, regularise_planes,
                                           tilt_standard_error)
 
 NOISE = 0.03
@@ -129,17 +130,10 @@ def test_small_dormer_face_passes_once_regularised():
     """District seed 5, building 26: one dormer face of about ten points has a free tilt standard
     error of 1.7 degrees, over the 1 degree rule; with its azimuth fixed and its tilt shared with
     the dormer's other side it passes, so all four faces are found, each within 1 degree."""
-    xyz, cls, blds = synth.district(40, seed=5, density=10.0, noise=0.03, kinds=synth.COMPLEX_KINDS)
-    b = blds[26]
-    assert b.kind == "dormer"
-    pts = xyz[cls == 6]
-    pts = pts[b.inside(pts[:, :2])]
-    r = segment_planes(pts)
+    b, pts, r = segment_building(5, 26)
     assert len(r.normals) == 4
-    found = np.column_stack([r.tilt_deg, r.azimuth_deg])
-    for tilt, az in b.true_tilt_azimuth():
-        d = np.hypot(found[:, 0] - tilt, (found[:, 1] - az + 180) % 360 - 180)
-        assert d.min() < 3.0, (tilt, az, found)
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < 3.0, (tilt, az, misfit)
     small = int(np.argmin(r.counts))
     on = r.labels == small
     assert tilt_standard_error(pts[on] - r.origin, r.normals[small], r.noise) > 1.0
@@ -151,17 +145,10 @@ def test_small_face_proposal_keeps_to_the_noise_band():
     cluster with 16 points of other surfaces; RANSAC's band (noise and angle tolerance) takes 29
     of them and fails the chi-square test, the 3-sigma band of the fitted plane keeps the face's
     own points and passes: all four faces are found (the dormer's free fits within 5 degrees)."""
-    xyz, cls, blds = synth.district(40, seed=17, density=10.0, noise=0.03, kinds=synth.COMPLEX_KINDS)
-    b = blds[20]
-    assert b.kind == "dormer"
-    pts = xyz[cls == 6]
-    pts = pts[b.inside(pts[:, :2])]
-    r = segment_planes(pts)
+    b, pts, r = segment_building(17, 20)
     assert len(r.normals) == 4
-    found = np.column_stack([r.tilt_deg, r.azimuth_deg])
-    for tilt, az in b.true_tilt_azimuth():
-        d = np.hypot(found[:, 0] - tilt, (found[:, 1] - az + 180) % 360 - 180)
-        assert d.min() < (5.0 if tilt < 40 else 0.5), (tilt, az, found)
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < (5.0 if tilt < 40 else 0.5), (tilt, az, misfit)
 
 
 def _flat_and_patch(rng):

@@ -6,6 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from district_faces import segment_building, true_face_misfits
+
 from workstation.buildings import synth
 from workstation.buildings.planes import (fit_plane, pooled_noise, segment_planes, tilt_standard_error)
 
@@ -65,17 +67,10 @@ def test_small_dormer_faces_are_recovered():
     """Dormer faces of 15-30 points that the region-growing passes leave out (district seed 7,
     building 2: one cheek of 18 points, of which 15 were on no plane) become planes of their own,
     each within 2 degrees of the true face."""
-    xyz, cls, blds = synth.district(40, seed=7, density=10.0, noise=0.03, kinds=synth.COMPLEX_KINDS)
-    b = blds[2]
-    assert b.kind == "dormer"
-    pts = xyz[cls == 6]
-    pts = pts[b.inside(pts[:, :2])]
-    r = segment_planes(pts)
+    b, pts, r = segment_building(7, 2)
     assert len(r.normals) == 4
-    found = np.column_stack([r.tilt_deg, r.azimuth_deg])
-    for tilt, az in b.true_tilt_azimuth():
-        d = np.hypot(found[:, 0] - tilt, (found[:, 1] - az + 180) % 360 - 180)
-        assert d.min() < 2.0, (tilt, az, found)
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < 2.0, (tilt, az, misfit)
     for lab in _dormer_face_labels(b, pts, r.labels):
         assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)
 

@@ -183,6 +183,19 @@ def test_consistent_views_drops_the_odd_colour_out():
     assert np.array_equal(keep, expect)
 
 
+def _photos_with_green_box(rec):
+    """The box rig's photos with a green box (not in the mesh) in front of the wall, and the
+    box's vertices and faces."""
+    from workstation.photogrammetry.rigs import box_wall_scene, render
+
+    V, F, alb = box_wall_scene()
+    cube = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], float)
+    bv, bf = np.array([1.0, 5.0, 1.0]) + 0.5 * cube * [0.8, 0.4, 0.6], F[2:] - 4
+    Vo, Fo = np.vstack([V, bv]), np.vstack([F, bf + len(V)])
+    Ao = np.vstack([alb, np.tile([0.25, 0.55, 0.1], (len(bf), 1))])
+    return {k: render(Vo, Fo, Ao, rec.cameras[1], im.pose, 1) for k, im in rec.images.items()}, (bv, bf)
+
+
 def test_photo_consistency_removes_an_occluder_missing_from_the_mesh(rig):
     """The rig's photos taken with a green box (a "branch", 0.8 x 0.4 x 0.6 m, 5 m in front of
     the cameras) that the textured mesh lacks: on the wall faces it hides from some of their
@@ -191,15 +204,8 @@ def test_photo_consistency_removes_an_occluder_missing_from_the_mesh(rig):
     costs nothing (mean error within 2 % of that without it)."""
     from workstation.interop.open3d_raycast import RaycastScene
     from workstation.mesh.texture import select_views
-    from workstation.photogrammetry.rigs import box_wall_scene, render
-
     rec, pix, mesh, albedo = rig
-    V, F, alb = box_wall_scene()
-    cube = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], float)
-    bv, bf = np.array([1.0, 5.0, 1.0]) + 0.5 * cube * [0.8, 0.4, 0.6], F[2:] - 4
-    Vo, Fo = np.vstack([V, bv]), np.vstack([F, bf + len(V)])
-    Ao = np.vstack([alb, np.tile([0.25, 0.55, 0.1], (len(bf), 1))])
-    occluded = {k: render(Vo, Fo, Ao, rec.cameras[1], im.pose, 1) for k, im in rec.images.items()}
+    occluded, (bv, bf) = _photos_with_green_box(rec)
     cen = mesh.vertices[mesh.faces].mean(axis=1)
     views, _, _ = select_views(mesh, rec, TextureParams(last_resort=False), 5)  # faces with full views
     hidden = np.zeros(mesh.n_faces, bool)
@@ -266,15 +272,8 @@ def test_occluder_colour_kept_off_faces_without_a_majority(rig):
     and take their colour from the occlusion masks of their neighbours' votes."""
     from workstation.interop.open3d_raycast import RaycastScene
     from workstation.mesh.texture import select_views
-    from workstation.photogrammetry.rigs import box_wall_scene, render
-
     rec, pix, mesh, albedo = rig
-    V, F, alb = box_wall_scene()
-    cube = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], float)
-    bv, bf = np.array([1.0, 5.0, 1.0]) + 0.5 * cube * [0.8, 0.4, 0.6], F[2:] - 4
-    Vo, Fo = np.vstack([V, bv]), np.vstack([F, bf + len(V)])
-    Ao = np.vstack([alb, np.tile([0.25, 0.55, 0.1], (len(bf), 1))])
-    photos = {k: render(Vo, Fo, Ao, rec.cameras[1], im.pose, 1) for k, im in rec.images.items()}
+    photos, (bv, bf) = _photos_with_green_box(rec)
     out, step = texture_from_photos(mesh, rec, TextureParams(), images=photos)
     view = out.face_attrs["texture_view"]
     cen = mesh.vertices[mesh.faces].mean(axis=1)

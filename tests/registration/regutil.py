@@ -55,15 +55,15 @@ def block_mesh():
 
 
 def tls_station(mesh, position, step_deg: float = 0.5, max_range: float = 60.0, noise: float = 0.003,
-                seed: int = 0) -> np.ndarray:
-    """Points a terrestrial scanner at ``position`` sees on ``mesh`` (Open3D ray casting),
-    with Gaussian range noise (metres)."""
+                seed: int = 0, azimuth_deg=(0.0, 360.0), elevation_deg=(-60.0, 60.0)) -> np.ndarray:
+    """Points a terrestrial scanner at ``position`` sees on ``mesh`` (Open3D ray casting) over
+    the given azimuth and elevation ranges (degrees), with Gaussian range noise (metres)."""
     import open3d as o3d
 
     scene = o3d.t.geometry.RaycastingScene()
     scene.add_triangles(o3d.core.Tensor(np.asarray(mesh.vertices, np.float32)),
                         o3d.core.Tensor(np.asarray(mesh.faces, np.uint32)))
-    az, el = np.meshgrid(np.radians(np.arange(0, 360, step_deg)), np.radians(np.arange(-60, 60, step_deg)))
+    az, el = np.meshgrid(np.radians(np.arange(*azimuth_deg, step_deg)), np.radians(np.arange(*elevation_deg, step_deg)))
     d = np.column_stack([(np.cos(el) * np.cos(az)).ravel(), (np.cos(el) * np.sin(az)).ravel(), np.sin(el).ravel()])
     rays = np.hstack([np.tile(np.asarray(position, np.float32), (d.shape[0], 1)), d]).astype(np.float32)
     t = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()

@@ -50,18 +50,10 @@ def room_mesh(seed=0):
 def view(mesh, position, yaw_deg, pitch_deg=-30.0, hfov=90.0, vfov=70.0, step=0.5, noise=0.004, max_range=3.0, seed=0):
     """Points seen from ``position`` looking along ``yaw_deg`` / ``pitch_deg`` (ray casting,
     Gaussian range noise)."""
-    import open3d as o3d
-    scene = o3d.t.geometry.RaycastingScene()
-    scene.add_triangles(o3d.core.Tensor(np.asarray(mesh.vertices, np.float32)), o3d.core.Tensor(np.asarray(mesh.faces, np.uint32)))
-    az, el = np.meshgrid(np.radians(yaw_deg + np.arange(-hfov / 2, hfov / 2, step)),
-                         np.radians(pitch_deg + np.arange(-vfov / 2, vfov / 2, step)))
-    d = np.column_stack([(np.cos(el) * np.cos(az)).ravel(), (np.cos(el) * np.sin(az)).ravel(), np.sin(el).ravel()])
-    rays = np.hstack([np.tile(np.asarray(position, np.float32), (d.shape[0], 1)), d]).astype(np.float32)
-    t = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
-    ok = np.isfinite(t) & (t < max_range)
-    rng = np.random.default_rng(seed)
-    r = t[ok] + rng.normal(0, noise, ok.sum())
-    return np.asarray(position, float) + d[ok] * r[:, None]
+    from regutil import tls_station
+
+    return tls_station(mesh, position, step, max_range, noise, seed, (yaw_deg - hfov / 2, yaw_deg + hfov / 2),
+                       (pitch_deg - vfov / 2, pitch_deg + vfov / 2))
 
 
 def view_pair(seed, lo=0.2, hi=0.35, step=0.5):
