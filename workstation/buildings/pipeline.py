@@ -286,6 +286,7 @@ def _on_dask(client, items, n_items: int, setup: UnitSetup, dtm) -> list:
     copied only when a worker is nearly free for it); the results in building order. Batches
     hold about a quarter of a worker's share (at most 32 buildings), so a slow batch does not
     keep the others waiting at the end."""
+    from workstation.core.dasktasks import run_bounded
     from workstation.core.signals import caught_signals
 
     with caught_signals() as latch:
@@ -293,20 +294,9 @@ def _on_dask(client, items, n_items: int, setup: UnitSetup, dtm) -> list:
         size = max(1, min(32, -(-n_items // (4 * n))))
         dtm_f = client.scatter(dtm, broadcast=True) if dtm is not None else None
         results: dict = {}
-        running: dict = {}
-
-        def collect_done(at_most: int) -> None:
-            while len(running) > at_most:
-                for f in [f for f in running if f.done()]:
-                    results[running.pop(f)] = f.result()
-                if len(running) > at_most:
-                    latch.sleep(0.02)
-
-        for k, a in enumerate(range(0, n_items, size)):
-            collect_done(2 * n - 1)
-            running[client.submit(build_unit, items(a, a + size), setup, dtm_f, pure=False)] = k
-        collect_done(0)
-        latch.check()  # a signal caught while scattering, submitting or collecting the last batches
+        calls = ((k, lambda a=a: (build_unit, items(a, a + size), setup, dtm_f))
+                 for k, a in enumerate(range(0, n_items, size)))
+        run_bounded(client, calls, 2 * n, results.__setitem__, latch, pause=0.02)
     return [r for k in sorted(results) for r in results[k]]
 
 
@@ -319,16 +309,11 @@ def _dask_client(workers: int, scheduler: str | None):
     import dask
     from distributed import Client, LocalCluster
 
+    from workstation.core.dasktasks import connect
     from workstation.core.signals import workers_starting
 
     if scheduler:
-        try:
-            client = Client(scheduler, timeout="20s")
-        except (OSError, TimeoutError) as e:
-            raise InvalidInputError(f"cannot reach the Dask scheduler at {scheduler}: {e}",
-                                    "start it with `dask scheduler` and workers with `dask worker ADDRESS`",
-                                    field="scheduler") from None
-        with client:
+        with connect(scheduler) as client:
             yield client
         return
     # no statistical profiler in the workers: its stack sampling every 10 ms costs a worker more

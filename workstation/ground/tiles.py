@@ -155,27 +155,19 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
 
     from distributed import Client, LocalCluster
 
+    from workstation.core.dasktasks import run_bounded
     from workstation.core.signals import caught_signals, workers_starting
 
     with workers_starting():
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster) as client, caught_signals() as latch:
-        running: dict = {}
+        def done(core, result):
+            collect(core, result)
+            advance(1)
 
-        def collect_done(at_most: int) -> None:  # wait until no more than at_most tiles run
-            while len(running) > at_most:
-                for f in [f for f in running if f.done()]:
-                    collect(running.pop(f), f.result())
-                    advance(1)
-                if len(running) > at_most:
-                    latch.sleep(0.05)
-
-        for core, sel in layout:
-            collect_done(workers - 1)
-            running[client.submit(_filter_tile, *task(core, sel), pure=False)] = core
-        collect_done(0)
-        latch.check()  # a signal caught while the last tiles were submitted or collected
+        calls = ((core, lambda core=core, sel=sel: (_filter_tile, *task(core, sel))) for core, sel in layout)
+        run_bounded(client, calls, workers, done, latch)
 
 
 def ground_tiled(cloud: Cloud, method: str, params, tiles: TileParams = TileParams()) -> Cloud:

@@ -184,12 +184,9 @@ def _client(options: RunOptions, project):
 
     scheduler = options.scheduler or project.dask.get("scheduler")
     if scheduler:
-        try:
-            return Client(scheduler, timeout="20s"), None
-        except (OSError, TimeoutError) as e:
-            raise InvalidInputError(f"cannot reach the Dask scheduler at {scheduler}: {e}",
-                                    "start it with `dask scheduler` and workers with `dask worker ADDRESS`",
-                                    field="scheduler") from None
+        from workstation.core.dasktasks import connect
+
+        return connect(scheduler), None
     from workstation.core.cpu import available_cores
 
     n = options.workers or project.dask.get("workers") or available_cores()

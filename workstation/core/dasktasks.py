@@ -1,0 +1,48 @@
+"""Dask helpers shared by the stages that run on a cluster (``ws run``, tiled ``ws ground``,
+``ws buildings --workers``): connecting to a user's scheduler, and keeping a bounded number
+of tasks in flight so that each task's arguments are made only when a worker is free for it."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+from workstation.core.errors import InvalidInputError
+
+
+def connect(scheduler: str):
+    """A client on the running Dask scheduler at ``scheduler`` (e.g. ``tcp://host:8786``), or a
+    clear error naming the address when it cannot be reached within 20 s."""
+    from distributed import Client
+
+    try:
+        return Client(scheduler, timeout="20s")
+    except (OSError, TimeoutError) as e:
+        raise InvalidInputError(f"cannot reach the Dask scheduler at {scheduler}: {e}",
+                                "start it with `dask scheduler` and workers with `dask worker ADDRESS`",
+                                field="scheduler") from None
+
+
+def run_bounded(client, calls: Iterable[tuple[object, Callable[[], tuple]]], limit: int,
+                on_result: Callable[[object, object], None], latch, pause: float = 0.05) -> None:
+    """Submit ``calls`` to ``client`` with at most ``limit`` in flight.
+
+    Each call is ``(key, make)``: ``make()`` returns ``(function, *arguments)`` and is called
+    only when a slot is free, so large arguments (a tile's points) exist for the tasks in
+    flight only. ``on_result(key, result)`` runs in this process as each task ends (a task's
+    exception is raised here). ``latch`` (:func:`workstation.core.signals.caught_signals`)
+    turns a Ctrl-C caught at any point, the last collection included, into an interruption."""
+    running: dict = {}
+
+    def collect_done(at_most: int) -> None:  # wait until no more than at_most tasks run
+        while len(running) > at_most:
+            for f in [f for f in running if f.done()]:
+                on_result(running.pop(f), f.result())
+            if len(running) > at_most:
+                latch.sleep(pause)
+
+    for key, make in calls:
+        collect_done(limit - 1)
+        fn, *args = make()
+        running[client.submit(fn, *args, pure=False)] = key
+    collect_done(0)
+    latch.check()
