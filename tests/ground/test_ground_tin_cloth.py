@@ -85,11 +85,13 @@ def test_tin_update_is_the_delaunay_triangulation_of_all_points():
     assert ((got >= 0) == (want >= 0)).all()
     g = np.flatnonzero(ground)
     assert (np.sort(tin.simp[got[got >= 0]], axis=1) == np.sort(g[full.simplices[want[want >= 0]]], axis=1)).all()
-    # the neighbours: shared edges both ways, the walk finds what scipy finds
-    t = tin.nbr
-    for j in range(3):
-        has = t[:, j] >= 0
-        assert (t[t[has, j]] == np.flatnonzero(has)[:, None]).any(axis=1).all()
+    # the neighbours are scipy's: the triangle across from each vertex, -1 on the hull
+    rank = {tri: i for i, tri in enumerate(map(tuple, np.sort(g[full.simplices], axis=1).tolist()))}
+    same = np.array([rank[tri] for tri in map(tuple, np.sort(tin.simp, axis=1).tolist())])
+    ours = np.column_stack([np.repeat(same, 3), tin.simp.ravel(), np.where(tin.nbr >= 0, same[tin.nbr], -1).ravel()])
+    theirs = np.column_stack([np.repeat(np.arange(full.nsimplex), 3), g[full.simplices].ravel(), full.neighbors.ravel()])
+    assert (ours[np.lexsort(ours.T[::-1])] == theirs[np.lexsort(theirs.T[::-1])]).all()
+    # the walk finds what scipy finds
     q = rng.uniform(-10.0, 110.0, (500, 2))
     w = tin.walk(q, np.zeros(500, dtype=np.int64))
     f = full.find_simplex(q)

@@ -161,22 +161,6 @@ def _orient(a: np.ndarray, b: np.ndarray, q: np.ndarray) -> np.ndarray:
     return (b[:, 0] - a[:, 0]) * (q[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (q[:, 0] - a[:, 0])
 
 
-def _neighbors(simp: np.ndarray) -> np.ndarray:
-    """(T, 3) int64: the triangle across the edge opposite each vertex of ``simp`` (T, 3), -1 on
-    the hull (the layout of scipy's ``Delaunay.neighbors``)."""
-    t = simp.shape[0]
-    lo = np.concatenate([np.minimum(simp[:, (i + 1) % 3], simp[:, (i + 2) % 3]) for i in range(3)])
-    hi = np.concatenate([np.maximum(simp[:, (i + 1) % 3], simp[:, (i + 2) % 3]) for i in range(3)])
-    key = lo * (int(simp.max()) + 1) + hi
-    order = np.argsort(key, kind="stable")
-    ks = key[order]
-    pair = np.flatnonzero(ks[1:] == ks[:-1])
-    nbr = np.full(3 * t, -1, dtype=np.int64)
-    a, b = order[pair], order[pair + 1]
-    nbr[a], nbr[b] = b % t, a % t
-    return nbr.reshape(3, t).T.copy()
-
-
 def _in_circle(xy: np.ndarray, tri: np.ndarray, q: np.ndarray) -> np.ndarray:
     """(n,) bool: ``q`` (n, 2) strictly inside the circumcircle of the triangles ``tri`` (n, 3)."""
     a, b, c = (xy[tri[:, i]] - q for i in range(3))
@@ -191,13 +175,15 @@ class _Tin:
     joining points is triangulated again (the triangles whose circumcircle holds a new point,
     Bowyer-Watson); everywhere else the Delaunay triangles stay as they were.
 
-    ``simp`` (T, 3) indexes the candidates, ``nbr`` (T, 3) the triangle across each edge,
+    ``simp`` (T, 3) indexes the candidates, ``nbr`` (T, 3) the triangle across the edge
+    opposite each vertex (-1 on the hull, the layout of scipy's ``Delaunay.neighbors``),
     ``tri`` is the scipy ``Delaunay`` of the last full triangulation (None after an update).
     """
 
     #: cavity (its vertices and the new points) above this fraction of the ground points: a
-    #: full triangulation is as cheap
-    MAX_CAVITY = 0.25
+    #: full triangulation and location of every candidate is as cheap as triangulating the
+    #: cavity again and locating the candidates in it
+    MAX_CAVITY = 0.5
 
     def __init__(self, xy: np.ndarray, gi: np.ndarray):
         self.xy = xy
@@ -279,10 +265,35 @@ class _Tin:
         if (sm < 0).any() or (sub2new[sm] < 0).any():
             return None
         s[moved] = sub2new[sm]
-        self.simp = np.concatenate([self.simp[keep], verts[sub.simplices[sel]]])
-        self.nbr = _neighbors(self.simp)
-        self.tri = None
+        self._replace(keep, old2new, verts[sub.simplices[sel]])
         return s
+
+    def _replace(self, keep: np.ndarray, old2new: np.ndarray, new_simp: np.ndarray) -> None:
+        """Keep the triangles ``keep`` (T,) bool (``old2new``: their new indices, -1 for the
+        others) and append ``new_simp`` (n, 3), which tile the cavity of the others.
+
+        Only the neighbours across the cavity's edges change: the kept triangles' edges onto the
+        cavity and all the new triangles' edges are paired by their vertex pair (an edge left
+        alone lies on the hull); the result is the layout of scipy's ``Delaunay.neighbors``.
+        """
+        nbr_k = self.nbr[keep]
+        simp_k = self.simp[keep]
+        nb = np.where(nbr_k >= 0, old2new[nbr_k], -1)
+        rows, cols = np.nonzero((nbr_k >= 0) & (nb < 0))  # kept edges onto the cavity
+        t_keep, n_new = simp_k.shape[0], new_simp.shape[0]
+        tri = np.concatenate([rows, t_keep + np.repeat(np.arange(n_new), 3)])
+        col = np.concatenate([cols, np.tile(np.arange(3), n_new)])
+        simp = np.concatenate([simp_k, new_simp])
+        a, b = simp[tri, (col + 1) % 3], simp[tri, (col + 2) % 3]
+        key = np.minimum(a, b) * np.int64(self.xy.shape[0]) + np.maximum(a, b)
+        order = np.argsort(key, kind="stable")
+        ks = key[order]
+        pair = np.flatnonzero(ks[1:] == ks[:-1])
+        i, j = order[pair], order[pair + 1]
+        nbr = np.concatenate([nb, np.full((n_new, 3), -1, dtype=np.int64)])
+        nbr[tri[i], col[i]] = tri[j]
+        nbr[tri[j], col[j]] = tri[i]
+        self.simp, self.nbr, self.tri = simp, nbr, None
 
     def locate(self, q: np.ndarray, near: np.ndarray) -> np.ndarray:
         """Triangle (n,) of each point ``q`` (n, 2), -1 outside; ``near`` (n,): a triangle
@@ -400,14 +411,16 @@ def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: fl
         s = np.full(m, -1, dtype=np.int64)
     ins = s >= 0
     ii = np.flatnonzero(ins)
-    v = gidx[tri.simplices[s[ins]]] if ii.size else np.zeros((0, 3), np.int64)
-    a, b, c = xyz[v[:, 0]], xyz[v[:, 1]], xyz[v[:, 2]]
-    n = np.cross(b - a, c - a)
-    nz = np.where(np.abs(n[:, 2]) < 1e-12, 1e-12, n[:, 2])
-    q = xyz[ii]
-    zt = a[:, 2] - ((q[:, 0] - a[:, 0]) * n[:, 0] + (q[:, 1] - a[:, 1]) * n[:, 1]) / nz
-    slope = np.hypot(n[:, 0], n[:, 1]) / np.abs(nz)
-    out[ii[np.abs(q[:, 2] - zt) < threshold + scalar * slope]] = True
+    if ii.size:
+        # each facet's plane (normal n through vertex a) and tolerance, once per facet
+        v = gidx[tri.simplices]
+        a = xyz[v[:, 0]]
+        n = np.cross(xyz[v[:, 1]] - a, xyz[v[:, 2]] - a)
+        nz = np.where(np.abs(n[:, 2]) < 1e-12, 1e-12, n[:, 2])
+        tol = threshold + scalar * (np.hypot(n[:, 0], n[:, 1]) / np.abs(nz))
+        si = s[ii]
+        zt = a[si, 2] - ((xyz[ii, 0] - a[si, 0]) * n[si, 0] + (xyz[ii, 1] - a[si, 1]) * n[si, 1]) / nz[si]
+        out[ii[np.abs(xyz[ii, 2] - zt) < tol[si]]] = True
     oo = np.flatnonzero(~ins)
     if oo.size:
         _, j = cKDTree(xyz[gidx, :2]).query(xyz[oo, :2])
