@@ -97,6 +97,54 @@ def test_progressive_steps_give_each_tolerance_the_flags_of_its_own_opening_sequ
         assert np.array_equal(progressive_filter(surface, 0.5, slope, 4.0), want)
 
 
+@pytest.mark.parametrize("shape", [(1, 1), (1, 9), (9, 1), (23, 31), (64, 40)])
+def test_disk_erosion_and_dilation_equal_scipy_with_the_disk_footprint(shape):
+    # the chord-by-chord filter gives scipy's grey erosion/dilation by the disk footprint,
+    # edges extended outward, value for value (minima and maxima are exact)
+    from scipy import ndimage
+
+    from workstation.ground import common
+
+    rng = np.random.default_rng(sum(shape))
+    a = np.cumsum(rng.normal(0, 1, shape), axis=0) + rng.exponential(1.0, shape)
+    a[rng.random(shape) < 0.05] = np.inf
+    for r in (1, 2, 3, 7, 12, 40):
+        fp = common.disk(r)
+        assert np.array_equal(common._disk_filter(a, r, True), ndimage.grey_erosion(a, footprint=fp, mode="nearest"))
+        b = np.where(np.isinf(a), -np.inf, a)
+        assert np.array_equal(common._disk_filter(b, r, False), ndimage.grey_dilation(b, footprint=fp, mode="nearest"))
+
+
+def test_barycentric_transforms_are_scipys_and_mark_degenerate_triangles():
+    from scipy.spatial import Delaunay
+
+    from workstation.ground import common
+
+    rng = np.random.default_rng(4)
+    pts = np.vstack([rng.uniform(0, 50, (300, 2)), np.mgrid[0:5, 0:5].reshape(2, -1).T + 60.0])
+    tri = Delaunay(pts)
+    got = common.barycentric_transforms(tri.points, tri.simplices)
+    assert np.allclose(got, tri.transform, rtol=1e-9, atol=1e-12, equal_nan=True)
+    # three collinear corners: no transform, as scipy marks them
+    flat = common.barycentric_transforms(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]), np.array([[0, 1, 2]]))
+    assert np.isnan(flat).all()
+
+
+def test_inpaint_is_linear_over_the_tin_of_the_border_cells():
+    # a plane with holes comes back as the plane (up to the corners' tie-breaking jitter of
+    # 1e-4 cell), and the grid's own cells are kept
+    from workstation.ground import common
+
+    rr, cc = np.mgrid[0:40, 0:50]
+    plane = 0.3 * rr - 0.2 * cc + 5.0
+    grid = plane.copy()
+    grid[5:15, 8:30] = np.nan
+    grid[25:38, 2:6] = np.nan
+    out = common.inpaint(grid)
+    assert np.allclose(out, plane, atol=1e-3)
+    assert np.array_equal(out[~np.isnan(grid)], grid[~np.isnan(grid)])
+
+
 def test_existing_classes_kept_unless_reclassify(scene):
     cloud, truth = scene
     cls = np.ones(cloud.n, np.uint8)

@@ -41,3 +41,19 @@ def test_member_votes_with_shared_surfaces_equal_the_members_one_by_one():
     alone = {"smrf_wide": smrf_ground(xyz, p.smrf_wide), "smrf_tight": smrf_ground(xyz, p.smrf_tight),
              "pmf": pmf_ground(xyz, p.pmf), "csf": csf_ground(xyz, p.csf), "ptd": ptd_ground(xyz, p.ptd)}
     assert np.array_equal(member_votes(xyz, p), np.stack([alone[m] for m in MEMBERS]))
+
+
+def test_one_provisional_dem_per_distinct_set_of_left_out_cells():
+    from workstation.ground.smrf import _provisional
+
+    xyz = _local(seed=5)
+    shared = SharedSurfaces(xyz, [SMRFParams(window=18.0), SMRFParams(window=30.0)])
+    g = shared.grid(1.0)
+    bad = np.isnan(g.zmin) | (shared.steps(1.0, 18.0) > 0.15)
+    first = shared.provisional(1.0, bad)
+    assert np.array_equal(first, _provisional(g.zmin, bad, g.zfill, g.off))
+    assert shared.provisional(1.0, bad.copy()) is first  # the same cells: the same surface
+    other = bad.copy()
+    other[np.unravel_index(np.flatnonzero(~bad)[0], bad.shape)] = True
+    second = shared.provisional(1.0, other)
+    assert second is not first and np.array_equal(second, _provisional(g.zmin, other, g.zfill, g.off))

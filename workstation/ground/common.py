@@ -351,6 +351,30 @@ def _one_blas_thread():
     return controller.limit(limits=1, user_api="blas")
 
 
+def barycentric_transforms(points: np.ndarray, simplices: np.ndarray) -> np.ndarray:
+    """The barycentric transforms (k, 3, 2) of the triangles ``simplices`` (k, 3) of 2-D
+    ``points``, as scipy's ``Delaunay.transform`` holds them: rows 0-1 the inverse of
+    ``T = [r0 - r2, r1 - r2]`` (the corners ``r`` as columns), row 2 the corner ``r2``; NaN for
+    a triangle whose reciprocal condition number (1-norm) is under ``1000 · eps``, as scipy
+    marks a degenerate one. The 2 x 2 inverses by the adjugate, vectorised: scipy builds them
+    with three LAPACK calls per triangle, which costs more than the point location they serve.
+    """
+    p = points[simplices]
+    r = p[:, 2]
+    t00, t01 = p[:, 0, 0] - r[:, 0], p[:, 1, 0] - r[:, 0]
+    t10, t11 = p[:, 0, 1] - r[:, 1], p[:, 1, 1] - r[:, 1]
+    det = t00 * t11 - t01 * t10
+    d = np.where(det == 0, 1.0, det)
+    inv = np.stack([np.stack([t11 / d, -t01 / d], axis=1), np.stack([-t10 / d, t00 / d], axis=1)], axis=1)
+    anorm = np.maximum(np.abs(t00) + np.abs(t01), np.abs(t10) + np.abs(t11))
+    inorm = np.abs(inv).sum(axis=2).max(axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bad = (det == 0) | ~(1.0 / (anorm * inorm) >= 1000 * np.finfo(np.float64).eps)
+    out = np.concatenate([inv, r[:, None, :]], axis=1)
+    out[bad] = np.nan
+    return out
+
+
 def locate(tri, q: np.ndarray) -> np.ndarray:
     """Triangle index (k,) of each point ``q`` (k, 2) in a scipy ``Delaunay``, -1 outside,
     with BLAS on one thread (see :func:`_one_blas_thread`); queries in raster order keep the
@@ -437,6 +461,11 @@ def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
         tri = delaunay(np.column_stack([sr, sc]).astype(np.float64), 1e-4, np.column_stack([sr, sc]) + np.asarray(offset))
     except Exception:  # degenerate support: nearest
         return near
+    # the walk's transforms, vectorised: a query (a cell centre) lies far beyond rounding
+    # distance of every edge between the jittered corners, so the walk ends in the triangle
+    # scipy's own transforms lead to (tin_eval weighs the corners itself)
+    if hasattr(tri, "_transform"):
+        tri._transform = barycentric_transforms(tri.points, tri.simplices)
     out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))
     nan = np.isnan(out)
     out[nan] = near[nan]
@@ -549,28 +578,34 @@ def disk(radius: int) -> np.ndarray:
 
 
 def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
-    """Grey erosion/dilation by :func:`disk` as a union of its rows: one 1D running min/max per
-    distinct chord width plus shifted minima/maxima, O(cells · radius) instead of
-    O(cells · radius²)."""
-    from scipy import ndimage
+    """Grey erosion/dilation by :func:`disk` as a union of its rows (edges extend outward).
 
+    The running minimum (maximum) of each row over a chord of half-width ``w`` is that of
+    half-width ``w - 1`` with the two cells ``w`` away on either side (an edge cell is already
+    in it), so the chords are grown one cell at a time, from the narrowest to the widest, and
+    each is taken into the result, shifted by its row offset, as soon as it has its width:
+    two in-place minima (maxima) per width and one per row of the disk, O(cells · radius).
+    Minima and maxima are exact, so the result does not depend on the order they are taken in.
+    """
     fp = disk(radius)
     r = fp.shape[0] // 2
-    f1d = ndimage.minimum_filter1d if erode else ndimage.maximum_filter1d
     op = np.minimum if erode else np.maximum
-    fill = np.inf if erode else -np.inf
     halfw = fp.sum(axis=1) // 2  # chord half-width per row offset
-    rows = {}
-    for w in np.unique(halfw):
-        rows[int(w)] = f1d(a, size=2 * int(w) + 1, axis=1, mode="nearest") if w > 0 else a
-    out = np.full(a.shape, fill)
-    n = a.shape[0]
-    for k, dy in enumerate(range(-r, r + 1)):
-        src = rows[int(halfw[k])]
-        # out[i] = op(out[i], src[i + dy]) where i + dy is inside the grid
+    n, m = a.shape
+    out = np.full(a.shape, np.inf if erode else -np.inf)
+    chord = a.copy()
+    w = 0
+    for k in np.argsort(halfw, kind="stable"):  # row offsets, narrowest chord first
+        while w < halfw[k]:
+            w += 1
+            if w < m:
+                op(chord[:, : m - w], a[:, w:], out=chord[:, : m - w])
+                op(chord[:, w:], a[:, : m - w], out=chord[:, w:])
+        dy = int(k) - r
+        # out[i] = op(out[i], chord[i + dy]) where i + dy is inside the grid
         lo, hi = max(0, -dy), min(n, n - dy)
         if lo < hi:
-            op(out[lo:hi], src[lo + dy : hi + dy], out=out[lo:hi])
+            op(out[lo:hi], chord[lo + dy : hi + dy], out=out[lo:hi])
     return out
 
 

@@ -233,34 +233,40 @@ def _local_planes(dxy: np.ndarray, nz: np.ndarray, valid: np.ndarray, depth: flo
     from itertools import combinations
 
     m = nz.shape[0]
-    octant = (np.floor((np.arctan2(dxy[..., 1], dxy[..., 0]) + np.pi) / (np.pi / 4)).astype(np.int64)) % 8
+    octant = (np.floor((np.arctan2(dxy[..., 1], dxy[..., 0]) + np.pi) / (np.pi / 4)).astype(np.int8)) % 8
+    zv = np.where(valid, nz, np.inf)
     lo = np.full((m, 8, 3), np.nan)  # x, y, z of each octant's minimum
     rows = np.arange(m)
     for o in range(8):
-        zo = np.where(valid & (octant == o), nz, np.inf)
+        zo = np.where(octant == o, zv, np.inf)
         a = np.argmin(zo, axis=1)
         hit = np.isfinite(zo[rows, a])
         lo[hit, o, :2] = dxy[rows[hit], a[hit]]
         lo[hit, o, 2] = zo[rows[hit], a[hit]]
-    have = np.isfinite(lo[..., 2])
+    # octant-major copies (8, m): every product below runs on contiguous rows
+    lx, ly, lz = (np.ascontiguousarray(lo[..., c].T) for c in range(3))
+    have = np.isfinite(lz)
     best = np.full(m, -np.inf)
-    inl = np.zeros((m, 8), dtype=bool)
+    inl = np.zeros((8, m), dtype=bool)
     for i, j, k in combinations(range(8), 3):
-        n = np.cross(lo[:, j] - lo[:, i], lo[:, k] - lo[:, i])  # plane normal
+        u = (lx[j] - lx[i], ly[j] - ly[i], lz[j] - lz[i])
+        v = (lx[k] - lx[i], ly[k] - ly[i], lz[k] - lz[i])
+        n0, n1, n2 = u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]  # plane normal
         # a plane steeper than max_slope would join ground on one side to crowns on the other
-        good = have[:, i] & have[:, j] & have[:, k] & (np.abs(n[:, 2]) * max_slope >= np.hypot(n[:, 0], n[:, 1]))
-        good &= np.abs(n[:, 2]) > 1e-9
+        good = have[i] & have[j] & have[k] & (np.abs(n2) * max_slope >= np.hypot(n0, n1))
+        good &= np.abs(n2) > 1e-9
         if not good.any():
             continue
-        nzc = np.where(good, n[:, 2], 1.0)
+        nzc = np.where(good, n2, 1.0)
         # z of the plane at each octant minimum and at the point (0, 0)
-        zp = lo[:, i, 2] + (n[:, 0] * lo[:, i, 0] + n[:, 1] * lo[:, i, 1]) / nzc
-        zat = zp[:, None] - (n[:, 0, None] * lo[..., 0] + n[:, 1, None] * lo[..., 1]) / nzc[:, None]
-        ins = have & (np.abs(lo[..., 2] - zat) <= depth)
-        score = np.where(good, ins.sum(axis=1) * 1e6 - zp, -np.inf)
+        zp = lz[i] + (n0 * lx[i] + n1 * ly[i]) / nzc
+        zat = zp - (n0 * lx + n1 * ly) / nzc
+        ins = have & (np.abs(lz - zat) <= depth)
+        score = np.where(good, ins.sum(axis=0) * 1e6 - zp, -np.inf)
         win = score > best
         best[win] = score[win]
-        inl[win] = ins[win]
+        inl[:, win] = ins[:, win]
+    have, inl = np.ascontiguousarray(have.T), np.ascontiguousarray(inl.T)
     w = inl.astype(np.float64)
     ok = (have.sum(axis=1) >= 4) & (w.sum(axis=1) >= 3)
     A = np.concatenate([np.ones((m, 8, 1)), np.nan_to_num(lo[..., :2])], axis=-1)

@@ -40,6 +40,7 @@ judged against a flat-terrain slope where the terrain is flat.
 
 from __future__ import annotations
 
+import hashlib
 import threading
 from dataclasses import dataclass, replace
 from typing import Callable
@@ -125,10 +126,12 @@ class SharedSurfaces:
     CSF fills its empty particles from a third SMRF surface: all three start from the same grid
     of lowest points and its inpainted fill, and the disk openings of that fill do not depend
     on the slope, so one opening sequence up to the largest window gives every window's steps
-    (:func:`workstation.ground.common.opening_steps`). The first provisional DEM of the
-    slope-adaptive test (``trend_slope``) is the provisional DEM of a run without it, so that
-    is shared too. Each item is computed by the first run that needs it, the others wait for
-    it; the results are those of the runs alone.
+    (:func:`workstation.ground.common.opening_steps`). A provisional DEM depends only on the
+    cells left out of it, so one is inpainted per distinct set of them
+    (:meth:`provisional`): the first DEM of the slope-adaptive test (``trend_slope``) is that
+    of a run without it, and different windows or tests often flag the same cells. Each item
+    is computed by the first run that needs it, the others wait for it; the results are those
+    of the runs alone.
 
     Parameters
     ----------
@@ -173,6 +176,18 @@ class SharedSurfaces:
 
         return self.get(("steps", cell), make)[window]
 
+    def provisional(self, cell: float, bad: np.ndarray) -> np.ndarray:
+        """:func:`_provisional` of the grid on ``cell`` without the ``bad`` cells, made once per
+        distinct set of bad cells: runs whose tests flag the same cells (a window of 18 m and
+        one of 30 m over the same roofs, a slope-adaptive test that changes nothing on flat
+        ground) read one inpainted surface."""
+        g = self.grid(cell)
+        key = ("provisional", cell, bad.shape, hashlib.blake2b(np.packbits(bad).tobytes(), digest_size=16).digest())
+        made_for, zpro = self.get(key, lambda: (bad.copy(), _provisional(g.zmin, bad, g.zfill, g.off)))
+        if np.array_equal(made_for, bad):
+            return zpro
+        return _provisional(g.zmin, bad, g.zfill, g.off)  # another set with the same digest
+
 
 @dataclass(frozen=True)
 class _MinimumGrid:
@@ -208,7 +223,7 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams,
     """Provisional DEM of SMRF on local metric points.
 
     ``shared`` (:class:`SharedSurfaces` of these points) serves the grid, the opening steps
-    and a first provisional DEM computed once for several runs; the result is the same.
+    and the provisional DEMs computed once for several runs; the result is the same.
 
     Returns
     -------
@@ -237,21 +252,14 @@ def smrf_surface(xyz: np.ndarray, p: SMRFParams,
         (steps,) = common.opening_steps(zfill, p.cell, (p.window,))
     obj = steps > p.slope
     bad = empty | low | obj
+    provisional = shared.provisional if shared is not None else (lambda cell, b: _provisional(zmin, b, zfill, off))
     if p.trend_slope > 0:  # the per-cell slope, from the provisional DEM of the plain test
         if bad.all():
             tol = np.full(zmin.shape, p.slope)
         else:
-            if shared is not None:
-                first = shared.get(("first", p.cell, p.window, p.slope), lambda: _provisional(zmin, bad, zfill, off))
-            else:
-                first = _provisional(zmin, bad, zfill, off)
-            tol = common.trend_tolerance(first, p.cell, p.slope, p.trend_slope, p.window)
+            tol = common.trend_tolerance(provisional(p.cell, bad), p.cell, p.slope, p.trend_slope, p.window)
         bad = empty | low | (steps > tol)
-    if shared is not None and p.trend_slope == 0:
-        zpro = shared.get(("first", p.cell, p.window, p.slope), lambda: _provisional(zmin, bad, zfill, off))
-    else:
-        zpro = _provisional(zmin, bad, zfill, off)
-    return zpro, g.origin, bad
+    return provisional(p.cell, bad), g.origin, bad
 
 
 def smrf_ground(xyz: np.ndarray, p: SMRFParams, shared: SharedSurfaces | None = None) -> np.ndarray:
