@@ -85,6 +85,27 @@ def test_texture_matches_true_surface_colour(rig):
     assert np.abs(col_bad - true_colour(mesh, faces, P, albedo[faces])).mean() > 2 * err.mean()
 
 
+def test_footprint_resampling_sharper_than_bilinear_interpolation(rig):
+    """The photos resampled over the texels' footprints (the default) keep the texture closer
+    to the true colour than the photos interpolated bilinearly at the texel centres (which the
+    lookup of the texture blurs once more): median error on the faces with full views at most
+    0.9 times the bilinear one, and a lower mean (without the exposure balance and the
+    photo-consistency check, which this rig does not need)."""
+    from workstation.mesh.texture import ranked_views
+
+    rec, pix, mesh, albedo = rig
+    full = ranked_views(mesh, rec, TextureParams(), 1)[3][:, 0]
+    errors = {}
+    for resample in ("footprint", "bilinear"):
+        params = TextureParams(resample=resample, exposure_balance=False, photo_consistency=False)
+        out, step = texture_from_photos(mesh, rec, params, images=pix)
+        assert step.params["resample"] == resample
+        faces, P, col = sample_texture(only_faces(out, full), 20000)
+        errors[resample] = np.abs(col - true_colour(mesh, faces, P, albedo[faces]))
+    assert np.median(errors["footprint"]) <= 0.9 * np.median(errors["bilinear"])
+    assert errors["footprint"].mean() < errors["bilinear"].mean()
+
+
 def test_texture_hidden_faces_not_painted(rig):
     """The wall behind the box is hidden from every camera (|x| < 0.7 m, |z| < 1 m on the wall,
     from the cameras at x = -2.5..2.5 m): faces there get no view, and the box's back face

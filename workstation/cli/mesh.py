@@ -91,7 +91,7 @@ MIN_PIECE_FRACTION = 0.05
 @param_group(
     "texture",
     bound(TextureParams, "texel_size", "--texel-size", type=positive_float,
-          help="Texture: surface size of one texel in CRS units [default: the photos' ground sample distance]."),
+          help="Texture: surface size of one texel in CRS units [default: per face, texels no larger than the pixels of its best photo]."),
     bound(TextureParams, "max_texture_size", "--texture-size", type=click.IntRange(16, 32768), show_default=True,
           help="Texture: largest side of the texture image, pixels."),
     bound(TextureParams, "max_views", "--texture-views", type=click.IntRange(1, 16), show_default=True,

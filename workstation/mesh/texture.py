@@ -16,15 +16,25 @@ Open3D ray casting, and works on any machine:
 2. **Atlas**: each pair of triangles shares a square cell of the texture, each triangle
    mapped affinely onto one half as a right isosceles triangle (MeshLab's "trivial per-triangle
    parametrization"), with the longest edge on the hypotenuse and one texel of separation so
-   bilinear filtering never mixes two faces. Cell sides are powers of two chosen from the
-   face's size and a texel size (metres per texel; by default the median ground sample
-   distance of the chosen views, so the texture holds what the photos resolve), within a
-   texture-size budget; cells are shelf-packed class by class.
+   bilinear filtering never mixes two faces. Cell sides are powers of two chosen, by default,
+   from the face's footprint in its best view: the smallest cell whose texels span at most
+   one photo pixel in any direction (the largest singular value of the face's legs projected
+   into the photo), so that the texture keeps all the photo resolves wherever the face lies
+   (a uniform ``texel_size`` in metres is the alternative), within a texture-size budget
+   (all cells shrink by one factor until the atlas fits); cells are shelf-packed class by
+   class.
 3. **Resampling**: every texel centre is mapped back to its 3-D point on the face
    (barycentric coordinates) and projected into the face's views with the collinearity
    equations and lens distortion (the same projection as ``ws colorize`` and the orthophoto,
-   :func:`workstation.registration.colorize.project`), sampled bilinearly and blended with the
-   view weights.
+   :func:`workstation.registration.colorize.project`). A sensor pixel records the mean of the
+   scene over its square, so the photo is taken as squares of constant colour and each texel
+   gets their mean over its own footprint (the texel's square projected into the photo, a
+   box prefilter; a texel well inside one pixel takes that pixel), blended with the view
+   weights. Bilinear interpolation of the photo (``resample="bilinear"``) would spread each
+   pixel over its neighbours' squares, a blur that the renderer's own bilinear lookup of the
+   texture then doubles. Faces textured from last-resort views (step 6), seen grazing or
+   partly hidden, whose pixels mix the face with the surfaces around it, take the bilinear
+   interpolation, which evens those mixed pixels out.
 
 4. **Exposure balance** (Brown & Lowe, "Automatic panoramic image stitching using invariant
    features", IJCV 2007, section 6): photos taken with different exposure or white balance
@@ -84,6 +94,8 @@ from .texture_colour import (BALANCE_VIEWS, CONSISTENCY_VIEWS, colour_noise, con
 
 log = get_logger(__name__)
 STAGE = "texture"
+#: Ways a texel takes its colour from a photo (:class:`TextureParams` ``resample``).
+RESAMPLE = ("footprint", "bilinear")
 
 
 @dataclass(frozen=True)
@@ -93,8 +105,10 @@ class TextureParams:
     Attributes
     ----------
     texel_size : float or None
-        Size of one texel on the surface, in mesh (CRS) units; None = the median ground sample
-        distance (depth / focal length) of the faces' best views.
+        Size of one texel on the surface, in mesh (CRS) units, for all faces; None = per face,
+        from its footprint in its best view: its texels span at most one photo pixel in any
+        direction (faces no photo sees: the median ground sample distance, depth / focal
+        length, of the seen faces' best views).
     max_texture_size : int
         Largest side of the texture image, pixels; the texel size grows until the atlas fits.
     max_cell : int
@@ -122,6 +136,12 @@ class TextureParams:
         A face with no view passing ``min_cos`` and the four-probe visibility test may take a
         grazing view (cosine above 0) or one that sees its centroid but not all its corners
         (True; see :func:`select_views`).
+    resample : str
+        How a texel takes its colour from a photo: "footprint" (default), the mean of the
+        photo's pixels, as squares of constant colour, over the texel's footprint (on faces
+        textured from full views; last-resort views are interpolated bilinearly); "bilinear",
+        the photo interpolated bilinearly at the texel's centre (step 3 of the module
+        description).
     """
 
     texel_size: float | None = None
@@ -135,6 +155,7 @@ class TextureParams:
     exposure_balance: bool = True
     photo_consistency: bool = True
     last_resort: bool = True
+    resample: str = "footprint"
 
     def __post_init__(self):
         if self.texel_size is not None and not self.texel_size > 0:
@@ -147,6 +168,8 @@ class TextureParams:
             raise InvalidInputError("max_views must be >= 1", field="max_views")
         if not 0.0 <= self.min_cos < 1.0:
             raise InvalidInputError("min_cos must be in [0, 1)", field="min_cos")
+        if self.resample not in RESAMPLE:
+            raise InvalidInputError(f"resample must be one of {RESAMPLE}", field="resample")
 
 
 # ------------------------------------------------------------------------------ view selection
@@ -320,8 +343,9 @@ def _half_corners(c: np.ndarray, half: np.ndarray) -> np.ndarray:
     return np.where((half == 1)[:, None, None], upper, lower)
 
 
-def _cell_sides(longest: np.ndarray, texel: float, max_cell: int) -> np.ndarray:
-    leg = longest / (math.sqrt(2.0) * texel)  # the longest edge lies on the hypotenuse
+def _cell_sides(leg: np.ndarray, max_cell: int) -> np.ndarray:
+    """Cell side (texels) of faces whose legs must span ``leg`` texels: the smallest power of
+    two that leaves the upper half's legs (side - 3) that long, within 4..``max_cell``."""
     c = 2 ** np.ceil(np.log2(np.maximum(leg + 3.0, 4.0)))
     return np.clip(c, 4, max_cell).astype(np.int64)
 
@@ -351,27 +375,38 @@ def _pack(cell: np.ndarray, width: int):
     return x0, y0, half, y
 
 
-def build_atlas(mesh: Mesh, texel_size: float, params: TextureParams = TextureParams()) -> Atlas:
+def build_atlas(mesh: Mesh, texel_size: float, params: TextureParams = TextureParams(),
+                legs: np.ndarray | None = None) -> Atlas:
     """Cells and their places for every face, within the texture-size budget.
 
-    The texel size grows (by the square root of the overflow) until the packed atlas fits in
-    ``max_texture_size`` on both sides.
+    Each face's cell gives its legs (the right isosceles triangle's, the longest edge on the
+    hypotenuse) at least ``legs`` (m,) texels; by default longest edge / (sqrt(2)
+    ``texel_size``), one texel size for all faces. When the packed atlas exceeds
+    ``max_texture_size`` on a side, all legs shrink by one factor (the square root of the
+    overflow) until it fits. ``Atlas.texel_size``: ``texel_size`` times that factor (by
+    default the texel size used), or with ``legs`` the median over faces of mesh units per
+    texel along the hypotenuse before the cells are rounded up.
     """
     tri = mesh.vertices[mesh.faces]
     longest = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
     limit = int(params.max_texture_size)
     texel = float(texel_size)
+    leg0 = None if legs is None else np.asarray(legs, np.float64)
+    grow = 1.0
     for _ in range(40):
-        cell = _cell_sides(longest, texel, params.max_cell)
+        cell = _cell_sides(longest / (math.sqrt(2.0) * texel) if leg0 is None else leg0 / grow, params.max_cell)
         area = float((cell.astype(np.float64) ** 2).sum() / 2.0)
         width = int(min(limit, max(int(cell.max()), 2 ** math.ceil(math.log2(max(math.sqrt(area), 1.0))))))
         x0, y0, half, height = _pack(cell, width)
         if height <= limit:
             height = max(4, int(math.ceil(height / 4.0)) * 4)
-            return Atlas(width, height, cell, x0, y0, half, texel)
+            size = texel if legs is None else grow * float(np.median(longest / (math.sqrt(2.0) * leg0)))
+            return Atlas(width, height, cell, x0, y0, half, size)
         if int(cell.max()) == 4:
             break
-        texel *= max(1.05, math.sqrt(height / limit))
+        step = max(1.05, math.sqrt(height / limit))
+        grow *= step
+        texel *= step
     raise StageError(STAGE, f"{mesh.n_faces} faces do not fit a {limit} px texture at 4 texels per face pair",
                      "raise the texture size or decimate the mesh (--target-faces)")
 
@@ -451,10 +486,16 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
             raise StageError(STAGE, "no face is seen by any photo",
                              "check that the mesh and the reconstruction share one frame and unit")
         texel = params.texel_size if params.texel_size is not None else float(np.nanmedian(gsd[seen]))
-        atlas = build_atlas(mesh, texel, params)
         order = _corner_order(mesh.vertices[mesh.faces])
         corners = np.take_along_axis(mesh.faces, order, axis=1)  # (right angle, p, q) vertex ids
-        tex = _blend_photos(mesh, rec, views, weights, seen, atlas, corners, photos, gains)
+        legs = None
+        if params.texel_size is None:
+            legs = _footprint_legs(mesh, rec, views[:, 0], corners, texel)
+        atlas = build_atlas(mesh, texel, params, legs)
+        # last-resort views see a face grazing or partly hidden: pixels that mix it with the
+        # surfaces around it, which the interpolation of neighbouring pixels evens out
+        sharp = full & (params.resample == "footprint")
+        tex = _blend_photos(mesh, rec, views, weights, seen, atlas, corners, photos, gains, sharp)
         _paint_unseen(tex, mesh, seen, atlas, corners, params)
         texture = np.clip(np.round(tex), 0, 255).astype(np.uint8)
         out = _textured_mesh(mesh, atlas, views, texture)
@@ -462,6 +503,29 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
     log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
              int(seen.sum()), mesh.n_faces)
     return out, step
+
+
+def _footprint_legs(mesh: Mesh, rec: Reconstruction, view: np.ndarray, corners: np.ndarray,
+                    texel: float) -> np.ndarray:
+    """(m,) legs, in texels, that make each face's texels no larger than the pixels of its
+    view (``view`` (m,) image ids, -1: none) in any direction: the largest singular value of
+    the 2 x 2 matrix whose columns are the face's legs (right-angle corner to the two others,
+    ``corners`` order) projected into the photo, in pixels (the atlas maps each leg onto that
+    many texels, so one texel step spans at most one pixel). A face seen obliquely, or farther
+    than the median, gets texels to match; faces without a view: longest edge / (sqrt(2)
+    ``texel``), the uniform texel size."""
+    from workstation.registration.colorize import project
+
+    tri = mesh.vertices[corners]
+    legs = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1) / (math.sqrt(2.0) * texel)
+    for iid in np.unique(view[view >= 0]):
+        f = np.flatnonzero(view == iid)
+        im = rec.images[int(iid)]
+        u, v, _ = project(tri[f].reshape(-1, 3), rec.cameras[im.camera_id], im.pose)
+        px = np.stack([u, v], axis=1).reshape(-1, 3, 2)
+        M = np.stack([px[:, 1] - px[:, 0], px[:, 2] - px[:, 0]], axis=2)
+        legs[f] = np.linalg.svd(M, compute_uv=False)[:, 0]
+    return legs
 
 
 def _candidate_views(mesh: Mesh, rec: Reconstruction, params: TextureParams, photos: "_PhotoCache"):
@@ -562,17 +626,93 @@ class _PhotoCache:
         return self.cache[iid]
 
 
-def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
-                  atlas: Atlas, corners: np.ndarray, photos: _PhotoCache, gains: Mapping[int, np.ndarray]) -> np.ndarray:
-    """The texture (h, w, 3) float32 of the seen faces: each texel's 3-D point projected into
-    the face's selected views, the photos sampled bilinearly, times their ``gains`` (image id
-    -> (3,); 1 when absent), and blended with the views' weights; texels of unseen faces stay 0. Faces are processed per atlas cell size in
-    chunks of about 2 million texels to bound memory."""
+def _texel_axes(mesh: Mesh, corners: np.ndarray, atlas: Atlas, faces: np.ndarray) -> np.ndarray:
+    """(n, 2, 3) the 3-D step of one texel along the atlas's x and y axes on each face of
+    ``faces`` (the inverse of the affine map of :func:`_texels_of`)."""
+    tri = mesh.vertices[corners[faces]]
+    upper = atlas.half[faces] == 1
+    leg = atlas.cell[faces].astype(np.float64) - np.where(upper, 3.0, 2.0)
+    sign = np.where(upper, -1.0, 1.0) / leg
+    return np.stack([tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]], axis=1) * sign[:, None, None]
+
+
+#: Most sample points per side of a texel's footprint in :func:`_footprint_mean` (a texel
+#: spanning more than FOOTPRINT_SAMPLES / 2 pixels is averaged over that many points per side).
+FOOTPRINT_SAMPLES = 8
+#: Footprint sample points handled at once by :func:`_footprint_mean` (bounds its memory).
+FOOTPRINT_CHUNK = 1 << 21
+
+
+def _footprint_mean(photo: np.ndarray, cam, pose, P: np.ndarray, faces: np.ndarray, cen: np.ndarray,
+                    axes: np.ndarray) -> np.ndarray:
+    """(n, c) mean colour of a photo over the footprints of texels (centres ``P`` (n, 3) on
+    ``faces`` (n,)): the photo is taken as what the sensor recorded, each pixel the mean of the
+    scene over its square, so its pixels are squares of constant colour, and each texel gets
+    their mean over its own square on the surface (an area-weighted, box-filtered resampling;
+    bilinear interpolation would blur every pixel over its neighbours' squares once more).
+
+    The texel's square (one step of ``axes`` (m, 2, 3) along each atlas axis, around its
+    centre) maps into the photo as a parallelogram, the projection's derivative at the face's
+    centroid (``cen`` (m, 3)) times the steps; it is sampled on a k x k grid, k twice the
+    pixels its longer side spans (1 to ``FOOTPRINT_SAMPLES``), each point taking the pixel it
+    falls in. A texel far below a pixel takes the pixel holding its centre."""
+    from workstation.registration.colorize import project
+
+    uf, inv = np.unique(faces, return_inverse=True)
+    c = cen[uf]
+    u, v, _ = project(np.concatenate([c, c + axes[uf, 0], c + axes[uf, 1]]), cam, pose)
+    q = np.stack([u, v], axis=1).reshape(3, len(uf), 2)
+    jx, jy = (q[1] - q[0])[inv], (q[2] - q[0])[inv]
+    u, v, _ = project(P, cam, pose)
+    centre = np.stack([u, v], axis=1)
+    span = np.maximum(np.abs(jx).max(axis=1), np.abs(jy).max(axis=1))
+    k = np.clip(np.ceil(2.0 * span - 1e-6), 1, FOOTPRINT_SAMPLES).astype(np.int64)  # 2.0000001 px: 4
+    out = np.empty((len(P), photo.shape[2]))
+    h, w = photo.shape[:2]
+    for kk in np.unique(k):
+        t = (np.arange(kk) + 0.5) / kk - 0.5
+        gx, gy = (g.reshape(1, -1, 1) for g in np.meshgrid(t, t))
+        rows = np.flatnonzero(k == kk)
+        per = max(1, FOOTPRINT_CHUNK // int(kk * kk))  # points sampled at once
+        for sel in (rows[a:a + per] for a in range(0, rows.size, per)):
+            p = centre[sel, None, :] + gx * jx[sel, None, :] + gy * jy[sel, None, :]
+            x = np.clip(np.rint(p[..., 0]), 0, w - 1).astype(np.int64)
+            y = np.clip(np.rint(p[..., 1]), 0, h - 1).astype(np.int64)
+            out[sel] = photo[y, x].astype(np.float64).mean(axis=1)
+    return out
+
+
+def _sample_photo(photo: np.ndarray, cam, pose, P: np.ndarray, faces: np.ndarray, sharp: np.ndarray,
+                  cen: np.ndarray, axes: np.ndarray) -> np.ndarray:
+    """(n, 3) colours of one photo for the texels at ``P`` (n, 3) on ``faces`` (n,): the mean
+    over each texel's footprint (:func:`_footprint_mean`) on the faces ``sharp`` (m,) holds,
+    the photo interpolated bilinearly at the texel's centre on the others."""
     from workstation.registration.colorize import bilinear, project
 
+    col = np.empty((len(P), 3))
+    box = sharp[faces]
+    if box.any():
+        col[box] = _footprint_mean(photo, cam, pose, P[box], faces[box], cen, axes)[:, :3]
+    if not box.all():
+        u, v, _ = project(P[~box], cam, pose)
+        col[~box] = bilinear(photo, np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1))[:, :3]
+    return col
+
+
+def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: np.ndarray, seen: np.ndarray,
+                  atlas: Atlas, corners: np.ndarray, photos: _PhotoCache, gains: Mapping[int, np.ndarray],
+                  sharp: np.ndarray) -> np.ndarray:
+    """The texture (h, w, 3) float32 of the seen faces: each texel's 3-D point projected into
+    the face's selected views, the photos sampled there (:func:`_sample_photo`: the pixels'
+    mean over the texel's footprint on the faces ``sharp`` (m,) holds, bilinear interpolation
+    at its centre on the others), times their ``gains`` (image id -> (3,); 1 when absent), and
+    blended with the views' weights; texels of unseen faces stay 0. Faces are processed per
+    atlas cell size in chunks of about 2 million texels to bound memory."""
     tex = np.zeros((atlas.height, atlas.width, 3), dtype=np.float32)
     tex_w = np.zeros((atlas.height, atlas.width), dtype=np.float32)
     chunk = 2_000_000
+    axes = _texel_axes(mesh, corners, atlas, np.arange(mesh.n_faces))
+    cen = mesh.vertices[mesh.faces].mean(axis=1)
     for c in np.unique(atlas.cell):
         faces_c = np.flatnonzero((atlas.cell == c) & seen)
         per = max(1, chunk // int(c * c))
@@ -585,10 +725,8 @@ def _blend_photos(mesh: Mesh, rec: Reconstruction, views: np.ndarray, weights: n
                     sel = np.flatnonzero(vid == iid)
                     im = rec.images[int(iid)]
                     cam = rec.cameras[im.camera_id]
-                    u, v, _ = project(P[sel], cam, im.pose)
-                    u = np.clip(u, 0, cam.width - 1)
-                    v = np.clip(v, 0, cam.height - 1)
-                    col = bilinear(photos(int(iid)), u, v)[:, :3] * gains.get(int(iid), 1.0)
+                    col = _sample_photo(photos(int(iid)), cam, im.pose, P[sel], f[sel], sharp, cen, axes)
+                    col *= gains.get(int(iid), 1.0)
                     wt = weights[f[sel], slot]
                     # a texel belongs to one face: indices are unique within one call
                     tex_w[y[sel], x[sel]] += wt
@@ -650,7 +788,7 @@ def _texture_record(mesh: Mesh, rec: Reconstruction, params: TextureParams, atla
         {"texel_size": atlas.texel_size, "texel_size_requested": params.texel_size,
          "max_texture_size": params.max_texture_size, "max_views": params.max_views, "min_cos": params.min_cos,
          "exposure_balance": params.exposure_balance, "photo_consistency": params.photo_consistency,
-         "last_resort": params.last_resort},
+         "last_resort": params.last_resort, "resample": params.resample},
         seconds,
         {"texture_width": atlas.width, "texture_height": atlas.height, "images": len(rec.images),
          "faces_textured": int(seen.sum()), "faces": int(mesh.n_faces),
