@@ -24,8 +24,10 @@
   size and ws mesh's Poisson depth.
 - render: a 1920x1080 top-view render of a 10,000,000-point cloud.
 - texture: the true heritage-church mesh (and the ground around it) textured from the 24
-  photos of the synthetic rig, texture colour vs the true surface colour (``--tree``: a tree
-  in front of the east façade in the photos only); with ``--occluder branch|pole``, instead the
+  photos of the synthetic rig, texture colour vs the true surface colour, and the floor: the
+  same points sampled directly in the photo of their face's view, bilinear and nearest pixel
+  (``--tree``: a tree in front of the east façade in the photos only; ``--image-size WxH``:
+  the rig rendered at that size, as for fscore); with ``--occluder branch|pole``, instead the
   box-and-wall rig photographed with an occluder its mesh lacks, with and without the
   photo-consistency check.
 - poisson_profile: Open3D's Poisson depth 10 on the 1 M-point torus, per PoissonRecon stage,
@@ -478,9 +480,10 @@ def heritage_fused(work: Path, with_truth_pose: bool = False, poisson_backend: s
          cpu_s=round(time.process_time() - cpu0, 1))
 
 
-def heritage_texture_scene(workdir):
+def heritage_texture_scene(workdir, image_size=None):
     """The synthetic convergent rig of the heritage church (datasets_synth/rig_heritage.toml,
-    true cameras, rendered into ``workdir`` once and kept) and the mesh to texture: the true
+    true cameras, rendered into ``workdir`` once and kept; ``image_size`` (width, height): the
+    rig at that size and the same field of view, :func:`rig_spec_at`) and the mesh to texture: the true
     church, subdivided so that no edge exceeds 2 m (its 30 m wall triangles are rarely whole
     in a photo), and the ground within 5 m of its footprint (the ground hides the church's foot
     below the terrain in the photos, as it does in a photogrammetric mesh).
@@ -493,6 +496,7 @@ def heritage_texture_scene(workdir):
     from workstation.photogrammetry.sfm import read_reconstruction
 
     recipe, spec = load_rig("rig_heritage")
+    spec = rig_spec_at(spec, image_size)
     wall_r = None
     if not (Path(workdir) / "cameras.json").exists():  # the rig is kept between runs (--work)
         _, wall_r, _ = timed(make_rig, recipe, spec, workdir, overwrite=True)
@@ -563,8 +567,31 @@ def tree_share(rec, scene, with_tree, P, view, err, stats) -> dict:
             "abs_error_facade": stats(err[facade].ravel())}
 
 
+def photo_samples(rec, view: np.ndarray, P: np.ndarray, images=None, image_root=None) -> dict:
+    """The colours (n, 3) of the points ``P`` (n, 3) in the photo of their view ``view`` (n,
+    image ids), sampled directly: {"bilinear": ..., "nearest": ... (the pixel holding the
+    point)}; ``images`` (id -> pixels) or the photos read from ``image_root``. For the points of
+    a texture made from those views, the floor of its colour error: what the photos give
+    without the texture's own resampling."""
+    from workstation.io.images import read_image
+    from workstation.registration.colorize import bilinear, project
+
+    out = {"bilinear": np.zeros((len(P), 3)), "nearest": np.zeros((len(P), 3))}
+    for iid in np.unique(view):
+        sel = np.flatnonzero(view == iid)
+        im = rec.images[int(iid)]
+        cam = rec.cameras[im.camera_id]
+        pix = images[int(iid)] if images is not None else read_image(im, image_root)[..., :3]
+        u, v, _ = project(P[sel], cam, im.pose)
+        u, v = np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1)
+        out["bilinear"][sel] = bilinear(pix, u, v)[:, :3]
+        out["nearest"][sel] = pix[np.rint(v).astype(int), np.rint(u).astype(int), :3]
+    return out
+
+
 def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consistency: bool = True,
-                     tree: bool = False, last_resort: bool = True, max_views: int = 1, texel_size: float | None = None):
+                     tree: bool = False, last_resort: bool = True, max_views: int = 1, texel_size: float | None = None,
+                     image_size: tuple[int, int] | None = None):
     """Texture the church and ground of :func:`heritage_texture_scene` from the 24 photos;
     texture colour at random points of the textured church faces against the scene's true
     surface colour (0-255). The textured share of the church is given of all its area and of
@@ -575,13 +602,14 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     :func:`heritage_tree` (not in the mesh); the points its crown or trunk hides from some
     camera are the façade behind it, and a point takes the tree's colour when the tree hides
     it from the view its face is textured from. ``max_views`` and ``texel_size`` are passed to
-    :class:`TextureParams` (views blended per face; texel size, m)."""
+    :class:`TextureParams` (views blended per face; texel size, m); ``image_size``: the rig at
+    that size (``workdir``: :func:`rig_workdir`). The floor: the same points in their view's photo."""
     from workstation.mesh import TextureParams, texture_from_photos
     from workstation.mesh.texture import ranked_views
     from workstation.photogrammetry.rigs import render, surface_colour
     from workstation.registration.colorize import bilinear
 
-    rec, mesh, vals, (V0, F0, alb0), centre, wall_r = heritage_texture_scene(workdir)
+    rec, mesh, vals, (V0, F0, alb0), centre, wall_r = heritage_texture_scene(workdir, image_size)
     images = None
     if tree or jitter:
         from workstation.io.images import read_image
@@ -626,13 +654,14 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     full = ranked_views(mesh, rec, TextureParams(), 1)[3][:, 0][faces]  # points on faces with full views
     visible = cameras_seeing(rec, V0, F0, mesh.vertices[mesh.faces].mean(axis=1)).any(axis=1)
     extra = tree_share(rec, (V0, F0), (sv, sf), P, view[faces], err, stats) if tree else {}
+    floor = {k: stats(np.abs(c - truth)[full]) for k, c in photo_samples(rec, view[faces], P, images, workdir).items()}
     emit(bench="texture_heritage_rig", images=len(rec.images), faces=mesh.n_faces, church_faces=int(church.sum()),
          tree=tree, last_resort=last_resort, max_views=max_views, texture_px=[int(w), int(h)],
          texel_size_m=round(step.params["texel_size"], 4),
          church_area_textured_fraction=round(float(area[church & seen].sum() / area[church].sum()), 3),
          church_area_seen_fraction=round(float(area[church & visible].sum() / area[church].sum()), 3),
          seen_area_textured_fraction=round(float(area[church & visible & seen].sum() / area[church & visible].sum()), 3),
-         abs_error_0_255=stats(err), abs_error_full_views=stats(err[full]),
+         abs_error_0_255=stats(err), abs_error_full_views=stats(err[full]), photo_floor_full_views=floor,
          abs_error_last_resort=stats(err[~full]) if (~full).any() else None,
          area_last_resort_fraction=round(step.summary["area_last_resort_fraction"], 4), **extra,
          exposure_jitter=jitter, exposure_balance=balance, gain_range=step.summary["exposure_gain_range"],
@@ -728,6 +757,17 @@ def rig_spec_at(spec, image_size: tuple[int, int] | None):
     return replace(spec, width=w, height=h, focal_px=spec.focal_px * w / spec.width)
 
 
+def rig_workdir(work, image_size: tuple[int, int] | None) -> Path:
+    """Folder of the heritage rig rendered at ``image_size`` (width, height): ``work`` itself
+    at the rig's own size (or None), else ``WORK_WxH`` beside it."""
+    from workstation.photogrammetry.rigs import load_rig
+
+    work = Path(work)
+    _, spec0 = load_rig("rig_heritage")
+    spec = rig_spec_at(spec0, image_size)
+    return work if spec is spec0 else work.parent / f"{work.name}_{spec.width}x{spec.height}"
+
+
 def fscore_data(work: Path, spec, camera: str = "sfm", dense_size: int = 1600):
     """The rendered rig (``work``), its oriented workdir and dense cloud, both kept between
     runs: ``camera`` "sfm" runs ``ws sfm`` with the rig's intrinsics held fixed
@@ -791,9 +831,7 @@ def fscore_heritage(work: Path, support_trims=(0.0, 3.0), refine_ks=(0,), image_
 
     _, spec0 = load_rig("rig_heritage")
     spec = rig_spec_at(spec0, image_size)
-    work = Path(work)
-    if spec is not spec0:
-        work = work.parent / f"{work.name}_{spec.width}x{spec.height}"
+    work = rig_workdir(work, image_size)
     cloud, wd, times = fscore_data(work, spec, camera, dense_size)
     true = read_reconstruction(work / "cameras.json")
     est = read_reconstruction(wd / "sparse" / "0")
@@ -865,7 +903,7 @@ if __name__ == "__main__":
     ap.add_argument("--no-last-resort", action="store_true", help="texture: without grazing / partly hidden views")
     ap.add_argument("--max-views", type=int, default=1, help="texture (heritage rig): views blended per face")
     ap.add_argument("--texel-size", type=float, default=None,
-                    help="texture (heritage rig): texel size, m (default: the median ground sample distance)")
+                    help="texture (heritage rig): one texel size, m (default: per face, from its photo footprint)")
     ap.add_argument("--occluder", choices=sorted(OCCLUDERS), default=None,
                     help="texture: instead of the heritage rig, the box-and-wall rig with this occluder in the photos")
     ap.add_argument("--mls", action="store_true", help="bunny: also project the vertices on the scans' MLS planes")
@@ -874,7 +912,8 @@ if __name__ == "__main__":
     ap.add_argument("--refine-ks", default="0",
                     help="fscore: MLS refinement neighbours (0 = none), comma separated")
     ap.add_argument("--image-size", default=None, metavar="WxH",
-                    help="fscore: render the rig at this size, same field of view (default: the rig's 640x480)")
+                    help="fscore, texture (heritage rig): render the rig at this size, same field of view, "
+                         "in WORK_WxH (default: the rig's 640x480)")
     ap.add_argument("--fscore-camera", choices=("sfm", "true"), default="sfm",
                     help="fscore: orient by ws sfm (rig intrinsics fixed) or use the rig's true cameras")
     ap.add_argument("--dense-size", type=int, default=1600,
@@ -901,16 +940,16 @@ if __name__ == "__main__":
         bunny(a.threads, tuple(float(t) for t in a.trims.split(",")), a.mls, a.poisson_backend)
     if "heritage" in todo:
         heritage(a.poisson_backend)
+    size = tuple(int(x) for x in a.image_size.lower().split("x")) if a.image_size else None
     if "texture" in todo:
         if a.occluder:
             texture_occluder(a.occluder)
         else:
-            texture_heritage(Path(a.work), a.exposure_jitter, not a.no_exposure_balance, not a.no_photo_consistency,
-                             a.tree, not a.no_last_resort, a.max_views, a.texel_size)
+            texture_heritage(rig_workdir(a.work, size), a.exposure_jitter, not a.no_exposure_balance,
+                             not a.no_photo_consistency, a.tree, not a.no_last_resort, a.max_views, a.texel_size, size)
     if "fscore" in todo:
         fscore_heritage(Path(a.work), tuple(float(t) for t in a.support_trims.split(",")),
-                        tuple(int(k) for k in a.refine_ks.split(",")),
-                        tuple(int(x) for x in a.image_size.lower().split("x")) if a.image_size else None,
+                        tuple(int(k) for k in a.refine_ks.split(",")), size,
                         a.fscore_camera, a.dense_size, a.poisson_depth)
     if "heritage_fused" in todo:
         heritage_fused(Path(a.sfm_work), a.with_truth_pose, a.poisson_backend)
