@@ -138,3 +138,19 @@ def test_one_plane_has_no_arrangement():
     b, poly, normals, points, grid, centres = _part("cross_l")
     only = np.where(grid >= 0, 0, grid)
     assert arrangement_faces(poly, normals, points, only, centres) is None
+
+
+def test_fill_specks_fills_only_holes_of_sliver_size():
+    """A hole of about 1e-18 m^2 (the noding's cell where several planes' lines nearly meet in a
+    point) is filled; a hole of 1e-4 m^2 is kept."""
+    import shapely
+
+    from workstation.buildings.roof_faces import _fill_specks
+
+    outer = [(0, 0), (4, 0), (4, 4), (0, 4)]
+    speck = [(2, 2), (2 + 1e-9, 2), (2 + 1e-9, 2 + 1e-9), (2, 2 + 1e-9)]
+    hole = [(1, 1), (1.01, 1), (1.01, 1.01), (1, 1.01)]
+    filled = _fill_specks(shapely.Polygon(outer, [speck, hole]))
+    assert len(filled.interiors) == 1 and shapely.Polygon(filled.interiors[0]).area == pytest.approx(1e-4)
+    kept = shapely.Polygon(outer, [hole])
+    assert _fill_specks(kept) is kept

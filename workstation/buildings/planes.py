@@ -28,6 +28,11 @@ clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
    :mod:`workstation.buildings.models` and by step 6): azimuths along the building's dominant
    direction and its quarter turns, and one tilt for the two sides of a ridge, each imposed
    where the Bayes factor of the constrained against the free fit favours it.
+8. Edges settled (:func:`settle_edges`): a point near the line where two planes meet, which the
+   distance threshold lets either plane take, stays on its plane only when on that face's side
+   of the line (ridge or valley) and not within two noise sigmas of it, else it is left out of
+   the fits; a point off its plane and on one other moves there; the planes are refitted (two
+   rounds).
 
 The distance threshold combines the noise and the spacing: ``eps = sqrt((3 sigma)^2 +
 (s tan(angle))^2)``: 3 sigma keeps 99.7 % of Gaussian noise and the second term is the offset a
@@ -596,6 +601,128 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
     return out, np.r_[np.zeros(len(normals), bool), np.array(promised, bool)]
 
 
+#: Half-width, in noise sigmas, of the band within which a point is consistent with a plane (99.7 %
+#: of Gaussian noise), used by :func:`settle_edges` to find the points that fit two planes.
+EDGE_BAND_SIGMA = 3.0
+
+#: Half-width, in noise sigmas, of the band around the intersection line of two planes inside
+#: which :func:`settle_edges` cannot tell a point's face from the other (the planes are closer
+#: than that to each other there): such points are left out of the planes' fits.
+AMBIGUOUS_BAND_SIGMA = 2.0
+
+
+def _two_nearest(xyz, cand, normals, offsets):
+    """The two nearest of each point's candidate planes ``cand`` (u, k) (-1: none), distinct:
+    (plane a (u,), |residual| to a, plane b (u,), |residual| to b), perpendicular residuals;
+    b is -1 with an infinite residual where a point has one candidate only."""
+    r = np.take_along_axis(np.abs(xyz @ normals.T + offsets), np.maximum(cand, 0), axis=1)
+    r[cand < 0] = np.inf
+    u = np.arange(len(xyz))
+    k1 = np.argmin(r, axis=1)
+    a, ra = cand[u, k1], r[u, k1]
+    r[cand == a[:, None]] = np.inf
+    k2 = np.argmin(r, axis=1)
+    rb = r[u, k2]
+    return a, ra, np.where(np.isfinite(rb), cand[u, k2], -1), rb
+
+
+def _ridges(xyz, labels, normals, offsets) -> np.ndarray:
+    """(p, p) bool: whether each pair of planes meets in a ridge (convex; each face the lower of the
+    two planes on its side of their intersection line) rather than a valley (concave; the upper
+    one), from the points ``xyz`` (u, 3) labelled ``labels`` (u,): with F[a, b] the share of a's
+    points under plane b, a ridge when F[a, b] + F[b, a] > 1. Across a ridge each face lies
+    wholly under the other plane (F = 1 both ways), across a valley wholly over it (F = 0); a
+    large face that the line of a small one crosses (a main roof under a dormer) has a share in
+    between, and the small face decides."""
+    p = len(normals)
+    with np.errstate(divide="ignore", invalid="ignore"):  # heights of every plane (u, p); a wall's are not finite
+        z = -(xyz[:, :2] @ normals[:, :2].T + offsets) / normals[:, 2]
+        under = z > z[np.arange(len(xyz)), labels][:, None]  # own plane under plane q at the point
+    cnt = np.bincount(labels, minlength=p)
+    share = np.bincount((labels[:, None] * p + np.arange(p)).ravel(), under.ravel(), minlength=p * p).reshape(p, p)
+    share /= np.maximum(cnt, 1)[:, None]
+    return share + share.T > 1.0
+
+
+def _edge_labels(xyz, labels, cand, normals, offsets, sigma, eps, ridge):
+    """New labels (u,) of points ``xyz`` (u, 3) labelled ``labels`` (u,) by the segmentation,
+    given their candidate planes ``cand`` (u, k) (the planes of their neighbours); -1 for a point
+    left out of the fits.
+
+    A point within the segmentation's distance threshold ``eps`` of one candidate plane only
+    belongs to that plane: one over :data:`EDGE_BAND_SIGMA` noise sigmas ``sigma`` from its own
+    plane (perpendicular residual) and within that band of another moves there. A point within
+    ``eps`` of two planes is one the segmentation could have given to either: it is near where
+    they meet, and residuals at the noise level do not tell the faces apart, but the
+    intersection line does: on a ridge each face is the lower of the two planes on its side of
+    the line, in a valley the upper one (``ridge`` (p, p) bool of :func:`_ridges`). A point
+    labelled with the plane that does not own its side leaves that plane (-1) rather than
+    joining the other: the line runs on beyond the edge where the faces meet (past a dormer's
+    ridge, below its cheeks), where its side says nothing of the point's face. Where the two
+    planes are closer than
+    :data:`AMBIGUOUS_BAND_SIGMA` sigmas to each other (a band around the line; their distance
+    apart is the vertical gap times the smaller cosine of tilt) the point could be on either and
+    gets -1, as does one whose own plane is neither of the two."""
+    a, ra, b, rb = _two_nearest(xyz, cand, normals, offsets)
+    band = EDGE_BAND_SIGMA * sigma
+    r_own = np.abs(np.einsum("ij,ij->i", normals[labels], xyz) + offsets[labels])
+    out = np.where((r_own > band) & (ra < band) & (rb >= eps), a, labels)
+    both = np.flatnonzero(rb < eps)
+    if not len(both):
+        return out
+    a2, b2, own = a[both], b[both], labels[both]
+    xy = xyz[both, :2]
+    with np.errstate(divide="ignore", invalid="ignore"):  # a wall has no height: never clear
+        za = -(np.einsum("ij,ij->i", normals[a2, :2], xy) + offsets[a2]) / normals[a2, 2]
+        zb = -(np.einsum("ij,ij->i", normals[b2, :2], xy) + offsets[b2]) / normals[b2, 2]
+        clear = np.abs(za - zb) * np.minimum(normals[a2, 2], normals[b2, 2]) >= AMBIGUOUS_BAND_SIGMA * sigma
+    other = np.where(own == a2, b2, a2)
+    mine = (own == a2) | (own == b2)
+    lower = np.where(own == a2, za < zb, zb < za)  # the point's own plane is the lower one there
+    right_side = mine & (lower == ridge[own, other])
+    out[both] = np.where(clear & right_side, own, -1)
+    return out
+
+
+def settle_edges(xyz, labels, normals, offsets, rms, counts, idx, eps, rounds: int = 2):
+    """Points near the lines where planes meet (ridges, valleys, a dormer's edges) kept on their
+    plane only where they belong to it, and the planes refitted, ``rounds`` times, as the refit
+    step of region growing and RANSAC segmentations (Sampath & Shan 2010; Xu et al. 2015): the
+    growing and the leftovers' assignment take a point into a plane when within the distance
+    threshold ``eps``, which near an edge also holds for the other face's points, and on a face
+    of 20-40 points a few such points turn the fitted plane by a degree or more.
+
+    Each round labels again, by :func:`_edge_labels`, the labelled points of ``xyz`` (n, 3) with
+    a neighbour (``idx`` (n, k)) on another plane (labels before this step), at the noise pooled
+    over the planes (as :func:`pooled_noise`, from the planes' RMS ``rms`` (p,) and point
+    ``counts`` (p,)) and with the planes' ridges and valleys of :func:`_ridges`. Each round
+    starts from the segmentation's labels with the planes of the round before, so a point left
+    out in one round may return in the next. The points near a line that are not their plane's
+    (ambiguous, or on the other face's side) leave it (label -1), so the planes are fitted to the
+    points that are theirs. A plane that would keep under four points keeps its own. Returns
+    (labels, normals, offsets, rms, counts), the planes numbered as before."""
+    p = len(normals)
+    if p >= 2:
+        on = np.flatnonzero(labels >= 0)
+        seg, cand = labels[on], labels[idx[on]]
+        edge = ((cand >= 0) & (cand != seg[:, None])).any(axis=1)
+        pts, cand, old = on[edge], cand[edge], labels[on[edge]]
+        for _ in range(rounds if len(pts) else 0):
+            dof = counts.sum() - 3 * np.count_nonzero(counts)
+            sigma = math.sqrt(float(np.sum(rms * rms * counts)) / dof) if dof > 0 else 0.0
+            if sigma <= 0:
+                break
+            ridge = _ridges(xyz[on], seg, normals, offsets)
+            new = _edge_labels(xyz[pts], old, cand, normals, offsets, sigma, eps, ridge)
+            labels = labels.copy()
+            labels[pts] = new
+            few = np.bincount(labels[labels >= 0], minlength=p) < 4
+            labels[pts] = np.where(few[old], old, new)  # a plane left with under four points keeps its own
+            g = grouped_plane_fit(xyz, labels, p)
+            normals, offsets, rms, counts = g.normals, g.offsets, g.rms, g.counts
+    return labels, normals, offsets, rms, counts
+
+
 #: Tilt (degrees) below which a roof plane counts as flat (drainage slopes are a few degrees):
 #: the models' flat roofs (:mod:`workstation.buildings.models`) and the tilt from which a
 #: plane's azimuth is regularised (below it a face has no direction worth a constraint).
@@ -866,4 +993,5 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
         on = (labels >= 0) & (small >= 0)
         votes = np.bincount(labels[on], promised[small[on]], minlength=len(pn))
         regular = votes > 0.5 * np.maximum(counts, 1)
+    labels, pn, pd, rmse, counts = settle_edges(loc, labels, pn, pd, rmse, counts, idx, eps)
     return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg, regular)

@@ -280,6 +280,21 @@ def _continuous_labels(poly, g: np.ndarray, h: np.ndarray, sub: np.ndarray, cent
     return None if _jumps(labels, seg, meet).any() else (cells, labels)
 
 
+#: Area (m^2) under which a face is a sliver of the arrangement and dropped (:func:`arrangement_faces`).
+SLIVER_AREA = 1e-9
+
+
+def _fill_specks(poly):
+    """``poly`` without its holes of under :data:`SLIVER_AREA`: where several planes' lines pass
+    through nearly one point (a cross wing's ridge ending on the main ridge, once regularised),
+    the noding cuts cells of about 1e-18 m^2 there; one inside another plane's face is a hole
+    of it, and as a sliver it has no face of its own to fill that hole."""
+    import shapely
+
+    keep = [r for r in poly.interiors if shapely.Polygon(r).area >= SLIVER_AREA]
+    return poly if len(keep) == len(poly.interiors) else shapely.Polygon(poly.exterior, keep)
+
+
 def arrangement_faces(poly, normals: np.ndarray, points: np.ndarray, grid: np.ndarray, centres: np.ndarray):
     """Faces [(plane index, shapely Polygon)] of the arrangement of the part's planes, labelled by
     the ownership raster ``grid`` (plane index per raster cell, negative for none) at ``centres``
@@ -305,8 +320,8 @@ def arrangement_faces(poly, normals: np.ndarray, points: np.ndarray, grid: np.nd
     faces = []
     for q in np.unique(labels):
         merged = shapely.unary_union(cells[labels == q])
-        faces += [(int(use[q]), shapely.orient_polygons(p)) for p in shapely.get_parts(merged)
-                  if p.geom_type == "Polygon" and p.area > 1e-9]
+        faces += [(int(use[q]), shapely.orient_polygons(_fill_specks(p))) for p in shapely.get_parts(merged)
+                  if p.geom_type == "Polygon" and p.area > SLIVER_AREA]
     # a face dropped as a sliver, or one enclosing a sliver of another plane, would leave a gap or
     # a degenerate hole in the solid
     area = sum(f.area for _, f in faces)
