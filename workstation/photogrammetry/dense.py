@@ -446,27 +446,40 @@ def plane_sweep(ref_img, ref: _View, src_imgs, srcs: list[_View], params: DenseP
 
 def depth_normals(depth: np.ndarray, K: np.ndarray) -> np.ndarray:
     """(h, w, 3) float32 unit normals (camera frame, facing the camera) from a depth map by the
-    cross product of central differences of back-projected points; 0 where undefined."""
+    cross product of the differences of back-projected neighbours along the rows and along the
+    columns; 0 where undefined. Each difference is central where both neighbours have a depth
+    and one-sided where only one has, so a depth needs one neighbour along each image axis:
+    requiring all four would also drop every depth on the rim of a hole or of a patch (many,
+    on the speckled maps of obliquely seen surfaces), and fusion needs a normal for each
+    depth it uses."""
     h, w = depth.shape
     u, v = np.meshgrid(np.arange(w, dtype=np.float32), np.arange(h, dtype=np.float32))
     X = (u - K[0, 2]) / K[0, 0] * depth
     Y = (v - K[1, 2]) / K[1, 1] * depth
     P = np.stack([X, Y, depth], -1)
-    dx = np.zeros_like(P)
-    dy = np.zeros_like(P)
-    dx[:, 1:-1] = P[:, 2:] - P[:, :-2]
-    dy[1:-1] = P[2:] - P[:-2]
+    ok = depth > 0
+    dx, okx = _difference(P, ok, axis=1)
+    dy, oky = _difference(P, ok, axis=0)
     nrm = np.cross(dx, dy)
-    ok = (depth > 0)
-    ok[:, 1:-1] &= (depth[:, 2:] > 0) & (depth[:, :-2] > 0)
-    ok[1:-1] &= (depth[2:] > 0) & (depth[:-2] > 0)
-    ok[[0, -1], :] = False
-    ok[:, [0, -1]] = False
     ln = np.linalg.norm(nrm, axis=-1, keepdims=True)
-    nrm = np.where(ok[..., None] & (ln > 0), nrm / np.maximum(ln, 1e-12), 0)
+    nrm = np.where((ok & okx & oky)[..., None] & (ln > 0), nrm / np.maximum(ln, 1e-12), 0)
     flip = np.sum(nrm * P, -1) > 0  # make normals face the camera
     nrm[flip] *= -1
     return nrm.astype(np.float32)
+
+
+def _difference(P: np.ndarray, ok: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
+    """Difference (h, w, 3) of the points ``P`` along image ``axis`` (1: columns, 0: rows) per
+    unit step: (next - previous) / 2 where both neighbours are ``ok``, else next - self or
+    self - previous where one is; and where one was found (h, w) bool."""
+    nxt, prv = np.zeros_like(P), np.zeros_like(P)
+    okn, okp = np.zeros_like(ok), np.zeros_like(ok)
+    sl = (slice(None),) * axis
+    nxt[sl + (slice(0, -1),)], okn[sl + (slice(0, -1),)] = P[sl + (slice(1, None),)], ok[sl + (slice(1, None),)]
+    prv[sl + (slice(1, None),)], okp[sl + (slice(1, None),)] = P[sl + (slice(0, -1),)], ok[sl + (slice(0, -1),)]
+    both = (okn & okp)[..., None]
+    d = np.where(both, 0.5 * (nxt - prv), np.where(okn[..., None], nxt - P, np.where(okp[..., None], P - prv, 0)))
+    return d, okn | okp
 
 
 def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View], params: DenseParams) -> np.ndarray:
@@ -474,9 +487,15 @@ def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View
     reprojection within ``max_reproj_px`` and relative depth within ``max_rel_depth``).
 
     A reference pixel's point goes into the source camera (relative pose), takes the source
-    depth at the nearest source pixel, comes back into the reference camera and must land
-    within ``max_reproj_px`` of where it started at a depth within ``max_rel_depth``. Only the
-    valid pixels are processed, in float32 (reprojection errors of a pixel or so).
+    depth at its sub-pixel projection (:func:`_sample_depth`), goes back along that source ray
+    at that depth into the reference camera, and must land within ``max_reproj_px`` of where
+    it started at a depth within ``max_rel_depth``. Going back through the nearest source
+    pixel's centre at that pixel's depth instead would add up to half a source pixel of
+    rounding, which lands up to cos θ_ref / cos θ_src times as far in the reference image
+    (θ: a view's incidence on the surface), and a depth that changes by z · tan θ_src / f
+    per source pixel: on surfaces a view sees obliquely either alone exceeds the tolerances
+    and rejects correct depths. Only the valid pixels are processed, in float32
+    (reprojection errors of a pixel or so).
     """
     h, w = depth.shape
     idx = np.flatnonzero(depth > 0)
@@ -490,10 +509,8 @@ def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View
         tr = s.t - Rr @ ref.t
         Xs = _transform(Rr, tr, P)
         us, vs, zs = _project(s.K, Xs)
-        ui, vi = np.rint(us), np.rint(vs)  # the nearest source pixel
-        inside = (ui >= 0) & (ui < ds.shape[1]) & (vi >= 0) & (vi < ds.shape[0])
-        dsamp = np.where(inside, ds[np.where(inside, vi, 0).astype(np.int64), np.where(inside, ui, 0).astype(np.int64)], 0)
-        Xb = _transform(Rr.T, -Rr.T @ tr, _unproject(np.linalg.inv(s.K), ui, vi, dsamp.astype(np.float32)))
+        dsamp = _sample_depth(ds, us, vs)
+        Xb = _transform(Rr.T, -Rr.T @ tr, _unproject(np.linalg.inv(s.K), us, vs, dsamp))
         ub, vb, zb = _project(ref.K, Xb)
         with np.errstate(divide="ignore", invalid="ignore"):
             err = np.hypot(ub - u, vb - v)
@@ -503,6 +520,28 @@ def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View
     keep = count >= params.min_consistent
     out[idx[keep]] = z[keep]
     return out.reshape(h, w)
+
+
+def _sample_depth(depth: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Depth (float32, 0 = none) of the map ``depth`` at sub-pixel positions (u, v): the
+    bilinear interpolation of inverse depth over the four surrounding pixels where all four
+    have a depth (inverse depth is affine in the pixel coordinates over a plane, so a planar
+    patch is sampled exactly however obliquely it is seen), else the nearest pixel's depth
+    (across a depth edge, where interpolation would invent a depth between the two sides)."""
+    h, w = depth.shape
+    ui, vi = np.rint(u), np.rint(v)
+    inside = (ui >= 0) & (ui < w) & (vi >= 0) & (vi < h)
+    yi, xi = np.where(inside, vi, 0).astype(np.int64), np.where(inside, ui, 0).astype(np.int64)
+    near = np.where(inside, depth[yi, xi], 0)
+    u0, v0 = np.floor(u), np.floor(v)
+    box = (u0 >= 0) & (u0 < w - 1) & (v0 >= 0) & (v0 < h - 1)
+    x0, y0 = np.where(box, u0, 0).astype(np.int64), np.where(box, v0, 0).astype(np.int64)
+    q = np.stack([depth[y0, x0], depth[y0, x0 + 1], depth[y0 + 1, x0], depth[y0 + 1, x0 + 1]])
+    full = box & np.all(q > 0, axis=0)
+    a, b = (u - u0).astype(np.float32), (v - v0).astype(np.float32)
+    inv = 1.0 / np.where(q > 0, q, 1.0)
+    inv = (1 - b) * ((1 - a) * inv[0] + a * inv[1]) + b * ((1 - a) * inv[2] + a * inv[3])
+    return np.where(full, 1.0 / inv, near).astype(np.float32)
 
 
 def _unproject(Kinv: np.ndarray, u, v, z) -> tuple:
