@@ -58,6 +58,12 @@ def view(mesh, position, yaw_deg, pitch_deg=-30.0, hfov=90.0, vfov=70.0, step=0.
 
 def view_pair(seed, lo=0.2, hi=0.35, step=0.5):
     """Two views of one room whose overlap (share of the first within 5 cm of the second) lies in [lo, hi]."""
+    a, b, ov, _, _ = view_pair_with_sensors(seed, lo, hi, step)
+    return a, b, ov
+
+
+def view_pair_with_sensors(seed, lo=0.2, hi=0.35, step=0.5):
+    """:func:`view_pair` with the sensor positions: ``(a, b, overlap, position_a, position_b)``."""
     from scipy.spatial import cKDTree
     rng = np.random.default_rng(seed)
     mesh, (L, W, H) = room_mesh(seed)
@@ -70,5 +76,5 @@ def view_pair(seed, lo=0.2, hi=0.35, step=0.5):
             continue
         ov = float((cKDTree(b).query(a, distance_upper_bound=0.05)[0] < 0.05).mean())
         if lo <= ov <= hi:
-            return a, b, ov
+            return a, b, ov, p1, p2
     raise RuntimeError("no view pair with that overlap")

@@ -184,3 +184,39 @@ def test_plane_registration_returns_the_pose_of_an_asymmetric_scene():
     res = plane_registration(src, prepare(tgt_pts, Radii(0.1), features=False))
     rot, shift = transform_error(res.transform, truth, center=np.asarray(src.down.points).mean(axis=0))
     assert rot < 2.0 and shift < 0.1, (rot, shift)
+
+
+def test_range_image_marks_only_points_in_front_of_the_seen_surface():
+    """A wall 3 m ahead of the sensor: a point half-way to it lies in the observed free space;
+    one behind it, one within the margin of it and one where the sensor did not look do not."""
+    from workstation.registration.planes import RangeImage
+
+    g = np.arange(-1.0, 1.0, 0.02)
+    y, z = np.meshgrid(g, g)
+    wall = np.column_stack([np.full(y.size, 3.0), y.ravel(), z.ravel()])
+    img = RangeImage(wall, (0.0, 0.0, 0.0), 0.05)
+    probe = np.array([[1.5, 0.1, -0.2], [4.0, 0.0, 0.0], [2.9, 0.0, 0.0], [-1.5, 0.0, 0.0], [0.0, 1.5, 0.0]])
+    assert img.in_free_space(probe, 0.15).tolist() == [True, False, False, False, False]
+
+
+def test_free_space_violations_of_two_room_views():
+    """Two ray-cast views of a simulated room, in the room's frame: at the true pose almost
+    no point of either view lies in the other's observed free space; lifted by half a metre,
+    the source's floor where the views overlap floats in front of the target's floor; unknown
+    sensors test nothing."""
+    import sys
+    from pathlib import Path
+
+    from workstation.interop.open3d import points_to_legacy
+    from workstation.registration.planes import RangeImage, free_space_violations
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from rooms import view_pair_with_sensors
+
+    a, b, _, pa, pb = view_pair_with_sensors(1, step=1.0)
+    src, tgt = points_to_legacy(a), points_to_legacy(b)
+    images = (RangeImage(a, pa, 0.05), RangeImage(b, pb, 0.05))
+    lift = make_transform(np.eye(3), (0.0, 0.0, 0.5))
+    truth, lifted = (free_space_violations(src, tgt, T, images, 0.15) for T in (np.eye(4), lift))
+    assert truth < 0.005 and lifted > 0.04, (truth, lifted)  # the views share about a quarter
+    assert free_space_violations(src, tgt, lift, (None, None), 0.15) == 0.0

@@ -12,16 +12,22 @@ freedom; the other three are searched exhaustively:
 2. **Plane alignment.** For each of the largest source planes, each of the largest target
    planes and both normal signs, the source is turned and shifted so that the two planes
    coincide (the gravity prior of indoor scenes when the planes are floors or worktops).
+   When both scanner positions are known, only planes whose scanners lie on the same side
+   of them are paired (a floor seen from above is not laid on a floor seen from below).
 3. **Turn and shift in the plane** (:func:`plane_yaw_search`). Each cloud becomes a stack of
    2-D occupancy images, one per height slice above the plane, high-pass filtered so that
    edges (a worktop's border, a cabinet's side) count rather than areas; for every turn
    about the normal (3 degree steps) the in-plane shift is read off the peaks of the FFT
    cross-correlation of the two stacks.
-4. **Verification.** Every pose is scored by the surface agreement of a source subsample
-   (:class:`_Scorer`); the best distinct ones are refined by a short point-to-plane ICP and
-   ranked by two-way surface consistency
+4. **Verification.** Every pose is scored by the surface agreement of a source subsample,
+   less its free-space violations (below) when the scanners are known (:class:`_Scorer`);
+   the best distinct ones are refined by a short point-to-plane ICP and ranked by two-way
+   surface consistency
    (:func:`~workstation.registration.register.consistency`), which penalises surfaces of
-   either cloud that come near the other but off its surface.
+   either cloud that come near the other but off its surface, less the share of points
+   that land in the other scan's free space when the scanner positions are known
+   (:class:`RangeImage`: a point of one cloud lying in front of a surface the other sensor
+   saw, along that sensor's ray, would have hidden that surface).
 
 Plane correspondences drive plane-based SLAM and range-image registration (e.g. Pathak et
 al. 2010, "Fast registration based on noisy planes with unknown correspondences for 3-D
@@ -29,9 +35,11 @@ mapping", IEEE T-RO; Taguchi et al. 2013, "Point-plane SLAM using supporting pla
 mapping", ICRA); the remaining 3-DoF search by correlation of height-slice images is the
 phase-correlation idea of 2.5-D map matching, applied above a matched plane.
 
-Limits: two-way consistency cannot tell a room from its mirror-symmetric turn without the
-cameras' free space, so in nearly symmetric rooms a wrong turn can rank first; the method is
-opt-in (``--method planes``) and its result should be checked.
+Limits: in rooms whose views are mostly floor and plain walls, a turn by 90 or 180 degrees
+can lay floor on floor and wall on wall with more overlap than the true pose and with the
+moved points outside the other sensor's observed free space, so neither consistency nor the
+free-space test rejects it; the method is opt-in (``--method planes``) and its result should
+be checked.
 """
 
 from __future__ import annotations
@@ -75,6 +83,12 @@ class PlaneCoarseParams:
         Source points of the fast agreement score.
     verify : int
         Distinct best-scoring poses refined by ICP and ranked by consistency.
+    free_margin : float
+        Depth by which a point must lie in front of the other sensor's observed surface to
+        count as a free-space violation (absorbs range noise and fused-fragment blur).
+    free_cell : float
+        Pixel of the range images (:class:`RangeImage`), as an arc of this many voxels at
+        the cloud's median range.
     """
 
     max_planes: int = 8
@@ -86,6 +100,8 @@ class PlaneCoarseParams:
     peaks: int = 3
     sample: int = 800
     verify: int = 32
+    free_margin: float = 3.0
+    free_cell: float = 2.0
 
 
 @dataclass(frozen=True)
@@ -149,23 +165,28 @@ class _Scorer:
     normal within 37 degrees (either sign) and the point within ``voxel`` of its tangent
     plane (loose enough for a pose before ICP); it *conflicts* when the target comes within
     ``3 * voxel`` but it does not agree. The score of a pose is (agreeing - conflicting) /
-    sampled points."""
+    sampled points, less the share of a source and a target subsample lying more than
+    ``margin`` in the other scanner's observed free space (:class:`RangeImage`; ``images``
+    of source and target, None where the scanner is unknown)."""
 
-    def __init__(self, src: Prepared, tgt: Prepared, n: int, seed: int = 0):
+    def __init__(self, src: Prepared, tgt: Prepared, n: int, seed: int = 0, images=(None, None), margin: float = 0.0):
         from scipy.spatial import cKDTree
 
+        rng = np.random.default_rng(seed)
         ps = np.asarray(src.down.points)
-        idx = np.random.default_rng(seed).choice(ps.shape[0], size=min(n, ps.shape[0]), replace=False)
+        idx = rng.choice(ps.shape[0], size=min(n, ps.shape[0]), replace=False)
         self.q, self.qn = ps[idx], np.asarray(src.down.normals)[idx]
         self.y, self.yn = np.asarray(tgt.down.points), np.asarray(tgt.down.normals)
+        self.p = self.y[rng.choice(self.y.shape[0], size=min(n, self.y.shape[0]), replace=False)]
         self.tree = cKDTree(self.y)
         self.voxel = src.radii.voxel
+        self.images, self.margin = images, margin
 
     def __call__(self, Ts: np.ndarray, n: int | None = None) -> np.ndarray:
         """Scores of the poses ``Ts`` (k, 4, 4) on the first ``n`` sampled points (all by
         default; the sample is random, so any prefix is too)."""
         v = self.voxel
-        q, qn = self.q[:n], self.qn[:n]
+        q, qn, p = self.q[:n], self.qn[:n], self.p[:n]
         Rt = np.transpose(Ts[:, :3, :3], (0, 2, 1))
         x = (q @ Rt + Ts[:, None, :3, 3]).reshape(-1, 3)
         nx = (qn @ Rt).reshape(-1, 3)
@@ -176,14 +197,24 @@ class _Scorer:
         on = np.abs(np.einsum("ij,ij->i", ny, x - self.y[jj])) < v
         par = np.abs(np.einsum("ij,ij->i", ny, nx)) > 0.8
         agree = found & (dist < 1.5 * v) & on & par
-        score = agree.astype(np.float64) - (found & ~agree)
-        return score.reshape(Ts.shape[0], -1).sum(axis=1) / q.shape[0]
+        score = (agree.astype(np.float64) - (found & ~agree)).reshape(Ts.shape[0], -1).sum(axis=1) / q.shape[0]
+        free = np.zeros(Ts.shape[0])
+        if self.images[1] is not None:
+            free += self.images[1].in_free_space(x, self.margin).reshape(Ts.shape[0], -1).sum(axis=1)
+        if self.images[0] is not None:  # target points under the inverse poses: R^T (y - t)
+            xb = np.einsum("kij,nj->kni", Rt, p) - np.einsum("kij,kj->ki", Rt, Ts[:, :3, 3])[:, None]
+            free += self.images[0].in_free_space(xb.reshape(-1, 3), self.margin).reshape(Ts.shape[0], -1).sum(axis=1)
+        return score - free / (q.shape[0] + p.shape[0])
 
 
-def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = PlaneCoarseParams()):
+def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = PlaneCoarseParams(),
+                     viewpoints=(None, None)):
     """Poses laying a large source plane onto a large target plane (module docstring, steps
     1-3), with their fast agreement scores: ``(scores (k,), transforms (k, 4, 4), source
-    planes, target planes)``, best first."""
+    planes, target planes)``, best first. With both scanner positions (``viewpoints``, local
+    frames) known, a plane is laid only on planes whose scanner lies on the same side of it
+    (:func:`_same_side_offsets`): a floor seen from above is not laid on one seen from below;
+    and the agreement score counts free-space violations (:class:`_Scorer`)."""
     v = src.radii.voxel
     xs, xt = np.asarray(src.down.points), np.asarray(tgt.down.points)
     ps = extract_planes(xs, np.asarray(src.down.normals), v, params)
@@ -193,11 +224,13 @@ def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = P
     for a, da, _ in _direction_groups(ps)[: params.align_planes]:
         for b, db, _ in _direction_groups(pt)[: params.align_planes]:
             for sg in (1.0, -1.0):
-                Ts += [T for _, T in plane_yaw_search(xs, xt, a, da, sg * b, sg * db, v, params.step_deg, params.peaks)]
+                for da_, db_ in _same_side_offsets(a, da, sg * b, sg * db, *viewpoints):
+                    Ts += [T for _, T in plane_yaw_search(xs, xt, a, da_, sg * b, db_, v, params.step_deg, params.peaks)]
     if not Ts:
         return np.zeros(0), np.zeros((0, 4, 4)), ps, pt
     Ts = np.array(Ts)
-    score = _Scorer(src, tgt, params.sample)
+    images = [None if p is None else RangeImage(c, p, v, params.free_cell) for c, p in zip((xs, xt), viewpoints)]
+    score = _Scorer(src, tgt, params.sample, images=images, margin=params.free_margin * v)
     first = np.concatenate([score(Ts[k:k + 512], params.sample // 4) for k in range(0, len(Ts), 512)])
     Ts = Ts[np.argsort(-first, kind="stable")[: max(10 * params.verify, len(Ts) // 10)]]  # the rest cannot compete
     sc = np.concatenate([score(Ts[k:k + 512]) for k in range(0, len(Ts), 512)])
@@ -205,24 +238,40 @@ def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = P
     return sc[order], Ts[order], ps, pt
 
 
-def plane_registration(src: Prepared, tgt: Prepared, params=None) -> RegistrationResult:
-    """Coarse registration from planes (module docstring): the pose of best two-way surface
-    consistency among the ``verify`` best distinct plane hypotheses, each refined by a short
-    point-to-plane ICP. Only poses whose verified overlap reaches half the best one's are
-    ranked (a pose barely touching the other cloud has neither agreement nor conflict).
+def _same_side_offsets(a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray, vs, vt):
+    """The sets of source offsets ``da`` (planes ``a . x = da``) and target offsets ``db``
+    that may be laid on each other: all of them when either scanner position is unknown,
+    else, for each side of the planes, those with their scanner on that side (a scanner sees
+    a surface from one side, and the pose keeps each scanner on its side of the plane)."""
+    if vs is None or vt is None:
+        return [(np.asarray(da), np.asarray(db))]
+    sa = np.where(a @ np.asarray(vs, float) >= np.asarray(da), 1, -1)
+    sb = np.where(b @ np.asarray(vt, float) >= np.asarray(db), 1, -1)
+    return [(np.asarray(da)[sa == k], np.asarray(db)[sb == k]) for k in (1, -1) if (sa == k).any() and (sb == k).any()]
+
+
+def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=(None, None)) -> RegistrationResult:
+    """Coarse registration from planes (module docstring): the best of the ``verify`` best
+    distinct plane hypotheses, each refined by a short point-to-plane ICP, by two-way surface
+    consistency less the free-space violation share (:func:`free_space_violations`; zero for
+    a cloud whose scanner position is unknown). Only poses whose verified overlap reaches half
+    the best one's are ranked (a pose barely touching the other cloud has neither agreement
+    nor conflict).
 
     ``params`` may be a :class:`PlaneCoarseParams`; anything else (the coarse stage's
-    :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults.
+    :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults. ``viewpoints``
+    holds the scanner positions of source and target in their own (local) frames, or None.
 
-    ``meta["hypotheses"]`` holds the verified poses, best first. Raises
-    :class:`~workstation.core.errors.StageError` when no plane pair gives a pose (a cloud with
-    no plane, or no slice of the two clouds at matching heights)."""
+    ``meta["hypotheses"]`` holds the verified poses, best first, with their ``consistency``
+    and ``free_space`` shares. Raises :class:`~workstation.core.errors.StageError` when no
+    plane pair gives a pose (a cloud with no plane, or no slice of the two clouds at matching
+    heights)."""
     from .icp import ICPParams, refine
     from .register import _distinct_pose, consistency
 
     params = params if isinstance(params, PlaneCoarseParams) else PlaneCoarseParams()
     v = src.radii.voxel
-    scores, Ts, ps, pt = plane_hypotheses(src, tgt, params)
+    scores, Ts, ps, pt = plane_hypotheses(src, tgt, params, viewpoints)
     meta = {"planes_source": int(len(ps.count)), "planes_target": int(len(pt.count)), "plane_poses": len(Ts)}
     if not len(Ts):
         raise StageError("register", f"no common planes to align ({len(ps.count)} planes found in the source, "
@@ -233,19 +282,75 @@ def plane_registration(src: Prepared, tgt: Prepared, params=None) -> Registratio
             picked.append((s, T))
         if len(picked) >= params.verify:
             break
+    images = [None if p is None else RangeImage(np.asarray(c.down.points), p, v, params.free_cell)
+              for c, p in zip((src, tgt), viewpoints)]
     quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     cands = []
     for s, T in picked:
         q = refine(src.down, tgt.down, v, T, quick)
-        cands.append((consistency(src.down, tgt.down, q.transform, v), float(q.fitness), q))
-        log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f",
-                 s, q.fitness, cands[-1][0])
-    least = 0.5 * max(c[1] for c in cands)
-    order = sorted((c for c in cands if c[1] >= least), key=lambda c: -c[0])
-    best = order[0][2]
-    meta.update({"consistency": [round(c[0], 4) for c in order], "hypotheses": [c[2].transform for c in order]})
+        free = free_space_violations(src.down, tgt.down, q.transform, images, params.free_margin * v)
+        cands.append((consistency(src.down, tgt.down, q.transform, v), free, float(q.fitness), q))
+        log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f, free-space %.3f",
+                 s, q.fitness, cands[-1][0], free)
+    least = 0.5 * max(c[2] for c in cands)
+    order = sorted((c for c in cands if c[2] >= least), key=lambda c: c[1] - c[0])
+    best = order[0][3]
+    meta.update({"consistency": [round(c[0], 4) for c in order], "free_space": [round(c[1], 4) for c in order],
+                 "hypotheses": [c[3].transform for c in order]})
     return RegistrationResult(transform=best.transform, scale=1.0, fitness=best.fitness, inlier_rmse=best.inlier_rmse,
                               converged=True, correspondences=best.correspondences, meta={"method": "planes", **meta})
+
+
+class RangeImage:
+    """What one sensor saw: the nearest range in each pixel of a spherical image (azimuth,
+    elevation) around the sensor ``position``, then the least over each pixel's 3 x 3
+    neighbourhood, so that a pixel straddling a depth edge keeps its near side.
+
+    The pixel is an arc of ``cell`` voxels at the median range of ``points``. A pixel with no
+    point is unknown (outside the field of view, beyond the range, or no return), not free."""
+
+    def __init__(self, points: np.ndarray, position, voxel: float, cell: float = 2.0):
+        self.position = np.asarray(position, dtype=np.float64).reshape(3)
+        r = np.linalg.norm(np.asarray(points, dtype=np.float64) - self.position, axis=1)
+        self.step = cell * voxel / max(float(np.median(r)), voxel)
+        self.shape = (int(np.ceil(np.pi / self.step)) + 1, int(np.ceil(2 * np.pi / self.step)))
+        i, j, r = self.pixels(points)
+        img = np.full(self.shape, np.inf)
+        np.minimum.at(img, (i, j), r)
+        pad = np.pad(img, ((1, 1), (0, 0)), constant_values=np.inf)  # azimuth wraps, elevation does not
+        self.image = np.min([np.roll(pad[di:di + self.shape[0]], dj, axis=1) for di in range(3) for dj in (-1, 0, 1)],
+                            axis=0)
+
+    def pixels(self, x: np.ndarray):
+        """Pixel rows, columns and ranges of points ``x`` (n, 3)."""
+        d = np.asarray(x, dtype=np.float64) - self.position
+        r = np.linalg.norm(d, axis=1)
+        el = np.arcsin(np.clip(d[:, 2] / np.maximum(r, 1e-12), -1.0, 1.0))
+        az = np.arctan2(d[:, 1], d[:, 0])
+        i = np.minimum(np.floor((el + np.pi / 2) / self.step).astype(np.int64), self.shape[0] - 1)
+        j = np.floor((az + np.pi) / self.step).astype(np.int64) % self.shape[1]
+        return i, j, r
+
+    def in_free_space(self, x: np.ndarray, margin: float) -> np.ndarray:
+        """Whether each point of ``x`` lies more than ``margin`` in front of the observed range."""
+        i, j, r = self.pixels(x)
+        seen = self.image[i, j]
+        return np.isfinite(seen) & (r < seen - margin)
+
+
+def free_space_violations(src, tgt, T: np.ndarray, images, margin: float) -> float:
+    """Share of the points of both clouds (Open3D) that, under ``T`` (source -> target), lie
+    more than ``margin`` inside the free space the other sensor observed (``images``: the
+    :class:`RangeImage` of source and target, None where the sensor is unknown)."""
+    from .transforms import apply_transform, invert
+
+    a, b = np.asarray(src.points), np.asarray(tgt.points)
+    bad = 0
+    if images[1] is not None:
+        bad += int(images[1].in_free_space(apply_transform(T, a), margin).sum())
+    if images[0] is not None:
+        bad += int(images[0].in_free_space(apply_transform(invert(T), b), margin).sum())
+    return bad / max(a.shape[0] + b.shape[0], 1)
 
 
 def _unit(v: np.ndarray) -> np.ndarray:

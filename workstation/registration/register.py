@@ -222,7 +222,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     if need_coarse or scale_coarse:
         t0 = time.perf_counter()
         if need_coarse:
-            T0, coarse_meta = _coarse(ps, pt, method, params)
+            T0, coarse_meta = _coarse(ps, pt, method, params, viewpoints=(vs, vt))
         else:
             T0, coarse_meta = scale_search(xs, pt, params.coarse, viewpoint=vs, remove_outliers=params.remove_outliers)
         meta.update(coarse_meta)
@@ -351,7 +351,7 @@ def _with_information(res: RegistrationResult, src, tgt, d: float) -> Registrati
     return replace(res, information=info)
 
 
-def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, dict]:
+def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)) -> tuple[np.ndarray, dict]:
     """Coarse transform (local frame) and what was tried.
 
     ``auto``: every hypothesis (the clique estimator's distinct cliques, then RANSAC and FGR
@@ -360,6 +360,11 @@ def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, di
     but off its surface. The best is kept; ``meta["ambiguous"]`` is set when a distinct
     runner-up scores within ``AMBIGUOUS_MARGIN`` of it. Only hypotheses whose verified fitness
     reaches half the best one's (and ``params.min_fitness``) are ranked."""
+    if method == "planes":  # the scanner positions (local frame, or None) let it test free space
+        from .planes import plane_registration
+
+        r = plane_registration(ps, pt, params.coarse, viewpoints=viewpoints)
+        return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
     if method != "auto":
         r = COARSE_METHODS[method](ps, pt, params.coarse)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
