@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from workstation.buildings import synth
-from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+from workstation.buildings.pipeline import BuildingsParams, batch_starts, reconstruct_buildings
 from workstation.core.errors import InvalidInputError
 
 
@@ -49,3 +49,36 @@ def test_cli_refuses_workers_with_a_scheduler(tmp_path, capsys):
     rc = main(["buildings", str(tmp_path / "in.laz"), "-o", str(tmp_path / "out"), "--workers", "2",
                "--scheduler", "tcp://127.0.0.1:8786"])
     assert rc == 2 and "an external --scheduler has its own workers" in capsys.readouterr().err
+
+
+def test_batches_cover_the_buildings_and_shrink_towards_the_end():
+    """Consecutive batches cover every building once, at most 32 at a time, a quarter of a
+    worker's share of those left, the last ones single buildings."""
+    for n_items, workers in ((1, 2), (7, 2), (100, 2), (2000, 2), (2000, 8)):
+        b = batch_starts(n_items, workers)
+        assert b[0][0] == 0 and b[-1][1] == n_items and all(x[1] == y[0] for x, y in zip(b, b[1:]))
+        sizes = [e - s for s, e in b]
+        assert max(sizes) <= 32 and sizes[-1] == 1 and sizes == sorted(sizes, reverse=True)
+    assert [e - s for s, e in batch_starts(100, 2)][:3] == [13, 11, 10]
+
+
+def test_local_worker_settings_reach_the_workers(monkeypatch):
+    """A local cluster under :func:`local_worker_settings` starts workers without Dask's malloc
+    trim threshold (unless exported here), with single-threaded BLAS and the slower monitors."""
+    import os
+
+    import dask
+    from distributed import Client, LocalCluster
+
+    from workstation.core.dasktasks import local_worker_settings
+
+    monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
+
+    def seen():
+        return (os.environ.get("MALLOC_TRIM_THRESHOLD_"), os.environ.get("OPENBLAS_NUM_THREADS"),
+                dask.config.get("distributed.admin.system-monitor.interval"))
+
+    with dask.config.set(local_worker_settings()):
+        with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+                Client(cluster) as client:
+            assert list(client.run(seen).values()) == [(None, "1", "2s")]

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from workstation.buildings import synth
-from workstation.buildings.footprints import (FootprintParams, _nearest_label, _points_direction, _smooth,
+from workstation.buildings.footprints import (FootprintParams, _by_bands, _nearest_label, _points_direction, _smooth,
                                               district_components, extract_footprints)
 
 
@@ -22,6 +22,22 @@ def test_banded_smoothing_is_the_whole_rasters_bit_for_bit():
     whole = ndimage.gaussian_filter(counts, 5.0, mode="constant", truncate=3.0)
     for threads in (2, 3):
         assert np.array_equal(_smooth(counts, 5.0, threads), whole)
+
+
+@pytest.mark.parametrize("threads", [2, 3])
+def test_banded_core_and_edge_filters_are_the_whole_rasters(threads):
+    """The roof cores' minimum filter (reflecting edges) and the edge cells' binary erosion (an
+    empty border) by bands of rows give the whole raster's result, whatever the number of bands."""
+    from scipy import ndimage
+
+    noise = ndimage.gaussian_filter(np.random.default_rng(2).random((500, 170)), 8.0)
+    mask = noise > np.median(noise)  # blobs, some wider than the filter
+    u8 = mask.view(np.uint8)
+    whole = ndimage.minimum_filter(u8, size=21)
+    assert whole.any() and not whole.all()
+    assert np.array_equal(_by_bands(lambda a: ndimage.minimum_filter(a, size=21), u8, 11, threads), whole)
+    eroded = ndimage.binary_erosion(mask)
+    assert np.array_equal(_by_bands(ndimage.binary_erosion, mask, 2, threads), eroded)
 
 
 def test_nearest_region_agrees_with_the_distance_transform():
@@ -83,7 +99,7 @@ def test_threads_do_not_change_the_footprints():
     one = district_components(xy, FootprintParams(), threads=1)
     two = district_components(xy, FootprintParams(), threads=2)
     assert one.spacing == two.spacing and one.ref == two.ref and np.array_equal(one.point_label, two.point_label)
-    assert all(np.array_equal(a.field, b.field) and np.array_equal(a.origin, b.origin)
+    assert all(np.array_equal(a.outline_field(), b.outline_field()) and np.array_equal(a.origin, b.origin)
                for a, b in zip(one.components, two.components))
     fps, owner = extract_footprints(xy)
     assert len(fps) == len(one.components) == 6

@@ -360,7 +360,8 @@ def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radi
     spacings), normalised so the interior of a roof is 1 (by ``ref``, the smoothed count per
     cell of a roof, estimated by :func:`_roof_density` when None): the level 0.5 then lies on a
     straight roof edge without bias (a symmetric kernel over a half-plane integrates to one half
-    at its edge). The smoothing runs on ``threads`` threads (:func:`_smooth`).
+    at its edge). The smoothing and the roof cores are computed on ``threads`` threads
+    (:func:`_by_bands`).
 
     Returns (field (rows, cols), origin (2,), cell, ref); rows follow y.
     """
@@ -373,39 +374,46 @@ def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radi
     counts = np.bincount(ij[:, 1] * shape[1] + ij[:, 0], minlength=shape[0] * shape[1]).reshape(shape)
     field = _smooth(counts.astype(float), sig, threads)
     if ref is None:
-        ref = _roof_density(field, sig)
+        ref = _roof_density(field, sig, threads)
     return field / ref, origin, cell, ref
 
 
-def _smooth(counts: np.ndarray, sig: float, threads: int) -> np.ndarray:
-    """``scipy.ndimage.gaussian_filter(counts, sig, mode="constant", truncate=3.0)``, by bands
-    of rows on ``threads`` threads (ndimage lets go of the GIL). Each band is smoothed with the
-    kernel's reach of rows on either side, so every value is summed from the same inputs in the
-    same order as over the whole raster: the same bits."""
+def _by_bands(fn, a: np.ndarray, reach: int, threads: int) -> np.ndarray:
+    """``fn(a)`` for a filter ``fn`` whose every output row depends on the input rows within
+    ``reach`` of it only, computed by bands of rows on ``threads`` threads (ndimage lets go of
+    the GIL). Each band is filtered with ``reach`` rows of context on either side (the raster's
+    own edge where it ends), so every value comes from the same inputs in the same order as over
+    the whole raster: the same bits."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from scipy import ndimage
-
-    def smooth(a):
-        return ndimage.gaussian_filter(a, sig, mode="constant", truncate=3.0)
-
-    rows = counts.shape[0]
+    rows = a.shape[0]
     if threads <= 1 or rows < 64 * threads:
-        return smooth(counts)
-    reach = int(3.0 * sig + 0.5) + 1  # the kernel's radius in scipy, plus one
+        return fn(a)
     cuts = np.linspace(0, rows, 2 * threads + 1).astype(int)
-    out = np.empty_like(counts)
+    out = None
 
-    def band(a, b):
-        lo, hi = max(a - reach, 0), min(b + reach, rows)
-        out[a:b] = smooth(counts[lo:hi])[a - lo:b - lo]
+    def band(lo_row, hi_row):
+        lo, hi = max(lo_row - reach, 0), min(hi_row + reach, rows)
+        return lo_row, hi_row, fn(a[lo:hi])[lo_row - lo:hi_row - lo]
 
     with ThreadPoolExecutor(threads) as ex:
-        list(ex.map(band, cuts[:-1], cuts[1:]))
+        for lo_row, hi_row, part in ex.map(band, cuts[:-1], cuts[1:]):
+            if out is None:
+                out = np.empty(a.shape, part.dtype)
+            out[lo_row:hi_row] = part
     return out
 
 
-def _roof_density(field: np.ndarray, sig: float) -> float:
+def _smooth(counts: np.ndarray, sig: float, threads: int) -> np.ndarray:
+    """``scipy.ndimage.gaussian_filter(counts, sig, mode="constant", truncate=3.0)`` by bands of
+    rows on ``threads`` threads (:func:`_by_bands`, with the kernel's reach)."""
+    from scipy import ndimage
+
+    reach = int(3.0 * sig + 0.5) + 1  # the kernel's radius in scipy, plus one
+    return _by_bands(lambda a: ndimage.gaussian_filter(a, sig, mode="constant", truncate=3.0), counts, reach, threads)
+
+
+def _roof_density(field: np.ndarray, sig: float, threads: int = 1) -> float:
     """Typical smoothed roof density of a field smoothed with sigma ``sig`` (cells): the median
     over the cells at least two sigmas inside the half-density mask, where the kernel lies wholly
     on the roof (a straight edge at two sigmas still lowers the field by 2.3 %); the margins,
@@ -413,14 +421,16 @@ def _roof_density(field: np.ndarray, sig: float) -> float:
 
     A first level comes from the median over covered cells, twice (the second without the thin
     margins); it is kept when no core as large as the erosion square remains (tiny buildings only).
-    Dense facade lines of a few cells do not move either median, unlike the maximum.
+    Dense facade lines of a few cells do not move either median, unlike the maximum. The cores'
+    minimum filter runs by bands of rows on ``threads`` threads (:func:`_by_bands`, the same result).
     """
     from scipy import ndimage
 
     covered = field[field > 1e-3 * field.max()]
     first = float(np.median(covered[covered > 0.5 * np.median(covered)]))
     size = 2 * int(math.ceil(2 * sig)) + 1
-    core = ndimage.minimum_filter((field > 0.5 * first).view(np.uint8), size=size)
+    core = _by_bands(lambda a: ndimage.minimum_filter(a, size=size), (field > 0.5 * first).view(np.uint8),
+                     size // 2 + 1, threads)
     inner = field[core.view(bool)]
     return float(np.median(inner)) if inner.size >= size * size else first
 
@@ -599,17 +609,27 @@ class Component:
     ----------
     label : int
         Its label in the district mask (1-based, in :func:`scipy.ndimage.label` order).
-    field : (r, c) float64
-        The normalised density over the region's bounding box widened by two cells, raised to
-        just above 0.5 inside the region (its holes filled) and zero beyond one cell outside it,
-        so its level-0.5 line is the region's edge.
+    cut : (r, c) float64
+        The normalised density over the region's bounding box widened by two cells.
+    region : (r, c) bool
+        The region's cells in ``cut``.
     origin : (2,) float64
         Lower-left corner of the cut (m).
     """
 
     label: int
-    field: np.ndarray
+    cut: np.ndarray
+    region: np.ndarray
     origin: np.ndarray
+
+    def outline_field(self) -> np.ndarray:
+        """``cut`` raised to just above 0.5 inside the region (its holes filled) and zero beyond
+        one cell outside it, so its level-0.5 line is the region's edge. Made where the building
+        is traced (a worker, with several), not in the district pass."""
+        from scipy import ndimage
+
+        rim = np.where(ndimage.binary_dilation(self.region), self.cut, 0.0)
+        return np.where(fill_holes(self.region), np.maximum(self.cut, 0.5 + 1e-9), rim)
 
 
 @dataclass(frozen=True)
@@ -651,6 +671,7 @@ def _nearest_label(labels: np.ndarray, rows: np.ndarray, cols: np.ndarray, reach
     The nearest labelled cell to an unlabelled one lies on the region's edge (a step from it
     towards the query would otherwise be closer and labelled), so only edge cells (with an
     unlabelled 4-neighbour) enter the k-d tree; of equidistant cells of two regions one is taken.
+    The edge cells and the look-up run on ``threads`` threads.
     """
     from scipy import ndimage
     from scipy.spatial import cKDTree
@@ -658,7 +679,7 @@ def _nearest_label(labels: np.ndarray, rows: np.ndarray, cols: np.ndarray, reach
     out = labels[rows, cols].astype(np.int64)
     free = np.flatnonzero(out == 0)
     fg = labels > 0
-    edge = np.argwhere(fg & ~ndimage.binary_erosion(fg))
+    edge = np.argwhere(fg & ~_by_bands(ndimage.binary_erosion, fg, 2, threads))
     if not len(free) or not len(edge):
         return out
     d, i = cKDTree(edge).query(np.column_stack([rows[free], cols[free]]), distance_upper_bound=reach * (1 + 1e-9),
@@ -673,7 +694,8 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
     density field, half-density mask and its regions, and the region of every point (points just
     outside the outline, the edge itself, join the nearest region within two spacings).
     Regions under ``min_area`` are left out of ``components`` but keep their points. The spacing,
-    the smoothing and the nearest regions are computed on ``threads`` threads (the same result)."""
+    the smoothing, the roof cores and the nearest regions are computed on ``threads`` threads
+    (the same result); each component's outline field is made only when it is traced."""
     from scipy import ndimage
 
     xy = np.asarray(xy, float)
@@ -686,19 +708,16 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
     for k, sl in enumerate(slices):
         sl = tuple(slice(max(a.start - 2, 0), a.stop + 2) for a in sl)
         sub = labels[sl] == k + 1
-        if sub.sum() * cell * cell < params.min_area:
+        if np.count_nonzero(sub) * cell * cell < params.min_area:
             continue
-        inside = fill_holes(sub)
-        rim = np.where(ndimage.binary_dilation(sub), field[sl], 0.0)
-        comps.append(Component(k + 1, np.where(inside, np.maximum(field[sl], 0.5 + 1e-9), rim),
-                               origin + np.array([sl[1].start, sl[0].start]) * cell))
+        comps.append(Component(k + 1, field[sl], sub, origin + np.array([sl[1].start, sl[0].start]) * cell))
     return District(spacing, cell, ref, comps, point_label, len(slices))
 
 
 def component_footprint(comp: Component, pts: np.ndarray, spacing: float, ref: float, cell: float,
                         params: FootprintParams = FootprintParams()) -> Footprint:
     """Footprint of one region of :func:`district_components` from its points ``pts`` (m, 2)."""
-    ring = trace_outline(comp.field, comp.origin, cell)
+    ring = trace_outline(comp.outline_field(), comp.origin, cell)
     return Footprint(_outline(pts, ring, spacing, ref, cell, params))
 
 

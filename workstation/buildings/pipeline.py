@@ -174,22 +174,23 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
 
 def _buildings(xyz, cls, bxyz, params, footprints, client, threads, t):
     """The models of the building points ``bxyz`` (the district raster on ``threads`` threads,
-    the buildings here (``client`` None) or on the Dask ``client``), the point spacing and the
-    coverage figures of :class:`BuildingsResult`; seconds per step into ``t``."""
+    and with more than one the ground DTM on another beside it; the buildings here (``client``
+    None) or on the Dask ``client``), the point spacing and the coverage figures of
+    :class:`BuildingsResult`; seconds per step into ``t``."""
+    from concurrent.futures import ThreadPoolExecutor
+
     t0 = time.perf_counter()
-    spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
-    shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
-    t["district_s"] = time.perf_counter() - t0
+    with ThreadPoolExecutor(1) as ex:  # with several threads, the DTM is gridded beside the district raster
+        dtm_f = ex.submit(_ground, xyz, cls, params) if threads > 1 else None
+        spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
+        shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
+        t["district_s"] = time.perf_counter() - t0
+        dtm = dtm_f.result() if dtm_f is not None else _ground(xyz, cls, params)
     coverage = {"building_points_outside": float(np.mean(owner < 0)),
                 "footprints_without_points": int(len(shapes) - len(np.unique(owner[owner >= 0])))}
     if footprints is not None and coverage["building_points_outside"] > 0.2:
         log.warning("%.0f %% of the building points lie outside the given footprints",
                     100 * coverage["building_points_outside"])
-    gmask = cls == params.ground_class
-    dtm = ground_dtm(np.asarray(xyz, float)[gmask], params.dtm_cell) if gmask.sum() >= 3 else None
-    if dtm is None:
-        log.warning("no ground points (class %d): walls reach down to each building's lowest point",
-                    params.ground_class)
     order, starts = points_by_label(owner + 1, len(shapes))  # building i: label i + 1
 
     def items(a: int, b: int) -> list:  # buildings a to b - 1 with their points, copied when asked for
@@ -201,6 +202,17 @@ def _buildings(xyz, cls, bxyz, params, footprints, client, threads, t):
     else:
         done = _on_dask(client, items, len(shapes), setup, dtm)
     return _collect(done, t), spacing, coverage
+
+
+def _ground(xyz, cls, params):
+    """:func:`ground_dtm` of the points of ``params.ground_class``, or None (with a warning) when
+    there are fewer than three."""
+    gmask = cls == params.ground_class
+    if gmask.sum() < 3:
+        log.warning("no ground points (class %d): walls reach down to each building's lowest point",
+                    params.ground_class)
+        return None
+    return ground_dtm(np.asarray(xyz, float)[gmask], params.dtm_cell)
 
 
 def _district(bxyz, footprints, fparams, threads):
@@ -284,20 +296,30 @@ def _on_dask(client, items, n_items: int, setup: UnitSetup, dtm) -> list:
     """:func:`build_unit` on batches of consecutive buildings of the ``n_items`` that ``items(a, b)``
     gives on a Dask cluster, at most two batches per worker in flight (a batch's points are
     copied only when a worker is nearly free for it); the results in building order. Batches
-    hold about a quarter of a worker's share (at most 32 buildings), so a slow batch does not
-    keep the others waiting at the end."""
+    (:func:`batch_starts`) hold a quarter of a worker's share of the buildings left (at most 32),
+    so they shrink towards the end and the workers finish within about one building's time."""
     from workstation.core.dasktasks import run_bounded
     from workstation.core.signals import caught_signals
 
     with caught_signals() as latch:
         n = max(1, sum(client.nthreads().values()))
-        size = max(1, min(32, -(-n_items // (4 * n))))
         dtm_f = client.scatter(dtm, broadcast=True) if dtm is not None else None
         results: dict = {}
-        calls = ((k, lambda a=a: (build_unit, items(a, a + size), setup, dtm_f))
-                 for k, a in enumerate(range(0, n_items, size)))
+        calls = ((k, lambda a=a, b=b: (build_unit, items(a, b), setup, dtm_f))
+                 for k, (a, b) in enumerate(batch_starts(n_items, n)))
         run_bounded(client, calls, 2 * n, results.__setitem__, latch, pause=0.02)
     return [r for k in sorted(results) for r in results[k]]
+
+
+def batch_starts(n_items: int, workers: int, largest: int = 32) -> list:
+    """(start, end) of consecutive batches of ``n_items`` for ``workers``: each a quarter of a
+    worker's share of the items not yet in a batch, between 1 and ``largest`` items."""
+    out, a = [], 0
+    while a < n_items:
+        b = a + max(1, min(largest, -(-(n_items - a) // (4 * workers))))
+        out.append((a, min(b, n_items)))
+        a = b
+    return out
 
 
 @contextlib.contextmanager
@@ -309,16 +331,14 @@ def _dask_client(workers: int, scheduler: str | None):
     import dask
     from distributed import Client, LocalCluster
 
-    from workstation.core.dasktasks import connect
+    from workstation.core.dasktasks import connect, local_worker_settings
     from workstation.core.signals import workers_starting
 
     if scheduler:
         with connect(scheduler) as client:
             yield client
         return
-    # no statistical profiler in the workers: its stack sampling every 10 ms costs a worker more
-    # CPU than the buildings' outlines do
-    with workers_starting(), dask.config.set({"distributed.worker.profile.enabled": False}):
+    with workers_starting(), dask.config.set(local_worker_settings()):
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster) as client:

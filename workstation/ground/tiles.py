@@ -155,10 +155,12 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
 
     from distributed import Client, LocalCluster
 
-    from workstation.core.dasktasks import run_bounded
+    import dask
+
+    from workstation.core.dasktasks import local_worker_settings, run_bounded
     from workstation.core.signals import caught_signals, workers_starting
 
-    with workers_starting():
+    with workers_starting(), dask.config.set(local_worker_settings()):
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster) as client, caught_signals() as latch:
