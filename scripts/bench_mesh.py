@@ -654,7 +654,9 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     full = ranked_views(mesh, rec, TextureParams(), 1)[3][:, 0][faces]  # points on faces with full views
     visible = cameras_seeing(rec, V0, F0, mesh.vertices[mesh.faces].mean(axis=1)).any(axis=1)
     extra = tree_share(rec, (V0, F0), (sv, sf), P, view[faces], err, stats) if tree else {}
-    floor = {k: stats(np.abs(c - truth)[full]) for k, c in photo_samples(rec, view[faces], P, images, workdir).items()}
+    # the floor is the photos' own: with jittered exposures it would include the jitter the gains undo
+    floor = {} if jitter else {k: stats(np.abs(c - truth)[full])
+                               for k, c in photo_samples(rec, view[faces], P, images, workdir).items()}
     emit(bench="texture_heritage_rig", images=len(rec.images), faces=mesh.n_faces, church_faces=int(church.sum()),
          tree=tree, last_resort=last_resort, max_views=max_views, texture_px=[int(w), int(h)],
          texel_size_m=round(step.params["texel_size"], 4),

@@ -120,3 +120,13 @@ def test_resample_must_be_known():
     with pytest.raises(InvalidInputError) as e:
         TextureParams(resample="cubic")
     assert e.value.field == "resample"
+
+
+def test_median_texel_ignores_faces_without_texels():
+    # a face whose corners coincide has no texels (legs 0); it must not make the size NaN
+    from workstation.mesh.texture import _median_texel
+
+    longest = np.array([2.0, 0.0, 4.0])
+    legs = np.array([10.0, 0.0, 20.0])
+    assert _median_texel(longest, legs, 1.0, 0.05) == pytest.approx(2.0 / (np.sqrt(2.0) * 10.0))
+    assert _median_texel(np.zeros(2), np.zeros(2), 1.0, 0.05) == 0.05

@@ -291,7 +291,7 @@ def _fill_specks(poly):
     of it, and as a sliver it has no face of its own to fill that hole."""
     import shapely
 
-    keep = [r for r in poly.interiors if shapely.Polygon(r).area >= SLIVER_AREA]
+    keep = [r for r in poly.interiors if shapely.Polygon(r).area > SLIVER_AREA]
     return poly if len(keep) == len(poly.interiors) else shapely.Polygon(poly.exterior, keep)
 
 

@@ -400,7 +400,7 @@ def build_atlas(mesh: Mesh, texel_size: float, params: TextureParams = TexturePa
         x0, y0, half, height = _pack(cell, width)
         if height <= limit:
             height = max(4, int(math.ceil(height / 4.0)) * 4)
-            size = texel if legs is None else grow * float(np.median(longest / (math.sqrt(2.0) * leg0)))
+            size = texel if legs is None else _median_texel(longest, leg0, grow, texel)
             return Atlas(width, height, cell, x0, y0, half, size)
         if int(cell.max()) == 4:
             break
@@ -503,6 +503,13 @@ def texture_from_photos(mesh: Mesh, rec: Reconstruction, params: TextureParams =
     log.info("texture: %dx%d px, texel %.4g, %d of %d faces seen", atlas.width, atlas.height, atlas.texel_size,
              int(seen.sum()), mesh.n_faces)
     return out, step
+
+
+def _median_texel(longest: np.ndarray, legs: np.ndarray, grow: float, texel: float) -> float:
+    """The median surface size of a texel (CRS units) over the faces with texels (``legs`` > 0),
+    each face's longest edge over its diagonal in texels; ``texel`` when no face has any."""
+    ok = legs > 0
+    return grow * float(np.median(longest[ok] / (math.sqrt(2.0) * legs[ok]))) if ok.any() else texel
 
 
 def _footprint_legs(mesh: Mesh, rec: Reconstruction, view: np.ndarray, corners: np.ndarray,
@@ -654,7 +661,7 @@ def _footprint_mean(photo: np.ndarray, cam, pose, P: np.ndarray, faces: np.ndarr
     The texel's square (one step of ``axes`` (m, 2, 3) along each atlas axis, around its
     centre) maps into the photo as a parallelogram, the projection's derivative at the face's
     centroid (``cen`` (m, 3)) times the steps; it is sampled on a k x k grid, k twice the
-    pixels its longer side spans (1 to ``FOOTPRINT_SAMPLES``), each point taking the pixel it
+    largest pixel offset, along u or v, of either side (1 to ``FOOTPRINT_SAMPLES``), each point taking the pixel it
     falls in. A texel far below a pixel takes the pixel holding its centre."""
     from workstation.registration.colorize import project
 
@@ -666,7 +673,8 @@ def _footprint_mean(photo: np.ndarray, cam, pose, P: np.ndarray, faces: np.ndarr
     u, v, _ = project(P, cam, pose)
     centre = np.stack([u, v], axis=1)
     span = np.maximum(np.abs(jx).max(axis=1), np.abs(jy).max(axis=1))
-    k = np.clip(np.ceil(2.0 * span - 1e-6), 1, FOOTPRINT_SAMPLES).astype(np.int64)  # 2.0000001 px: 4
+    # the 1e-6 keeps rounding noise from turning a step of exactly 2 px into k = 5
+    k = np.clip(np.ceil(2.0 * span - 1e-6), 1, FOOTPRINT_SAMPLES).astype(np.int64)
     out = np.empty((len(P), photo.shape[2]))
     h, w = photo.shape[:2]
     for kk in np.unique(k):
