@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from workstation.ground.csf import CSFParams, simulate
 from scipy.spatial import Delaunay
@@ -62,7 +63,9 @@ def _triangles(simp):
     return set(map(tuple, np.sort(simp, axis=1).tolist()))
 
 
-def test_tin_update_is_the_delaunay_triangulation_of_all_points():
+@pytest.mark.parametrize("where", ["inside", "hull"])
+def test_tin_update_is_the_delaunay_triangulation_of_all_points(where):
+    """40 points join anywhere, or those in triangles on the hull join (their cavities reach it)."""
     rng = np.random.default_rng(3)
     xy = rng.uniform(0.0, 100.0, (3000, 2))
     ground = np.zeros(3000, dtype=bool)
@@ -72,8 +75,12 @@ def test_tin_update_is_the_delaunay_triangulation_of_all_points():
     rest = np.flatnonzero(~ground)
     s_rest = tin.tri.find_simplex(xy[rest])
     inside = s_rest >= 0
-    new = rest[inside][:40]  # 40 points join (2 % of the TIN: the cavity is small)
-    s = tin.insert(new, s_rest[inside][:40], rest, s_rest)
+    pick = np.flatnonzero(inside)[:40]  # 40 points join (2 % of the TIN: the cavity is small)
+    if where == "hull":
+        pick = np.flatnonzero(inside & (tin.nbr[np.maximum(s_rest, 0)] < 0).any(axis=1))
+        assert len(pick) >= 5
+    new = rest[pick]
+    s = tin.insert(new, s_rest[pick], rest, s_rest)
     assert s is not None and tin.tri is None
     ground[new] = True
     full = Delaunay(xy[ground])

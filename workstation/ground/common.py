@@ -463,7 +463,9 @@ def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
         return near
     # the walk's transforms, vectorised: a query (a cell centre) lies far beyond rounding
     # distance of every edge between the jittered corners, so the walk ends in the triangle
-    # scipy's own transforms lead to (tin_eval weighs the corners itself)
+    # scipy's own transforms lead to (tin_eval weighs the corners itself); ``_transform`` is
+    # scipy's private cache of them (checked with scipy 1.17; the inpainting test on a curved
+    # surface fails if it is ignored or misread)
     if hasattr(tri, "_transform"):
         tri._transform = barycentric_transforms(tri.points, tri.simplices)
     out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))
@@ -586,6 +588,7 @@ def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
     each is taken into the result, shifted by its row offset, as soon as it has its width:
     two in-place minima (maxima) per width and one per row of the disk, O(cells · radius).
     Minima and maxima are exact, so the result does not depend on the order they are taken in.
+    ``a`` holds no NaN (a NaN spreads over its whole footprint): mark empty cells with ±inf.
     """
     fp = disk(radius)
     r = fp.shape[0] // 2

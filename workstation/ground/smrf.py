@@ -183,10 +183,16 @@ class SharedSurfaces:
         ground) read one inpainted surface."""
         g = self.grid(cell)
         key = ("provisional", cell, bad.shape, hashlib.blake2b(np.packbits(bad).tobytes(), digest_size=16).digest())
-        made_for, zpro = self.get(key, lambda: (bad.copy(), _provisional(g.zmin, bad, g.zfill, g.off)))
+        made_for, zpro = self.get(key, lambda: (bad.copy(), _read_only(_provisional(g.zmin, bad, g.zfill, g.off))))
         if np.array_equal(made_for, bad):
             return zpro
         return _provisional(g.zmin, bad, g.zfill, g.off)  # another set with the same digest
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    """``a`` marked read-only: a surface shared by several runs must not be changed by one."""
+    a.setflags(write=False)
+    return a
 
 
 @dataclass(frozen=True)
@@ -214,7 +220,7 @@ def _provisional(zmin: np.ndarray, bad: np.ndarray, zfill: np.ndarray, off) -> n
     zp = zmin.copy()
     zp[bad] = np.nan
     if bad.all():
-        zp = zfill
+        return zfill.copy()
     return common.inpaint(zp, off)
 
 
