@@ -81,3 +81,21 @@ def test_depth_normals_on_the_rims_of_holes_and_patches():
     ok[:, 21] = True
     assert ok[depth > 0].all()
     assert np.allclose(nrm[has], n_true, atol=1e-3)
+
+
+@pytest.mark.parametrize("transpose", [False, True])
+def test_sample_depth_on_a_map_one_pixel_high_or_wide(transpose):
+    """A (1, 5) map and its (5, 1) transpose have no four pixels around any position: each
+    position inside takes its nearest pixel's depth, and one that rounds outside gets 0."""
+    from workstation.photogrammetry.dense import _sample_depth
+
+    depth = np.float32([[1.0, 2.0, 3.0, 4.0, 5.0]])
+    along = np.float32([0.2, 1.6, 3.4, 4.4, -0.6, 5.2, 2.0, 0.0])
+    across = np.float32([0.2, -0.3, 0.4, 0.0, 0.0, 0.0, -0.6, 0.7])
+    expected = np.float32([1.0, 3.0, 4.0, 5.0, 0.0, 0.0, 0.0, 0.0])
+    if transpose:
+        out = _sample_depth(np.ascontiguousarray(depth.T), across, along)
+    else:
+        out = _sample_depth(depth, along, across)
+    assert out.dtype == np.float32
+    np.testing.assert_array_equal(out, expected)

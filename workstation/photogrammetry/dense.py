@@ -451,51 +451,65 @@ def depth_normals(depth: np.ndarray, K: np.ndarray) -> np.ndarray:
     and one-sided where only one has, so a depth needs one neighbour along each image axis:
     requiring all four would also drop every depth on the rim of a hole or of a patch (many,
     on the speckled maps of obliquely seen surfaces), and fusion needs a normal for each
-    depth it uses."""
+    depth it uses. The points are computed in the precision of ``depth`` and ``K`` together
+    (float64 for a float64 ``K``): neighbouring points differ by about z / f, which float32
+    would resolve to only about 1e-4 of that."""
     h, w = depth.shape
-    u, v = np.meshgrid(np.arange(w, dtype=np.float32), np.arange(h, dtype=np.float32))
-    X = (u - K[0, 2]) / K[0, 0] * depth
-    Y = (v - K[1, 2]) / K[1, 1] * depth
-    P = np.stack([X, Y, depth], -1)
+    u = np.arange(w, dtype=np.float32)[None, :]
+    v = np.arange(h, dtype=np.float32)[:, None]
+    P = np.empty((h, w, 3), np.result_type(np.float32, depth.dtype, K.dtype))
+    P[..., 0] = (u - K[0, 2]) / K[0, 0] * depth
+    P[..., 1] = (v - K[1, 2]) / K[1, 1] * depth
+    P[..., 2] = depth
     ok = depth > 0
     dx, okx = _difference(P, ok, axis=1)
     dy, oky = _difference(P, ok, axis=0)
-    nrm = np.cross(dx, dy)
+    nrm = np.empty_like(P)  # dx × dy, by component (np.cross holds several (h, w, 3) temporaries)
+    for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
+        nrm[..., i] = dx[..., j] * dy[..., k]
+        nrm[..., i] -= dx[..., k] * dy[..., j]
+    del dx, dy
     ln = np.linalg.norm(nrm, axis=-1, keepdims=True)
-    nrm = np.where((ok & okx & oky)[..., None] & (ln > 0), nrm / np.maximum(ln, 1e-12), 0)
-    flip = np.sum(nrm * P, -1) > 0  # make normals face the camera
+    good = ok & okx & oky & (ln[..., 0] > 0)
+    nrm /= np.maximum(ln, 1e-12)
+    nrm[~good] = 0
+    # make normals face the camera: n · P <= 0
+    flip = nrm[..., 0] * P[..., 0] + nrm[..., 1] * P[..., 1] + nrm[..., 2] * P[..., 2] > 0
     nrm[flip] *= -1
     return nrm.astype(np.float32)
 
 
 def _difference(P: np.ndarray, ok: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
     """Difference (h, w, 3) of the points ``P`` along image ``axis`` (1: columns, 0: rows) per
-    unit step: (next - previous) / 2 where both neighbours are ``ok``, else next - self or
-    self - previous where one is; and where one was found (h, w) bool."""
-    nxt, prv = np.zeros_like(P), np.zeros_like(P)
-    okn, okp = np.zeros_like(ok), np.zeros_like(ok)
-    sl = (slice(None),) * axis
-    nxt[sl + (slice(0, -1),)], okn[sl + (slice(0, -1),)] = P[sl + (slice(1, None),)], ok[sl + (slice(1, None),)]
-    prv[sl + (slice(1, None),)], okp[sl + (slice(1, None),)] = P[sl + (slice(0, -1),)], ok[sl + (slice(0, -1),)]
-    both = (okn & okp)[..., None]
-    d = np.where(both, 0.5 * (nxt - prv), np.where(okn[..., None], nxt - P, np.where(okp[..., None], P - prv, 0)))
-    return d, okn | okp
+    unit step, and where one was found (h, w) bool. The forward differences between ``ok``
+    neighbours are added to both pixels of each pair and divided by their number at each pixel:
+    (next - previous) / 2 where both neighbours are ``ok``, next - self or self - previous where
+    one is, 0 where none is."""
+    lo = (slice(None),) * axis + (slice(0, -1),)
+    hi = (slice(None),) * axis + (slice(1, None),)
+    okf = ok[hi] & ok[lo]
+    f = P[hi] - P[lo]
+    f[~okf] = 0  # also clears the NaN of a point without a depth
+    d = np.zeros_like(P)
+    d[lo] += f
+    d[hi] += f
+    del f
+    n = np.zeros(ok.shape, np.uint8)
+    n[lo] += okf
+    n[hi] += okf
+    d /= np.maximum(n, 1)[..., None]
+    return d, n > 0
 
 
 def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View], params: DenseParams) -> np.ndarray:
     """Keep depths that ``min_consistent`` source depth maps confirm (forward-backward
     reprojection within ``max_reproj_px`` and relative depth within ``max_rel_depth``).
 
-    A reference pixel's point goes into the source camera (relative pose), takes the source
-    depth at its sub-pixel projection (:func:`_sample_depth`), goes back along that source ray
-    at that depth into the reference camera, and must land within ``max_reproj_px`` of where
-    it started at a depth within ``max_rel_depth``. Going back through the nearest source
-    pixel's centre at that pixel's depth instead would add up to half a source pixel of
-    rounding, which lands up to cos θ_ref / cos θ_src times as far in the reference image
-    (θ: a view's incidence on the surface), and a depth that changes by z · tan θ_src / f
-    per source pixel: on surfaces a view sees obliquely either alone exceeds the tolerances
-    and rejects correct depths. Only the valid pixels are processed, in float32
-    (reprojection errors of a pixel or so).
+    For each source, a reference pixel's point goes into the source camera (relative pose),
+    takes the source depth at its sub-pixel projection (:func:`_sample_depth`), goes back
+    along that source ray at that depth into the reference camera, and counts as confirmed
+    when it lands within ``max_reproj_px`` of the pixel it started from at a depth within
+    ``max_rel_depth`` of the reference depth. Only the valid pixels are processed, in float32.
     """
     h, w = depth.shape
     idx = np.flatnonzero(depth > 0)
@@ -524,10 +538,11 @@ def geometric_filter(depth: np.ndarray, ref: _View, src_depths, srcs: list[_View
 
 def _sample_depth(depth: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
     """Depth (float32, 0 = none) of the map ``depth`` at sub-pixel positions (u, v): the
-    bilinear interpolation of inverse depth over the four surrounding pixels where all four
-    have a depth (inverse depth is affine in the pixel coordinates over a plane, so a planar
-    patch is sampled exactly however obliquely it is seen), else the nearest pixel's depth
-    (across a depth edge, where interpolation would invent a depth between the two sides)."""
+    bilinear interpolation of inverse depth over the four surrounding pixels where the position
+    lies between pixel centres of the map and all four have a depth (inverse depth is affine in
+    the pixel coordinates over a plane, so a planar patch is sampled exactly however obliquely
+    it is seen); else the nearest pixel's depth (0 outside the map). Four pixels that all have
+    a depth are interpolated even when they straddle a depth edge."""
     h, w = depth.shape
     ui, vi = np.rint(u), np.rint(v)
     inside = (ui >= 0) & (ui < w) & (vi >= 0) & (vi < h)
@@ -536,7 +551,8 @@ def _sample_depth(depth: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray
     u0, v0 = np.floor(u), np.floor(v)
     box = (u0 >= 0) & (u0 < w - 1) & (v0 >= 0) & (v0 < h - 1)
     x0, y0 = np.where(box, u0, 0).astype(np.int64), np.where(box, v0, 0).astype(np.int64)
-    q = np.stack([depth[y0, x0], depth[y0, x0 + 1], depth[y0 + 1, x0], depth[y0 + 1, x0 + 1]])
+    x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)  # in the map when h or w is 1
+    q = np.stack([depth[y0, x0], depth[y0, x1], depth[y1, x0], depth[y1, x1]])
     full = box & np.all(q > 0, axis=0)
     a, b = (u - u0).astype(np.float32), (v - v0).astype(np.float32)
     inv = 1.0 / np.where(q > 0, q, 1.0)
