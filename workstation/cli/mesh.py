@@ -61,9 +61,10 @@ MIN_PIECE_FRACTION = 0.05
               help="Scanner position (CRS units) the normals must face.")
 @param_group("normals", bound(NormalParams, "recompute", "--recompute-normals", is_flag=True,
                               help="Estimate normals even when the cloud has them."))
-@click.option("--refine-k", type=click.IntRange(3, 1000), default=None,
+@click.option("--refine-k", type=click.IntRange(0, 1000), default=None,
               help="Project the vertices onto the moving-least-squares planes of this many cloud points after "
-                   "reconstruction (averages the noise of photogrammetric clouds, e.g. 48) [default: off].")
+                   "reconstruction (averages the noise of photogrammetric clouds; 0 = off) "
+                   f"[default: {RefineParams.k} with --reconstruction, else off].")
 @click.option("--target-faces", type=click.IntRange(4, None), default=None,
               help="Quadric edge-collapse decimation to this face count [default: no decimation].")
 @param_group(
@@ -140,7 +141,7 @@ def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoi
     params = MeshChainParams(
         method=method, normals=NormalParams(**normals), poisson=PoissonParams(**poisson),
         ball_pivoting=BallPivotingParams(**ball_pivoting), delaunay=Delaunay25dParams(**delaunay),
-        refine=RefineParams(k=refine_k) if refine_k else None, clean=CleanParams(**clean),
+        refine=_refine(refine_k), clean=CleanParams(**clean),
         decimate=DecimateParams(target_faces=target_faces) if target_faces else None,
         smooth=SmoothParams(**smooth) if smooth["method"] != "none" else None,
         color=None if no_color else ColorTransferParams(), quality=None if no_quality else QualityParams(),
@@ -159,6 +160,14 @@ def mesh(src, output, method, poisson, ball_pivoting, delaunay, normals, viewpoi
         _write_record(doc, src, output, workdir, image_dir, params)
     if as_json:
         emit_json(doc)
+
+
+def _refine(refine_k):
+    """The refinement of ``--refine-k``: None (the default) projects the meshes of clouds given
+    with their cameras only (:attr:`RefineParams.photos_only`), 0 none, k every mesh."""
+    if refine_k is None:
+        return RefineParams()
+    return RefineParams(k=refine_k, photos_only=False) if refine_k else None
 
 
 def textured_mesh_files(output) -> list:

@@ -46,7 +46,8 @@ class MeshChainParams:
     poisson, ball_pivoting, delaunay : parameter sets of the reconstruction methods
     refine : RefineParams or None
         Vertices projected onto the cloud's moving-least-squares surface right after the
-        reconstruction (averages the noise of photogrammetric clouds; None = off).
+        reconstruction (averages the noise of photogrammetric clouds; by default only for a
+        cloud meshed with its cameras, see :attr:`RefineParams.photos_only`; None = off).
     clean : CleanParams or None
     decimate : DecimateParams or None
     smooth : SmoothParams or None
@@ -64,7 +65,7 @@ class MeshChainParams:
     poisson: PoissonParams = PoissonParams()
     ball_pivoting: BallPivotingParams = BallPivotingParams()
     delaunay: Delaunay25dParams = Delaunay25dParams()
-    refine: RefineParams | None = None
+    refine: RefineParams | None = RefineParams()
     clean: CleanParams | None = CleanParams()
     decimate: DecimateParams | None = None
     smooth: SmoothParams | None = None
@@ -101,7 +102,9 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
     cloud : Cloud
     params : MeshChainParams
     viewpoints : (3,) or (n, 3) float, or Reconstruction, optional
-        Scanner positions or cameras for normal orientation.
+        Scanner positions or cameras for normal orientation. Cameras (or ``reconstruction``)
+        mark the cloud as photogrammetric: ``params.refine`` then runs even when it is
+        :attr:`~RefineParams.photos_only`.
     reconstruction : Reconstruction, optional
         Oriented photos in the cloud's frame: the mesh is textured from them
         (``params.texture``).
@@ -131,7 +134,8 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
             mesh, rec = delaunay25d(work, params.delaunay)
         steps.append(rec)
         log.info("%s: %d faces in %.1f s", rec.name, mesh.n_faces, rec.seconds)
-        if params.refine is not None:
+        photos = isinstance(viewpoints, Reconstruction) or reconstruction is not None
+        if params.refine is not None and (photos or not params.refine.photos_only):
             mesh, rec = refine_to_cloud(mesh, cloud, params.refine)
             steps.append(rec)
         if params.clean is not None:

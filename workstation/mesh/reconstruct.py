@@ -255,13 +255,22 @@ class RefineParams:
     ----------
     k : int
         Cloud points per local plane (count): the noise of the cloud is averaged over about
-        this many points; more smooths across edges narrower than their footprint.
+        this many points; more smooths across edges narrower than their footprint, and bends
+        curved surfaces toward their chords.
+    photos_only : bool
+        Project only the meshes of photogrammetric clouds, those meshed with their cameras
+        (:func:`workstation.mesh.mesh_cloud` given a
+        :class:`~workstation.core.products.Reconstruction`): multi-view
+        stereo depths are noisy at the scale of their spacing, so the average gains more than
+        the plane's bend costs. Laser clouds (low noise, dense) keep Poisson's surface, which
+        already lies within their noise; False projects every mesh.
     chunk : int
         Vertices projected per vectorised batch (count; bounds the memory to about
         ``chunk × k × 100`` bytes).
     """
 
-    k: int = 32
+    k: int = 48
+    photos_only: bool = True
     chunk: int = 50_000
 
     def __post_init__(self):
