@@ -86,6 +86,12 @@ def near_shares(src: np.ndarray, tgt: np.ndarray, M: np.ndarray) -> str:
     return " / ".join(f"{(d < r).mean():.3f}" for r in (0.01, 0.02, 0.03))
 
 
+def within(M: np.ndarray, T: np.ndarray, degrees: float, metres: float) -> bool:
+    """Whether M lies within ``degrees`` and ``metres`` of T."""
+    rot, shift = pose_error(M, T)
+    return rot < degrees and shift < metres
+
+
 def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
     """Where the true pose ``T`` stands among the plane method's candidates, prepared as
     ``register`` prepares them: the agreement rank of the first raw hypothesis within 6 deg /
@@ -94,8 +100,8 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
     the winner's."""
     from workstation.core.geometry import default_origin
     from workstation.interop.open3d import local_transform
-    from workstation.registration.planes import (PlaneCoarseParams, RangeImage, free_space_violations,
-                                                 plane_hypotheses, plane_registration)
+    from workstation.registration.planes import (PlaneCoarseParams, free_space_violations, plane_hypotheses,
+                                                 range_images, verify_plane_hypotheses)
     from workstation.registration.preprocess import Radii, estimate_voxel_size, prepare
     from workstation.registration.register import consistency
 
@@ -105,14 +111,16 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
     vps = tuple(None if p is None else np.asarray(p) - origin for p in (vs, vt))
     ps, pt = (prepare(x - origin, radii, features=False, viewpoint=p) for x, p in ((src, vps[0]), (tgt, vps[1])))
     TL = local_transform(T, origin, origin)
-    _, Ts, _, _ = plane_hypotheses(ps, pt, viewpoints=vps)
-    raw = [k for k, M in enumerate(Ts) if (lambda e: e[0] < 6 and e[1] < 0.3)(pose_error(M, TL))]
-    r = plane_registration(ps, pt, viewpoints=vps)
+    images = range_images(ps, pt, vps, P)
+    scores, Ts, _, _ = plane_hypotheses(ps, pt, P, vps, images)  # what plane_registration does, in its two steps
+    if not len(Ts):
+        return "raw rank - of 0 (no plane pair gives a pose)"
+    raw = [k for k, M in enumerate(Ts) if within(M, TL, 6, 0.3)]
+    r = verify_plane_hypotheses(ps, pt, scores, Ts, P, images)
     m = r.meta
-    ok = [k for k, M in enumerate(m["hypotheses"]) if (lambda e: e[0] < 10 and e[1] < 0.2)(pose_error(M, TL))]
+    ok = [k for k, M in enumerate(m["hypotheses"]) if within(M, TL, 10, 0.2)]
     q = refine(ps.down, pt.down, v, TL, ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20,
                                                   kernel="tukey"))
-    images = [None if p is None else RangeImage(np.asarray(c.down.points), p, v, P.free_cell) for c, p in zip((ps, pt), vps)]
     free = free_space_violations(ps.down, pt.down, q.transform, images, P.free_margin * v)
     return (f"raw rank {raw[0] if raw else '-'} of {len(Ts)}, verified rank {ok[0] if ok else '-'} of "
             f"{len(m['hypotheses'])}; truth: consistency {consistency(ps.down, pt.down, q.transform, v):.3f} "

@@ -1,5 +1,7 @@
 """Coarse registration from planes (workstation.registration.planes) on synthetic indoor scenes."""
 
+import functools
+
 import numpy as np
 
 from workstation.registration.planes import extract_planes, plane_registration, plane_yaw_search
@@ -220,3 +222,103 @@ def test_free_space_violations_of_two_room_views():
     truth, lifted = (free_space_violations(src, tgt, T, images, 0.15) for T in (np.eye(4), lift))
     assert truth < 0.005 and lifted > 0.04, (truth, lifted)  # the views share about a quarter
     assert free_space_violations(src, tgt, lift, (None, None), 0.15) == 0.0
+
+
+@functools.lru_cache(maxsize=1)
+def _room_views(seed=1):
+    """Two ray-cast views of a simulated room (room frame, floor at z = 0), prepared at a
+    5 cm voxel, with their sensor positions (made once for the tests that share them)."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from rooms import view_pair_with_sensors
+
+    a, b, _, pa, pb = view_pair_with_sensors(seed, step=1.0)
+    radii = Radii(0.05)
+    return prepare(a, radii, features=False, viewpoint=pa), prepare(b, radii, features=False, viewpoint=pb), pa, pb
+
+
+def test_same_side_offsets_keeps_the_true_pairs_and_drops_the_flipped_side():
+    """Two room views in the room's frame (the true pose is the identity): every plane seen in
+    both, the floor and a wall among them, may be laid on itself with the normals as they
+    are, and may not with the target's normal flipped (that pose would put the target's
+    scanner on the far side of the plane); unknown scanners allow every pair."""
+    from workstation.registration.planes import _direction_groups, _same_side_offsets
+
+    src, tgt, pa, pb = _room_views()
+    ga, gb = ([g[:2] for g in _direction_groups(extract_planes(np.asarray(c.down.points), np.asarray(c.down.normals),
+                                                                 0.05))] for c in (src, tgt))
+    checked = []
+    for n, da in ga:
+        for m, db in gb:
+            sg = np.sign(n @ m)
+            if abs(n @ m) < 0.99:
+                continue
+            i, j = np.nonzero(np.abs(np.subtract.outer(da, sg * db)) < 0.05)  # the same plane in both views
+            keep = _same_side_offsets(n, da, sg * m, sg * db, pa, pb)
+            flip = _same_side_offsets(n, da, -sg * m, -sg * db, pa, pb)
+            assert keep.shape == flip.shape == (da.size, db.size)
+            assert keep[i, j].all() and not flip[i, j].any(), (n, da, db)
+            checked += [abs(n[2]) for _ in i]
+    assert max(checked) > 0.99 and min(checked) < 0.1, checked  # the floor and a wall were checked
+    assert _same_side_offsets(ga[0][0], ga[0][1], gb[0][0], gb[0][1], None, pb).all()
+
+
+def test_scorer_counts_free_space_violations_of_a_lifted_pose():
+    """The fast agreement score of two room views: with the range images given, the score
+    loses nothing at the true pose and loses the free-space share at a pose lifting the source
+    by 40 cm, whose floor then floats in front of the target's (the score without images is
+    the same sample's, so the difference is the free-space term alone)."""
+    from workstation.registration.planes import PlaneCoarseParams, _Scorer, range_images
+
+    src, tgt, pa, pb = _room_views()
+    images = range_images(src, tgt, (pa, pb), PlaneCoarseParams())
+    Ts = np.stack([np.eye(4), make_transform(np.eye(3), (0.0, 0.0, 0.4))])
+    plain = _Scorer(src, tgt, 800)(Ts)
+    free = _Scorer(src, tgt, 800, images=images, margin=0.15)(Ts)
+    assert plain[0] - free[0] < 0.005 and plain[1] - free[1] > 0.02, (plain, free)
+    assert free[1] < free[0] - 0.1, free
+
+
+def test_plane_yaw_search_searches_only_the_allowed_offset_pairs():
+    """The ``allowed`` mask of offset pairs: none allowed gives no pose, one allowed gives the
+    poses of a search over that pair alone."""
+    pts = corner_scene(1, n=9000)
+    up = np.array([0.0, 0.0, 1.0])
+    da, db = np.array([0.0, 0.9]), np.array([0.0, 0.45])
+    args = (pts, pts, up, da, up, db, 0.05, 30.0, 2)
+    assert plane_yaw_search(*args, allowed=np.zeros((2, 2), bool)) == []
+    one = plane_yaw_search(*args, allowed=np.array([[False, False], [False, True]]))
+    alone = plane_yaw_search(pts, pts, up, da[1:], up, db[1:], 0.05, 30.0, 2)
+    assert len(one) == len(alone) > 0
+    assert all(c == c_ and np.allclose(T, T_) for (c, T), (c_, T_) in zip(one, alone))
+
+
+def test_range_image_size_is_capped():
+    """A small voxel far from the sensor (1 cm at 13 m) would ask for an image of more than
+    ten million pixels: it is capped at about ``MAX_PIXELS``, and still marks the free space."""
+    from workstation.registration.planes import RangeImage
+
+    g = np.arange(-2.0, 2.0, 0.02)
+    y, z = np.meshgrid(g, g)
+    wall = np.column_stack([np.full(y.size, 13.0), y.ravel(), z.ravel()])
+    img = RangeImage(wall, (0.0, 0.0, 0.0), 0.01)
+    assert 0.99 * RangeImage.MAX_PIXELS < img.image.size <= RangeImage.MAX_PIXELS
+    probe = np.array([[6.0, 0.0, 0.0], [14.0, 0.0, 0.0]])
+    assert img.in_free_space(probe, 0.03).tolist() == [True, False]
+
+
+def test_plane_coarse_params_reject_invalid_values():
+    """Negative margins, empty cells and zero counts are refused, naming the field."""
+    import pytest
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.registration.planes import PlaneCoarseParams
+
+    for field, value in (("free_margin", -1.0), ("free_cell", 0.0), ("step_deg", 0.0), ("verify", 0),
+                         ("min_share", 1.0), ("distance", -0.5)):
+        with pytest.raises(InvalidInputError) as e:
+            PlaneCoarseParams(**{field: value})
+        assert e.value.field == field
+    PlaneCoarseParams(free_margin=0.0)

@@ -44,11 +44,11 @@ be checked.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from workstation.core.errors import StageError
+from workstation.core.errors import InvalidInputError, StageError
 from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
@@ -102,6 +102,22 @@ class PlaneCoarseParams:
     verify: int = 32
     free_margin: float = 3.0
     free_cell: float = 2.0
+
+    def __post_init__(self):
+        counts = ("max_planes", "align_planes", "peaks", "sample", "verify")
+        for name in counts:
+            if int(getattr(self, name)) < 1:
+                raise InvalidInputError(f"{name} must be at least 1, got {getattr(self, name)}", field=name)
+        for name in ("distance", "step_deg", "free_cell"):
+            if not float(getattr(self, name)) > 0:
+                raise InvalidInputError(f"{name} must be positive, got {getattr(self, name)}", field=name)
+        if not 0.0 <= self.min_share < 1.0:
+            raise InvalidInputError(f"min_share must lie in [0, 1), got {self.min_share}", field="min_share")
+        if not 0.0 <= self.normal_angle_deg <= 90.0:
+            raise InvalidInputError(f"normal_angle_deg must lie in [0, 90], got {self.normal_angle_deg}",
+                                    field="normal_angle_deg")
+        if not self.free_margin >= 0:
+            raise InvalidInputError(f"free_margin must not be negative, got {self.free_margin}", field="free_margin")
 
 
 @dataclass(frozen=True)
@@ -208,15 +224,19 @@ class _Scorer:
 
 
 def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = PlaneCoarseParams(),
-                     viewpoints=(None, None)):
+                     viewpoints=(None, None), images=None):
     """Poses laying a large source plane onto a large target plane (module docstring, steps
     1-3), with their fast agreement scores: ``(scores (k,), transforms (k, 4, 4), source
     planes, target planes)``, best first. With both scanner positions (``viewpoints``, local
     frames) known, a plane is laid only on planes whose scanner lies on the same side of it
-    (:func:`_same_side_offsets`): a floor seen from above is not laid on one seen from below;
-    and the agreement score counts free-space violations (:class:`_Scorer`)."""
+    (:func:`_same_side_offsets`): a floor seen from above is not laid on one seen from below.
+    The agreement score counts free-space violations (:class:`_Scorer`) in ``images``, the
+    :class:`RangeImage` of source and target (None where the scanner is unknown), built
+    from ``viewpoints`` when not given."""
     v = src.radii.voxel
     xs, xt = np.asarray(src.down.points), np.asarray(tgt.down.points)
+    if images is None:
+        images = range_images(src, tgt, viewpoints, params)
     ps = extract_planes(xs, np.asarray(src.down.normals), v, params)
     pt = extract_planes(xt, np.asarray(tgt.down.normals), v, params)
     log.info("planes: %d in the source, %d in the target", len(ps.count), len(pt.count))
@@ -224,12 +244,12 @@ def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = P
     for a, da, _ in _direction_groups(ps)[: params.align_planes]:
         for b, db, _ in _direction_groups(pt)[: params.align_planes]:
             for sg in (1.0, -1.0):
-                for da_, db_ in _same_side_offsets(a, da, sg * b, sg * db, *viewpoints):
-                    Ts += [T for _, T in plane_yaw_search(xs, xt, a, da_, sg * b, db_, v, params.step_deg, params.peaks)]
+                allowed = _same_side_offsets(a, da, sg * b, sg * db, *viewpoints)
+                Ts += [T for _, T in plane_yaw_search(xs, xt, a, da, sg * b, sg * db, v, params.step_deg, params.peaks,
+                                                      allowed=allowed)]
     if not Ts:
         return np.zeros(0), np.zeros((0, 4, 4)), ps, pt
     Ts = np.array(Ts)
-    images = [None if p is None else RangeImage(c, p, v, params.free_cell) for c, p in zip((xs, xt), viewpoints)]
     score = _Scorer(src, tgt, params.sample, images=images, margin=params.free_margin * v)
     first = np.concatenate([score(Ts[k:k + 512], params.sample // 4) for k in range(0, len(Ts), 512)])
     Ts = Ts[np.argsort(-first, kind="stable")[: max(10 * params.verify, len(Ts) // 10)]]  # the rest cannot compete
@@ -238,25 +258,31 @@ def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = P
     return sc[order], Ts[order], ps, pt
 
 
-def _same_side_offsets(a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray, vs, vt):
-    """The sets of source offsets ``da`` (planes ``a . x = da``) and target offsets ``db``
-    that may be laid on each other: all of them when either scanner position is unknown,
-    else, for each side of the planes, those with their scanner on that side (a scanner sees
-    a surface from one side, and the pose keeps each scanner on its side of the plane)."""
+def _same_side_offsets(a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray, vs, vt) -> np.ndarray:
+    """Which source offsets ``da`` (planes ``a . x = da``) may be laid on which target offsets
+    ``db`` (planes ``b . y = db``): a boolean mask (len(da), len(db)), all True when either
+    scanner position is unknown, else True where both scanners lie on the same side of their
+    planes (a scanner sees a surface from one side, and the pose keeps each scanner on its
+    side of the plane)."""
+    da, db = np.atleast_1d(np.asarray(da, float)), np.atleast_1d(np.asarray(db, float))
     if vs is None or vt is None:
-        return [(np.asarray(da), np.asarray(db))]
-    sa = np.where(a @ np.asarray(vs, float) >= np.asarray(da), 1, -1)
-    sb = np.where(b @ np.asarray(vt, float) >= np.asarray(db), 1, -1)
-    return [(np.asarray(da)[sa == k], np.asarray(db)[sb == k]) for k in (1, -1) if (sa == k).any() and (sb == k).any()]
+        return np.ones((da.size, db.size), dtype=bool)
+    sa = a @ np.asarray(vs, float) >= da
+    sb = b @ np.asarray(vt, float) >= db
+    return sa[:, None] == sb[None, :]
+
+
+def range_images(src: Prepared, tgt: Prepared, viewpoints, params: PlaneCoarseParams = PlaneCoarseParams()):
+    """The :class:`RangeImage` of the downsampled source and target seen from their scanner
+    positions ``viewpoints`` (local frames), None for a cloud whose scanner is unknown."""
+    v = src.radii.voxel
+    return [None if p is None else RangeImage(np.asarray(c.down.points), p, v, params.free_cell)
+            for c, p in zip((src, tgt), viewpoints)]
 
 
 def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=(None, None)) -> RegistrationResult:
-    """Coarse registration from planes (module docstring): the best of the ``verify`` best
-    distinct plane hypotheses, each refined by a short point-to-plane ICP, by two-way surface
-    consistency less the free-space violation share (:func:`free_space_violations`; zero for
-    a cloud whose scanner position is unknown). Only poses whose verified overlap reaches half
-    the best one's are ranked (a pose barely touching the other cloud has neither agreement
-    nor conflict).
+    """Coarse registration from planes (module docstring): the hypotheses of
+    :func:`plane_hypotheses`, verified by :func:`verify_plane_hypotheses`.
 
     ``params`` may be a :class:`PlaneCoarseParams`; anything else (the coarse stage's
     :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults. ``viewpoints``
@@ -266,24 +292,36 @@ def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=(No
     and ``free_space`` shares. Raises :class:`~workstation.core.errors.StageError` when no
     plane pair gives a pose (a cloud with no plane, or no slice of the two clouds at matching
     heights)."""
-    from .icp import ICPParams, refine
-    from .register import _distinct_pose, consistency
-
     params = params if isinstance(params, PlaneCoarseParams) else PlaneCoarseParams()
-    v = src.radii.voxel
-    scores, Ts, ps, pt = plane_hypotheses(src, tgt, params, viewpoints)
-    meta = {"planes_source": int(len(ps.count)), "planes_target": int(len(pt.count)), "plane_poses": len(Ts)}
+    images = range_images(src, tgt, viewpoints, params)
+    scores, Ts, ps, pt = plane_hypotheses(src, tgt, params, viewpoints, images)
     if not len(Ts):
         raise StageError("register", f"no common planes to align ({len(ps.count)} planes found in the source, "
                          f"{len(pt.count)} in the target)", "try --method auto")
+    r = verify_plane_hypotheses(src, tgt, scores, Ts, params, images)
+    found = {"planes_source": int(len(ps.count)), "planes_target": int(len(pt.count)), "plane_poses": len(Ts)}
+    return replace(r, meta={"method": "planes", **found, **r.meta})
+
+
+def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts: np.ndarray,
+                            params: PlaneCoarseParams = PlaneCoarseParams(), images=(None, None)) -> RegistrationResult:
+    """The best of the ``verify`` best distinct poses ``Ts`` (k >= 1, 4, 4; best first by their
+    agreement ``scores``), each refined by a short point-to-plane ICP, by two-way surface
+    consistency less the free-space violation share (:func:`free_space_violations` in
+    ``images``, the :class:`RangeImage` of source and target; zero for a cloud whose image is
+    None). Only poses whose verified overlap reaches half the best one's are ranked (a pose
+    barely touching the other cloud has neither agreement nor conflict). ``meta`` holds the
+    ranked poses (``hypotheses``), best first, with their ``consistency`` and ``free_space``."""
+    from .icp import ICPParams, refine
+    from .register import _distinct_pose, consistency
+
+    v = src.radii.voxel
     picked = []
     for s, T in zip(scores, Ts):
         if all(_distinct_pose(T, k[1], v) for k in picked):
             picked.append((s, T))
         if len(picked) >= params.verify:
             break
-    images = [None if p is None else RangeImage(np.asarray(c.down.points), p, v, params.free_cell)
-              for c, p in zip((src, tgt), viewpoints)]
     quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     cands = []
     for s, T in picked:
@@ -295,8 +333,8 @@ def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=(No
     least = 0.5 * max(c[2] for c in cands)
     order = sorted((c for c in cands if c[2] >= least), key=lambda c: c[1] - c[0])
     best = order[0][3]
-    meta.update({"consistency": [round(c[0], 4) for c in order], "free_space": [round(c[1], 4) for c in order],
-                 "hypotheses": [c[3].transform for c in order]})
+    meta = {"consistency": [round(c[0], 4) for c in order], "free_space": [round(c[1], 4) for c in order],
+            "hypotheses": [c[3].transform for c in order]}
     return RegistrationResult(transform=best.transform, scale=1.0, fitness=best.fitness, inlier_rmse=best.inlier_rmse,
                               converged=True, correspondences=best.correspondences, meta={"method": "planes", **meta})
 
@@ -306,20 +344,27 @@ class RangeImage:
     elevation) around the sensor ``position``, then the least over each pixel's 3 x 3
     neighbourhood, so that a pixel straddling a depth edge keeps its near side.
 
-    The pixel is an arc of ``cell`` voxels at the median range of ``points``. A pixel with no
-    point is unknown (outside the field of view, beyond the range, or no return), not free."""
+    The pixel is an arc of ``cell`` voxels at the median range of ``points``, but no smaller
+    than keeps the image within ``MAX_PIXELS`` (a small voxel far from the sensor would
+    otherwise ask for a finer image than the points can fill). A pixel with no point is
+    unknown (outside the field of view, beyond the range, or no return), not free."""
+
+    #: Largest number of pixels of the image (float64: 8 bytes each).
+    MAX_PIXELS = 4_000_000
 
     def __init__(self, points: np.ndarray, position, voxel: float, cell: float = 2.0):
+        from scipy.ndimage import minimum_filter
+
         self.position = np.asarray(position, dtype=np.float64).reshape(3)
         r = np.linalg.norm(np.asarray(points, dtype=np.float64) - self.position, axis=1)
-        self.step = cell * voxel / max(float(np.median(r)), voxel)
+        # at this step the image holds at most sqrt(MAX_PIXELS / 2) rows of 2 sqrt(MAX_PIXELS / 2) pixels
+        self.step = max(cell * voxel / max(float(np.median(r)), voxel), np.pi / (np.sqrt(self.MAX_PIXELS / 2.0) - 2.0))
         self.shape = (int(np.ceil(np.pi / self.step)) + 1, int(np.ceil(2 * np.pi / self.step)))
         i, j, r = self.pixels(points)
         img = np.full(self.shape, np.inf)
         np.minimum.at(img, (i, j), r)
-        pad = np.pad(img, ((1, 1), (0, 0)), constant_values=np.inf)  # azimuth wraps, elevation does not
-        self.image = np.min([np.roll(pad[di:di + self.shape[0]], dj, axis=1) for di in range(3) for dj in (-1, 0, 1)],
-                            axis=0)
+        # azimuth wraps; elevation does not (repeating the edge row leaves a minimum unchanged)
+        self.image = minimum_filter(img, size=3, mode=("nearest", "wrap"))
 
     def pixels(self, x: np.ndarray):
         """Pixel rows, columns and ranges of points ``x`` (n, 3)."""
@@ -407,9 +452,11 @@ def _direction_groups(pl: Planes, angle_deg: float = 5.0) -> list[tuple[np.ndarr
 
 
 def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray,
-                     voxel: float, step_deg: float = 3.0, peaks: int = 3) -> list[tuple[float, np.ndarray]]:
+                     voxel: float, step_deg: float = 3.0, peaks: int = 3,
+                     allowed: np.ndarray | None = None) -> list[tuple[float, np.ndarray]]:
     """Poses laying a source plane ``a . x = da[i]`` onto a target plane ``b . y = db[j]`` (every
-    pair of offsets of the two parallel families): the three remaining degrees of freedom (the
+    pair of offsets of the two parallel families, or those where the boolean mask ``allowed``
+    (len(da), len(db)) is True): the three remaining degrees of freedom (the
     turn about the normal and the shift in the plane) by an exhaustive search over the turn in
     ``step_deg`` steps and, for each, the in-plane shifts at the ``peaks`` highest peaks of the
     FFT cross-correlation of the two clouds' occupancy images in height slices along the
@@ -428,7 +475,9 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
     ys, us = xt @ E.T, xr @ E.T
     vt, ct = _slices(xt @ b, cell)
     vs, cs = _slices(xr @ b, cell)
-    shifts = np.unique(np.round(np.subtract.outer(np.asarray(db), np.asarray(da)).ravel() / cell).astype(int))
+    diff = np.subtract.outer(np.atleast_1d(db), np.atleast_1d(da))  # (len(db), len(da)): the lift of each pair
+    diff = diff.ravel() if allowed is None else diff[np.asarray(allowed, dtype=bool).T]
+    shifts = np.unique(np.round(diff / cell).astype(int))
     pairs = [(d, np.flatnonzero(np.isin(vs + d, vt)), np.searchsorted(vt, vs[np.isin(vs + d, vt)] + d)) for d in shifts]
     pairs = [p for p in pairs if p[1].size]
     if not pairs:
@@ -447,7 +496,6 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
     P = np.array([next_fast_len(int(nt[0] + ns), real=True), next_fast_len(int(nt[1] + ns), real=True)])
     FT = rfft2(_height_images(ys, ct, vt.size, lo_t, nt, cell), tuple(P)) * _edge_filter(tuple(P))
     lo_s = -np.array([rs, rs])
-    diff = np.subtract.outer(np.asarray(db), np.asarray(da)).ravel()
     # offset pairs in one slice shift share its correlation; the pose lifts by their mean offset
     lift = {d: float(diff[np.round(diff / cell).astype(int) == d].mean()) for d in shifts}
     out = []

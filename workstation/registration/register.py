@@ -360,13 +360,8 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
     but off its surface. The best is kept; ``meta["ambiguous"]`` is set when a distinct
     runner-up scores within ``AMBIGUOUS_MARGIN`` of it. Only hypotheses whose verified fitness
     reaches half the best one's (and ``params.min_fitness``) are ranked."""
-    if method == "planes":  # the scanner positions (local frame, or None) let it test free space
-        from .planes import plane_registration
-
-        r = plane_registration(ps, pt, params.coarse, viewpoints=viewpoints)
-        return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
-    if method != "auto":
-        r = COARSE_METHODS[method](ps, pt, params.coarse)
+    if method != "auto":  # the scanner positions (local frame, or None) let ``planes`` test free space
+        r = COARSE_METHODS[method](ps, pt, params.coarse, viewpoints=viewpoints)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
     quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     voxel = ps.radii.voxel
@@ -376,7 +371,7 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
         if cands and max(c[1] for c in cands) >= max(0.4 if name == "fpfh_ransac" else 0.5, params.min_fitness):
             break
         try:
-            r = COARSE_METHODS[name](ps, pt, params.coarse)
+            r = COARSE_METHODS[name](ps, pt, params.coarse, viewpoints=viewpoints)
         except RuntimeError as e:  # Open3D raises RuntimeError on degenerate input
             log.info("coarse %s failed: %s", name, e)
             continue
