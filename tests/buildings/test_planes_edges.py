@@ -1,5 +1,7 @@
 """Points near the lines where roof planes meet (ridges, valleys, a dormer's edges) re-assigned
-to their face and the planes refitted (:func:`workstation.buildings.planes.settle_edges`)."""
+to their face or left out of their plane's fit, and the planes refitted
+(:func:`workstation.buildings.planes.settle_edges`); the faces decide ownership in the models,
+the fitted points the planes."""
 
 from __future__ import annotations
 
@@ -8,7 +10,8 @@ import pytest
 from scipy.spatial import cKDTree
 
 from workstation.buildings import synth
-from workstation.buildings.planes import _ridges, distance_threshold, settle_edges
+from workstation.buildings.models import build_building
+from workstation.buildings.planes import _ridges, distance_threshold, segment_planes, settle_edges
 from workstation.core.pca import grouped_plane_fit
 
 
@@ -57,15 +60,18 @@ def test_points_across_a_dormer_ridge_are_taken_out_of_the_wrong_face(seed):
     that face's fitted plane by one to four and a half degrees (tilt or azimuth); after settling,
     at most one of them is left on the wrong face, both dormer faces' tilts are within a degree
     of the truth and the worse of face 2's tilt and azimuth errors is smaller than before (its
-    free azimuth, on 20-40 points, is left to the regularisation)."""
+    free azimuth, on 20-40 points, is left to the regularisation). Points left out of the fit
+    keep a face: no labelled point loses its label."""
     b, pts, face = _gable_with_dormer(seed)
     labels, near = _mislabel_near_ridge(b, pts, face, 0.25)
     assert near.sum() >= 2
     loc = pts - pts.min(axis=0)
     before = np.column_stack(_tilt_errors(b, grouped_plane_fit(loc, labels, 4).normals))
     assert before[2].max() > 1.0  # the mislabelled points do turn the plane
-    (new, normals, _, _, counts), _, _ = _settle(pts, labels)
-    assert np.count_nonzero((new == 2) & (face == 3)) <= 1
+    (new, fitted, normals, _, _, counts), _, _ = _settle(pts, labels)
+    assert np.count_nonzero(fitted & (new == 2) & (face == 3)) <= 1
+    assert np.all(new >= 0)
+    assert np.array_equal(counts, np.bincount(new[fitted], minlength=4))
     after = np.column_stack(_tilt_errors(b, normals))
     assert after[2:, 0].max() < 1.0
     assert after[2].max() < before[2].max()
@@ -73,13 +79,17 @@ def test_points_across_a_dormer_ridge_are_taken_out_of_the_wrong_face(seed):
 
 
 def test_correct_labels_only_lose_the_band_along_the_lines():
-    """With the true labels, no point changes face; the points left out lie near where two
-    faces meet and are a small share of each face."""
+    """With the true labels, no point changes face; the points left out of the fits lie near
+    where two faces meet and are a small share of each face, and the planes' counts and RMS
+    are those of the fitted points."""
     b, pts, face = _gable_with_dormer(seed=4)
-    (new, normals, _, _, counts), loc, eps = _settle(pts, face)
-    assert np.all((new == face) | (new == -1))
+    (new, fitted, normals, offsets, rms, counts), loc, eps = _settle(pts, face)
+    assert np.array_equal(new, face)
     assert (counts >= 0.75 * np.bincount(face, minlength=4)).all()
-    out = new < 0
+    out = ~fitted
+    assert out.any()
+    g_fit = grouped_plane_fit(loc, np.where(fitted, face, -1), 4)
+    assert np.array_equal(counts, g_fit.counts) and np.allclose(rms, g_fit.rms)
     g = grouped_plane_fit(loc, face, 4)
     res = np.abs(loc @ g.normals.T + g.offsets)  # (n, 4)
     second = np.sort(res, axis=1)[:, 1]
@@ -98,3 +108,25 @@ def test_ridge_and_valley_of_a_dormer():
     under = int(np.argmin(np.abs(loc[face == 2] @ g.normals[:2].T + g.offsets[:2]).mean(axis=0)))
     assert not r[under, 2] and not r[under, 3]
     assert np.array_equal(r, r.T)
+
+
+def test_segmented_faces_keep_their_points_and_models_fit_the_kept_ones():
+    """:func:`segment_planes` keeps every point it labelled on a face (``labels``) and records
+    the points the planes are fitted to (``fitted``, a subset, missing a band along the lines);
+    its counts are those of the fitted points. A model built with ``fitted`` refits its planes
+    to the fitted points and lets the refitted planes claim the others: it is the model of the
+    fitted points alone (the others unlabelled), and not that of all labels."""
+    b, pts, face = _gable_with_dormer(seed=5)
+    r = segment_planes(pts)
+    assert r.fitted is not None and not np.all(r.fitted[r.labels >= 0])
+    assert not np.any(r.fitted & (r.labels < 0))
+    assert np.array_equal(r.counts, np.bincount(r.labels[r.fitted], minlength=len(r.normals)))
+    fp = np.asarray(b.footprint())
+    models = [build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3, fitted=r.fitted),
+              build_building(0, fp, pts, np.where(r.fitted, r.labels, -1), r, 0.0, cell=0.3),
+              build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3)]
+    normals = [np.unique(np.round([f.normal for f in m.roofs], 9), axis=0) for m in models]
+    assert len(normals[0]) == 4
+    assert np.allclose(normals[0], normals[1], atol=1e-8) and not np.allclose(normals[0], normals[2], atol=1e-5)
+    assert len(models[0].roofs) == len(models[1].roofs)
+    assert all(np.array_equal(f.polygon, g.polygon) for f, g in zip(models[0].roofs, models[1].roofs))

@@ -718,14 +718,17 @@ def _claim_unlabelled(xyz, local, normals, points, eps, cell):
     return out
 
 
-def merge_building_planes(xyz, local, normals, eps, angle_deg):
+def merge_building_planes(xyz, local, normals, eps, angle_deg, fit=None):
     """Merge the planes of one building that are the same plane (normals within ``angle_deg``,
     each centroid within ``eps`` of the other plane) even where they do not touch (pieces of one
-    roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points)."""
+    roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points).
+    Centroids and fits use the points of ``fit`` (n,) bool only (:func:`fit_mask`; None: every
+    labelled point); the labels returned are every point's."""
     from .planes import fit_plane, small_components
 
     p = len(normals)
-    cen = np.array([xyz[local == q].mean(axis=0) for q in range(p)])
+    fit = fit_mask(local, fit)
+    cen = np.array([xyz[fit & (local == q)].mean(axis=0) for q in range(p)])
     i, j = np.triu_indices(p, 1)
     same = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
     same &= np.abs(np.einsum("ij,ij->i", normals[i], cen[j] - cen[i])) < eps
@@ -734,7 +737,7 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     local = np.where(local >= 0, comp[np.maximum(local, 0)], -1)
     out_n, out_p = [], []
     for q in range(comp.max() + 1):
-        pts = xyz[local == q]
+        pts = xyz[fit & (local == q)]
         n, d = fit_plane(pts)
         c = pts.mean(axis=0)
         out_n.append(n)
@@ -742,18 +745,32 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg):
     return local, np.array(out_n), np.array(out_p)
 
 
-def regular_planes(xyz, local, normals, points, spacing, force=None):
+def fit_mask(local, fit=None, least: int = 3):
+    """(n,) bool: the points of labels ``local`` (n,) that the planes are fitted to: those of
+    ``fit`` (n,) bool (:attr:`~workstation.buildings.planes.RoofPlanes.fitted`), or every
+    labelled point where ``fit`` is None or leaves a plane under ``least`` points."""
+    on = local >= 0
+    if fit is None:
+        return on
+    use = on & np.asarray(fit, bool)
+    few = np.bincount(local[use], minlength=int(local.max(initial=-1)) + 1) < least
+    return use | (on & few[np.maximum(local, 0)])
+
+
+def regular_planes(xyz, local, normals, points, spacing, force=None, fit=None):
     """The building's planes (``normals`` (p, 3), ``points`` (p, 3)) of its points ``xyz`` labelled
     ``local``, refitted by :func:`~workstation.buildings.planes.regularise_planes` (azimuths along
     the building's directions, one tilt for the two sides of a ridge, each where the points do not
     reject it) at the noise pooled over the planes, with touching meaning within three point
     spacings (the neighbour reach of region growing). Planes marked in ``force`` (p,) bool (small
     faces that segmentation accepted as regularised, :attr:`~workstation.buildings.planes.RoofPlanes.regular`)
-    are regularised whatever the Bayes factors at this noise say. Returns (normals, points)."""
+    are regularised whatever the Bayes factors at this noise say. Only the points of ``fit``
+    (n,) bool count (:func:`fit_mask`; None: every labelled point). Returns (normals, points)."""
     from .planes import pooled_noise, regularise_planes
 
     o = xyz.min(axis=0)
     loc = xyz - o
+    local = np.where(fit_mask(local, fit), local, -1)
     d = -np.einsum("ij,ij->i", normals, points - o)
     n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing, force)
     q = points - o
@@ -761,10 +778,12 @@ def regular_planes(xyz, local, normals, points, spacing, force=None):
 
 
 def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.ndarray, planes, ground: float,
-                   params: ModelParams = ModelParams(), cell: float = 0.5) -> BuildingModel:
+                   params: ModelParams = ModelParams(), cell: float = 0.5, fitted=None) -> BuildingModel:
     """LoD1.2 and LoD2.2 of one building from its footprint (k, 2), its points (m, 3), their
     plane labels (m,) into ``planes`` (a :class:`~workstation.buildings.planes.RoofPlanes`) and
-    the ground height (m).
+    the ground height (m). ``fitted`` (m,) bool marks the points the planes are fitted to
+    (``planes.fitted``; None: every labelled point): the model counts and refits its planes on
+    them, and the labelled points outside them take the plane of :func:`_claim_unlabelled`.
 
     The LoD2.2 is first built from all roof planes; it is kept when every plane under the
     ``min_plane_share`` ended in a raised part of small planes only (:func:`_lod2`), else the
@@ -777,7 +796,7 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
     fp = shapely.Polygon(fp_xy)
     height = float(np.percentile(xyz[:, 2], params.lod1_percentile)) if len(xyz) else ground
     lod1 = prism(fp_xy, ground, max(height, ground + 0.1))
-    ids, counts = np.unique(labels[labels >= 0], return_counts=True)
+    ids, counts = np.unique(labels[fit_mask(labels, fitted)], return_counts=True)  # the planes' counts
     small = ids[:0]
     if len(ids):
         roof = planes.tilt_deg[ids] <= params.max_roof_tilt_deg
@@ -787,13 +806,13 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
         keep = ids
     raised = None
     if len(keep) and len(small):  # the smaller planes too, where they stand raised on the roof
-        raised = _lod2(fp, xyz, labels, np.union1d(keep, small), planes, ground, height, cell, least)
+        raised = _lod2(fp, xyz, labels, np.union1d(keep, small), planes, ground, height, cell, least, fitted)
     solids, roofs, _ = raised if raised is not None and raised[2] else _lod2(fp, xyz, labels, keep, planes, ground,
-                                                                             height, cell)
+                                                                             height, cell, None, fitted)
     return BuildingModel(bid, fp_xy, ground, height, roof_type(roofs), lod1, solids, roofs)
 
 
-def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):
+def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None, fitted=None):
     """LoD2.2 solids and roof faces of a building from its planes ``keep`` (indices into
     ``planes``), and whether planes a part's roof left out were detached as raised parts.
 
@@ -803,26 +822,32 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None):
     model is for the planes under ``least`` points: it only counts (third value True) when each
     such plane ended in a part of small planes only (a dormer, a raised annex, split off by a
     step that :func:`split_parts` or :func:`detach_raised` found), so small planes never reshape
-    the main roof."""
+    the main roof. The planes are refitted to the ``fitted`` points (:func:`fit_mask`), which own
+    their raster cells by their labels; the points left out of the fits near the planes' edges
+    are claimed again by :func:`_claim_unlabelled`, against the refitted planes: their labels
+    were given within the segmentation's threshold of either face, and the plane vertically
+    nearest to them once refitted decides their face better."""
     if len(keep):
         local = np.full(len(xyz), -1, np.int64)
         m = np.isin(labels, keep)
         local[m] = np.searchsorted(keep, labels[m])
-        before = local
-        local, normals, points = merge_building_planes(xyz, local, planes.normals[keep], planes.threshold, planes.angle_deg)
+        before, use = local, fit_mask(local, fitted)
+        local, normals, points = merge_building_planes(xyz, local, planes.normals[keep], planes.threshold,
+                                                       planes.angle_deg, use)
         force = None
         if planes.regular is not None and planes.regular[keep].any():  # a merged plane all of such faces
             on = before >= 0
             mixed = np.bincount(local[on], ~planes.regular[keep][before[on]], minlength=len(normals))
             force = mixed == 0
-        normals, points = regular_planes(xyz, local, normals, points, planes.spacing, force)
+        normals, points = regular_planes(xyz, local, normals, points, planes.spacing, force, use)
     else:  # no plane: a flat roof at the median height
         c = fp.centroid
         normals = np.array([[0.0, 0.0, 1.0]])
         points = np.array([[c.x, c.y, float(np.median(xyz[:, 2])) if len(xyz) else height]])
-        local = np.zeros(len(xyz), np.int64)
-    is_small = np.bincount(local[local >= 0], minlength=len(normals)) < (least or 0)
-    local = _claim_unlabelled(xyz, local, normals, points, planes.threshold, cell)
+        local, use = np.zeros(len(xyz), np.int64), np.ones(len(xyz), bool)
+    is_small = np.bincount(local[use & (local >= 0)], minlength=len(normals)) < (least or 0)
+    # points out of the fits (near an edge) are owned by the refitted plane nearest to them
+    local = _claim_unlabelled(xyz, np.where(use, local, -1), normals, points, planes.threshold, cell)
     grid, origin, centres = ownership_raster(fp, xyz, local, len(normals), cell)
     part_of_plane = split_parts(grid, origin, cell, normals, points, planes.threshold)
     solids, roofs, used = _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, normals, points,

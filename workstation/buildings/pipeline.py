@@ -265,7 +265,7 @@ def build_unit(items: list, setup: UnitSetup, dtm) -> list:
         t2 = time.perf_counter()
         ground = float(sample_grid(dtm[0], dtm[1], p.dtm_cell, fp.polygon).min()) if dtm is not None \
             else float(pts[:, 2].min())
-        model = build_building(-1, fp.polygon, pts, planes.labels, planes, ground, p.models, cell)
+        model = build_building(-1, fp.polygon, pts, planes.labels, planes, ground, p.models, cell, planes.fitted)
         out.append((fp, model, t1 - t0, t2 - t1, time.perf_counter() - t2, time.thread_time() - c0))
     return out
 

@@ -95,7 +95,8 @@ class RoofPlanes:
     Attributes
     ----------
     labels : (n,) int64
-        Plane index per point, -1 for points on no plane.
+        Plane (face) index per point, -1 for points on no plane. Near where two planes meet, a
+        point that :func:`settle_edges` leaves out of its plane's fit keeps its face here.
     normals : (p, 3) float64
         Unit normals pointing up (z >= 0).
     offsets : (p,) float64
@@ -103,9 +104,10 @@ class RoofPlanes:
     origin : (3,) float64
         Local origin subtracted from the coordinates before fitting (m).
     rmse : (p,) float64
-        RMS distance of each plane's points to it (m).
+        RMS distance to each plane of the points it was fitted to (``fitted``) (m).
     counts : (p,) int64
-        Points per plane.
+        Points each plane was fitted to (``labels == q`` and ``fitted``); the face's points
+        (``labels == q``) may be more.
     threshold : float
         Distance threshold used (m).
     noise, spacing : float
@@ -117,6 +119,13 @@ class RoofPlanes:
         the building's directions, tilt shared across their ridge; :func:`_residual_faces`):
         the model regularises them whatever its own Bayes factors say (``force`` of
         :func:`regularise_planes`). None where not recorded (as all False).
+    fitted : (n,) bool or None
+        Points each plane is fitted to: the labelled points less those near a line where two
+        planes meet that :func:`settle_edges` leaves out (too close to the line to tell the
+        faces apart, or on the other face's side of it). The models refit their planes to
+        these points and let the refitted planes claim the others
+        (:func:`workstation.buildings.models.build_building`). None where not recorded (every
+        labelled point).
     """
 
     labels: np.ndarray
@@ -130,6 +139,7 @@ class RoofPlanes:
     spacing: float
     angle_deg: float = 10.0
     regular: np.ndarray | None = None
+    fitted: np.ndarray | None = None
 
     @property
     def tilt_deg(self) -> np.ndarray:
@@ -697,16 +707,23 @@ def settle_edges(xyz, labels, normals, offsets, rms, counts, idx, eps, rounds: i
     over the planes (as :func:`pooled_noise`, from the planes' RMS ``rms`` (p,) and point
     ``counts`` (p,)) and with the planes' ridges and valleys of :func:`_ridges`. Each round
     starts from the segmentation's labels with the planes of the round before, so a point left
-    out in one round may return in the next. The points near a line that are not their plane's
-    (ambiguous, or on the other face's side) leave it (label -1), so the planes are fitted to the
-    points that are theirs. A plane that would keep under four points keeps its own. Returns
-    (labels, normals, offsets, rms, counts), the planes numbered as before."""
+    out in one round may return in the next. A point that residuals put on another plane moves
+    there (its face and its fit). The points near a line that are not clearly their plane's
+    (ambiguous, or on the other face's side) are left out of the fit only: they keep their face,
+    as the side of a line that runs on past the faces' common edge does not say which face a
+    point is on. A plane that would keep under four points keeps its own.
+
+    Returns (labels (n,), fitted (n,) bool, normals, offsets, rms, counts), the planes numbered
+    as before: ``labels`` the face of each point, ``fitted`` the points each plane is fitted to,
+    and ``rms`` and ``counts`` those of the fitted points."""
     p = len(normals)
+    fitted = labels >= 0
     if p >= 2:
-        on = np.flatnonzero(labels >= 0)
+        on = np.flatnonzero(fitted)
         seg, cand = labels[on], labels[idx[on]]
         edge = ((cand >= 0) & (cand != seg[:, None])).any(axis=1)
         pts, cand, old = on[edge], cand[edge], labels[on[edge]]
+        faces = labels
         for _ in range(rounds if len(pts) else 0):
             dof = counts.sum() - 3 * np.count_nonzero(counts)
             sigma = math.sqrt(float(np.sum(rms * rms * counts)) / dof) if dof > 0 else 0.0
@@ -714,13 +731,18 @@ def settle_edges(xyz, labels, normals, offsets, rms, counts, idx, eps, rounds: i
                 break
             ridge = _ridges(xyz[on], seg, normals, offsets)
             new = _edge_labels(xyz[pts], old, cand, normals, offsets, sigma, eps, ridge)
-            labels = labels.copy()
-            labels[pts] = new
-            few = np.bincount(labels[labels >= 0], minlength=p) < 4
-            labels[pts] = np.where(few[old], old, new)  # a plane left with under four points keeps its own
-            g = grouped_plane_fit(xyz, labels, p)
+            fit = labels.copy()
+            fit[pts] = new
+            few = np.bincount(fit[fit >= 0], minlength=p) < 4
+            new = np.where(few[old], old, new)  # a plane left with under four points keeps its own
+            fit[pts] = new
+            faces = labels.copy()
+            faces[pts] = np.where(new >= 0, new, old)
+            fitted = fit >= 0
+            g = grouped_plane_fit(xyz, fit, p)
             normals, offsets, rms, counts = g.normals, g.offsets, g.rms, g.counts
-    return labels, normals, offsets, rms, counts
+        labels = faces
+    return labels, fitted, normals, offsets, rms, counts
 
 
 #: Tilt (degrees) below which a roof plane counts as flat (drainage slopes are a few degrees):
@@ -993,5 +1015,5 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
         on = (labels >= 0) & (small >= 0)
         votes = np.bincount(labels[on], promised[small[on]], minlength=len(pn))
         regular = votes > 0.5 * np.maximum(counts, 1)
-    labels, pn, pd, rmse, counts = settle_edges(loc, labels, pn, pd, rmse, counts, idx, eps)
-    return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg, regular)
+    labels, fitted, pn, pd, rmse, counts = settle_edges(loc, labels, pn, pd, rmse, counts, idx, eps)
+    return RoofPlanes(labels, pn, pd, origin, rmse, counts, eps, noise, spacing, params.angle_deg, regular, fitted)
