@@ -81,6 +81,29 @@ def test_neighbour_sum_of_a_band_of_rows(shape):
             assert np.isnan(out[:r0]).all() and np.isnan(out[r1:]).all()  # the other rows untouched
 
 
+def test_neighbour_sum_of_non_contiguous_arrays():
+    z = np.random.default_rng(3).normal(0.0, 10.0, (20, 14))
+    for view in (z.T, z[:, ::2], np.asfortranarray(z)):
+        assert np.array_equal(_neighbour_sum(view), _padded_sum(view))
+        assert np.array_equal(_neighbour_sum(view, np.empty(view.shape)), _padded_sum(view))
+    with pytest.raises(ValueError, match="C-contiguous"):
+        _neighbour_sum(z.T, np.empty((20, 14)).T)
+    with pytest.raises(ValueError, match="C-contiguous"):
+        _neighbour_sum(z, np.empty((20, 28))[:, ::2])
+
+
+@pytest.mark.parametrize("fraction", [0.0, 0.1, 0.5, 1.0])
+def test_compaction_frequency_gives_the_same_cloth(monkeypatch, fraction):
+    # compacting after every step (0), when 10 % or half of the arrays has stopped, or never (1)
+    ihv = _inverted_terrain((50, 40), seed=13)
+    p = CSFParams(rigidness=2, slope_smooth=True)
+    monkeypatch.setattr(csf, "COMPACT_FRACTION", fraction)
+    cloth, steps = simulate(ihv, p)
+    want, want_steps = _reference(ihv, p)
+    assert steps == want_steps
+    assert np.array_equal(cloth, want)
+
+
 @pytest.mark.parametrize("band", [1, 45, 100, 1000])
 def test_bands_of_rows_give_the_same_cloth(monkeypatch, band):
     # bands of 1, 1, 2 and 22 rows of 45 particles (60 rows, 3 to 60 bands)

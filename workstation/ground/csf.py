@@ -154,7 +154,8 @@ def _neighbour_sum(z: np.ndarray, out: np.ndarray | None = None, r0: int = 0, r1
 
     The rows are worked on as one flat run of values, in contiguous 1-D adds (faster than 2-D
     column slices); the two border columns, which the flat shifts give the neighbouring row's
-    end, are recomputed from their saved ``up + down``.
+    end, are recomputed from their saved ``up + down``. ``z`` is read as a C-contiguous copy when
+    it is not one; ``out`` must be C-contiguous (ValueError otherwise).
 
     Examples
     --------
@@ -162,10 +163,13 @@ def _neighbour_sum(z: np.ndarray, out: np.ndarray | None = None, r0: int = 0, r1
     array([[12., 20.],
            [28., 36.]])
     """
+    z = np.ascontiguousarray(z)
     rows, cols = z.shape
     r1 = rows if r1 is None else r1
     if out is None:
         out = np.empty_like(z)
+    elif not out.flags.c_contiguous or out.shape != z.shape:
+        raise ValueError(f"out must be a C-contiguous array of shape {z.shape}")  # else reshape(-1) copies
     f, s = z.reshape(-1), out.reshape(-1)
     a, b = max(r0, 1), min(r1, rows - 1)  # the rows with a row above and below
     if a < b:
@@ -199,10 +203,19 @@ def _neighbour_sums_at(z: np.ndarray, out: np.ndarray, idx: np.ndarray, edges: n
     ``near``, band by band: the rows ``edges[k]:edges[k + 1]`` hold ``idx[cut[k]:cut[k + 1]]``;
     bands without one of them are skipped."""
     s = out.reshape(-1)
+    if idx.size and (idx[0] < 0 or idx[-1] >= s.size):  # idx is sorted: all in range
+        raise IndexError(f"particle index out of range 0..{s.size - 1}")
     for k in np.flatnonzero(cut[1:] > cut[:-1]):
         _neighbour_sum(z, out, int(edges[k]), int(edges[k + 1]))
+        # mode "clip" clips nothing (checked above); the default mode would buffer ``out``
         np.take(s, idx[cut[k] : cut[k + 1]], out=near[cut[k] : cut[k + 1]], mode="clip")
     return near
+
+
+#: Stopped particles stay in the compact arrays of :func:`_fall` (held at their IHV) until
+#: more than this fraction of the arrays has stopped since the last compaction; compacting
+#: less often saves copies and changes nothing in the cloth.
+COMPACT_FRACTION = 0.1
 
 
 def _fall(z: np.ndarray, ihv: np.ndarray, p: CSFParams, passes: int) -> tuple[np.ndarray, int]:
@@ -215,47 +228,64 @@ def _fall(z: np.ndarray, ihv: np.ndarray, p: CSFParams, passes: int) -> tuple[np
     particles' heights are kept in compact arrays (``cur``, ``old``: this step's and the last
     one's) and written back to the grid before every neighbour sum reads them (the next
     step's Verlet move writes them again, so the last pass's heights stay compact until the
-    end); a stopped particle leaves the compact arrays and keeps its IHV on the grid. The
-    neighbour sums are formed band by band of rows (:func:`_neighbour_sums_at`), only where a
-    movable particle is. The arithmetic per particle is that of a masked update of the whole
-    grid, in the same order.
+    end). A stopped particle keeps its IHV on the grid; it stays in the compact arrays at a
+    position listed in ``gone`` (its IHV in ``rest``, put back before every write to the grid;
+    its ``low`` -inf, so that it does not stop again; its change left out) until more than
+    :data:`COMPACT_FRACTION` of the arrays has stopped, when they are compacted. The neighbour
+    sums are formed band by band of rows (:func:`_neighbour_sums_at`), only where a particle of
+    the compact arrays is. The arithmetic per movable particle is that of a masked update of
+    the whole grid, in the same order.
     """
     flat, target = z.reshape(-1), ihv.reshape(-1)
-    idx = np.arange(flat.size)
+    idx = np.arange(flat.size)  # intp: int32 indices are cast at every scatter and take
     cur, old, low = flat.copy(), flat.copy(), target.copy()
-    nsum = np.empty_like(z)
+    nsum, spare = np.empty_like(z), np.empty_like(cur)  # spare: the neighbour sums, the changes
+    gone, rest = np.empty(0, dtype=np.intp), np.empty(0)
     edges = np.unique(np.append(np.arange(0, z.shape[0], max(1, BAND_PARTICLES // z.shape[1])), z.shape[0]))
-    cut = np.searchsorted(idx, edges * z.shape[1])
+    starts = edges * z.shape[1]
+    cut = np.searchsorted(idx, starts)
     fall = GRAVITY * float(p.time_step) ** 2
     steps = 0
     for steps in range(1, int(p.iterations) + 1):
-        new = np.subtract(cur, old)  # Verlet: z + (z - zold)(1 - damping) - g dt^2
-        new *= 1.0 - DAMPING
-        new += cur
-        new -= fall
-        old, cur = cur, new
-        flat[idx] = cur
-        for k in range(passes):  # internal springs: move towards the neighbours' mean
-            if k:
-                flat[idx] = cur
-            near = _neighbour_sums_at(z, nsum, idx, edges, cut, np.empty_like(cur))
+        np.subtract(cur, old, out=old)  # Verlet: z + (z - zold)(1 - damping) - g dt^2
+        old *= 1.0 - DAMPING
+        old += cur
+        old -= fall
+        old, cur = cur, old
+        for _ in range(passes):  # internal springs: move towards the neighbours' mean
+            cur[gone] = rest
+            flat[idx] = cur
+            near = _neighbour_sums_at(z, nsum, idx, edges, cut, spare)
             near *= 0.25
             cur += near
             cur *= 0.5
-        hit = cur <= low
-        stopped = bool(hit.any())
-        if stopped:
-            cur[hit] = low[hit]
-            flat[idx[hit]] = low[hit]
-        change = float(np.abs(cur - old).max()) if steps > 10 and cur.size else 0.0
-        if stopped:
-            keep = ~hit
-            idx, cur, old, low = idx[keep], cur[keep], old[keep], low[keep]
-            cut = np.searchsorted(idx, edges * z.shape[1])
-        if steps > 10 and change < p.tolerance:
+        now = np.flatnonzero(cur <= low)
+        cur[now] = low[now]
+        flat[idx[now]] = low[now]
+        moved = 0.0
+        if steps > 10 and cur.size:
+            change = np.subtract(cur, old, out=spare)
+            np.abs(change, out=change)
+            change[gone] = 0.0
+            moved = float(change.max())
+        gone, rest = np.concatenate([gone, now]), np.concatenate([rest, low[now]])
+        low[now] = -np.inf
+        if gone.size > COMPACT_FRACTION * cur.size:
+            keep = np.ones(cur.size, dtype=bool)
+            keep[gone] = False
+            now = change = near = spare = None  # freed before the copies
+            gone, rest = gone[:0], rest[:0]
+            idx = idx[keep]  # one array at a time, each freed as its copy is made
+            cur = cur[keep]
+            old = old[keep]
+            low = low[keep]
+            spare = np.empty_like(cur)
+            cut = np.searchsorted(idx, starts)
+        if steps > 10 and moved < p.tolerance:
             break
+    cur[gone] = rest
     flat[idx] = cur
-    return idx, steps
+    return np.delete(idx, gone), steps
 
 
 def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
@@ -294,7 +324,6 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
             z[snap] = ihv[snap]
             movable &= ~snap
     return z, steps
-
 
 
 def surface_params(xyz: np.ndarray, p: CSFParams):
