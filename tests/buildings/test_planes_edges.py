@@ -107,7 +107,19 @@ def test_ridge_and_valley_of_a_dormer():
     # the slope under the dormer: the main face the dormer's points are nearest to
     under = int(np.argmin(np.abs(loc[face == 2] @ g.normals[:2].T + g.offsets[:2]).mean(axis=0)))
     assert not r[under, 2] and not r[under, 3]
-    assert np.array_equal(r, r.T)
+
+
+def test_a_building_without_planes_gets_a_model():
+    # points with no plane (clutter on a footprint): the fit mask is empty, the model is flat
+    from workstation.buildings.models import fit_mask
+
+    assert not fit_mask(np.full(5, -1), np.zeros(5, bool)).any()
+    pts = np.random.default_rng(0).uniform([0, 0, 0], [10, 10, 8], (300, 3))
+    r = segment_planes(pts)
+    assert len(r.normals) == 0
+    fp = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])
+    m = build_building(0, fp, pts, r.labels, r, 0.0, cell=0.5)
+    assert m is not None
 
 
 def test_segmented_faces_keep_their_points_and_models_fit_the_kept_ones():
@@ -122,9 +134,10 @@ def test_segmented_faces_keep_their_points_and_models_fit_the_kept_ones():
     assert not np.any(r.fitted & (r.labels < 0))
     assert np.array_equal(r.counts, np.bincount(r.labels[r.fitted], minlength=len(r.normals)))
     fp = np.asarray(b.footprint())
-    models = [build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3, fitted=r.fitted),
-              build_building(0, fp, pts, np.where(r.fitted, r.labels, -1), r, 0.0, cell=0.3),
-              build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3)]
+    kept = np.where(r.fitted, r.labels, -1)
+    models = [build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3),  # fitted: planes.fitted
+              build_building(0, fp, pts, kept, r, 0.0, cell=0.3, fitted=kept >= 0),
+              build_building(0, fp, pts, r.labels, r, 0.0, cell=0.3, fitted=r.labels >= 0)]
     normals = [np.unique(np.round([f.normal for f in m.roofs], 9), axis=0) for m in models]
     assert len(normals[0]) == 4
     assert np.allclose(normals[0], normals[1], atol=1e-8) and not np.allclose(normals[0], normals[2], atol=1e-5)

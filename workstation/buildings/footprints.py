@@ -710,7 +710,7 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
         sub = labels[sl] == k + 1
         if np.count_nonzero(sub) * cell * cell < params.min_area:
             continue
-        comps.append(Component(k + 1, field[sl], sub, origin + np.array([sl[1].start, sl[0].start]) * cell))
+        comps.append(Component(k + 1, field[sl].copy(), sub, origin + np.array([sl[1].start, sl[0].start]) * cell))
     return District(spacing, cell, ref, comps, point_label, len(slices))
 
 

@@ -753,7 +753,9 @@ def fit_mask(local, fit=None, least: int = 3):
     if fit is None:
         return on
     use = on & np.asarray(fit, bool)
-    few = np.bincount(local[use], minlength=int(local.max(initial=-1)) + 1) < least
+    if not on.any():  # no plane: nothing to fit
+        return use
+    few = np.bincount(local[use], minlength=int(local.max()) + 1) < least
     return use | (on & few[np.maximum(local, 0)])
 
 
@@ -782,8 +784,9 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
     """LoD1.2 and LoD2.2 of one building from its footprint (k, 2), its points (m, 3), their
     plane labels (m,) into ``planes`` (a :class:`~workstation.buildings.planes.RoofPlanes`) and
     the ground height (m). ``fitted`` (m,) bool marks the points the planes are fitted to
-    (``planes.fitted``; None: every labelled point): the model counts and refits its planes on
-    them, and the labelled points outside them take the plane of :func:`_claim_unlabelled`.
+    (None: ``planes.fitted``; pass ``labels >= 0`` for every labelled point): the model counts
+    and refits its planes on them, and the labelled points outside them take the plane of
+    :func:`_claim_unlabelled`.
 
     The LoD2.2 is first built from all roof planes; it is kept when every plane under the
     ``min_plane_share`` ended in a raised part of small planes only (:func:`_lod2`), else the
@@ -792,6 +795,8 @@ def build_building(bid: int, footprint: np.ndarray, xyz: np.ndarray, labels: np.
 
     from .footprints import ccw
 
+    if fitted is None:
+        fitted = getattr(planes, "fitted", None)
     fp_xy = ccw(np.asarray(footprint, float))
     fp = shapely.Polygon(fp_xy)
     height = float(np.percentile(xyz[:, 2], params.lod1_percentile)) if len(xyz) else ground

@@ -4,7 +4,6 @@ of tasks in flight so that each task's arguments are made only when a worker is 
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable, Iterable
 
 from workstation.core.errors import InvalidInputError
@@ -23,11 +22,6 @@ def connect(scheduler: str):
                                 field="scheduler") from None
 
 
-#: The user's own glibc trim threshold, read before any Dask nanny copies its default into
-#: this process's environment.
-_USER_MALLOC_TRIM = os.environ.get("MALLOC_TRIM_THRESHOLD_")
-
-
 def local_worker_settings() -> dict:
     """Dask settings (for ``dask.config.set``) of a local cluster of CPU-bound tasks started here:
 
@@ -36,15 +30,15 @@ def local_worker_settings() -> dict:
     - glibc's malloc left to its own thresholds: Dask's default ``MALLOC_TRIM_THRESHOLD_``
       (64 KiB) also fixes glibc's mmap threshold at 128 KiB, so every larger numpy array is
       mapped afresh and its pages faulted in again, in the kernel, on every allocation; without
-      it, freed arrays are reused as in one process. A value the user exported is kept;
-    - the system monitor every 2 s, without the host's disk counters, and the nannies' memory
-      check every 0.5 s (Dask's defaults: 0.5 s with disks, 0.1 s): with the workers busy on
-      every core, the scheduler's and each process's own monitoring is CPU taken from the tasks.
+      it, freed arrays are reused as in one process (a value exported in the environment still
+      reaches the workers, which inherit it);
+    - the system monitor every 2 s, without the host's disk counters (Dask's default: 0.5 s
+      with disks): with the workers busy on every core, monitoring is CPU taken from the tasks.
+      The memory checks keep Dask's pace, so spilling and pausing react as quickly as usual.
     """
     return {"distributed.worker.profile.enabled": False,
-            "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": _USER_MALLOC_TRIM,
-            "distributed.admin.system-monitor.interval": "2s", "distributed.admin.system-monitor.disk": False,
-            "distributed.worker.memory.monitor-interval": "500ms"}
+            "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
+            "distributed.admin.system-monitor.interval": "2s", "distributed.admin.system-monitor.disk": False}
 
 
 def run_bounded(client, calls: Iterable[tuple[object, Callable[[], tuple]]], limit: int,

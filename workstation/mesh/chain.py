@@ -94,7 +94,8 @@ class MeshResult:
 
 
 def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpoints=None, *,
-               reconstruction: Reconstruction | None = None, images=None) -> MeshResult:
+               reconstruction: Reconstruction | None = None, images=None,
+               photogrammetric: bool | None = None) -> MeshResult:
     """Run the meshing chain on a cloud.
 
     Parameters
@@ -110,6 +111,9 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
         (``params.texture``).
     images : mapping of image id to (h, w, 3) uint8, optional
         The photos' pixels (read from their paths otherwise).
+    photogrammetric : bool, optional
+        Whether the cloud comes from photos (``params.refine`` runs even when it is
+        ``photos_only``); None: when cameras are given.
 
     Returns
     -------
@@ -135,7 +139,8 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
         steps.append(rec)
         log.info("%s: %d faces in %.1f s", rec.name, mesh.n_faces, rec.seconds)
         photos = isinstance(viewpoints, Reconstruction) or reconstruction is not None
-        if params.refine is not None and (photos or not params.refine.photos_only):
+        if params.refine is not None and ((photos if photogrammetric is None else photogrammetric)
+                                          or not params.refine.photos_only):
             mesh, rec = refine_to_cloud(mesh, cloud, params.refine)
             steps.append(rec)
         if params.clean is not None:

@@ -137,7 +137,7 @@ def mesh_task(out: str, image_dir: str, stage, *upstream) -> dict:
         from workstation.photogrammetry.sfm import read_reconstruction
 
         rec = read_reconstruction(workdir, image_dir)
-    res = mesh_cloud(cloud, stage.params, viewpoints=rec, reconstruction=rec)
+    res = mesh_cloud(cloud, stage.params, viewpoints=rec, reconstruction=rec, photogrammetric=True)
     path = Path(out) / "mesh" / f"mesh.{stage.format}"
     path.parent.mkdir(parents=True, exist_ok=True)
     write_mesh(res.mesh, path, overwrite=True)

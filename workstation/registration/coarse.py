@@ -295,8 +295,9 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
 
 
 def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams(), viewpoints=None) -> RegistrationResult:
-    """Coarse registration from matched planes (:func:`~workstation.registration.planes.plane_registration`;
-    ``params`` of this stage give its defaults), testing free space where the scanner positions
+    """Coarse registration from matched planes (:func:`~workstation.registration.planes.plane_registration`
+    with its own defaults, :class:`~workstation.registration.planes.PlaneCoarseParams`: this
+    stage's ``params`` do not apply), testing free space where the scanner positions
     ``viewpoints`` (source, target; local frame, or None) are known."""
     from .planes import plane_registration
 

@@ -104,10 +104,11 @@ class PlaneCoarseParams:
     free_cell: float = 2.0
 
     def __post_init__(self):
-        counts = ("max_planes", "align_planes", "peaks", "sample", "verify")
-        for name in counts:
-            if int(getattr(self, name)) < 1:
-                raise InvalidInputError(f"{name} must be at least 1, got {getattr(self, name)}", field=name)
+        least = {"max_planes": 1, "align_planes": 1, "peaks": 1, "sample": 4, "verify": 1}  # a quarter of the sample scores
+        for name, low in least.items():
+            value = getattr(self, name)
+            if not isinstance(value, (int, np.integer)) or value < low:
+                raise InvalidInputError(f"{name} must be a whole number of at least {low}, got {value!r}", field=name)
         for name in ("distance", "step_deg", "free_cell"):
             if not float(getattr(self, name)) > 0:
                 raise InvalidInputError(f"{name} must be positive, got {getattr(self, name)}", field=name)
@@ -315,6 +316,8 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
     from .icp import ICPParams, refine
     from .register import _distinct_pose, consistency
 
+    if len(Ts) == 0:
+        raise InvalidInputError("no pose hypotheses to verify", field="Ts")
     v = src.radii.voxel
     picked = []
     for s, T in zip(scores, Ts):
