@@ -315,15 +315,21 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
     movable = np.zeros(ihv.shape, dtype=bool)
     movable.reshape(-1)[idx] = True
     if p.slope_smooth:
-        for _ in range(max(ihv.shape)):
-            fixed = np.pad(~movable, 1, mode="constant", constant_values=False)
-            touch = fixed[:-2, 1:-1] | fixed[2:, 1:-1] | fixed[1:-1, :-2] | fixed[1:-1, 2:]
-            snap = movable & touch & (np.abs(z - ihv) < p.smooth_threshold)
-            if not snap.any():
-                break
-            z[snap] = ihv[snap]
-            movable &= ~snap
+        snap_to_slopes(z, ihv, movable, p.smooth_threshold)
     return z, steps
+
+
+def snap_to_slopes(z: np.ndarray, ihv: np.ndarray, movable: np.ndarray, threshold: float) -> None:
+    """CSF's slope post-processing, in place: a movable particle next to a fixed one and within
+    ``threshold`` of its point's height is moved onto it and fixed, repeated until none is."""
+    for _ in range(max(ihv.shape)):
+        fixed = np.pad(~movable, 1, mode="constant", constant_values=False)
+        touch = fixed[:-2, 1:-1] | fixed[2:, 1:-1] | fixed[1:-1, :-2] | fixed[1:-1, 2:]
+        snap = movable & touch & (np.abs(z - ihv) < threshold)
+        if not snap.any():
+            break
+        z[snap] = ihv[snap]
+        movable &= ~snap
 
 
 def surface_params(xyz: np.ndarray, p: CSFParams):
