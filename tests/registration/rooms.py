@@ -56,14 +56,9 @@ def view(mesh, position, yaw_deg, pitch_deg=-30.0, hfov=90.0, vfov=70.0, step=0.
                        (pitch_deg - vfov / 2, pitch_deg + vfov / 2))
 
 
-def view_pair(seed, lo=0.2, hi=0.35, step=0.5):
-    """Two views of one room whose overlap (share of the first within 5 cm of the second) lies in [lo, hi]."""
-    a, b, ov, _, _ = view_pair_with_sensors(seed, lo, hi, step)
-    return a, b, ov
-
-
 def view_pair_with_sensors(seed, lo=0.2, hi=0.35, step=0.5):
-    """:func:`view_pair` with the sensor positions: ``(a, b, overlap, position_a, position_b)``."""
+    """Two views of one room whose overlap (share of the first within 5 cm of the second) lies in
+    [lo, hi], with the sensor positions: ``(a, b, overlap, position_a, position_b)``."""
     from scipy.spatial import cKDTree
     rng = np.random.default_rng(seed)
     mesh, (L, W, H) = room_mesh(seed)

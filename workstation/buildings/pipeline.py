@@ -326,22 +326,9 @@ def batch_starts(n_items: int, workers: int, largest: int = 32) -> list:
 def _dask_client(workers: int, scheduler: str | None):
     """A Dask client on the running scheduler at ``scheduler``, or on a new local cluster of
     ``workers`` single-threaded processes (the cluster closed with the client)."""
-    import logging
+    from workstation.core.dasktasks import connect, local_client
 
-    import dask
-    from distributed import Client, LocalCluster
-
-    from workstation.core.dasktasks import connect, local_worker_settings
-    from workstation.core.signals import workers_starting
-
-    if scheduler:
-        with connect(scheduler) as client:
-            yield client
-        return
-    with workers_starting(), dask.config.set(local_worker_settings()):
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                               silence_logs=logging.CRITICAL)
-    with cluster, Client(cluster) as client:
+    with (connect(scheduler) if scheduler else local_client(workers)) as client:
         yield client
 
 

@@ -724,12 +724,13 @@ def settle_edges(xyz, labels, normals, offsets, rms, counts, idx, eps, rounds: i
         edge = ((cand >= 0) & (cand != seg[:, None])).any(axis=1)
         pts, cand, old = on[edge], cand[edge], labels[on[edge]]
         faces = labels
+        xon = xyz[on]
         for _ in range(rounds if len(pts) else 0):
-            dof = counts.sum() - 3 * np.count_nonzero(counts)
+            dof = counts.sum() - 3 * np.count_nonzero(counts)  # pooled_noise from the planes' own rms
             sigma = math.sqrt(float(np.sum(rms * rms * counts)) / dof) if dof > 0 else 0.0
             if sigma <= 0:
                 break
-            ridge = _ridges(xyz[on], seg, normals, offsets)
+            ridge = _ridges(xon, seg, normals, offsets)
             new = _edge_labels(xyz[pts], old, cand, normals, offsets, sigma, eps, ridge)
             fit = labels.copy()
             fit[pts] = new

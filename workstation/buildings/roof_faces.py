@@ -74,7 +74,7 @@ def lower_envelope(part, normals: np.ndarray, points: np.ndarray) -> list:
             continue
         piece = part.intersection(shapely.Polygon(cell))
         for geom in getattr(piece, "geoms", [piece]):
-            if geom.geom_type == "Polygon" and geom.area > 1e-9:
+            if geom.geom_type == "Polygon" and geom.area > SLIVER_AREA:
                 out.append((i, shapely.orient_polygons(geom)))
     return out
 

@@ -4,6 +4,7 @@ of tasks in flight so that each task's arguments are made only when a worker is 
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable, Iterable
 
 from workstation.core.errors import InvalidInputError
@@ -39,6 +40,24 @@ def local_worker_settings() -> dict:
     return {"distributed.worker.profile.enabled": False,
             "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
             "distributed.admin.system-monitor.interval": "2s", "distributed.admin.system-monitor.disk": False}
+
+
+@contextlib.contextmanager
+def local_client(workers: int):
+    """A Dask client on a new local cluster of ``workers`` single-threaded processes started
+    with :func:`local_worker_settings` (closed with the client)."""
+    import logging
+
+    import dask
+    from distributed import Client, LocalCluster
+
+    from workstation.core.signals import workers_starting
+
+    with workers_starting(), dask.config.set(local_worker_settings()):  # a half-started cluster cannot be closed
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.CRITICAL)
+    with cluster, Client(cluster) as client:
+        yield client
 
 
 def run_bounded(client, calls: Iterable[tuple[object, Callable[[], tuple]]], limit: int,

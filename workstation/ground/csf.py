@@ -312,9 +312,9 @@ def simulate(ihv: np.ndarray, p: CSFParams) -> tuple[np.ndarray, int]:
     ihv = np.ascontiguousarray(ihv, dtype=np.float64)
     z = np.full(ihv.shape, float(np.max(ihv)) + 0.05)
     idx, steps = _fall(z, ihv, p, passes)
-    movable = np.zeros(ihv.shape, dtype=bool)
-    movable.reshape(-1)[idx] = True
     if p.slope_smooth:
+        movable = np.zeros(ihv.shape, dtype=bool)
+        movable.reshape(-1)[idx] = True
         snap_to_slopes(z, ihv, movable, p.smooth_threshold)
     return z, steps
 

@@ -40,7 +40,6 @@ judged against a flat-terrain slope where the terrain is flat.
 
 from __future__ import annotations
 
-import hashlib
 import threading
 from dataclasses import dataclass, replace
 from typing import Callable
@@ -182,11 +181,8 @@ class SharedSurfaces:
         one of 30 m over the same roofs, a slope-adaptive test that changes nothing on flat
         ground) read one inpainted surface."""
         g = self.grid(cell)
-        key = ("provisional", cell, bad.shape, hashlib.blake2b(np.packbits(bad).tobytes(), digest_size=16).digest())
-        made_for, zpro = self.get(key, lambda: (bad.copy(), _read_only(_provisional(g.zmin, bad, g.zfill, g.off))))
-        if np.array_equal(made_for, bad):
-            return zpro
-        return _provisional(g.zmin, bad, g.zfill, g.off)  # another set with the same digest
+        key = ("provisional", cell, bad.shape, np.packbits(bad).tobytes())  # the cells themselves: exact
+        return self.get(key, lambda: _read_only(_provisional(g.zmin, bad, g.zfill, g.off)))
 
 
 def _read_only(a: np.ndarray) -> np.ndarray:

@@ -151,19 +151,10 @@ def _filter_on_dask(layout, task, collect, advance, workers: int) -> None:
     """Filter the tiles on a local Dask cluster of ``workers`` single-threaded processes (the
     scheduler ``ws run`` uses), at most one tile per worker in flight: a tile's copy is made
     only when a worker is free for it."""
-    import logging
+    from workstation.core.dasktasks import local_client, run_bounded
+    from workstation.core.signals import caught_signals
 
-    from distributed import Client, LocalCluster
-
-    import dask
-
-    from workstation.core.dasktasks import local_worker_settings, run_bounded
-    from workstation.core.signals import caught_signals, workers_starting
-
-    with workers_starting(), dask.config.set(local_worker_settings()):
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                               silence_logs=logging.CRITICAL)
-    with cluster, Client(cluster) as client, caught_signals() as latch:
+    with local_client(workers) as client, caught_signals() as latch:
         def done(core, result):
             collect(core, result)
             advance(1)

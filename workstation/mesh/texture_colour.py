@@ -109,21 +109,15 @@ def colour_noise(colour: np.ndarray) -> float:
     from the differences between every two views of the same face (each difference has
     variance 2 sigma^2), sigma = 1.4826 median |difference| / sqrt(2); views of an occluder
     are a minority of the pairs and do not move the median. At least 1 grey level (the photos'
-    8-bit step and their resampling). The differences fill one array, pair by pair, and their
-    median (that of :func:`numpy.median` over the finite ones) is found by partitioning it in
-    place, the missing ones (NaN) set to +inf above them."""
+    8-bit step and their resampling). The differences fill one array, pair by pair, whose
+    median over the views present is taken in place."""
     d = np.empty((math.comb(colour.shape[1], 2),) + colour.shape[:1] + colour.shape[2:])
     for i, (a, b) in enumerate(zip(*np.triu_indices(colour.shape[1], 1))):
         np.subtract(colour[:, a], colour[:, b], out=d[i])
     d = np.abs(d, out=d).reshape(-1)
-    missing = np.isnan(d)
-    n = d.size - int(missing.sum())
-    if n == 0:
+    if np.isnan(d).all():
         return 1.0
-    d[missing] = np.inf
-    lo, hi = (n - 1) // 2, n // 2
-    d.partition([lo, hi])
-    return max(1.0, 1.4826 * float(0.5 * (d[lo] + d[hi])) / math.sqrt(2.0))
+    return max(1.0, 1.4826 * float(np.nanmedian(d, overwrite_input=True)) / math.sqrt(2.0))
 
 
 def consistent_views(views: np.ndarray, colour: np.ndarray, sigma: float, iterations: int = 5,

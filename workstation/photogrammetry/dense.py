@@ -470,7 +470,7 @@ def depth_normals(depth: np.ndarray, K: np.ndarray) -> np.ndarray:
         nrm[..., i] -= dx[..., k] * dy[..., j]
     del dx, dy
     ln = np.linalg.norm(nrm, axis=-1, keepdims=True)
-    good = ok & okx & oky & (ln[..., 0] > 0)
+    good = okx & oky & (ln[..., 0] > 0)  # a difference needs the pixel's own depth
     nrm /= np.maximum(ln, 1e-12)
     nrm[~good] = 0
     # make normals face the camera: n · P <= 0

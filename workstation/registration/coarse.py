@@ -301,7 +301,7 @@ def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams(),
     ``viewpoints`` (source, target; local frame, or None) are known."""
     from .planes import plane_registration
 
-    return plane_registration(src, tgt, params, viewpoints=(None, None) if viewpoints is None else tuple(viewpoints))
+    return plane_registration(src, tgt, viewpoints=(None, None) if viewpoints is None else tuple(viewpoints))
 
 
 def _without_viewpoints(method):
