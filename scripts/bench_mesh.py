@@ -43,6 +43,7 @@ import json
 import os
 import sys
 import time
+from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
@@ -567,13 +568,37 @@ def tree_share(rec, scene, with_tree, P, view, err, stats) -> dict:
             "abs_error_facade": stats(err[facade].ravel())}
 
 
-def photo_samples(rec, view: np.ndarray, P: np.ndarray, images=None, image_root=None) -> dict:
+class PhotosOnce(Mapping):
+    """The photos of ``rec`` (image id -> (h, w, 3) pixels), each read from ``root`` when first
+    asked for and kept: the texturing reads them inside its timing, as it does when given no
+    pixels, and the photo floor samples the same arrays without reading them again."""
+
+    def __init__(self, rec, root):
+        self.rec, self.root, self.pixels = rec, root, {}
+
+    def __getitem__(self, iid):
+        if iid not in self.pixels:
+            from workstation.io.images import read_image
+
+            self.pixels[iid] = read_image(self.rec.images[iid], self.root)[..., :3]
+        return self.pixels[iid]
+
+    def __contains__(self, iid):
+        return iid in self.rec.images
+
+    def __iter__(self):
+        return iter(sorted(self.rec.images))
+
+    def __len__(self):
+        return len(self.rec.images)
+
+
+def photo_samples(rec, view: np.ndarray, P: np.ndarray, images) -> dict:
     """The colours (n, 3) of the points ``P`` (n, 3) in the photo of their view ``view`` (n,
     image ids), sampled directly: {"bilinear": ..., "nearest": ... (the pixel holding the
-    point)}; ``images`` (id -> pixels) or the photos read from ``image_root``. For the points of
-    a texture made from those views, the floor of its colour error: what the photos give
-    without the texture's own resampling."""
-    from workstation.io.images import read_image
+    point)}; ``images``: image id -> pixels. For the points of a texture made from those
+    views, the floor of its colour error: what the photos give without the texture's own
+    resampling."""
     from workstation.registration.colorize import bilinear, project
 
     out = {"bilinear": np.zeros((len(P), 3)), "nearest": np.zeros((len(P), 3))}
@@ -581,7 +606,7 @@ def photo_samples(rec, view: np.ndarray, P: np.ndarray, images=None, image_root=
         sel = np.flatnonzero(view == iid)
         im = rec.images[int(iid)]
         cam = rec.cameras[im.camera_id]
-        pix = images[int(iid)] if images is not None else read_image(im, image_root)[..., :3]
+        pix = images[int(iid)]
         u, v, _ = project(P[sel], cam, im.pose)
         u, v = np.clip(u, 0, cam.width - 1), np.clip(v, 0, cam.height - 1)
         out["bilinear"][sel] = bilinear(pix, u, v)[:, :3]
@@ -610,11 +635,7 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     from workstation.registration.colorize import bilinear
 
     rec, mesh, vals, (V0, F0, alb0), centre, wall_r = heritage_texture_scene(workdir, image_size)
-    images = None
-    if tree or jitter:
-        from workstation.io.images import read_image
-
-        images = {i: read_image(im, workdir)[..., :3] for i, im in sorted(rec.images.items())}
+    images = PhotosOnce(rec, workdir)
     if tree:
         tv, tf, ta = heritage_tree(centre)
         sv, sf, sa = np.vstack([V0, tv]), np.vstack([F0, tf + len(V0)]), np.vstack([alb0, ta])
@@ -656,7 +677,7 @@ def texture_heritage(workdir, jitter: float = 0.0, balance: bool = True, consist
     extra = tree_share(rec, (V0, F0), (sv, sf), P, view[faces], err, stats) if tree else {}
     # the floor is the photos' own: with jittered exposures it would include the jitter the gains undo
     floor = {} if jitter else {k: stats(np.abs(c - truth)[full])
-                               for k, c in photo_samples(rec, view[faces], P, images, workdir).items()}
+                               for k, c in photo_samples(rec, view[faces], P, images).items()}
     emit(bench="texture_heritage_rig", images=len(rec.images), faces=mesh.n_faces, church_faces=int(church.sum()),
          tree=tree, last_resort=last_resort, max_views=max_views, texture_px=[int(w), int(h)],
          texel_size_m=round(step.params["texel_size"], 4),

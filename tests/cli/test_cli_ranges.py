@@ -79,6 +79,7 @@ BAD = [
     ("mesh", "--samples-per-node", ["0", "nan"]),
     ("mesh", "--radius", ["-1", "inf"]),
     ("mesh", "--trim-quantile", ["1", "nan"]),
+    ("mesh", "--refine-k", ["1", "2", "-1"]),
     ("render", "--point-size", ["-1", "nan"]),
     ("render", "--max-points", ["-1"]),
     ("info", "--density-cell", ["0", "nan"]),

@@ -55,6 +55,19 @@ def test_point_spacing_of_a_grid():
     assert point_spacing(xyz) == pytest.approx(0.25)
 
 
+@pytest.mark.parametrize("offset", [(0.0, 0.0, 0.0), (3.7, -1.2, 0.4), tuple(CENTRE)])
+def test_point_spacing_with_a_callers_centred_tree_is_the_same_number(offset):
+    """A caller's tree of the centred points finds the neighbours; the distances stay those of
+    the points themselves, to the last bit (duplicates and a rounded grid's ties included)."""
+    from workstation.mesh.reconstruct import centred_tree
+
+    rng = np.random.default_rng(7)
+    for scale, n in ((0.05, 30_000), (7.0, 3_000), (60.0, 25_000)):
+        xyz = rng.normal(size=(n, 3)) * scale + offset
+        for pts in (xyz, np.vstack([xyz, xyz[: n // 3]]), np.round(xyz, 1)):
+            assert point_spacing(pts, tree=centred_tree(pts)) == point_spacing(pts)
+
+
 def test_normals_propagated_consistently_and_toward_viewpoint(sphere_cloud):
     c, rec = estimate_normals(sphere_cloud, NormalParams(k=10))
     n = np.asarray(c.attrs["normal"], dtype=float)

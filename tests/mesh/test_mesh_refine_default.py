@@ -74,6 +74,31 @@ def test_cli_refine_k(tmp_path, capsys):
         steps[label] = {s["name"]: s for s in doc["steps"]}
     assert "refine_mls" not in steps["default"] and "refine_mls" not in steps["off"]  # a cloud without cameras
     assert steps["k24"]["refine_mls"]["params"]["k"] == 24
-    assert main(["mesh", str(src), "-o", str(tmp_path / "bad.ply"), "--refine-k", "2"]) != 0
     with pytest.raises(InvalidInputError):
         RefineParams(k=2)
+
+
+@pytest.mark.parametrize("value", ["1", "2", "-1", "1001"])
+def test_cli_refine_k_out_of_range_is_a_usage_error(tmp_path, value):
+    """A k no plane fit takes is refused by the option, named as ``--refine-k`` (not the
+    dataclass field ``k``) with its valid values, before the cloud is read."""
+    from click.testing import CliRunner
+
+    from workstation.cli.mesh import mesh
+
+    src = tmp_path / "in.laz"
+    src.write_bytes(b"not a cloud")  # never read: click refuses the option first
+    res = CliRunner().invoke(mesh, [str(src), "-o", str(tmp_path / "out.ply"), "--refine-k", value])
+    assert res.exit_code == 2, res.output
+    assert "'--refine-k'" in res.output and "3<=x<=1000 or 0" in res.output
+    assert "field 'k'" not in res.output
+
+
+@pytest.mark.parametrize("value, k", [("0", 0), ("3", 3), ("1000", 1000)])
+def test_cli_refine_k_accepts_off_and_plane_sizes(tmp_path, value, k):
+    from workstation.cli.mesh import mesh
+
+    src = tmp_path / "in.laz"
+    src.write_bytes(b"")
+    ctx = mesh.make_context("mesh", [str(src), "-o", str(tmp_path / "out.ply"), "--refine-k", value])
+    assert ctx.params["refine_k"] == k

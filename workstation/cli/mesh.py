@@ -13,7 +13,7 @@ from workstation.mesh.reconstruct import POISSON_BACKENDS
 from workstation.mesh.simplify import SMOOTH_METHODS
 
 from .options import emit_json, json_option, output_option, overwrite_option, read_options
-from .options import FiniteFloatRange, finite_float, nonneg_float, nonneg_int, positive_float
+from .options import FiniteFloatRange, SentinelIntRange, finite_float, nonneg_float, nonneg_int, positive_float
 from .options import RegistryChoice, bound, field_option, param_group
 
 #: Pieces smaller than this fraction of the mesh diagonal are removed by ``ws mesh`` (the library's
@@ -61,9 +61,10 @@ MIN_PIECE_FRACTION = 0.05
               help="Scanner position (CRS units) the normals must face.")
 @param_group("normals", bound(NormalParams, "recompute", "--recompute-normals", is_flag=True,
                               help="Estimate normals even when the cloud has them."))
-@click.option("--refine-k", type=click.IntRange(0, 1000), default=None,
+@click.option("--refine-k", type=SentinelIntRange(0, min=3, max=1000), default=None,
               help="Project the vertices onto the moving-least-squares planes of this many cloud points after "
-                   "reconstruction (averages the noise of photogrammetric clouds; 0 = off) "
+                   "reconstruction (averages the noise of photogrammetric clouds; 0 = off, else at least 3: "
+                   "a plane fit needs 3 points) "
                    f"[default: {RefineParams.k} with --reconstruction, else off].")
 @click.option("--target-faces", type=click.IntRange(4, None), default=None,
               help="Quadric edge-collapse decimation to this face count [default: no decimation].")

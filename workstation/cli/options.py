@@ -41,6 +41,12 @@ class FiniteFloatRange(click.FloatRange):
             self.fail(f"{value!r} is not a finite number.", param, ctx)
         return rv
 
+    def _describe_range(self) -> str:
+        # click writes an unbounded range as "x<=None"; any finite number needs no note
+        if self.min is None and self.max is None:
+            return ""
+        return super()._describe_range()
+
 
 class SentinelIntRange(click.IntRange):
     """``click.IntRange`` that also accepts one out-of-range ``sentinel`` with a meaning of its

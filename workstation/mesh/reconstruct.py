@@ -208,7 +208,7 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
         spacing, across, reach, n_support = None, None, None, 0
         if params.support_trim > 0 and mesh.n_faces:
             tree = centred_tree(cloud.xyz)
-            spacing, across = point_spacing(cloud.xyz), across_spacing(cloud.xyz, tree=tree)
+            spacing, across = point_spacing(cloud.xyz, tree=tree), across_spacing(cloud.xyz, tree=tree)
             reach = params.support_trim * max(spacing, 0.5 * across)
             far = support_distance(mesh.vertices, cloud.xyz, reach, tree=tree) > reach
             n_support = int(far.sum())

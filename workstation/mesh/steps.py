@@ -55,7 +55,7 @@ def params_dict(p) -> dict:
     return {k: (list(v) if isinstance(v, tuple) else v) for k, v in dataclasses.asdict(p).items()}
 
 
-def point_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0) -> float:
+def point_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0, tree=None) -> float:
     """Median distance from a point to its nearest neighbour, in coordinate units.
 
     The one scale every meshing size derives from when it is not given (ball radius,
@@ -67,6 +67,10 @@ def point_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0) -> float:
     xyz : (n, 3) float
     sample : int
         Number of query points.
+    tree : scipy.spatial.cKDTree, optional
+        A tree of ``xyz`` less its mean (:func:`~workstation.mesh.reconstruct.centred_tree`)
+        a caller already has: it finds the neighbours, whose distances are then measured in
+        ``xyz`` itself, as the tree built here (of ``xyz``) measures them.
 
     Returns
     -------
@@ -80,8 +84,10 @@ def point_spacing(xyz: np.ndarray, sample: int = 20000, seed: int = 0) -> float:
         raise InvalidInputError(f"{xyz.shape[0]} points: need at least 2 to measure point spacing")
     rng = np.random.default_rng(seed)
     q = xyz if xyz.shape[0] <= sample else xyz[rng.choice(xyz.shape[0], sample, replace=False)]
-    d, _ = cKDTree(xyz).query(q, k=2)
-    nn = d[:, 1]
+    if tree is None:
+        nn = cKDTree(xyz).query(q, k=2)[0][:, 1]
+    else:  # the second nearest: the nearest is the query itself (or a duplicate of it)
+        nn = np.linalg.norm(xyz[tree.query(q - xyz.mean(axis=0), k=2)[1][:, 1]] - q, axis=1)
     nn = nn[nn > 0]
     if nn.size == 0:
         raise InvalidInputError("all points coincide: the point spacing is zero", "remove duplicate points")
