@@ -25,14 +25,18 @@ Int. Arch. Photogramm. Remote Sens. 33(B4):110-117.
    of the candidates) join, or ``max_iterations``;
 4. every point within ``final_threshold + final_scalar · slope`` (vertical, slope of its
    facet as rise over run) of the final TIN is ground, as are the accepted candidates;
-   points outside the TIN's hull compare with the nearest ground point.
+   points outside the TIN's hull compare with the nearest ground point. The final TIN is
+   the iterations' TIN, updated with the points that joined last (no triangulation of its
+   own); each point is located by a walk from the triangle of its cell's candidate.
 
 Cost per iteration: one Qhull triangulation of the ground points and one bulk point location
 of the remaining candidates while many join, then one of the cavity's points and the location
 of the candidates in it; on a 1 m candidate grid 15-20 iterations, see docs/benchmarks.md
-(Ground filtering). The updated TIN is the full one (Delaunay triangulations are unique up
-to cocircular points); a candidate exactly on an edge shared by two facets may be located in
-the other one of the two than a full triangulation's walk would find.
+(Ground filtering); Qhull takes most of it (the point location walks on barycentric
+transforms computed in bulk, :func:`_delaunay`). The updated TIN is the full one (Delaunay
+triangulations are unique up to cocircular points); a point exactly on an edge shared by two
+facets (a candidate in the iterations, any point in the final test) may be located in the
+other one of the two than a full triangulation's walk would find.
 """
 
 from __future__ import annotations
@@ -169,6 +173,17 @@ def _in_circle(xy: np.ndarray, tri: np.ndarray, q: np.ndarray) -> np.ndarray:
     return det * np.sign(_orient(xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]])) > 0
 
 
+def _delaunay(xy: np.ndarray):
+    """scipy ``Delaunay`` of the points ``xy`` (n, 2) with the barycentric transforms its
+    ``find_simplex`` walks on computed in bulk (:func:`common.barycentric_transforms`; scipy
+    builds them triangle by triangle with LAPACK calls, 80 % of a location's cost here).
+    ``_transform`` is scipy's private cache of them, filled only while empty."""
+    tri = common.delaunay(xy)
+    if getattr(tri, "_transform", False) is None:
+        tri._transform = common.barycentric_transforms(tri.points, tri.simplices)
+    return tri
+
+
 class _Tin:
     """The Delaunay TIN of the ground points of :func:`densify`, kept up to date between
     iterations: a full Qhull triangulation, then, while few points join, only the cavity of the
@@ -187,7 +202,7 @@ class _Tin:
 
     def __init__(self, xy: np.ndarray, gi: np.ndarray):
         self.xy = xy
-        self.tri = common.delaunay(xy[gi])
+        self.tri = _delaunay(xy[gi])
         self.simp = gi[self.tri.simplices]
         self.nbr = self.tri.neighbors.astype(np.int64)
 
@@ -242,13 +257,16 @@ class _Tin:
         point on the hull, degenerate input)."""
         from scipy.spatial import QhullError
 
+        most = self.MAX_CAVITY * self.simp.shape[0] / 2  # T ~ 2 n triangles
+        if np.unique(np.concatenate([self.simp[start].ravel(), new])).size > most:
+            return None  # the cavity holds the triangles of the new points at least
         bad = self.cavity(new, start)
         bt = np.flatnonzero(bad)
         verts = np.unique(np.concatenate([self.simp[bt].ravel(), new]))
-        if verts.size > self.MAX_CAVITY * self.simp.shape[0] / 2:  # T ~ 2 n triangles
+        if verts.size > most:
             return None
         try:
-            sub = common.delaunay(self.xy[verts])
+            sub = _delaunay(self.xy[verts])
         except QhullError:
             return None
         # the Delaunay triangles of the cavity are those of its points' triangulation that
@@ -295,6 +313,18 @@ class _Tin:
         nbr[tri[j], col[j]] = tri[i]
         self.simp, self.nbr, self.tri = simp, nbr, None
 
+    def vertex_triangles(self) -> np.ndarray:
+        """(n,) int64: a triangle of each vertex, indexed by point (-1 for the other points)."""
+        vt = np.full(self.xy.shape[0], -1, dtype=np.int64)
+        vt[self.simp.ravel()] = np.repeat(np.arange(self.simp.shape[0]), 3)
+        return vt
+
+    def reindexed(self, idx: np.ndarray, xy: np.ndarray) -> _Tin:
+        """The same TIN over the points ``xy`` (n, 2), of which this TIN's are ``xy[idx]``."""
+        tin = object.__new__(_Tin)
+        tin.xy, tin.simp, tin.nbr, tin.tri = xy, idx[self.simp], self.nbr, None
+        return tin
+
     def locate(self, q: np.ndarray, near: np.ndarray) -> np.ndarray:
         """Triangle (n,) of each point ``q`` (n, 2), -1 outside; ``near`` (n,): a triangle
         close to each point, where the walk of an updated TIN starts (a walk that does not
@@ -313,8 +343,22 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
     TIN is triangulated in full while many points join, then updated around the joining
     points (:class:`_Tin`); the remaining candidates keep their triangle unless it changed.
     """
-    from scipy.spatial import QhullError
+    return _densify(cand, p, seeds)[0]
 
+
+def _densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None) -> tuple[np.ndarray, _Tin | None, np.ndarray]:
+    """:func:`densify`, with the TIN of all its ground points for :func:`final_ground`.
+
+    Returns
+    -------
+    ground : (k,) bool
+    tin : _Tin or None
+        The Delaunay TIN of the ground candidates (the points that joined last included),
+        None where they are collinear or fewer than 3.
+    near : (k,) int64
+        A triangle of ``tin`` holding each candidate (one of its triangles for a vertex),
+        -1 outside the TIN.
+    """
     k = cand.shape[0]
     if seeds is None:
         ground = np.zeros(k, dtype=bool)
@@ -329,14 +373,10 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
         oi = np.flatnonzero(~ground)
         if gi.size < 3 or oi.size == 0:
             break
-        s = None if tin is None else tin.insert(add, s_all[add], oi, s_all[oi])
-        if s is None:
-            try:
-                tin = _Tin(xy, gi)
-            except QhullError:  # collinear seeds
-                break
-            s = common.locate(tin.tri, xy[oi])
-        s_all[oi] = s
+        tin, add = _update(tin, xy, gi, oi, add, s_all), None
+        if tin is None:  # collinear seeds
+            break
+        s = s_all[oi]
         inside = s >= 0
         oi, s = oi[inside], s[inside]
         if oi.size == 0:
@@ -355,7 +395,31 @@ def densify(cand: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -> 
         ground[add] = True
         if add.size < p.min_added * k:
             break
-    return ground
+    gi = np.flatnonzero(ground)
+    if gi.size >= 3 and (tin is None or add is not None):  # no TIN yet (every candidate a seed), or points joined last
+        tin = _update(tin, xy, gi, np.flatnonzero(~ground), add, s_all)
+    if tin is not None:
+        s_all[ground] = tin.vertex_triangles()[ground]
+    return ground, tin, s_all
+
+
+def _update(tin: _Tin | None, xy: np.ndarray, gi: np.ndarray, oi: np.ndarray, add: np.ndarray | None,
+            s_all: np.ndarray) -> _Tin | None:
+    """The TIN of the ground candidates ``gi`` once ``add`` (ground already) joined ``tin``:
+    ``tin`` updated around them, or a new triangulation (``tin`` None, or an update refused,
+    see :meth:`_Tin.insert`); ``s_all[oi]`` gets the triangles of the other candidates ``oi``
+    (-1 outside). None where the ground points are collinear."""
+    from scipy.spatial import QhullError
+
+    s = None if tin is None else tin.insert(add, s_all[add], oi, s_all[oi])
+    if s is None:
+        try:
+            tin = _Tin(xy, gi)
+        except QhullError:
+            return None
+        s = common.locate(tin.tri, xy[oi])
+    s_all[oi] = s
+    return tin
 
 
 def _iteration_test(cand: np.ndarray, tin: _Tin, oi: np.ndarray, s: np.ndarray, p: PTDParams,
@@ -388,42 +452,46 @@ def _iteration_test(cand: np.ndarray, tin: _Tin, oi: np.ndarray, s: np.ndarray, 
     return ok, d
 
 
-def final_ground(xyz: np.ndarray, gidx: np.ndarray, threshold: float, scalar: float,
-                 order: np.ndarray | None = None) -> np.ndarray:
-    """(m,) bool: points within ``threshold + scalar · slope`` (vertical) of the TIN of
-    ``xyz[gidx]``; outside its hull, within ``threshold`` of the nearest ground point.
+def final_ground(xyz: np.ndarray, gidx: np.ndarray, tin: _Tin | None, near: np.ndarray, threshold: float,
+                 scalar: float) -> np.ndarray:
+    """(m,) bool: points within ``threshold + scalar · slope`` (vertical) of the TIN of the
+    ground points ``xyz[gidx]``; outside its hull, within ``threshold`` of the nearest ground
+    point.
 
-    ``order`` (m,) is a spatially coherent order of the points (faster point location).
+    ``tin`` is the Delaunay TIN of the ground points with vertex indices into ``xyz`` (None
+    where they are collinear: every point then compares with the nearest ground point);
+    ``near`` (m,) a triangle near each point, where its walk starts (-1 unknown: from a
+    triangle of the nearest ground point).
     """
-    from scipy.spatial import QhullError, cKDTree
+    from scipy.spatial import cKDTree
 
     m = xyz.shape[0]
     out = np.zeros(m, dtype=bool)
     out[gidx] = True
     if gidx.size < 3:
         return out
-    order = np.arange(m) if order is None else order
-    try:
-        tri = common.delaunay(xyz[gidx, :2])
-        s = np.empty(m, dtype=np.int64)
-        s[order] = common.locate(tri, xyz[order, :2])
-    except QhullError:  # collinear ground
-        s = np.full(m, -1, dtype=np.int64)
-    ins = s >= 0
-    ii = np.flatnonzero(ins)
-    if ii.size:
+    todo = np.flatnonzero(~out)
+    kd = cKDTree(xyz[gidx, :2])
+    s = np.full(todo.size, -1, dtype=np.int64)
+    if tin is not None:
+        start = near[todo]
+        far = np.flatnonzero(start < 0)
+        if far.size:
+            start[far] = tin.vertex_triangles()[gidx[kd.query(xyz[todo[far], :2])[1]]]
+        s = tin.locate(np.ascontiguousarray(xyz[todo, :2]), start)
+        ins = s >= 0
+        ii, si = todo[ins], s[ins]
         # each facet's plane (normal n through vertex a) and tolerance, once per facet
-        v = gidx[tri.simplices]
+        v = tin.simp
         a = xyz[v[:, 0]]
         n = np.cross(xyz[v[:, 1]] - a, xyz[v[:, 2]] - a)
         nz = np.where(np.abs(n[:, 2]) < 1e-12, 1e-12, n[:, 2])
         tol = threshold + scalar * (np.hypot(n[:, 0], n[:, 1]) / np.abs(nz))
-        si = s[ii]
         zt = a[si, 2] - ((xyz[ii, 0] - a[si, 0]) * n[si, 0] + (xyz[ii, 1] - a[si, 1]) * n[si, 1]) / nz[si]
         out[ii[np.abs(xyz[ii, 2] - zt) < tol[si]]] = True
-    oo = np.flatnonzero(~ins)
+    oo = todo[s < 0]
     if oo.size:
-        _, j = cKDTree(xyz[gidx, :2]).query(xyz[oo, :2])
+        _, j = kd.query(xyz[oo, :2])
         out[oo[np.abs(xyz[oo, 2] - xyz[gidx[j], 2]) < threshold]] = True
     return out
 
@@ -445,9 +513,12 @@ def ptd_ground(xyz: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -
     if seeds is not None:
         init = np.asarray(seeds, dtype=bool)[ci]
         init[_seeds(xyz[ci], 1e9)] = True  # the corners, so the TIN covers the extent
-    g_c = densify(xyz[ci], p, init)
-    order = np.argsort(r * shape[1] + c, kind="stable")
-    return final_ground(xyz, ci[g_c], p.final_threshold, p.final_scalar, order)
+    g_c, tin, near_c = _densify(xyz[ci], p, init)
+    # the final test walks from the triangle of the candidate of each point's cell
+    cell_cand = (np.cumsum(imin.ravel() >= 0) - 1)[r * shape[1] + c]
+    if tin is not None:
+        tin = tin.reindexed(ci, np.ascontiguousarray(xyz[:, :2]))
+    return final_ground(xyz, ci[g_c], tin, near_c[cell_cand], p.final_threshold, p.final_scalar)
 
 
 def ptd(cloud: Cloud, params: PTDParams | None = None, **overrides) -> Cloud:
