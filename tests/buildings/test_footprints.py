@@ -160,3 +160,45 @@ def test_points_direction_of_a_rectangle():
         pts = synth.sample_building(b, 10.0, 0.03, rng)
         err = (_points_direction(pts[:, :2]) - yaw + np.pi / 4) % (np.pi / 2) - np.pi / 4
         assert abs(np.degrees(err)) < 0.3
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_t_keeps_its_stem_at_four_points_per_m2(seed):
+    """At 4 points/m2 (national-programme density) the stems of a district's Ts (2.8-4.8 m long:
+    six to ten spacings) are kept: every T has its eight corners and IoU >= 0.9."""
+    xyz, cls, blds = synth.district(9, seed=seed, density=4.0, kinds=("cross_t",))
+    fps, _ = extract_footprints(xyz[cls == 6, :2])
+    for b in blds:
+        poly = max((f.polygon for f in fps), key=lambda p: _iou(p, b.footprint()))
+        assert _iou(poly, b.footprint()) >= 0.9
+        assert len(poly) == 8
+
+
+def _polyline(corners, step=0.1):
+    pts = [a + t[:, None] * (b - a) for a, b in zip(corners[:-1], corners[1:])
+           for t in [np.linspace(0, 1, max(int(np.linalg.norm(b - a) / step), 1), endpoint=False)]]
+    return np.vstack(pts + [corners[-1:]])
+
+
+@pytest.mark.parametrize("corners, a, b, expected", [
+    # a notch: down the end of a bar, along its underside, down the side of the stem, along its foot
+    ([[0, 1], [0, 0], [3, 0], [3, -4], [4, -4]], (1, 0.0, (0, -1)), (0, -4.0, (1, 0)), [(0, 0.0, (1, 0)), (1, 3.0, (0, -1))]),
+    # a wing's end: up the side of a stem, along the underside of the bar, up its end, back along its top
+    ([[0, -1], [0, 0], [4, 0], [4, 5], [3, 5]], (1, 0.0, (0, 1)), (0, 5.0, (-1, 0)), [(0, 0.0, (1, 0)), (1, 4.0, (0, 1))]),
+    # a plain corner, rounded by less than the tolerance
+    ([[0, 1], [0, 0.3], [0.3, 0], [1, 0]], (1, 0.0, (0, -1)), (0, 0.0, (1, 0)), []),
+    # the end of a bar between its two long sides
+    ([[0, 0], [5, 0], [5, 3], [4, 3]], (0, 0.0, (1, 0)), (0, 3.0, (-1, 0)), [(1, 5.0, (0, 1))]),
+])
+def test_steps_rebuild_notches_and_wing_ends(corners, a, b, expected):
+    """The rectilinear Douglas-Peucker puts the lines of a notch through its inner corner and
+    those of a wing's end through its outer corner, headed along the ring; a corner within the
+    tolerance gets none."""
+    from workstation.buildings.footprints import _steps
+
+    chain = _polyline(np.array(corners, float))
+    chain = chain + np.random.default_rng(0).normal(0, 0.03, chain.shape)
+    got = _steps(chain, (a[0], a[1], np.array(a[2], float)), (b[0], b[1], np.array(b[2], float)), 0.8)
+    assert [g[0] for g in got] == [e[0] for e in expected]
+    assert np.allclose([g[1] for g in got], [e[1] for e in expected], atol=0.15)
+    assert all(np.allclose(g[2], e[2]) for g, e in zip(got, expected))

@@ -16,8 +16,11 @@ without the bias of occupied cells:
    with a square of the Douglas-Peucker tolerance, trace it, keep axis-parallel edges, merge
    parallel runs, and move every edge to its maximum-likelihood place among the points
    (:func:`orthogonal_outline`). When the points do not fit that outline (:func:`_outline`),
-   it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems) and
-   the outline under which the points are likelier is kept (:func:`_cost`).
+   it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems: the
+   corner regions the tracing breaks into slanted pieces are rebuilt as axis-parallel steps, a
+   rectilinear Douglas-Peucker, and steps the points do not support by the Bayesian information
+   criterion are taken out again) and the outline under which the points are likelier is kept
+   (:func:`_cost`).
 5. Other buildings: Douglas-Peucker (Douglas & Peucker 1973) and snapping of the edges within
    their angular uncertainty of the dominant direction (:func:`regularize`).
 
@@ -502,8 +505,14 @@ def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: f
 
 def _orthogonal_pass(rp, spacing, ref, radius):
     """One rectilinear fit of rotated points ``rp`` (m, 2), its edges along the axes: the
-    polygon (k, 2) or None."""
-    import shapely
+    polygon (k, 2) or None.
+
+    When the smoothing ``radius`` (spacings) is narrower than the Douglas-Peucker tolerance, a
+    feature of the tolerance's size (a wing, a stem, a notch) survives the smoothing and the
+    opening, so the corner regions the tracing leaves as slanted pieces are rebuilt from
+    axis-parallel steps (:func:`_axis_lines`) and the features the points do not support are
+    taken out again (:func:`_supported`); the wider smoothing rounds such features away, and its
+    corner regions are left to the lines on either side, as any corner."""
     from scipy import ndimage
 
     field, origin, cell, _ = density_field(rp, spacing, ref, radius)
@@ -525,20 +534,197 @@ def _orthogonal_pass(rp, spacing, ref, radius):
     sel = cls >= 0
     if sel.sum() < 4:
         return None
-    segs = [sg for sg, c in zip(segs, sel) if c]
-    dirs, mids = _lines(segs, chords[sel], cls[sel], 0.0, 0.0)
     tol = DP_TOLERANCE * spacing
-    dirs, mids, _ = _merge_runs(dirs, mids, cls[sel], L[sel], tol)
-    if len(dirs) < 4:
-        return None
-    corners = edge_intersections(dirs, mids)
-    nxt = _nxt(corners)
-    mids = _fit_offsets(dirs, 0.5 * (corners + nxt), _norm(nxt - corners), rp, tol, EDGE_MARGIN * spacing,
-                        spacing, ref / (cell * cell), STRAY_WEIGHT)
-    poly = _drop_short(edge_intersections(dirs, mids), cell / 2)
-    if len(poly) < 4 or not shapely.is_valid(shapely.Polygon(poly)):
-        return None
+    resolved = radius < DP_TOLERANCE
+    dirs, mids, c, w = _axis_lines(segs, chords, cls, L, tol if resolved else math.inf, cell)
+    dirs, mids, c = _merge_runs(dirs, mids, c, w, tol)
+    fit = _AxisFit(rp, tol, spacing, cell, ref / (cell * cell))
+    poly = fit.polygon(dirs, mids)
+    return _supported(fit, dirs, mids, c, poly) if resolved and poly is not None else poly
+
+
+def _supported(fit, dirs, mids, cls, poly):
+    """``poly`` without the notches, bumps and wings the points do not support.
+
+    A feature is a pair of lines between two perpendicular ones (a notch or wing at a corner:
+    without it the two meet) or the four lines after one up to a parallel one within the
+    tolerance (a notch or bump in a side: without it the side runs straight on). The least
+    supported feature is removed, the others refitted, while removing one raises the negative
+    log-likelihood of the points (:func:`_cost`) by less than the Bayesian information
+    criterion's price of its k lines, ``k log(n)`` for n points: half a log(n) (Schwarz 1978)
+    for each line's offset and half for the place where it cuts its neighbours, a change point
+    searched along the outline (Yao 1988). A notch stays when it is emptier than the density
+    explains, given the points."""
+    price = math.log(len(fit.rp))
+    cost = fit.cost(poly)
+    while len(dirs) > 4:
+        best = None
+        for drop in _features(cls, mids, fit.tol):
+            keep = np.ones(len(dirs), bool)
+            keep[drop] = False
+            less = fit.polygon(dirs[keep], mids[keep])
+            if less is None:
+                continue
+            rise = fit.cost(less) - cost - price * len(drop)
+            if rise < 0 and (best is None or rise < best[0]):
+                best = (rise, keep, less)
+        if best is None:
+            break
+        _, keep, poly = best
+        dirs, mids, cls, cost = dirs[keep], mids[keep], cls[keep], fit.cost(best[2])
     return poly
+
+
+def _features(cls, mids, tol):
+    """Index arrays of the removable features of alternating axis-parallel lines (class 0 along
+    x, 1 along y; ``mids`` points on them), at least four lines left: two lines between
+    perpendicular neighbours, or the four after a line up to a parallel one within ``tol`` (m)
+    of it."""
+    n = len(cls)
+    out = []
+    for i in range(n):
+        j = (i + np.arange(1, 5)) % n
+        if n - 2 >= 4 and cls[i] != cls[j[2]]:
+            out.append(j[:2])
+        if n - 4 >= 4 and cls[i] == cls[j[3]] and abs(mids[i, 1 - cls[i]] - mids[j[3], 1 - cls[i]]) < tol:
+            out.append(j)
+    return out
+
+
+@dataclass(frozen=True)
+class _AxisFit:
+    """Polygons from alternating axis-parallel lines fitted to rotated points ``rp`` (m, 2), and
+    their cost: each edge moved to its maximum-likelihood place (:func:`_fit_offsets`, ``tol``
+    (m) either side, roof ``density`` per m^2)."""
+
+    rp: np.ndarray
+    tol: float
+    spacing: float
+    cell: float
+    density: float
+
+    def polygon(self, dirs, mids):
+        """The polygon (k, 2) of the lines (unit directions, points on them), or None when it is
+        not a valid one."""
+        import shapely
+
+        if len(dirs) < 4:
+            return None
+        corners = edge_intersections(dirs, mids)
+        nxt = _nxt(corners)
+        mids = _fit_offsets(dirs, 0.5 * (corners + nxt), _norm(nxt - corners), self.rp, self.tol,
+                            EDGE_MARGIN * self.spacing, self.spacing, self.density, STRAY_WEIGHT)
+        poly = _drop_short(edge_intersections(dirs, mids), self.cell / 2)
+        if len(poly) < 4 or not shapely.is_valid(shapely.Polygon(poly)):
+            return None
+        return poly
+
+    def cost(self, poly):
+        """Negative log-likelihood of the points under ``poly`` (:func:`_cost`)."""
+        return _cost(poly, self.rp, self.density, STRAY_WEIGHT)
+
+
+def _axis_lines(segs, chords, cls, L, tol, cell):
+    """Axis-parallel lines of a traced outline in its own frame: (dirs, points, classes, weights).
+
+    Each snapped edge (class 0 along x, 1 along y) gives its line through its traced points. A
+    run of free edges between two snapped ones (a corner region the tracing broke into short
+    slanted pieces) is replaced by the axis-parallel steps that bring the outline within ``tol``
+    of its traced points (:func:`_steps`): none at a plain corner, the two lines of a notch or a
+    wing's end otherwise. Added lines weigh ``cell`` (m) against the snapped edges' lengths when
+    parallel lines are merged."""
+    snap = np.flatnonzero(cls >= 0)
+    dirs, pts = _lines([segs[i] for i in snap], chords[snap], cls[snap], 0.0, 0.0)
+    lines = [(int(cls[i]), float(p[1 - cls[i]]), d) for i, d, p in zip(snap, dirs, pts)]
+    out = []
+    for j, i in enumerate(snap):
+        nxt = snap[(j + 1) % len(snap)]
+        run = np.arange(i + 1, nxt if nxt > i else nxt + len(cls)) % len(cls)
+        out.append((lines[j], pts[j], L[i]))
+        if len(run):
+            chain = np.vstack([segs[r] for r in run])
+            out += [(ln, _on_line(ln, chain), cell) for ln in _steps(chain, lines[j], lines[(j + 1) % len(snap)], tol)]
+    return (np.array([o[0][2] for o in out]), np.array([o[1] for o in out]), np.array([o[0][0] for o in out]),
+            np.array([o[2] for o in out], float))
+
+
+def _on_line(line, chain):
+    """A point of an axis-parallel ``line`` (class, value, direction) near the middle of ``chain``."""
+    p = chain[len(chain) // 2].copy()
+    p[1 - line[0]] = line[1]
+    return p
+
+
+def _segment_distance(q: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distance (m) of points ``q`` (m, 2) to the segments from ``a`` to ``b`` ((2,) or (c, 2)
+    each): (m,) or (c, m)."""
+    d = b - a
+    rel = q - a[..., None, :]
+    t = np.clip(np.einsum("...mk,...k->...m", rel, d) / np.maximum(np.einsum("...k,...k->...", d, d), 1e-12)[..., None],
+                0.0, 1.0)
+    return np.sqrt(np.add.reduce((rel - t[..., None] * d[..., None, :]) ** 2, axis=-1))
+
+
+def _path_deviation(q: np.ndarray, verts: np.ndarray) -> np.ndarray:
+    """Distance (m) of points ``q`` (m, 2) to each of c polylines ``verts`` (c, k, 2): (c, m)."""
+    return np.min([_segment_distance(q, verts[:, j], verts[:, j + 1]) for j in range(verts.shape[1] - 1)], axis=0)
+
+
+def _heading(a: np.ndarray, b: np.ndarray, default: np.ndarray) -> np.ndarray:
+    """Unit vector from ``a`` to ``b`` along the axis they share a line on; ``default`` when they coincide."""
+    d = b - a
+    n = math.hypot(*d)
+    return d / n if n > 1e-9 else default
+
+
+def _steps(chain: np.ndarray, a: tuple, b: tuple, tol: float, depth: int = 0) -> list:
+    """Axis-parallel lines (class, value, direction) to put between lines ``a`` and ``b`` so
+    the outline passes within ``tol`` (m) of the traced points ``chain`` (m, 2) that join them:
+    a rectilinear Douglas-Peucker. When ``a`` and ``b`` are perpendicular and the chain strays
+    farther than ``tol`` from their corner, a step (two lines through a chain point q) is added:
+    the q whose outline strays least from the chain, which is the inner corner of a notch and the
+    outer corner of a wing's end. Parallel lines ``tol`` or more apart get the perpendicular
+    line at the median of the middle half of the chain; closer ones a parallel line through the
+    chain's farthest point when it is beyond ``tol`` (a bump or notch in a side). Both halves
+    of the chain, split at the new lines, are treated the same way. The class of a line is 0
+    along x (its value y), 1 along y (its value x); directions follow the ring."""
+    inner = chain[1:-1]
+    if len(inner) < 1 or depth > 8:
+        return []
+    (ca, va, da), (cb, vb, db) = a, b
+    if ca != cb:
+        corner = np.empty(2)
+        corner[1 - ca], corner[1 - cb] = va, vb
+        s, e = chain[0].copy(), chain[-1].copy()
+        s[1 - ca], e[1 - cb] = va, vb
+        if _path_deviation(inner, np.array([[s, corner, e]])).max() <= tol:
+            return []
+        # outlines s, c1, q, c2, e for every chain point q (c1 on line a, c2 on line b)
+        m = len(inner)
+        verts = np.repeat(np.array([[s, s, s, e, e]]), m, axis=0)
+        verts[:, 1, 1 - cb] = verts[:, 2, 1 - cb] = inner[:, 1 - cb]
+        verts[:, 2, 1 - ca] = verts[:, 3, 1 - ca] = inner[:, 1 - ca]
+        i = int(np.argmin(_path_deviation(inner, verts).max(axis=1)))
+        p = inner[i]
+        add = [(cb, float(p[1 - cb]), _heading(verts[i, 1], p, db)), (ca, float(p[1 - ca]), _heading(p, verts[i, 3], da))]
+    else:
+        off = inner[:, 1 - ca]
+        dev = np.minimum(np.abs(off - va), np.abs(off - vb))
+        i = int(np.argmax(dev))
+        p = inner[i]
+        if abs(va - vb) >= tol:
+            mid = np.flatnonzero(dev > 0.5 * dev[i])
+            at = float(np.median(inner[mid, ca]))
+            i = int(mid[np.argmin(np.abs(inner[mid, ca] - at))])
+            d = np.zeros(2)
+            d[1 - ca] = math.copysign(1.0, vb - va)
+            add = [(1 - ca, at, d)]
+        elif dev[i] > tol:
+            add = [(ca, float(p[1 - ca]), da)]
+        else:
+            return []
+    k = i + 1
+    return _steps(chain[:k + 1], a, add[0], tol, depth + 1) + add + _steps(chain[k:], add[-1], b, tol, depth + 1)
 
 
 def _fit_offsets(dirs, mids, lengths, pts, tol, margin, min_band, density, weight):
