@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import time
 
+import pytest
+
 from workstation.core.dasktasks import run_bounded
 from workstation.core.signals import caught_signals
 
@@ -31,3 +33,36 @@ def test_run_bounded_makes_arguments_only_for_free_slots_and_collects_every_resu
     assert results == {k: k * k for k in range(8)}
     assert max(in_flight for _, in_flight in made) <= 2 - 1  # the limit held when each was made
 
+
+
+def test_alongside_runs_in_a_thread_that_takes_no_signals_and_wait_for_gives_its_outcome():
+    import signal
+    import threading
+
+    from workstation.core.dasktasks import alongside, wait_for
+
+    def where():
+        return threading.current_thread().daemon, signal.pthread_sigmask(signal.SIG_BLOCK, [])
+
+    with caught_signals() as latch:
+        daemon, mask = wait_for(alongside(where), latch)
+        assert daemon and {signal.SIGINT, signal.SIGTERM, signal.SIGHUP} <= mask
+        with pytest.raises(ZeroDivisionError):
+            wait_for(alongside(lambda: 1 / 0), latch)
+
+
+def test_wait_for_raises_a_caught_ctrl_c_without_waiting_for_the_thread():
+    import signal
+    import threading
+
+    from workstation.core.dasktasks import alongside, wait_for
+
+    release = threading.Event()
+    with caught_signals() as latch:
+        pending = alongside(release.wait, 60)
+        latch.catch(signal.SIGINT, None)
+        t = time.perf_counter()
+        with pytest.raises(KeyboardInterrupt):
+            wait_for(pending, latch)
+    release.set()
+    assert time.perf_counter() - t < 5

@@ -67,7 +67,9 @@ class BuildingsResult:
     timings : dict
         Seconds per step. Wall time of the stage: ``cluster_s`` (starting or reaching the Dask
         cluster, only with one), ``district_s`` (point spacing, district density raster and its
-        regions), ``solar_s``, ``solar_map_s`` and ``total_s``. Summed over the buildings, each
+        regions; with a cluster, made while it starts), ``district_wait_s`` (with a cluster: the
+        wait for the district pass once the cluster is up), ``solar_s``, ``solar_map_s`` and
+        ``total_s``. Summed over the buildings, each
         timed where it ran (on a cluster the workers' time, not the wall time, which is less
         with several workers): ``outlines_sum_s`` (each building's footprint traced from its
         region), ``planes_sum_s`` (roof planes), ``models_sum_s`` (LoD1.2/LoD2.2 models), and
@@ -137,8 +139,8 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
     The district-wide raster of the footprints is made here; each building's outline, roof
     planes and model (:func:`build_unit`) follow one after the other, or, with ``workers`` > 1
     or a ``scheduler`` address, in batches on a Dask cluster (a local one of ``workers``
-    single-threaded processes, or the running one at ``scheduler``): the same models, in the
-    same order, either way. Spawned worker processes need the ``if __name__ == "__main__":``
+    single-threaded processes, started while the district raster is made, or the running one
+    at ``scheduler``): the same models, in the same order, either way. Spawned worker processes need the ``if __name__ == "__main__":``
     guard in a script that asks for them.
     """
     if workers < 1:
@@ -152,15 +154,11 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
     bxyz = np.asarray(xyz, float)[bmask]
     t: dict = {}
     if workers == 1 and not scheduler:
-        models, spacing, coverage = _buildings(xyz, cls, bxyz, params, footprints, None, 1, t)
+        d = _district_pass(xyz, cls, bxyz, params, footprints, 1, t)
+        done = [r for i in range(len(d.shapes)) for r in build_unit(d.items(i, i + 1), d.setup, d.dtm)]
     else:
-        with _dask_client(workers, scheduler) as client:
-            t["cluster_s"] = time.perf_counter() - t0
-            # the workers import while the district raster is made here (futures held till the end)
-            warm = [client.submit(_warm_up, pure=False, workers=[w]) for w in client.scheduler_info()["workers"]]
-            models, spacing, coverage = _buildings(xyz, cls, bxyz, params, footprints, client,
-                                                   1 if scheduler else workers, t)
-            del warm
+        d, done = _on_cluster(xyz, cls, bxyz, params, footprints, workers, scheduler, t, t0)
+    models, spacing, coverage = _collect(done, t), d.setup.spacing, d.coverage
     source = "points" if footprints is None else "given"
     solar = _solar(models, xyz, params, spacing, t)
     smap = None
@@ -172,36 +170,82 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
     return BuildingsResult(models, solar, source, t, spacing, coverage, smap)
 
 
-def _buildings(xyz, cls, bxyz, params, footprints, client, threads, t):
-    """The models of the building points ``bxyz`` (the district raster on ``threads`` threads,
-    and with more than one the ground DTM on another beside it; the buildings here (``client``
-    None) or on the Dask ``client``), the point spacing and the coverage figures of
-    :class:`BuildingsResult`; seconds per step into ``t``."""
-    from concurrent.futures import ThreadPoolExecutor
+@dataclass(frozen=True)
+class UnitSetup:
+    """What every building of :func:`build_unit` shares: the stage parameters, the point
+    spacing (m), and the traced raster's roof density and cell (m)."""
+
+    params: BuildingsParams
+    spacing: float
+    ref: float
+    cell: float
+
+
+@dataclass(frozen=True)
+class DistrictPass:
+    """What :func:`_district_pass` hands the buildings: each building's shape (a traced
+    :class:`Component` or a given :class:`Footprint`), the building points with their order by
+    building and each building's start in it (building i: ``order[starts[i + 1]:starts[i + 2]]``),
+    the shared :class:`UnitSetup`, the ground DTM of :func:`ground_dtm` (or None) and the
+    coverage figures of :class:`BuildingsResult`."""
+
+    shapes: list
+    points: np.ndarray
+    order: np.ndarray
+    starts: np.ndarray
+    setup: UnitSetup
+    dtm: tuple | None
+    coverage: dict
+
+    def items(self, a: int, b: int) -> list:
+        """Buildings ``a`` to ``b`` - 1 as (shape, points (m, 3)) pairs, the points copied now."""
+        return [(self.shapes[i], self.points[self.order[self.starts[i + 1]:self.starts[i + 2]]])
+                for i in range(a, min(b, len(self.shapes)))]
+
+
+def _district_pass(xyz, cls, bxyz, params, footprints, threads, t) -> DistrictPass:
+    """The district-wide work before the buildings (:class:`DistrictPass`): the point spacing
+    and the district raster of the building points ``bxyz`` on ``threads`` threads, and the
+    ground DTM (with more than one thread, in a thread of its own beside the raster; an error
+    of the raster returns at once, without waiting for it). Seconds into ``t``."""
+    from workstation.core.dasktasks import alongside
 
     t0 = time.perf_counter()
-    with ThreadPoolExecutor(1) as ex:  # with several threads, the DTM is gridded beside the district raster
-        dtm_f = ex.submit(_ground, xyz, cls, params) if threads > 1 else None
-        spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
-        shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
-        t["district_s"] = time.perf_counter() - t0
-        dtm = dtm_f.result() if dtm_f is not None else _ground(xyz, cls, params)
+    dtm_f = alongside(_ground, xyz, cls, params) if threads > 1 else None
+    spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
+    shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
+    t["district_s"] = time.perf_counter() - t0
+    dtm = dtm_f.result() if dtm_f is not None else _ground(xyz, cls, params)
     coverage = {"building_points_outside": float(np.mean(owner < 0)),
                 "footprints_without_points": int(len(shapes) - len(np.unique(owner[owner >= 0])))}
     if footprints is not None and coverage["building_points_outside"] > 0.2:
         log.warning("%.0f %% of the building points lie outside the given footprints",
                     100 * coverage["building_points_outside"])
     order, starts = points_by_label(owner + 1, len(shapes))  # building i: label i + 1
+    return DistrictPass(shapes, bxyz, order, starts, UnitSetup(params, spacing, ref, cell), dtm, coverage)
 
-    def items(a: int, b: int) -> list:  # buildings a to b - 1 with their points, copied when asked for
-        return [(shapes[i], bxyz[order[starts[i + 1]:starts[i + 2]]]) for i in range(a, min(b, len(shapes)))]
 
-    setup = UnitSetup(params, spacing, ref, cell)
-    if client is None:  # one building's points copied at a time
-        done = [r for i in range(len(shapes)) for r in build_unit(items(i, i + 1), setup, dtm)]
-    else:
-        done = _on_dask(client, items, len(shapes), setup, dtm)
-    return _collect(done, t), spacing, coverage
+def _on_cluster(xyz, cls, bxyz, params, footprints, workers: int, scheduler: str | None, t: dict, t0: float):
+    """:func:`_district_pass` (on ``workers`` threads, one with a ``scheduler``) in a thread
+    while the Dask cluster starts (or is reached) here, then its buildings on the cluster:
+    (district pass, :func:`build_unit` results in building order). The cluster is closed on
+    the way out, an error or Ctrl-C included; a Ctrl-C while the workers start is lost
+    (:func:`workstation.core.signals.workers_starting`), one after is raised at once."""
+    from workstation.core.dasktasks import alongside, wait_for
+    from workstation.core.signals import caught_signals
+
+    td: dict = {}  # the district pass's seconds, taken into t once it is done
+    pending = alongside(_district_pass, xyz, cls, bxyz, params, footprints, 1 if scheduler else workers, td)
+    with _dask_client(workers, scheduler) as client, caught_signals() as latch:
+        t["cluster_s"] = time.perf_counter() - t0
+        # the workers import while the district pass ends (futures held till the end)
+        warm = [client.submit(_warm_up, pure=False, workers=[w]) for w in client.scheduler_info()["workers"]]
+        t1 = time.perf_counter()
+        d = wait_for(pending, latch)
+        t.update(td, district_wait_s=time.perf_counter() - t1)
+        done = _on_dask(client, d, latch)
+        del warm
+    return d, done
 
 
 def _ground(xyz, cls, params):
@@ -228,17 +272,6 @@ def _district(bxyz, footprints, fparams, threads):
     if not d.components:
         raise no_footprint_error(fparams, len(bxyz))
     return d.components, d.point_component(), d.ref, d.cell
-
-
-@dataclass(frozen=True)
-class UnitSetup:
-    """What every building of :func:`build_unit` shares: the stage parameters, the point
-    spacing (m), and the traced raster's roof density and cell (m)."""
-
-    params: BuildingsParams
-    spacing: float
-    ref: float
-    cell: float
 
 
 def build_unit(items: list, setup: UnitSetup, dtm) -> list:
@@ -292,28 +325,28 @@ def _warm_up() -> None:
     import shapely  # noqa: F401
 
 
-def _on_dask(client, items, n_items: int, setup: UnitSetup, dtm) -> list:
-    """:func:`build_unit` on batches of consecutive buildings of the ``n_items`` that ``items(a, b)``
-    gives on a Dask cluster, at most two batches per worker in flight (a batch's points are
-    copied only when a worker is nearly free for it); the results in building order. Batches
-    (:func:`batch_starts`) hold a quarter of a worker's share of the buildings left (at most 32),
-    so they shrink towards the end and the workers finish within about one building's time."""
+def _on_dask(client, d: DistrictPass, latch) -> list:
+    """:func:`build_unit` on batches of consecutive buildings of ``d`` on a Dask cluster, at
+    most two batches per worker in flight (a batch's points are copied only when a worker is
+    nearly free for it), a Ctrl-C caught into ``latch`` raised between them; the results in
+    building order. Batches (:func:`batch_ranges`) hold a quarter of a worker's share of the
+    buildings left (at most 32), so they shrink towards the end and the workers finish within
+    about one building's time."""
     from workstation.core.dasktasks import run_bounded
-    from workstation.core.signals import caught_signals
 
-    with caught_signals() as latch:
-        n = max(1, sum(client.nthreads().values()))
-        dtm_f = client.scatter(dtm, broadcast=True) if dtm is not None else None
-        results: dict = {}
-        calls = ((k, lambda a=a, b=b: (build_unit, items(a, b), setup, dtm_f))
-                 for k, (a, b) in enumerate(batch_starts(n_items, n)))
-        run_bounded(client, calls, 2 * n, results.__setitem__, latch, pause=0.02)
+    n = max(1, sum(client.nthreads().values()))
+    dtm_f = client.scatter(d.dtm, broadcast=True) if d.dtm is not None else None
+    results: dict = {}
+    calls = ((k, lambda a=a, b=b: (build_unit, d.items(a, b), d.setup, dtm_f))
+             for k, (a, b) in enumerate(batch_ranges(len(d.shapes), n)))
+    run_bounded(client, calls, 2 * n, results.__setitem__, latch, pause=0.02)
     return [r for k in sorted(results) for r in results[k]]
 
 
-def batch_starts(n_items: int, workers: int, largest: int = 32) -> list:
-    """(start, end) of consecutive batches of ``n_items`` for ``workers``: each a quarter of a
-    worker's share of the items not yet in a batch, between 1 and ``largest`` items."""
+def batch_ranges(n_items: int, workers: int, largest: int = 32) -> list:
+    """(start, end) index pairs, end excluded, of consecutive batches that cover ``n_items``
+    once, for ``workers``: each a quarter of a worker's share of the items not yet in a batch,
+    between 1 and ``largest`` items."""
     out, a = [], 0
     while a < n_items:
         b = a + max(1, min(largest, -(-(n_items - a) // (4 * workers))))

@@ -1,11 +1,14 @@
 """Dask helpers shared by the stages that run on a cluster (``ws run``, tiled ``ws ground``,
 ``ws buildings --workers``): connecting to a user's scheduler, and keeping a bounded number
-of tasks in flight so that each task's arguments are made only when a worker is free for it."""
+of tasks in flight so that each task's arguments are made only when a worker is free for it,
+and work run alongside a cluster's start (:func:`alongside`, :func:`wait_for`)."""
 
 from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable, Iterable
+from concurrent.futures import Future
+from concurrent.futures import TimeoutError as FuturesTimeout
 
 from workstation.core.errors import InvalidInputError
 
@@ -58,6 +61,48 @@ def local_client(workers: int):
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster) as client:
         yield client
+
+
+def alongside(fn: Callable, *args) -> Future:
+    """``fn(*args)`` started now in a daemon thread, its outcome in the returned future: work
+    that overlaps a cluster's start (:func:`local_client`) in this thread.
+
+    The thread starts with SIGINT, SIGTERM and SIGHUP blocked, so they reach the main thread
+    only (threads it starts inherit the mask), and a signal held back during the cluster's
+    start (:func:`workstation.core.signals.workers_starting`) is not taken there. Being a
+    daemon, it is never joined: a caller that gives up on the future (an error, Ctrl-C)
+    returns at once, and the thread's result is dropped when it ends."""
+    import signal
+    import threading
+
+    fut: Future = Future()
+    fut.set_running_or_notify_cancel()
+
+    def run() -> None:
+        try:
+            fut.set_result(fn(*args))
+        except BaseException as e:  # noqa: BLE001 - raised by the waiting thread
+            fut.set_exception(e)
+
+    thread = threading.Thread(target=run, name=f"ws-{getattr(fn, '__name__', 'work')}", daemon=True)
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM, signal.SIGHUP})
+    try:  # a new thread inherits the mask of the one starting it
+        thread.start()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+    return fut
+
+
+def wait_for(fut: Future, latch, pause: float = 0.02):
+    """The result of ``fut`` (its exception raised here), waited for in steps of ``pause``
+    seconds on ``latch`` (:func:`workstation.core.signals.caught_signals`), so a Ctrl-C
+    while waiting is raised at once."""
+    while not fut.done():
+        latch.check()
+        with contextlib.suppress(FuturesTimeout):  # not done yet (or fn's own TimeoutError: done)
+            return fut.result(timeout=pause)
+    latch.check()
+    return fut.result()
 
 
 def run_bounded(client, calls: Iterable[tuple[object, Callable[[], tuple]]], limit: int,
