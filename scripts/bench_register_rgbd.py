@@ -13,10 +13,12 @@ Four lines against the benchmark's true pose (`gt.txt`, p_21 = T p_34):
 
     PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py [--data ../shared/data]
     PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py --rooms 6 [--first SEED] [--ranks]
+    PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py --planes 2
 
 ``--rooms N`` runs the plane method instead on N simulated cluttered rooms
 (`tests/registration/rooms.py`: two ray-cast views with 20-35 % overlap, random poses),
-the check on data the method was not set on.
+the check on data the method was not set on. ``--planes N`` prints line 2 alone, N rounds
+(the timing check; the first round also loads the libraries).
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ import numpy as np
 
 from workstation.core.errors import StageError
 from workstation.io import read_cloud
-from workstation.registration.icp import ICPParams, refine
+from workstation.registration.icp import QUICK_ICP, ICPParams, refine
 from workstation.registration.register import RegisterParams, register
 
 PAIR = Path("registration") / "3dlomatch_redkitchen_21_34"
@@ -119,8 +121,7 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
     r = verify_plane_hypotheses(ps, pt, scores, Ts, P, images)
     m = r.meta
     ok = [k for k, M in enumerate(m["hypotheses"]) if within(M, TL, 10, 0.2)]
-    q = refine(ps.down, pt.down, v, TL, ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20,
-                                                  kernel="tukey"))
+    q = refine(ps.down, pt.down, v, TL, QUICK_ICP, information=False)
     free = free_space_violations(ps.down, pt.down, q.transform, images, P.free_margin * v)
     return (f"raw rank {raw[0] if raw else '-'} of {len(Ts)}, verified rank {ok[0] if ok else '-'} of "
             f"{len(m['hypotheses'])}; truth: consistency {consistency(ps.down, pt.down, q.transform, v):.3f} "
@@ -167,12 +168,18 @@ def main() -> None:
     ap.add_argument("--rooms", type=int, default=0, help="run the plane method on this many simulated rooms instead")
     ap.add_argument("--first", type=int, default=0, help="seed of the first simulated room")
     ap.add_argument("--ranks", action="store_true", help="with --rooms: where the true pose ranks among the candidates")
+    ap.add_argument("--planes", type=int, default=0, help="only line 2 (the plane method), this many rounds")
     args = ap.parse_args()
     if args.rooms:
         return rooms(args.rooms, args.first, args.ranks)
     folder = Path(args.data) / PAIR
     T = np.loadtxt(folder / "gt.txt")
     src, tgt = read_cloud(folder / "cloud_bin_34.ply"), read_cloud(folder / "cloud_bin_21.ply")
+    for k in range(args.planes):
+        for fine in ("point_to_plane", "point_to_point"):
+            print(f"round {k + 1}, register (planes, fine {fine}): {planes_line(src, tgt, T, fine)}", flush=True)
+    if args.planes:
+        return
     c0 = time.process_time()
     try:
         r = register(src, tgt)

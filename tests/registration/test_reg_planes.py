@@ -165,13 +165,15 @@ def test_plane_registration_without_planes_raises():
 
 def test_top_peaks_suppression_wraps_around_the_edges():
     """A peak at lag 0 masks its neighbours at lag -1 (the last row and column): the next peak
-    is the separate one, not the neighbour across the edge."""
+    is the separate one, not the neighbour across the edge; each correlation of a batch is
+    searched on its own."""
     from workstation.registration.planes import _top_peaks
 
-    corr = np.zeros((8, 10))
-    corr[0, 0], corr[-1, -1], corr[0, -1], corr[4, 5] = 5.0, 4.0, 3.5, 3.0
+    corr = np.zeros((2, 8, 10))
+    corr[0, 0, 0], corr[0, -1, -1], corr[0, 0, -1], corr[0, 4, 5] = 5.0, 4.0, 3.5, 3.0
+    corr[1, 2, 2], corr[1, 6, 7] = 2.0, 1.0
     val, idx = _top_peaks(corr, 2)
-    assert val.tolist() == [5.0, 3.0] and idx.tolist() == [[0, 0], [4, 5]]
+    assert val.tolist() == [[5.0, 3.0], [2.0, 1.0]] and idx.tolist() == [[[0, 0], [4, 5]], [[2, 2], [6, 7]]]
 
 
 def test_plane_registration_returns_the_pose_of_an_asymmetric_scene():

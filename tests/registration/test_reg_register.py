@@ -42,6 +42,21 @@ def test_auto_recovers_random_transforms_of_a_shape(seed):
     assert res.information.shape == (6, 6)
 
 
+def test_quick_icp_without_the_information_matrix():
+    """The hypothesis checks' short ICP (``QUICK_ICP``) skips the information matrix and moves
+    the pose as the full call does."""
+    from workstation.registration.icp import QUICK_ICP, refine
+    from workstation.registration.preprocess import Radii, prepare
+
+    T = make_transform(random_rotation(np.random.default_rng(5), 4.0), [0.03, -0.02, 0.01])
+    src, tgt = (prepare(x, Radii(0.03), features=False).down
+                for x in (apply_transform(np.linalg.inv(T), shape_points(5000, seed=5)), shape_points(5000, seed=6)))
+    full, quick = (refine(src, tgt, 0.03, np.eye(4), QUICK_ICP, information=k) for k in (True, False))
+    assert full.information.shape == (6, 6) and quick.information is None
+    assert np.allclose(quick.transform, full.transform, rtol=0.0, atol=1e-9)
+    assert transform_error(quick.transform, T)[0] < 0.5
+
+
 @pytest.mark.parametrize("method", ["clique", "fpfh_ransac", "fgr"])
 def test_each_coarse_method_alone(method):
     rng = np.random.default_rng(7)

@@ -253,7 +253,7 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
     """
     from scipy.spatial import cKDTree
 
-    from .icp import ICPParams, refine
+    from .icp import QUICK_ICP, refine
     from .preprocess import estimate_voxel_size, prepare
 
     xs = np.asarray(xs, dtype=np.float64)
@@ -265,7 +265,6 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
         scale0 = estimate_voxel_size(pt) / estimate_voxel_size(xs)
     c = xs.mean(axis=0)
     n_side = int(np.ceil(np.log(span) / np.log(step)))
-    quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     cands = []
     for k in range(-n_side, n_side + 1):
         s = float(scale0 * step**k)
@@ -279,7 +278,7 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
             continue
         if r.correspondences < 3:
             continue
-        q = refine(ps.down, tgt.down, radii.voxel, r.transform, quick)
+        q = refine(ps.down, tgt.down, radii.voxel, r.transform, QUICK_ICP, information=False)
         p = apply_transform(q.transform, np.asarray(ps.down.points))
         dist, j = tree.query(p, distance_upper_bound=0.75 * radii.voxel, workers=-1)
         near = np.isfinite(dist)

@@ -77,6 +77,11 @@ class ICPParams:
             raise InvalidInputError("schedule needs positive distance multiples", field="schedule")
 
 
+#: The short ICP that verifies coarse pose hypotheses on the downsampled clouds: point-to-plane,
+#: Tukey kernel, 1.5 then 0.75 voxel, 20 iterations a level.
+QUICK_ICP = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
+
+
 def _kernel(reg, name: str, k: float):
     if name == "none":
         return None
@@ -84,7 +89,8 @@ def _kernel(reg, name: str, k: float):
             "l1": reg.L1Loss}[name](k) if name != "l1" else reg.L1Loss()
 
 
-def refine(source, target, voxel: float, init: np.ndarray | None = None, params: ICPParams = ICPParams()) -> RegistrationResult:
+def refine(source, target, voxel: float, init: np.ndarray | None = None, params: ICPParams = ICPParams(), *,
+           information: bool = True) -> RegistrationResult:
     """ICP of a legacy Open3D source cloud onto a target (both local frame, normals present for
     the plane-based methods, colours for coloured ICP).
 
@@ -95,6 +101,8 @@ def refine(source, target, voxel: float, init: np.ndarray | None = None, params:
         The voxel size all distances derive from (units of the clouds).
     init : (4, 4) float, optional
     params : ICPParams
+    information : bool
+        Compute the information matrix (False: None, for a hypothesis check that ranks poses).
 
     Returns
     -------
@@ -137,7 +145,7 @@ def refine(source, target, voxel: float, init: np.ndarray | None = None, params:
         levels.append({"distance": d, "fitness": float(res.fitness), "inlier_rmse": float(res.inlier_rmse),
                        "correspondences": len(res.correspondence_set)})
     d_last = float(params.schedule[-1] * voxel)
-    info = np.asarray(reg.get_information_matrix_from_point_clouds(source, target, d_last, T))
+    info = np.asarray(reg.get_information_matrix_from_point_clouds(source, target, d_last, T)) if information else None
     scale = float(np.cbrt(np.linalg.det(T[:3, :3])))
     ok = res is not None and len(res.correspondence_set) >= 6 and np.isfinite(T).all()
     return RegistrationResult(transform=T, scale=scale, fitness=float(res.fitness), inlier_rmse=float(res.inlier_rmse),

@@ -209,11 +209,11 @@ class _Scorer:
         nx = (qn @ Rt).reshape(-1, 3)
         dist, j = self.tree.query(x, distance_upper_bound=3.0 * v, workers=-1)
         found = np.isfinite(dist)
-        jj = np.minimum(j, self.y.shape[0] - 1)
-        ny = self.yn[jj]
-        on = np.abs(np.einsum("ij,ij->i", ny, x - self.y[jj])) < v
-        par = np.abs(np.einsum("ij,ij->i", ny, nx)) > 0.8
-        agree = found & (dist < 1.5 * v) & on & par
+        near = np.flatnonzero(dist < 1.5 * v)  # only these can agree
+        jn, ny = j[near], self.yn[j[near]]
+        agree = np.zeros(x.shape[0], dtype=bool)
+        agree[near] = ((np.abs(np.einsum("ij,ij->i", ny, x[near] - self.y[jn])) < v)
+                       & (np.abs(np.einsum("ij,ij->i", ny, nx[near])) > 0.8))
         score = (agree.astype(np.float64) - (found & ~agree)).reshape(Ts.shape[0], -1).sum(axis=1) / q.shape[0]
         free = np.zeros(Ts.shape[0])
         if self.images[1] is not None:
@@ -313,7 +313,7 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
     None). Only poses whose verified overlap reaches half the best one's are ranked (a pose
     barely touching the other cloud has neither agreement nor conflict). ``meta`` holds the
     ranked poses (``hypotheses``), best first, with their ``consistency`` and ``free_space``."""
-    from .icp import ICPParams, refine
+    from .icp import QUICK_ICP, refine
     from .register import _distinct_pose, consistency
 
     if len(Ts) == 0:
@@ -325,10 +325,9 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
             picked.append((s, T))
         if len(picked) >= params.verify:
             break
-    quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     cands = []
     for s, T in picked:
-        q = refine(src.down, tgt.down, v, T, quick)
+        q = refine(src.down, tgt.down, v, T, QUICK_ICP, information=False)
         free = free_space_violations(src.down, tgt.down, q.transform, images, params.free_margin * v)
         cands.append((consistency(src.down, tgt.down, q.transform, v), free, float(q.fitness), q))
         log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f, free-space %.3f",
@@ -508,8 +507,8 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
         FS = np.conj(rfft2(_height_images(us @ M, cs, used.size, lo_s, (ns, ns), cell), tuple(P)))
         R = (E.T @ np.array([[c, -s], [s, c]]) @ E + np.outer(b, b)) @ R0  # the turn about b, after R0
         base = lo_t - lo_s - cu @ M  # the shift at lag 0, with the source's centroid added back
-        for d, i_s, i_t in pairs:
-            val, k = _top_peaks(irfft2((FT[i_t] * FS[i_s]).sum(axis=0), tuple(P)), peaks)
+        corr = irfft2(np.stack([(FT[i_t] * FS[i_s]).sum(axis=0) for _, i_s, i_t in pairs]), tuple(P))
+        for (d, _, _), val, k in zip(pairs, *_top_peaks(corr, peaks)):
             # lags run from -(ns - 1) to nt - 1 and P >= nt + ns: indices from nt up are negative lags
             shift = base + np.where(k >= nt, k - P, k) * cell
             out += [(float(c_), make_transform(R, lift[d] * b + t @ E)) for c_, t in zip(val, shift)]
@@ -517,16 +516,21 @@ def plane_yaw_search(xs: np.ndarray, xt: np.ndarray, a: np.ndarray, da: np.ndarr
 
 
 def _top_peaks(corr: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The ``n`` highest peaks of a circular cross-correlation ``corr`` (2-D, overwritten):
-    values (n,) and indices (n, 2), each the maximum left after masking the 3 x 3
-    neighbourhoods of those before it; the neighbourhoods wrap around the edges, as the
-    lags do (index 0 neighbours index -1)."""
-    val, idx = np.empty(n), np.empty((n, 2), dtype=np.int64)
+    """The ``n`` highest peaks of each circular cross-correlation in ``corr`` (b, P0, P1),
+    overwritten: values (b, n) and indices (b, n, 2), each the maximum left after masking the
+    3 x 3 neighbourhoods of those before it (the first in row-major order among equals); the
+    neighbourhoods wrap around the edges, as the lags do (index 0 neighbours index -1)."""
+    b, (p0, p1) = np.arange(corr.shape[0]), corr.shape[1:]
+    flat = corr.reshape(b.size, p0 * p1)  # a view: masking it masks corr
+    val, idx = np.empty((b.size, n)), np.empty((b.size, n, 2), dtype=np.int64)
     near = np.arange(-1, 2)
     for m in range(n):
-        i, j = idx[m] = np.unravel_index(np.argmax(corr), corr.shape)
-        val[m] = corr[i, j]
-        corr[np.ix_((i + near) % corr.shape[0], (j + near) % corr.shape[1])] = -np.inf
+        f = np.argmax(flat, axis=1)
+        val[:, m] = flat[b, f]
+        i, j = np.divmod(f, p1)
+        idx[:, m, 0], idx[:, m, 1] = i, j
+        rows, cols = (i[:, None] + near) % p0, (j[:, None] + near) % p1
+        flat[b[:, None], (rows[:, :, None] * p1 + cols[:, None, :]).reshape(b.size, -1)] = -np.inf
     return val, idx
 
 

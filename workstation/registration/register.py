@@ -37,7 +37,7 @@ from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
 from .coarse import COARSE_METHODS, CoarseParams, scale_search
-from .icp import ICPParams, refine, similarity_plane_icp, voxel_plane_icp
+from .icp import QUICK_ICP, ICPParams, refine, similarity_plane_icp, voxel_plane_icp
 from .preprocess import Radii, estimate_spacing, estimate_voxel_size, prepare
 
 log = get_logger(__name__)
@@ -272,13 +272,14 @@ def _prepare_pair(source: Cloud, target: Cloud, xs, xt, radii: Radii, params: Re
     """Downsample, clean and give normals (and FPFH features when a coarse stage runs) to both
     clouds (:func:`prepare`); ``(None, None)`` when the voxel-plane fine stage alone runs, as it
     works on the raw points. A source of unknown scale (``similarity``) is not prepared here:
-    the scale search prepares it per scale hypothesis."""
+    the scale search prepares it per scale hypothesis. The plane method uses no features."""
     if params.fine.method == "voxel_plane" and not need_coarse and params.method != "similarity":
         return None, None
+    features = need_coarse and params.method != "planes"
     ps = None if params.method == "similarity" else prepare(
-        xs, radii, features=need_coarse, colors=_colors(source), fine_voxel=fine_voxel,
+        xs, radii, features=features, colors=_colors(source), fine_voxel=fine_voxel,
         remove_outliers=params.remove_outliers, viewpoint=vs)
-    pt = prepare(xt, radii, features=need_coarse or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
+    pt = prepare(xt, radii, features=features or scale_coarse, colors=_colors(target), fine_voxel=fine_voxel,
                  remove_outliers=params.remove_outliers, viewpoint=vt)
     if need_coarse:
         _check_downsampled(ps, radii.voxel, "source")
@@ -363,7 +364,6 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
     if method != "auto":  # the scanner positions (local frame, or None) let ``planes`` test free space
         r = COARSE_METHODS[method](ps, pt, params.coarse, viewpoints=viewpoints)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
-    quick = ICPParams(method="point_to_plane", schedule=(1.5, 0.75), max_iterations=20, kernel="tukey")
     voxel = ps.radii.voxel
     cands = []  # (name, fitness, transform, score)
     for name in ("clique", "fpfh_ransac", "fgr"):
@@ -376,7 +376,7 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
             log.info("coarse %s failed: %s", name, e)
             continue
         for k, T in enumerate(r.meta.get("hypotheses", [r.transform])):
-            q = refine(ps.down, pt.down, voxel, T, quick)
+            q = refine(ps.down, pt.down, voxel, T, QUICK_ICP, information=False)
             score = consistency(ps.down, pt.down, q.transform, voxel)
             cands.append((name if k == 0 else f"{name}_{k}", float(q.fitness), q.transform, score))
             log.info("coarse %s hypothesis %d: verified fitness %.3f, consistency %.3f", name, k, q.fitness, score)
