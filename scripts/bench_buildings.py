@@ -5,6 +5,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_buildings.py speed [--buildings 500] [--workers 2]  # buildings/min, LoD2 from classified points
     PYTHONPATH=. python scripts/bench_buildings.py accuracy [--buildings 60] [--seed 5] # IoU, tilt, azimuth, roof RMS per roof kind
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex [--seed 5]  # the same on cross-gabled L / T and dormer roofs
+    PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --faces dormer  # and a line per true face of the dormers
     PYTHONPATH=. python scripts/bench_buildings.py solar                     # clear-sky kWh/m2/year at 48 N; against PVGIS
     PYTHONPATH=. python scripts/bench_buildings.py real                      # ../shared/data/lidar urban tiles
 
@@ -58,10 +59,12 @@ def _children_cpu() -> float:
     return u.ru_utime + u.ru_stime
 
 
-def accuracy(n: int, seed: int = 5, kinds: str = "basic"):
+def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = None):
     """Goals of issue 26 per roof kind on a district of analytic buildings (10 points/m2, 3 cm noise):
     the ``basic`` kinds (flat to L-shaped) or the ``complex`` ones (cross-gabled L and T, dormer),
-    whose expected roof type is none of the model's classes, so the types found are counted."""
+    whose expected roof type is none of the model's classes, so the types found are counted. With
+    ``faces`` (a kind), one line per true sloped face of the buildings of that kind
+    (:func:`_face_rows`)."""
     from workstation.buildings import synth
     from workstation.buildings.export import cityjson_document, validate_cityjson
     from workstation.buildings.models import is_watertight
@@ -73,6 +76,8 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic"):
     r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None))
     dt, dc = time.perf_counter() - t, time.process_time() - c
     rows = synth.evaluate(r.models, blds)
+    for row in _face_rows(r.models, blds, xyz[cls == 6], 0.03, faces) if faces else ():
+        emit(bench="face", seed=seed, **row)
     for kind in names:
         k = [x for x in rows if x["kind"] == kind]
         extra = {"roof_type_correct": float(np.mean([x.get("roof_type") == {"lshape": "flat"}.get(kind, kind) for x in k]))} \
@@ -88,6 +93,47 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic"):
     emit(bench="validity", watertight=float(np.mean([is_watertight(s) for m in r.models for s in m.lod2])),
          cityjson_errors=len(validate_cityjson(doc)), buildings=len(r.models), truth=len(blds), seed=seed, kinds=kinds,
          seconds=dt, cpu_seconds=dc, load=os.getloadavg()[0])
+
+
+def _face_rows(models: list, blds: list, roof_xyz: np.ndarray, noise: float, kind: str) -> list:
+    """Per true sloped face of each building of ``kind``: its tilt and azimuth, the model face
+    matched as :func:`workstation.buildings.synth.evaluate` matches it (the best-overlapping
+    model's face of nearest normal) and its errors, the true face's points ``n`` (points of
+    ``roof_xyz`` whose true roof gradient, by central differences, is the face's) and the tilt
+    standard error a least-squares plane of those points has at vertical noise ``noise`` (m):
+    :func:`~workstation.buildings.planes.tilt_standard_error` at ``noise cos(tilt)`` along the
+    normal; ``tilt_z`` is the tilt error over it (beyond about 3: more than the points support
+    for a face fitted alone)."""
+    import shapely
+
+    from workstation.buildings.planes import tilt_standard_error
+
+    polys = [shapely.Polygon(m.footprint) for m in models]
+    out = []
+    for i, b in enumerate(blds):
+        if b.kind != kind or not polys:
+            continue
+        T = shapely.Polygon(b.footprint())
+        m = models[max(range(len(polys)), key=lambda k: polys[k].intersection(T).area)]
+        pts = roof_xyz[b.inside(roof_xyz[:, :2])]
+        h = 1e-3
+        g = np.column_stack([(b.roof_z(pts[:, :2] + [h, 0]) - b.roof_z(pts[:, :2] - [h, 0])) / (2 * h),
+                             (b.roof_z(pts[:, :2] + [0, h]) - b.roof_z(pts[:, :2] - [0, h])) / (2 * h)])
+        dist = np.linalg.norm(g[:, None, :] - b.roof_gradients()[None], axis=2)
+        on = np.where(dist.min(axis=1) < 1e-3, np.argmin(dist, axis=1), -1)  # -1: on an edge
+        normals = np.array([f.normal for f in m.roofs])
+        for q, (tilt, az) in enumerate(b.true_tilt_azimuth()):
+            if tilt <= 0:
+                continue
+            t, a = np.radians(tilt), np.radians(az)
+            nt = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
+            f = m.roofs[int(np.argmax(normals @ nt))]
+            se = tilt_standard_error(pts[on == q], nt, noise * np.cos(t)) if (on == q).sum() >= 4 else float("inf")
+            err = f.tilt_deg - tilt
+            out.append({"building": i, "kind": kind, "face": q, "tilt_deg": tilt, "azimuth_deg": az, "n": int((on == q).sum()),
+                        "model_tilt_deg": f.tilt_deg, "model_azimuth_deg": f.azimuth_deg, "tilt_err_deg": err,
+                        "azimuth_err_deg": (f.azimuth_deg - az + 180) % 360 - 180, "tilt_se_deg": se, "tilt_z": err / se})
+    return out
 
 
 def _complex_fields(k: list) -> dict:
@@ -169,13 +215,14 @@ def main():
     a.add_argument("--seed", type=int, default=5, help="district seed (5: the reported one; 7, 11: validation)")
     a.add_argument("--kinds", choices=("basic", "complex"), default="basic",
                    help="basic: flat, shed, gabled, hipped, multi-level, L; complex: cross-gabled L and T, dormer")
+    a.add_argument("--faces", default=None, help="a kind: also a line per true sloped face of its buildings")
     sub.add_parser("solar")
     sub.add_parser("real")
     args = ap.parse_args()
     if args.cmd == "speed":
         speed(args.buildings, solar=args.solar, workers=args.workers)
     elif args.cmd == "accuracy":
-        accuracy(args.buildings, args.seed, args.kinds)
+        accuracy(args.buildings, args.seed, args.kinds, args.faces)
     elif args.cmd == "solar":
         solar()
     else:

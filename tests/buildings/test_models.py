@@ -232,3 +232,17 @@ def test_model_roof_planes_are_regularised():
         tilts.append(f.tilt_deg)
         assert abs(f.tilt_deg - tilt) < 1.0
     assert tilts[0] == pytest.approx(tilts[1], abs=1e-6)
+
+
+def test_detach_raised_takes_a_touching_left_out_plane_along():
+    # a dormer: 2 meets the main roof 1 in its front wall (5 step borders), 3 meets 1 in a valley
+    # only (borders, no step) and 2 at the dormer's ridge: both stand on the roof as one part
+    steps, borders = np.zeros((4, 4)), np.zeros((4, 4))
+    steps[1, 2] = steps[2, 1] = 5
+    borders[1, 2] = borders[2, 1] = 12
+    borders[1, 3] = borders[3, 1] = borders[2, 3] = borders[3, 2] = 6
+    part = np.zeros(4, int)
+    dropped = np.array([False, False, True, True])
+    assert detach_raised(part, dropped, steps, borders=borders).tolist() == [0, 0, 1, 1]
+    borders[2, 3] = borders[3, 2] = 0  # not touching the detached plane: stays
+    assert detach_raised(part, dropped, steps, borders=borders).tolist() == [0, 0, 1, 0]

@@ -85,3 +85,40 @@ def test_clutter_above_a_roof_gives_no_plane():
     r = segment_planes(np.vstack([pts, crown]))
     assert len(r.normals) == 2
     assert np.mean(r.labels[len(pts):] < 0) > 0.9
+
+
+def test_reassign_gives_ridge_points_to_their_nearest_plane():
+    """Two small faces meeting at a ridge, the first proposal drawn with a few points of the other
+    face near the ridge (within its noise band): once both planes are proposed, each point goes
+    to its nearest and the refitted planes are the true ones within their noise."""
+    from workstation.buildings.planes import _reassign
+
+    rng = np.random.default_rng(5)
+    xy = rng.uniform([0, -1.5], [3, 1.5], (60, 2))
+    z = 2.0 - 0.8 * np.abs(xy[:, 1]) + rng.normal(0, 0.02, 60)
+    pts = np.column_stack([xy, z])
+    side = xy[:, 1] > 0
+    near = ~side & (xy[:, 1] > -0.05)  # the other face's points near the ridge, drawn with the first
+    n0, d0 = fit_plane(pts[side | near])
+    n1, d1 = fit_plane(pts[~side & ~near])
+    lab, normals, offsets = _reassign(pts, np.array([n0, n1]), np.array([d0, d1]), 0.06)
+    assert len(normals) == 2
+    assert np.mean(lab[side] == 0) > 0.95 and np.mean(lab[~side] == 1) > 0.95
+    for q, gy in ((0, -0.8), (1, 0.8)):
+        want = np.array([0.0, -gy, 1.0]) / np.hypot(gy, 1.0)
+        assert np.degrees(np.arccos(min(1.0, normals[q] @ want))) < 1.5
+
+
+def test_both_faces_of_a_dormer_whose_first_proposal_takes_ridge_points():
+    """District seed 19, building 11: the free points of the dormer (20 on each face) are one
+    cluster; the first plane RANSAC draws from it takes four points of the other face near the
+    ridge and fails the chi-square test. Reassigned to the nearest of both proposed planes, the
+    two faces are found, each within the noise of its true face: free planes of 15-20 points
+    (before the model regularises them) have tilt and azimuth standard errors of about 0.75 and
+    1.4 degrees, so 4 degrees combined is three of them."""
+    b, pts, r = segment_building(19, 11)
+    assert len(r.normals) == 4
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < 4.0, (tilt, az, misfit)
+    for lab in _dormer_face_labels(b, pts, r.labels):
+        assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)

@@ -230,13 +230,16 @@ def split_parts(grid, origin, cell, normals, points, eps):
     return small_components(p, i, j)
 
 
-def detach_raised(part_of_plane, dropped, steps, min_cells: int = 4):
+def detach_raised(part_of_plane, dropped, steps, min_cells: int = 4, borders=None):
     """Part index per plane after splitting off, from each part, the planes its roof faces left
     out (``dropped`` (p,) bool) where they meet the kept planes of their part in a step of at
     least ``min_cells`` raster cell borders (``steps`` (p, p) from :func:`border_steps`): a dormer
     or a raised annex joined to the main roof by its valleys but standing on it behind a front
     wall, which the part's continuous roof cannot hold. The detached planes that touch form one
-    new part each."""
+    new part each. With ``borders`` (p, p) (the shared cell borders of :func:`border_steps`), a
+    left-out plane sharing a border with a detached one of its part goes with it: the other face
+    of a dormer, whose front wall the raster gave to the first face, meets the main roof in a
+    valley only and the detached face at the dormer's ridge."""
     from .planes import small_components
 
     p = len(part_of_plane)
@@ -245,8 +248,12 @@ def detach_raised(part_of_plane, dropped, steps, min_cells: int = 4):
     raised = dropped & ((steps * (same & kept[None, :])).sum(axis=1) >= min_cells)
     if not raised.any():
         return part_of_plane
-    i, j = np.nonzero(np.triu(same & raised[:, None] & raised[None, :], 1))
+    link = same & raised[:, None] & raised[None, :]
+    if borders is not None:
+        link |= same & dropped[:, None] & dropped[None, :] & (borders > 0)
+    i, j = np.nonzero(np.triu(link, 1))
     comp = small_components(p, i, j)
+    raised = dropped & np.isin(comp, comp[raised])
     out = part_of_plane.copy()
     out[raised] = part_of_plane.max() + 1 + np.unique(comp[raised], return_inverse=True)[1]
     return out
@@ -722,12 +729,12 @@ def merge_building_planes(xyz, local, normals, eps, angle_deg, fit=None):
     """Merge the planes of one building that are the same plane (normals within ``angle_deg``,
     each centroid within ``eps`` of the other plane) even where they do not touch (pieces of one
     roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points).
-    Centroids and fits use the points of ``fit`` (n,) bool only (:func:`fit_mask`; None: every
-    labelled point); the labels returned are every point's."""
+    Centroids and fits use the points of ``fit`` (n,) bool only (the mask of :func:`fit_mask`;
+    None: every labelled point); the labels returned are every point's."""
     from .planes import fit_plane, small_components
 
     p = len(normals)
-    fit = fit_mask(local, fit)
+    fit = local >= 0 if fit is None else fit
     cen = np.array([xyz[fit & (local == q)].mean(axis=0) for q in range(p)])
     i, j = np.triu_indices(p, 1)
     same = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))
@@ -767,12 +774,14 @@ def regular_planes(xyz, local, normals, points, spacing, force=None, fit=None):
     spacings (the neighbour reach of region growing). Planes marked in ``force`` (p,) bool (small
     faces that segmentation accepted as regularised, :attr:`~workstation.buildings.planes.RoofPlanes.regular`)
     are regularised whatever the Bayes factors at this noise say. Only the points of ``fit``
-    (n,) bool count (:func:`fit_mask`; None: every labelled point). Returns (normals, points)."""
+    (n,) bool count (the mask of :func:`fit_mask`; None: every labelled point). Returns (normals,
+    points)."""
     from .planes import pooled_noise, regularise_planes
 
     o = xyz.min(axis=0)
     loc = xyz - o
-    local = np.where(fit_mask(local, fit), local, -1)
+    if fit is not None:
+        local = np.where(fit, local, -1)
     d = -np.einsum("ij,ij->i", normals, points - o)
     n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing, force)
     q = points - o
@@ -826,9 +835,12 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None, fitte
     (:func:`detach_raised`) when that keeps every solid watertight. With ``least`` (points), the
     model is for the planes under ``least`` points: it only counts (third value True) when each
     such plane ended in a part of small planes only (a dormer, a raised annex, split off by a
-    step that :func:`split_parts` or :func:`detach_raised` found), so small planes never reshape
-    the main roof. The planes are refitted to the ``fitted`` points (:func:`fit_mask`), which own
-    their raster cells by their labels; the points left out of the fits near the planes' edges
+    step that :func:`split_parts` or :func:`detach_raised` found; the latter also splits off
+    small planes that a part's roof kept but that meet its other planes in a step, unless one of
+    the larger planes has their direction within the angle tolerance: a piece of a main face
+    offset by a step is no raised part), so small planes never reshape the main roof. The
+    planes are refitted to the ``fitted`` points (:func:`fit_mask`), which own their raster
+    cells by their labels; the points left out of the fits near the planes' edges
     are claimed again by :func:`_claim_unlabelled`, against the refitted planes: their labels
     were given within the segmentation's threshold of either face, and the plane vertically
     nearest to them once refitted decides their face better."""
@@ -858,9 +870,13 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None, fitte
     solids, roofs, used = _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, normals, points,
                                        ground)
     detached = False
-    if len(normals) > 2 and not used.all():  # planes a part's roof left out: raised on a step?
-        _, steps = border_steps(grid, origin, cell, normals, points, planes.threshold)
-        again = detach_raised(part_of_plane, ~used, steps)
+    dropped = ~used
+    if least is not None:  # small planes turned from every larger one: in raised parts of their own
+        cos = math.cos(math.radians(planes.angle_deg))
+        dropped |= is_small & ~((np.abs(normals @ normals[~is_small].T) > cos).any(axis=1))
+    if len(normals) > 2 and dropped.any():  # planes a part's roof left out: raised on a step?
+        borders, steps = border_steps(grid, origin, cell, normals, points, planes.threshold)
+        again = detach_raised(part_of_plane, dropped, steps, borders=borders)
         if not np.array_equal(again, part_of_plane):
             alt = _part_solids(fp, grid, origin, centres, cell, again, xyz, local, normals, points, ground)
             if all(is_watertight(s) for s in alt[0]):  # else keep the roof without the raised planes

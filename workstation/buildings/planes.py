@@ -468,15 +468,19 @@ MAX_TILT_SE_DEG = 1.0
 PLANAR_LEVEL = 0.01
 
 
-def pooled_noise(xyz, labels, normals, offsets) -> float:
+def pooled_noise(xyz, labels, normals, offsets, vertical: bool = False) -> float:
     """Noise sigma (m) along the normal, pooled over every plane's points: sqrt(RSS / (n - 3 p))
     with the three parameters of each plane taken out (the residuals of planes fitted by least
     squares; the local PCA figure of :func:`local_geometry` is biased low, being the smallest of
-    three eigenvalues of small neighbourhoods)."""
+    three eigenvalues of small neighbourhoods). With ``vertical``, the noise along z: each
+    residual over its plane's cosine of tilt (airborne ranging noise is about vertical, and a
+    plane tilted by t sees sigma_z cos(t) of it along its normal)."""
     on = labels >= 0
     if not on.any():
         return float("nan")
     r = np.einsum("ij,ij->i", normals[labels[on]], xyz[on]) + offsets[labels[on]]
+    if vertical:
+        r = r / np.abs(normals[labels[on], 2])
     dof = on.sum() - 3 * len(np.unique(labels[on]))
     return float(np.sqrt(np.sum(r * r) / dof)) if dof > 0 else float("nan")
 
@@ -532,18 +536,76 @@ def _regular_tilt_se(xyz, labels, normals, offsets, members, nrm, d, sigma, reac
     return float(se[-1]) if np.isfinite(se[-1]) else float("inf")
 
 
+def _proposals(pts, eps, sigma, params, rng):
+    """Planes proposed for the points ``pts`` (m, 3) of one cluster of free points by sequential
+    RANSAC (at most ``max_planes_per_region``, each of at least four points): each consensus set
+    at ``eps`` is narrowed to the points within 3 sigma of its least-squares plane (twice
+    refitted; sigma the vertical noise ``sigma`` times the plane's cosine of tilt) and taken out
+    before the next draw. Returns (normals (k, 3), offsets (k,))."""
+    normals, offsets = [], []
+    rest = np.arange(len(pts))
+    for _ in range(params.max_planes_per_region):
+        if len(rest) < 4:
+            break
+        nrm, d, inl = ransac_plane(pts[rest], eps, params, rng)
+        for _ in range(2 if nrm is not None else 0):  # the noise band of the fitted plane
+            band = np.abs(pts[rest] @ nrm + d) < 3.0 * sigma * nrm[2]
+            if band.sum() < 4:
+                break
+            inl = band
+            nrm, d = fit_plane(pts[rest[inl]])
+        if nrm is None or inl.sum() < 4:
+            break
+        normals.append(nrm)
+        offsets.append(d)
+        rest = rest[~inl]
+    return np.array(normals).reshape(-1, 3), np.array(offsets, float)
+
+
+def _reassign(pts, normals, offsets, band, rounds: int = 2):
+    """Points ``pts`` (m, 3) given to the nearest of the planes (``normals`` (k, 3), ``offsets``
+    (k,)) when within ``band`` (vertical, m: ``band`` times the plane's cosine of tilt along its
+    normal; else -1), and the planes refitted to their points, ``rounds`` times: the assignment
+    and re-estimation steps of multi-model fitting (Isack & Boykov 2012, PEARL, without the
+    smoothness term). Sequential RANSAC gives a point within the band of two planes (near where
+    two small faces meet, a dormer's ridge) to the plane drawn first, and on a face of 20 points
+    the few such points of the other face turn its plane by degrees; the nearest plane once both
+    are known is the better guess. A plane left with under four points is dropped. Returns
+    (labels (m,), normals, offsets)."""
+    lab = np.full(len(pts), -1, np.int64)
+    for _ in range(rounds):
+        if not len(normals):
+            break
+        r = np.abs(pts @ normals.T + offsets)
+        best = np.argmin(r, axis=1)
+        lab = np.where(r.min(axis=1) < band * normals[best, 2], best, -1)
+        cnt = np.bincount(lab[lab >= 0], minlength=len(normals))
+        keep = np.flatnonzero(cnt >= 4)
+        fits = [fit_plane(pts[lab == q]) for q in keep]
+        normals = np.array([f[0] for f in fits]).reshape(-1, 3)
+        offsets = np.array([f[1] for f in fits], float)
+    if len(normals):
+        r = np.abs(pts @ normals.T + offsets)
+        best = np.argmin(r, axis=1)
+        lab = np.where(r.min(axis=1) < band * normals[best, 2], best, -1)
+    return lab, normals, offsets
+
+
 def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
     """Faces too small for the count ``min_points`` among the points still on no plane (a dormer
     cheek of 1-3 m^2 has 10-30 points at 10 points/m^2), accepted on statistical grounds
     instead of a count. The free points are joined into clusters (two free points are linked
     when one is among the other's ``idx`` neighbours, the neighbourhoods of the normals);
-    sequential RANSAC proposes planes in each, whose inliers are then the points within 3 sigma
-    of the least-squares plane (twice refitted): the band ``eps`` also admits points of a
+    sequential RANSAC proposes planes in each (:func:`_proposals`), whose inliers are then the
+    points within 3 sigma of the least-squares plane: the band ``eps`` also admits points of a
     neighbouring surface within the normals' angle tolerance over a spacing, which on a face of
-    20 points fail the chi-square test below; a proposal with n inliers becomes a face when
+    20 points fail the chi-square test below. The cluster's points then go to their nearest
+    proposed plane (:func:`_reassign`), and each proposal, largest first, with n points becomes
+    a face when
 
-    * its tilt is determined to :data:`MAX_TILT_SE_DEG` (:func:`tilt_standard_error` at the
-      pooled noise sigma of the planes found, :func:`pooled_noise`): the support needed follows
+    * its tilt is determined to :data:`MAX_TILT_SE_DEG` (:func:`tilt_standard_error` at its
+      noise sigma along the normal, which all the tests use: the vertical noise pooled over the
+      planes found (:func:`pooled_noise`) times its cosine of tilt): the support needed follows
       from the noise, the spacing and the face's extent, not from a fixed count. A face whose
       free fit misses it may pass as the model will carry it: regularised with the planes found
       (:func:`_regular_tilt_se`, touching within three ``spacing``), its azimuth along the
@@ -552,18 +614,21 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
       :data:`PLANAR_LEVEL` tail of the chi-square law with n - 3 degrees of freedom (points
       scattered through the slab of half-width ``eps``, a tree crown, give about three times
       the sum of a plane's);
-    * it is a surface (:func:`_surface`): most points inside its outline lie on it; and
+    * it is a surface (:func:`_surface`): most points inside its outline lie on it. A plane
+      steeper than :data:`MAX_ROOF_TILT_DEG` is no roof face (the models take it for a wall)
+      and has an outline too thin in plan for the test (a few scattered points, a bird or a
+      wire, lie on some near-vertical plane);
     * it explains its points better than the planes already there, by the Bayesian information
       criterion for Gaussian residuals of known sigma: (RSS_0 - RSS_1) / sigma^2 > 3 ln n, with
       RSS_1 the squared residuals to the new plane (three parameters) and RSS_0 those to the
       nearest plane among each point's neighbours' planes (all planes where none has one).
 
-    Returns the labels with the new faces numbered after the existing planes, and (planes,) bool:
-    the faces accepted only as regularised (their free tilt error over the rule)."""
-    from scipy.stats import chi2
-
+    As in sequential RANSAC, a proposal that fails ends the search in its cluster (each test
+    more among a cluster's leftovers is one more chance for a chance alignment to pass). Returns
+    the labels with the new faces numbered after the existing planes, and (planes,) bool: the
+    faces accepted only as regularised (their free tilt error over the rule)."""
     free = np.flatnonzero(labels < 0)
-    sigma = pooled_noise(xyz, labels, normals, offsets)
+    sigma = pooled_noise(xyz, labels, normals, offsets, vertical=True)
     if len(free) < 4 or not len(normals) or not np.isfinite(sigma) or sigma <= 0:
         return labels, np.zeros(len(normals), bool)
     pos = np.full(len(xyz), -1, np.int64)
@@ -575,40 +640,46 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
     near = np.where(cand >= 0, np.take_along_axis(d_all, np.maximum(cand, 0), axis=1), np.inf).min(axis=1)
     rss0 = np.where(np.isfinite(near), near, d_all.min(axis=1)) ** 2
     rng = np.random.default_rng(params.seed)
-    out, nxt = labels.copy(), int(labels.max()) + 1
-    known_n, known_d, promised = normals, offsets, []
+    out, known_n, known_d, promised = labels.copy(), normals, offsets, []
     order = np.argsort(comp, kind="stable")
     start = np.searchsorted(comp[order], np.arange(comp.max() + 2))
     for c in np.flatnonzero(np.diff(start) >= 4):
         members = order[start[c]:start[c + 1]]
-        for _ in range(params.max_planes_per_region):
-            if len(members) < 4:
+        pts = xyz[free[members]]
+        lab, pn, pd = _reassign(pts, *_proposals(pts, eps, sigma, params, rng), 3.0 * sigma)
+        for q in np.argsort(-np.bincount(lab[lab >= 0], minlength=len(pn)), kind="stable"):
+            on = lab == q
+            loose = _accept_face(xyz, out, known_n, known_d, free[members[on]], pn[q], pd[q], rss0[members[on]],
+                                 sigma * pn[q, 2], eps, spacing)
+            if loose is None:  # the smaller proposals of the cluster are not tested
                 break
-            nrm, d, inl = ransac_plane(xyz[free[members]], eps, params, rng)
-            for _ in range(2 if nrm is not None else 0):  # the noise band of the fitted plane
-                band = np.abs(xyz[free[members]] @ nrm + d) < 3.0 * sigma
-                if band.sum() < 4:
-                    break
-                inl = band
-                nrm, d = fit_plane(xyz[free[members[inl]]])
-            m = int(inl.sum()) if nrm is not None else 0
-            if m < 4:
-                break
-            pts = xyz[free[members[inl]]]
-            rss1 = float(np.sum((pts @ nrm + d) ** 2))
-            gain = (float(rss0[members[inl]].sum()) - rss1) / sigma ** 2
-            loose = tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
-            if (gain <= 3.0 * math.log(m) or chi2.sf(rss1 / sigma ** 2, m - 3) < PLANAR_LEVEL
-                    or (loose and _regular_tilt_se(xyz, out, known_n, known_d, free[members[inl]], nrm, d, sigma,
-                                                   3.0 * spacing) > MAX_TILT_SE_DEG)
-                    or not _surface(xyz, pts, nrm, d, eps)):
-                break
-            out[free[members[inl]]] = nxt
+            out[free[members[on]]] = len(known_n) - len(normals) + labels.max() + 1
             promised.append(loose)
-            known_n, known_d = np.vstack([known_n, nrm]), np.r_[known_d, d]
-            nxt += 1
-            members = members[~inl]
+            known_n, known_d = np.vstack([known_n, pn[q]]), np.r_[known_d, pd[q]]
     return out, np.r_[np.zeros(len(normals), bool), np.array(promised, bool)]
+
+
+def _accept_face(xyz, labels, normals, offsets, members, nrm, d, rss0, sigma, eps, spacing):
+    """The tests of :func:`_residual_faces` for the proposed face of the points ``members`` (m,)
+    on the plane (nrm, d) (up) among the planes found (``labels``, ``normals``, ``offsets``),
+    ``rss0`` the squared residuals of its points to those planes, ``sigma`` its noise along the
+    normal: None when rejected, else whether it passes only as regularised (its free tilt error
+    over :data:`MAX_TILT_SE_DEG`)."""
+    from scipy.stats import chi2
+
+    pts = xyz[members]
+    m = len(pts)
+    if m < 4 or nrm[2] < math.cos(math.radians(MAX_ROOF_TILT_DEG)):
+        return None
+    rss1 = float(np.sum((pts @ nrm + d) ** 2))
+    gain = (float(rss0.sum()) - rss1) / sigma ** 2
+    if gain <= 3.0 * math.log(m) or chi2.sf(rss1 / sigma ** 2, m - 3) < PLANAR_LEVEL:
+        return None
+    loose = tilt_standard_error(pts, nrm, sigma) > MAX_TILT_SE_DEG
+    reach = 3.0 * spacing
+    if loose and _regular_tilt_se(xyz, labels, normals, offsets, members, nrm, d, sigma, reach) > MAX_TILT_SE_DEG:
+        return None
+    return loose if _surface(xyz, pts, nrm, d, eps) else None
 
 
 #: Half-width, in noise sigmas, of the band within which a point is consistent with a plane (99.7 %
