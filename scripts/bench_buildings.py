@@ -6,6 +6,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_buildings.py accuracy [--buildings 60] [--seed 5] # IoU, tilt, azimuth, roof RMS per roof kind
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex [--seed 5]  # the same on cross-gabled L / T and dormer roofs
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --faces dormer  # and a line per true face of the dormers
+    PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --seed 7 --density 4  # a sparser district (points/m2)
     PYTHONPATH=. python scripts/bench_buildings.py solar                     # clear-sky kWh/m2/year at 48 N; against PVGIS
     PYTHONPATH=. python scripts/bench_buildings.py real                      # ../shared/data/lidar urban tiles
 
@@ -59,7 +60,7 @@ def _children_cpu() -> float:
     return u.ru_utime + u.ru_stime
 
 
-def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = None):
+def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = None, density: float = 10.0):
     """Goals of issue 26 per roof kind on a district of analytic buildings (10 points/m2, 3 cm noise):
     the ``basic`` kinds (flat to L-shaped) or the ``complex`` ones (cross-gabled L and T, dormer),
     whose expected roof type is none of the model's classes, so the types found are counted. With
@@ -71,7 +72,7 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = No
     from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
 
     names = synth.KINDS if kinds == "basic" else synth.COMPLEX_KINDS
-    xyz, cls, blds = synth.district(n, seed=seed, density=10.0, noise=0.03, kinds=names)
+    xyz, cls, blds = synth.district(n, seed=seed, density=density, noise=0.03, kinds=names)
     t, c = time.perf_counter(), time.process_time()
     r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None))
     dt, dc = time.perf_counter() - t, time.process_time() - c
@@ -216,13 +217,14 @@ def main():
     a.add_argument("--kinds", choices=("basic", "complex"), default="basic",
                    help="basic: flat, shed, gabled, hipped, multi-level, L; complex: cross-gabled L and T, dormer")
     a.add_argument("--faces", default=None, help="a kind: also a line per true sloped face of its buildings")
+    a.add_argument("--density", type=float, default=10.0, help="points/m2 of the simulated district (10: the reported one)")
     sub.add_parser("solar")
     sub.add_parser("real")
     args = ap.parse_args()
     if args.cmd == "speed":
         speed(args.buildings, solar=args.solar, workers=args.workers)
     elif args.cmd == "accuracy":
-        accuracy(args.buildings, args.seed, args.kinds, args.faces)
+        accuracy(args.buildings, args.seed, args.kinds, args.faces, density=args.density)
     elif args.cmd == "solar":
         solar()
     else:
