@@ -4,6 +4,7 @@ Prints one JSON line per result. Usage::
 
     PYTHONPATH=. python scripts/bench_classify.py speed              # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
+    PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto]  # per-sample ISPRS, both paths
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
     PYTHONPATH=. python scripts/bench_classify.py simtiles           # whole sim validation tiles, roof test on/off
@@ -68,6 +69,48 @@ def goals(clf, label):
         t0 = time.perf_counter()
         r = tile_scores(clf.predict, DATA / "lidar" / f)
         emit(bench="real_tile", model=label, file=f, seconds=time.perf_counter() - t0, **r)
+
+
+def isprs(model=None, with_auto=False):
+    """Per-sample ISPRS Type I / Type II / total error (%) of the classifier's ground paths:
+    ``ws classify`` (:meth:`PointClassifier.predict`, the model's own step switches), ``ws
+    ground --method ml`` (:func:`workstation.ml.ground.ml_ground`) and the same with
+    ``member_vote`` (the gate as a sixth voter of ``auto``'s members), and with ``with_auto``
+    ``ws ground --method auto`` beside them; then each path's mean."""
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.core.cloud import Cloud
+    from workstation.ground.evaluate import ground_errors, read_isprs_text
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.ground import MLGroundParams, ml_ground
+    from workstation.ml.realdata import ISPRS_SAMPLES
+
+    clf = PointClassifier.load(model, device="cpu")
+    def ground_ml(**kw):
+        p = MLGroundParams(model=model, device="cpu", **kw)
+        return lambda c: np.asarray(ml_ground(c, p).attrs["classification"]) == C.GROUND
+
+    paths = {"classify": lambda c: clf.predict(c) == C.GROUND, "ground_ml": ground_ml(),
+             "ground_ml_member_vote": ground_ml(member_vote=True)}
+    if with_auto:
+        from workstation.ground.methods import ground_filter
+
+        paths["auto"] = lambda c: np.asarray(ground_filter(Cloud(c.xyz), "auto").attrs["classification"]) == C.GROUND
+    totals: dict = {k: [] for k in paths}
+    for s in ISPRS_SAMPLES:
+        p = DATA / "isprs" / f"{s}.txt"
+        if not p.exists():
+            continue
+        ref = read_isprs_text(p)
+        ref_g = np.asarray(ref.attrs["label"]) == 0
+        cloud = ref.without_attrs("label", "classification")
+        for k, fn in paths.items():
+            t0, c0 = time.perf_counter(), time.process_time()
+            e = ground_errors(ref_g, fn(cloud))
+            totals[k].append(100 * e.total_error)
+            emit(bench="isprs_sample", path=k, sample=s, type1=round(100 * e.type1, 2), type2=round(100 * e.type2, 2),
+                 total=round(100 * e.total_error, 2), seconds=time.perf_counter() - t0, cpu_seconds=time.process_time() - c0)
+    for k, v in totals.items():
+        emit(bench="isprs_mean", path=k, samples=len(v), mean_total=round(float(np.mean(v)), 3) if v else None)
 
 
 def _tileset():
@@ -191,6 +234,8 @@ if __name__ == "__main__":
         from workstation.ml.classifier import PointClassifier
 
         goals(PointClassifier.load(model, device="cpu"), "mlp")
+    elif what == "isprs":
+        isprs(model, with_auto="--with-auto" in sys.argv)
     elif what == "baseline":
         baseline()
     elif what == "sim":

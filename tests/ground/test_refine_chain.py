@@ -65,8 +65,8 @@ def state():
 
 
 def test_the_declared_chains():
-    """auto: raised patches, risers, understorey; the classifier: understorey, (raised patches,
-    off by default), water, bridges; a switch drops its step and keeps the order."""
+    """auto: raised patches, risers, understorey; the classifier: understorey, raised patches,
+    water, bridges; a switch drops its step and keeps the order."""
     assert AutoParams().steps == ("raised_patches", "risers", "understorey")
     assert [type(p) for p in AutoParams().chain()] == [PatchParams, RiserParams, UnderstoreyParams]
     assert [type(p) for p in AutoParams(risers=False).chain()] == [PatchParams, UnderstoreyParams]
@@ -74,7 +74,7 @@ def test_the_declared_chains():
     assert p.chain() == (RiserParams(min_votes=2), PatchParams())
     clf = PointClassifier()
     assert clf.steps == ("understorey", "raised_patches", "water", "bridges")
-    assert [type(p) for p in clf.chain()] == [UnderstoreyParams, WaterParams, BridgeParams]
+    assert [type(p) for p in clf.chain()] == [UnderstoreyParams, PatchParams, WaterParams, BridgeParams]
     assert [type(p) for p in clf.chain(StepSwitches(raised_patches=True, water=False))] == [UnderstoreyParams, PatchParams, BridgeParams]
     assert clf.config()["steps"] == list(clf.steps)
 
@@ -85,7 +85,7 @@ def test_the_shipped_model_loads_with_the_default_chain(tmp_path):
     model saved with another chain loads with it."""
     clf = PointClassifier.load(device="cpu")
     assert clf.steps == ("understorey", "raised_patches", "water", "bridges")
-    assert (clf.understorey, clf.raised_patches, clf.water, clf.bridges, clf.roof_test) == (True, False, True, True, True)
+    assert (clf.understorey, clf.raised_patches, clf.water, clf.bridges, clf.roof_test) == (True, True, True, True, True)
     clf.steps = ("raised_patches", "understorey", "bridges")
     assert PointClassifier.load(clf.save(tmp_path / "m.pt"), device="cpu").steps == clf.steps
 

@@ -84,6 +84,24 @@ def test_ground_method_ml_with_the_shipped_model(tmp_path, capsys):
     assert ((np.asarray(read_cloud(off).attrs["classification"]) == 2) >= (cls == 2)).all()
 
 
+def test_ground_method_ml_member_vote_option(tmp_path, capsys):
+    """--member-vote reaches MLGroundParams.member_vote (off by default): the classes are
+    those of the library call; the other methods refuse it."""
+    from workstation.ml.ground import MLGroundParams, ml_ground
+
+    src = tmp_path / "in.laz"
+    write_cloud(two_class_scene(5), src)
+    out = tmp_path / "mv.laz"
+    assert main(["ground", str(src), "-o", str(out), "--method", "ml", "--reclassify", "--member-vote",
+                 "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["params"]["member_vote"] is True
+    ref = ml_ground(read_cloud(src), MLGroundParams(reclassify=True, member_vote=True))
+    np.testing.assert_array_equal(read_cloud(out).attrs["classification"], ref.attrs["classification"])
+    assert main(["ground", str(src), "-o", str(tmp_path / "plain.laz"), "--method", "ml", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["params"]["member_vote"] is False
+    assert main(["ground", str(src), "-o", str(tmp_path / "x.laz"), "--method", "csf", "--member-vote"]) == 2
+
+
 def test_classify_roof_test_options(tmp_path, capsys):
     """The shipped model with and without the roof planarity test, and a looser tolerance:
     switching the test off or loosening it never gives fewer building points."""
@@ -103,8 +121,8 @@ def test_classify_roof_test_options(tmp_path, capsys):
 
 
 def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
-    """--raised-patches runs the raised-patch test on the gate's ground (off by default), and
-    it only ever takes ground away."""
+    """The raised-patch test runs on the gate's ground by default and not with
+    --no-raised-patches, and it only ever takes ground away."""
     import workstation.ground.patches as patches
     from tests.ground.ground_synth import terrain_with_boxes
     from workstation.core.cloud import Cloud
@@ -121,15 +139,16 @@ def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
     src = tmp_path / "boxes.laz"
     write_cloud(Cloud(xyz, crs="EPSG:32632"), src)
     ground, ran = {}, {}
-    for name, extra in (("default", []), ("patches", ["--raised-patches"])):
+    for name, extra in (("default", []), ("on", ["--raised-patches"]), ("off", ["--no-raised-patches"])):
         out = tmp_path / f"{name}.laz"
         calls.clear()
         assert main(["classify", str(src), "-o", str(out), *extra]) == 0
         ran[name] = len(calls)
         ground[name] = np.asarray(read_cloud(out).attrs["classification"]) == 2
-    assert ran == {"default": 0, "patches": 1}
-    assert (ground["patches"] <= ground["default"]).all()
-    assert ground["patches"][truth].mean() > 0.95
+    assert ran == {"default": 1, "on": 1, "off": 0}
+    np.testing.assert_array_equal(ground["on"], ground["default"])
+    assert (ground["default"] <= ground["off"]).all()
+    assert ground["default"][truth].mean() > 0.95
 
 
 def test_classify_water_option(tmp_path, capsys):

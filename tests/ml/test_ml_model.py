@@ -217,7 +217,14 @@ def test_roof_test_sends_rough_building_points_to_their_next_class(tiny_model, t
 def test_raised_patches_send_a_roof_called_ground_to_its_next_class(tiny_model, tmp_path):
     """A flat roof that the network and the gate both call ground (here: probabilities and
     heights made up so) is a raised patch: it takes the network's best non-ground class;
-    the terrain stays ground; the setting is saved."""
+    the terrain stays ground. The step is on by default and a model saved with it off loads
+    with it on (a rule of inference, not of the model)."""
+    import json
+
+    import torch
+
+    from workstation.ml.classifier import StepSwitches
+
     cloud = two_class_scene(7)
     cls = np.asarray(cloud.attrs["classification"])
     roof = cls == C.BUILDING
@@ -225,17 +232,36 @@ def test_raised_patches_send_a_roof_called_ground_to_its_next_class(tiny_model, 
     P = np.zeros((n, len(MODEL_CLASSES)), np.float32)
     P[:, 0], P[:, 2], P[:, 1] = 0.6, 0.3, 0.1  # ground first, then building, vegetation
     hs = np.zeros((n, 2), np.float32)  # every point inside the gate's band
-    assert tiny_model.raised_patches is False  # off by default (speed), on in ws ground --method ml
-    assert (tiny_model.codes_from_proba(P, hs, cloud)[0] == C.GROUND).all()
-    tiny_model.roof_test, tiny_model.raised_patches = False, True  # this test is about the ground
+    assert tiny_model.raised_patches is True  # on by default (ws classify and ws ground --method ml)
+    tiny_model.roof_test = False  # this test is about the ground
     try:
         codes, _ = tiny_model.codes_from_proba(P, hs, cloud)
         assert (codes[roof] == C.BUILDING).mean() > 0.99
         assert (codes[~roof] == C.GROUND).all()
-        loaded = PointClassifier.load(tiny_model.save(tmp_path / "p.pt"), device="cpu")
-        assert loaded.raised_patches is True and loaded.config()["raised_patches"] is True
+        off = StepSwitches(raised_patches=False)
+        assert (tiny_model.codes_from_proba(P, hs, cloud, off)[0] == C.GROUND).all()
+        tiny_model.raised_patches = False
+        assert (tiny_model.codes_from_proba(P, hs, cloud)[0] == C.GROUND).all()
+        path = tiny_model.save(tmp_path / "p.pt")
+        saved = json.loads(torch.load(path, map_location="cpu", weights_only=True)["config"])
+        assert saved["raised_patches"] is False
+        assert PointClassifier.load(path, device="cpu").raised_patches is True
     finally:
-        tiny_model.roof_test, tiny_model.raised_patches = True, False
+        tiny_model.roof_test, tiny_model.raised_patches = True, True
+
+
+def test_prediction_gate_is_the_ground_before_the_refine_chain(tiny_model):
+    """``Prediction.gate`` is the gate's ground: the ground with every refine step off, and
+    a superset of the ground the chain leaves (its ground steps only take ground away)."""
+    from workstation.ml.classifier import StepSwitches
+
+    cloud = two_class_scene(8)
+    steps_off = StepSwitches(understorey=False, raised_patches=False, water=False, roof_test=False, bridges=False)
+    bare = tiny_model.predict_codes(cloud, steps_off)
+    np.testing.assert_array_equal(bare.gate, bare.codes == C.GROUND)
+    full = tiny_model.predict_codes(cloud, StepSwitches(roof_test=False))
+    np.testing.assert_array_equal(full.gate, bare.gate)
+    assert not ((full.codes == C.GROUND) & ~full.gate).any()
 
 
 def test_water_step_makes_still_water_class_9(tiny_model, tmp_path):

@@ -27,9 +27,10 @@ def test_isprs_mean_total_error(shipped, shared_data):
 
     s = isprs_scores(lambda c: shipped.predict(c) == C.GROUND, shared_data / "isprs")
     assert len(s) == 7
-    # measured 3.49 % (goal 3.5 %; 3.68 % before the slope-adaptive provisional surface); the
+    # measured 3.24 % (3.49 % without the raised-patch step; 3.68 % before the slope-adaptive
+    # provisional surface); the
     # 0.05 margin is for floating-point differences between CPUs, not for the model
-    assert s["mean_total"] <= 3.55, s["mean_total"]
+    assert s["mean_total"] <= 3.3, s["mean_total"]
     assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 3.2
 
 
@@ -103,7 +104,20 @@ def test_ml_ground_on_isprs_runs_the_raised_patch_test(shared_data):
     from workstation.ml.realdata import isprs_scores
 
     s = isprs_scores(lambda c: np.asarray(ml_ground(c).attrs["classification"]) == C.GROUND, shared_data / "isprs")
-    # measured 3.24 % (3.49 % without the raised-patch test, which ws classify leaves off by
-    # default): samp42's platforms leave the ground (2.90 -> 1.54 %)
+    # measured 3.24 % (3.49 % without the raised-patch test): samp42's roof at the sample's corner, on which the provisional surface sits,
+    # leaves the ground (2.90 -> 1.54 %)
     assert s["mean_total"] <= 3.3, s["mean_total"]
     assert s["samp42"]["total"] <= 1.8, s
+
+
+def test_ml_ground_member_vote_on_isprs(shared_data):
+    from workstation.ml.ground import MLGroundParams, ml_ground
+    from workstation.ml.realdata import isprs_scores
+
+    p = MLGroundParams(device="cpu", member_vote=True)
+    s = isprs_scores(lambda c: np.asarray(ml_ground(c, p).attrs["classification"]) == C.GROUND, shared_data / "isprs")
+    # measured 2.85 % (8.42, 1.33, 2.07, 1.09, 2.14, 2.04; auto 2.91 %: 7.92, 1.47, 2.56, 1.46,
+    # 2.46, 1.55): samp61's embankment crests, which the network's provisional surface cuts,
+    # come back with the members (2.60 -> 2.04 %)
+    assert s["mean_total"] <= 2.9, s["mean_total"]
+    assert s["samp61"]["total"] <= 2.2 and s["samp42"]["total"] <= 1.3 and s["samp11"]["total"] <= 8.5, s

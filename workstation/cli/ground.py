@@ -71,6 +71,10 @@ def _filter_option(field: str, *decls, **attrs) -> dict:
     _filter_option("raised_patches", "--raised-patches/--no-raised-patches",
                    help=f"{_for('raised_patches')} take out patches of ground that drop by 1 m or more on all sides "
                         "(roofs, decks; default on)."),
+    _filter_option("member_vote", "--member-vote/--no-member-vote",
+                   help=f"{_for('member_vote')} the classifier's ground gate votes with auto's five members (ground "
+                        "where 4 of the 6 accept a point), then auto's refine chain; costs the members' run time "
+                        "(default off)."),
     _filter_option("risers", "--risers/--no-risers",
                    help=f"{_for('risers')} put back rejected points on terrain steps the ground TIN spans (default on)."),
     _filter_option("max_window", "--max-window", type=positive_length, help=f"{_for('max_window')} largest window size, metres."),
@@ -122,7 +126,7 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     if pipeline_out:
         _check_pipeline_out(method, output, pipeline_out, overwrite, src)
     given = _given_params(given, reclassify, all_returns, noise_step, bridges)
-    params = _method_params(method, preset, given, reclassify, given.get("raised_patches"))
+    params = _method_params(method, preset, given, reclassify)
     cloud = read_cloud(src, **read_opts, **({"columns": columns} if columns else {}))
     out, params = _filter(cloud, method, params, given, noise, tiles)
     n_tiles = int(out.history[-1].params.get("tiles", 1)) if out.history else 1
@@ -148,17 +152,18 @@ def _given_params(given: dict, reclassify: bool, all_returns: bool, noise_step, 
     return given
 
 
-def _method_params(method: str, preset: str, given: dict, reclassify: bool, raised_patches):
-    """The parameter dataclass of the method: the point classifier's for ``ml``, else the
-    preset's with the given options applied (an invalid combination is a usage error)."""
+def _method_params(method: str, preset: str, given: dict, reclassify: bool):
+    """The parameter dataclass of the method: the point classifier's for ``ml`` (its
+    ``raised_patches`` and ``member_vote`` when given; the other filter options are not its),
+    else the preset's with the given options applied (an invalid combination is a usage error)."""
     from workstation.core.errors import InvalidInputError
     from workstation.ground.methods import make_params
 
     if method == "ml":  # the shipped point classifier (workstation.ml.ground)
         from workstation.ml.ground import MLGroundParams
 
-        return MLGroundParams(reclassify=reclassify,
-                              **({} if raised_patches is None else {"raised_patches": raised_patches}))
+        ml = {k: given[k] for k in ("raised_patches", "member_vote") if given.get(k) is not None}
+        return MLGroundParams(reclassify=reclassify, **ml)
     try:
         return make_params(method, preset, **given)
     except InvalidInputError as e:

@@ -128,11 +128,17 @@ class Prediction:
         Confidence (0-1) of each point's class.
     proba : (n, len(MODEL_CLASSES)) float32
         The network's model-class probabilities (column 0: ground).
+    gate : (n,) bool
+        The ground of the gate, before the refine chain (see ``ground_gate`` of
+        :class:`PointClassifier`; without the gate, the points whose best class is ground):
+        the classifier's own ground vote, e.g. for a vote among several filters
+        (:func:`workstation.ml.ground.member_vote_ground`).
     """
 
     codes: np.ndarray
     confidence: np.ndarray
     proba: np.ndarray
+    gate: np.ndarray
 
 
 @dataclass
@@ -245,8 +251,9 @@ class PointClassifier:
         The ``raised_patches`` step: patches of ground cut off from the terrain by breaks of
         more than 1 m that drop on all sides (roofs, decks, platforms) leave the ground
         (:func:`workstation.ground.patches.raised_patches`, a step of ``auto``'s chain too). A
-        rule, not learned. Off by default here (it slows inference) and on in ``ws ground
-        --method ml`` (:mod:`workstation.ml.ground`).
+        rule, not learned; it costs about 15 % of the inference time. Not read from a model
+        file: a loaded model has it on unless the caller turns it off (models saved while it
+        was off by default stored it off).
     water : bool
         The ``water`` step: ground points on still water (level, single-echo surfaces of
         150 m² or more whose banks rise from them,
@@ -271,7 +278,7 @@ class PointClassifier:
                  ground_gate: bool = True, gate_threshold: float = 0.5, gate_scalar: float = 1.25,
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
                  gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True,
-                 roof_test: bool = True, roof_tolerance: float = 0.08, raised_patches: bool = False,
+                 roof_test: bool = True, roof_tolerance: float = 0.08, raised_patches: bool = True,
                  water: bool = True, bridges: bool = True, steps=STEPS):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
@@ -580,7 +587,7 @@ class PointClassifier:
         return fail
 
     def _gate(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
-        """Ground of the gate (before the refine chain)."""
+        """Ground of the gate (before the refine chain; :attr:`Prediction.gate`)."""
         hag, slope = hs[:, 0], hs[:, 1]
         band = np.abs(hag) <= self.gate_threshold + self.gate_scalar * slope
         ground = band & (P[:, 0] >= self.gate_min_probability)
@@ -611,35 +618,37 @@ class PointClassifier:
         ``hag_slope`` (n, 2) of ``cloud``'s points: the gate, the refine chain, the roof test and
         the bridge step, which need ``cloud`` (None: the network's classes through the gate
         only); ``overrides``: step switches for this call."""
-        return self._codes(np.asarray(proba), np.asarray(hag_slope), cloud, None, self.switches(overrides))
+        return self._codes(np.asarray(proba), np.asarray(hag_slope), cloud, None, self.switches(overrides))[:2]
 
-    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, roof, on: dict) -> tuple[np.ndarray, np.ndarray]:
-        """ASPRS codes and confidences from the probabilities and the provisional-ground
-        height and slope; ``cloud`` (the same points) enables the refine chain and the roof
-        planarity test (``roof``: the test :meth:`_infer` started, if any); ``on``: the step
-        switches. The chain's ground steps run on the gate's ground, its ``bridges`` step on
-        the classes after the roof test (noise is no deck's surface)."""
+    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, roof, on: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """ASPRS codes, confidences and the gate's ground (:attr:`Prediction.gate`) from the
+        probabilities and the provisional-ground height and slope; ``cloud`` (the same points)
+        enables the refine chain and the roof planarity test (``roof``: the test :meth:`_infer`
+        started, if any); ``on``: the step switches. The chain's ground steps run on the gate's
+        ground, its ``bridges`` step on the classes after the roof test (noise is no deck's
+        surface)."""
         hag = hs[:, 0]
         chain = declare(self.steps, on) if cloud is not None else ()
         xyz = metric_xyz(cloud)[0] if chain else None
         if self.ground_gate:  # (the roof test started by _infer runs on meanwhile)
-            k, conf = self._gated(P, hs, cloud, xyz, tuple(p for p in chain if not isinstance(p, BridgeParams)))
+            gate = self._gate(P, hs)
+            k, conf = self._gated(P, gate, cloud, xyz, tuple(p for p in chain if not isinstance(p, BridgeParams)))
         else:
             k = P.argmax(axis=1)
             conf = P[np.arange(len(P)), k].astype(np.float32)
+            gate = k == 0
         if on["roof_test"]:
             k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, roof))
         codes = self._asprs(k, hag)
         decks = tuple(p for p in chain if isinstance(p, BridgeParams))
         if decks:
             codes[run_chain(Refine(xyz, k == 0, surface=k != 5), decks).deck] = C.BRIDGE_DECK
-        return codes, conf
+        return codes, conf, gate
 
-    def _gated(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, xyz, chain) -> tuple[np.ndarray, np.ndarray]:
-        """Model classes (n,) and confidences of the gate: its ground refined by ``chain`` is
-        class 0 (its water class 3), every other point takes the network's best non-ground
-        class."""
-        ground = self._gate(P, hs)
+    def _gated(self, P: np.ndarray, ground: np.ndarray, cloud: Cloud | None, xyz, chain) -> tuple[np.ndarray, np.ndarray]:
+        """Model classes (n,) and confidences of the gate: its ground ``ground`` refined by
+        ``chain`` is class 0 (its water class 3), every other point takes the network's best
+        non-ground class."""
         water = None
         if chain:
             state = run_chain(Refine(xyz, ground, return_number=cloud.attrs.get("return_number"),
@@ -683,13 +692,13 @@ class PointClassifier:
         return np.where(k == 5, noise, codes).astype(np.uint8)
 
     def predict_codes(self, cloud: Cloud, overrides: StepSwitches | None = None) -> Prediction:
-        """Codes, confidences and probabilities of every point (:class:`Prediction`);
-        ``overrides``: step switches for this call (e.g. ``StepSwitches(roof_test=False)``),
-        the classifier's own left as they are."""
+        """Codes, confidences, probabilities and the gate's ground of every point
+        (:class:`Prediction`); ``overrides``: step switches for this call (e.g.
+        ``StepSwitches(roof_test=False)``), the classifier's own left as they are."""
         on = self.switches(overrides)
         P, hag, roof = self._infer(cloud, roof=on["roof_test"])
-        codes, conf = self._codes(P, hag, cloud, roof, on)
-        return Prediction(codes, conf, P)
+        codes, conf, gate = self._codes(P, hag, cloud, roof, on)
+        return Prediction(codes, conf, P, gate)
 
     def predict(self, cloud: Cloud) -> np.ndarray:
         """ASPRS class codes (n,) uint8 for every point."""
@@ -749,7 +758,8 @@ class PointClassifier:
 
     @classmethod
     def load(cls, path=None, device: str = "auto") -> "PointClassifier":
-        """Load a saved model (the shipped one by default) with ``weights_only=True``."""
+        """Load a saved model (the shipped one by default) with ``weights_only=True``; the
+        step switches as saved (those a model predates on), but ``raised_patches`` on."""
         import torch
 
         p = Path(path) if path is not None else SHIPPED_MODEL
@@ -773,6 +783,7 @@ class PointClassifier:
         fp["min_radii"] = tuple(fp["min_radii"])
         fp.setdefault("ground_trend_slope", 0.0)  # models saved before the slope-adaptive surface
         cfg["device"] = device
+        cfg.pop("raised_patches", None)  # not read: on unless the caller turns it off (see the class doc)
         self = cls(**cfg, feature_params=FeatureParams(**fp))
         from .model import build_mlp
 

@@ -41,13 +41,13 @@ class ClassifyStage:
     model : str or None
         A model file (relative to the project file); None: the shipped model.
     water, roof_test, raised_patches : bool
-        As ``ws classify`` (--no-water, --no-roof-test, --raised-patches).
+        As ``ws classify`` (--no-water, --no-roof-test, --no-raised-patches).
     """
 
     model: str | None = None
     water: bool = True
     roof_test: bool = True
-    raised_patches: bool = False
+    raised_patches: bool = True
 
 
 @dataclass(frozen=True)
