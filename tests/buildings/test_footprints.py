@@ -202,3 +202,20 @@ def test_steps_rebuild_notches_and_wing_ends(corners, a, b, expected):
     assert [g[0] for g in got] == [e[0] for e in expected]
     assert np.allclose([g[1] for g in got], [e[1] for e in expected], atol=0.15)
     assert all(np.allclose(g[2], e[2]) for g, e in zip(got, expected))
+
+
+@pytest.mark.parametrize("density", [4.0, 2.0])
+def test_vacancy_finds_an_empty_corner_that_chance_does_not_leave(density):
+    """Points of a 12 x 10 m rectangle leave no empty region improbable at the 5 % level inside
+    it; without a 3 x 3 m corner (9 m^2, about a twentieth of the points: within two standard
+    deviations of the whole count at 2 points/m^2) the rectangle holds one."""
+    from workstation.buildings.footprints import VACANCY_LEVEL, _vacancy
+
+    rect = np.array([[0, 0], [12, 0], [12, 10], [0, 10]], float)
+    cell = 0.5 / np.sqrt(density)
+    for seed in range(10):
+        rng = np.random.default_rng(seed)
+        pts = rng.uniform([0, 0], [12, 10], (rng.poisson(density * 120), 2))
+        assert _vacancy(rect, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL
+        notch = pts[~((pts[:, 0] > 9) & (pts[:, 1] > 7))]
+        assert _vacancy(rect, notch, density, cell, VACANCY_LEVEL) < 1e-3

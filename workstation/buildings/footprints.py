@@ -15,7 +15,8 @@ without the bias of occupied cells:
    into the frame of their minimum-area rectangle, rasterise them again, open and close the mask
    with a square of the Douglas-Peucker tolerance, trace it, keep axis-parallel edges, merge
    parallel runs, and move every edge to its maximum-likelihood place among the points
-   (:func:`orthogonal_outline`). When the points do not fit that outline (:func:`_outline`),
+   (:func:`orthogonal_outline`). When the points do not fit that outline (:func:`_outline`: too
+   few of them for its area, or an empty region in it that chance would not leave, :func:`_vacancy`),
    it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems: the
    corner regions the tracing breaks into slanted pieces are rebuilt as axis-parallel steps, a
    rectilinear Douglas-Peucker, and steps the points do not support by the Bayesian information
@@ -155,6 +156,10 @@ FINE_RADIUS = 1.5
 #: log(roof density / density of stray points outside a roof): what leaving a point outside an
 #: outline costs against the empty area inside it (strays at 5 % of the roof density).
 STRAY_WEIGHT = 3.0
+
+#: Significance level of the empty-space test of the first outline (:func:`_vacancy`): the
+#: expected number of empty regions as large as its largest, under which the finer pass is tried.
+VACANCY_LEVEL = 0.05
 
 #: Length (in point spacings) left out at both ends of an edge when its points place it: the
 #: corner's own uncertainty, so points of a wing that meets the edge are not taken for its own.
@@ -767,6 +772,53 @@ def _cost(poly: np.ndarray, pts: np.ndarray, density: float, weight: float) -> f
     return weight * n_out + density * P.area
 
 
+def _vacancy(poly: np.ndarray, pts: np.ndarray, density: float, cell: float, level: float) -> float:
+    """Expected number of empty regions as large as the largest one inside ``poly`` that
+    points ``pts`` (m, 2) of a Poisson process of ``density`` per m^2 over ``poly`` would leave
+    (a scan statistic of the empty space: small when the outline takes in an area the points
+    avoid, a filled notch, which a count over the whole outline dilutes); ``inf`` when it is
+    surely not under ``level``.
+
+    On a raster of ``cell`` (m) over the outline, each cell's empty disc reaches its nearest
+    point; its area a is that of the disc's cells inside the outline (a disc at an edge is
+    clipped, as the points are), and the largest k = density x a is kept. Discs of one area a
+    around Poisson points of density d leave about ``d |A| k exp(-k)`` uncovered regions in an
+    area |A| (Janson 1986, Random coverings in several dimensions, Acta Math. 156), which is the
+    value returned. That is under ``level`` only for k above the root k* of ``d |A| k exp(-k) =
+    level`` (a fixed point of ``k = log(d |A| k / level)``), so only cells farther than
+    ``r* = sqrt(k* / (pi d))`` from every point are measured, among those whose box of cells
+    wholly within r* of their centre holds no point (a maximum filter)."""
+    import shapely
+    from scipy import ndimage
+    from scipy.spatial import cKDTree
+
+    P = shapely.Polygon(poly)
+    n = density * P.area
+    k_min = math.log(max(n / level, math.e))
+    for _ in range(4):
+        k_min = math.log(max(n * k_min / level, math.e))
+    r_min = math.sqrt(k_min / (math.pi * density))
+    x0, y0, x1, y1 = P.bounds
+    shape = (int(math.ceil((y1 - y0) / cell)), int(math.ceil((x1 - x0) / cell)))
+    ij = np.floor((pts - [x0, y0]) / cell).astype(np.int64)
+    ij = ij[(ij >= 0).all(axis=1) & (ij[:, 0] < shape[1]) & (ij[:, 1] < shape[0])]
+    occ = np.zeros(shape, np.uint8)
+    occ[ij[:, 1], ij[:, 0]] = 1
+    half = int(r_min / (cell * math.sqrt(2)) - 0.5)  # the box of cells within r* of a cell's centre
+    rows, cols = np.nonzero(ndimage.maximum_filter(occ, size=2 * max(half, 0) + 1, mode="constant") == 0)
+    cand = np.column_stack([x0 + (cols + 0.5) * cell, y0 + (rows + 0.5) * cell])
+    cand = cand[shapely.contains_xy(P, cand[:, 0], cand[:, 1])]
+    r, _ = cKDTree(pts).query(cand) if len(cand) else (np.zeros(0), None)
+    cand, r = cand[r >= r_min], r[r >= r_min]
+    if not len(cand):
+        return math.inf
+    gx, gy = np.meshgrid(x0 + (np.arange(shape[1]) + 0.5) * cell, y0 + (np.arange(shape[0]) + 0.5) * cell)
+    c = np.column_stack([gx.ravel(), gy.ravel()])
+    c = c[shapely.contains_xy(P, c[:, 0], c[:, 1])]
+    k = density * cell * cell * float(cKDTree(c).query_ball_point(cand, r, return_length=True).max())
+    return n * k * math.exp(-k)
+
+
 def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell: float,
              params: FootprintParams) -> np.ndarray:
     """Footprint polygon of one building from its points and traced outline.
@@ -774,12 +826,16 @@ def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell
     The rectilinear outline at ``CORNER_RADIUS`` is kept when the points explain it as well as
     the true outline would on average: its cost (:func:`_cost`) exceeds the number of points,
     the cost's expectation under the true outline, by less than that count's Poisson standard
-    deviation. Otherwise (a stem rounded away leaves points out, a filled notch adds empty area)
+    deviation, and it holds no empty region larger than a Poisson process of the roof density
+    leaves by chance (:func:`_vacancy` at least ``VACANCY_LEVEL``: the global count dilutes a
+    local deficit, and a few per cent of error in the density hide a filled notch in it).
+    Otherwise (a stem rounded away leaves points out, a filled notch adds empty area)
     the outline at ``FINE_RADIUS`` is fitted too and the likelier kept; the regularised outline
     when the building is not orthogonal at either radius."""
     density = ref / (cell * cell)
     first = orthogonal_outline(pts, ring, spacing, ref, CORNER_RADIUS)
-    if first is not None and _cost(first, pts, density, STRAY_WEIGHT) - len(pts) < math.sqrt(len(pts)):
+    if first is not None and _cost(first, pts, density, STRAY_WEIGHT) - len(pts) < math.sqrt(len(pts)) \
+            and _vacancy(first, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL:
         return first
     cands = [c for c in (first, orthogonal_outline(pts, ring, spacing, ref, FINE_RADIUS)) if c is not None]
     if not cands:
