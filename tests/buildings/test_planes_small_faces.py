@@ -122,3 +122,15 @@ def test_both_faces_of_a_dormer_whose_first_proposal_takes_ridge_points():
         assert misfit < 4.0, (tilt, az, misfit)
     for lab in _dormer_face_labels(b, pts, r.labels):
         assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)
+
+
+def test_reassign_with_every_plane_dropped_labels_nothing():
+    """Planes left with under four points are dropped; when none is left, no point keeps a
+    label (a label would index a plane that is gone: the crash of a sparse district)."""
+    from workstation.buildings.planes import _reassign
+
+    pts = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 5, 3], [6, 5, 3], [5, 6, 3.0]])
+    normals = np.array([[0.0, 0, 1], [0, 0, 1]])
+    lab, n, d = _reassign(pts, normals, np.array([0.0, -3.0]), 0.1)
+    assert len(n) == 0 and len(d) == 0
+    assert (lab == -1).all()

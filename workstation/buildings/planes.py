@@ -572,7 +572,6 @@ def _reassign(pts, normals, offsets, band, rounds: int = 2):
     the few such points of the other face turn its plane by degrees; the nearest plane once both
     are known is the better guess. A plane left with under four points is dropped. Returns
     (labels (m,), normals, offsets)."""
-    lab = np.full(len(pts), -1, np.int64)
     for _ in range(rounds):
         if not len(normals):
             break
@@ -584,6 +583,7 @@ def _reassign(pts, normals, offsets, band, rounds: int = 2):
         fits = [fit_plane(pts[lab == q]) for q in keep]
         normals = np.array([f[0] for f in fits]).reshape(-1, 3)
         offsets = np.array([f[1] for f in fits], float)
+    lab = np.full(len(pts), -1, np.int64)  # the labels of the planes kept (none: all -1)
     if len(normals):
         r = np.abs(pts @ normals.T + offsets)
         best = np.argmin(r, axis=1)
