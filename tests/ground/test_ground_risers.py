@@ -62,3 +62,45 @@ def test_auto_runs_the_riser_fill_and_can_leave_it_out():
     assert not on[house].any()
     out = ground_filter(Cloud(xyz), "auto", risers=False)
     assert ((np.asarray(out.attrs["classification"]) == 2) == off).sum() > 0.99 * len(xyz)
+
+
+def test_the_riser_fill_takes_the_raised_patch_tests_tin_only_for_the_same_points():
+    from workstation.ground import common
+    from workstation.ground.patches import raised_patches
+
+    xyz, face, house, shrub = terrace(3)
+    local = xyz - xyz.min(axis=0)
+    ground = ~face & ~house & ~shrub
+    votes = np.where(ground, 5, 1)
+    corner = np.flatnonzero(ground)[0]  # the lowest ground point at the corner: both steps'
+    local[corner] = (0.0, 0.0, local[corner, 2] - 0.2)  # grids and local origins agree
+    tins = common.TinHandoff()
+    g = raised_patches(local, ground, tins=tins)
+    left = tins._tri
+    assert left is not None  # the last pass's TIN, left for a later step
+    made = []
+    real = common.delaunay
+    try:  # count the riser fill's own triangulations
+        common.delaunay = lambda *a, **k: made.append(1) or real(*a, **k)
+        shared = riser_fill(local, g, votes, tins=tins)
+    finally:
+        common.delaunay = real
+    assert not made and tins._tri is None  # taken, not made again; the slot emptied
+    assert np.array_equal(shared, riser_fill(local, g, votes))  # the same ground as its own TIN's
+    # other points (or other coordinates of them) are triangulated anew
+    pts = np.random.default_rng(0).uniform(0, 9, (20, 2))
+    tins.put(pts, left)
+    assert tins.take(pts + 0.0) is left and tins.take(pts) is None
+    tins.put(pts, left)
+    assert tins.take(pts[::-1]) is None and tins.take(pts[:5]) is None
+
+
+def test_a_chain_keeps_the_patch_tin_only_for_a_riser_fill_right_after():
+    from workstation.ground.patches import PatchParams
+    from workstation.ground.refine import Refine, run_chain
+    from workstation.ground.understorey import UnderstoreyParams
+
+    xyz, face, house, shrub = terrace(4)
+    state = Refine(xyz - xyz.min(axis=0), ~face & ~house & ~shrub)
+    for chain in ((PatchParams(),), (PatchParams(), UnderstoreyParams(), RiserParams()), (PatchParams(), RiserParams())):
+        assert run_chain(state, chain).tins._tri is None  # nothing large held after the chain

@@ -193,13 +193,8 @@ def _rays(zp, xp, yp, d, reach: int, p: BridgeParams, cell: float) -> np.ndarray
     empty = np.append(np.isnan(z) | _bumps(zp, d, p.step).ravel(), False)
     z = np.append(z, np.nan)
     # the first answered cell ahead, and how many steps away (pointer doubling over voids)
-    ahead, gap = np.append(nxt, it(sink)), np.ones(n + 1, it)
-    for _ in range(int(np.ceil(np.log2(reach + 1))) + 1):
-        go = empty[ahead]
-        if not go.any():
-            break
-        gap = np.where(go, gap + gap[ahead], gap)
-        ahead = np.where(go, ahead[ahead], ahead)
+    rounds = int(np.ceil(np.log2(reach + 1))) + 1
+    ahead, gap = _jump_voids(np.append(nxt, it(sink)), empty, rounds)
     ahead, gap = ahead[:n], gap[:n]
     filled = ~empty[:n]
     t = ahead
@@ -213,13 +208,7 @@ def _rays(zp, xp, yp, d, reach: int, p: BridgeParams, cell: float) -> np.ndarray
         drop = filled & ~cont & (dz >= p.step) & (dz >= p.gradient * dist) & (gap <= reach)
     # follow the continuous surface to its end: the terminal cell and the steps to it
     end, steps = np.where(cont, t, idx), np.where(cont, gap, 0).astype(it)
-    end, steps = np.append(end, it(sink)), np.append(steps, it(0))
-    for _ in range(int(np.ceil(np.log2(reach + 1))) + 1):
-        nxt_end = end[end]
-        if (nxt_end == end).all():
-            break
-        steps = np.minimum(steps + steps[end], reach + 1)
-        end = nxt_end
+    end, steps = _follow_chains(np.append(end, it(sink)), np.append(steps, it(0)), reach + 1, rounds)
     end, steps = end[:n], steps[:n]
     depth = np.full(n, np.nan)
     hit = filled & (steps <= reach) & (end < n)
@@ -228,6 +217,42 @@ def _rays(zp, xp, yp, d, reach: int, p: BridgeParams, cell: float) -> np.ndarray
     ok = drop[e] & (np.abs(z[hit_idx] - z[e]) <= p.clearance)
     depth[hit_idx[ok]] = np.minimum(z[hit_idx[ok]], z[e[ok]]) - zt[e[ok]]
     return depth.reshape(rows, cols)
+
+
+def _jump_voids(ahead: np.ndarray, empty: np.ndarray, rounds: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pointer doubling over the ``empty`` cells: each cell's pointer ``ahead`` (changed in
+    place) moves on to the first cell ahead that is not empty, at most ``rounds`` doublings;
+    returns it and the steps it took (``gap``). Each round updates only the cells whose pointer
+    still rests on an empty cell (a pointer on an answered cell never moves again), all from
+    the previous round's values: the same as doubling every cell, for the work of the active
+    ones."""
+    gap = np.ones(ahead.shape, ahead.dtype)
+    act = np.flatnonzero(empty[ahead])
+    for _ in range(rounds):
+        if act.size == 0:
+            break
+        a = ahead[act]
+        gap[act] += gap[a]
+        ahead[act] = ahead[a]
+        act = act[empty[ahead[act]]]
+    return ahead, gap
+
+
+def _follow_chains(end: np.ndarray, steps: np.ndarray, cap: int, rounds: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pointer doubling along the chains ``end`` (changed in place, as ``steps``) to their
+    terminal cells (those pointing to themselves), at most ``rounds`` doublings; ``steps``
+    (capped at ``cap``) counts the steps to the terminal. A cell whose pointer rests on a
+    terminal cell is done (the terminal adds 0 steps), so each round updates only the others,
+    all from the previous round's values: the same as doubling every cell."""
+    act = np.flatnonzero(end[end] != end)
+    for _ in range(rounds):
+        if act.size == 0:
+            break
+        e = end[act]
+        steps[act] = np.minimum(steps[act] + steps[e], cap)
+        end[act] = end[e]
+        act = act[end[end[act]] != end[act]]
+    return end, steps
 
 
 def _drops(z, x, y, p: BridgeParams, cell: float) -> np.ndarray:

@@ -431,6 +431,41 @@ def delaunay(pts: np.ndarray, jitter: float = 0.0, cells: np.ndarray | None = No
     return Delaunay(pts)
 
 
+class TinHandoff:
+    """One Delaunay TIN handed from a step to a later one that may triangulate the same points.
+
+    A step leaves its TIN with the exact array it triangulated (:meth:`put`); a later step
+    asks for the TIN of its own array (:meth:`take`) and gets it only when the two arrays hold
+    the same coordinates bit for bit, in the same order, and triangulates them itself
+    otherwise. Qhull's output is a function of its input alone, so the TIN taken is the one
+    the step would have made. The raised-patch test leaves the TIN of its last pass; when that
+    pass took nothing out and its lowest ground point per cell and its local origin are the
+    riser fill's (the ground reaches the cloud's lowest x and y: ISPRS samp51 and samp61,
+    Topography), the riser fill takes it instead of making it again.
+    """
+
+    def __init__(self):
+        self._pts: np.ndarray | None = None
+        self._tri = None
+
+    def put(self, pts: np.ndarray, tri) -> None:
+        """Leave ``tri``, the TIN of ``pts`` (kept as given: not to be changed afterwards)."""
+        self._pts, self._tri = pts, tri
+
+    def clear(self) -> None:
+        """Drop the TIN left (before a new one is made: one at a time in memory)."""
+        self._pts = self._tri = None
+
+    def take(self, pts: np.ndarray):
+        """The TIN left for an array equal to ``pts`` bit for bit, else None; the slot is
+        emptied either way (a TIN is large)."""
+        left, tri = self._pts, self._tri
+        self.clear()
+        if left is None or left.shape != pts.shape or left.dtype != pts.dtype:
+            return None
+        return tri if np.ascontiguousarray(left).tobytes() == np.ascontiguousarray(pts).tobytes() else None
+
+
 def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
     """Fill NaN cells smoothly: linear interpolation over a Delaunay TIN of the filled cells
     that border an empty one, nearest value outside their hull (the role of SMRF's image
@@ -579,14 +614,41 @@ def disk(radius: int) -> np.ndarray:
     return x * x + y * y <= r * r
 
 
+def _grow_chord(chord: np.ndarray, spare: np.ndarray, a: np.ndarray, w: int, target: int, op) -> tuple:
+    """The running minimum (maximum: ``op``) of each row of ``a`` over a chord of half-width
+    ``w`` (``chord``; edges extend outward), grown to half-width ``target``: returns the chord
+    array (``chord`` or ``spare``, the other being free), the other array and ``target``.
+
+    One cell at a time, the chord takes in ``a`` ``w`` cells away on either side; a jump of
+    ``s = target - w ≥ 2`` cells with ``2 w ≥ target`` takes the chord ``s`` cells away on either
+    side instead, whose windows with the chord's own cover the wider one (at a row's ends too).
+    Both cost two minima (maxima) per row, and minima and maxima are exact, so any covering of
+    the window gives the same values."""
+    m = a.shape[1]
+    while w < target:
+        s = target - w
+        if s >= 2 and 2 * w >= target:
+            if s < m:
+                op(chord[:, : m - s], chord[:, s:], out=spare[:, : m - s])
+                spare[:, m - s :] = chord[:, m - s :]
+                op(spare[:, s:], chord[:, : m - s], out=spare[:, s:])
+                chord, spare = spare, chord
+            w = target
+        else:
+            w += 1
+            if w < m:
+                op(chord[:, : m - w], a[:, w:], out=chord[:, : m - w])
+                op(chord[:, w:], a[:, : m - w], out=chord[:, w:])
+    return chord, spare, w
+
+
 def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
     """Grey erosion/dilation by :func:`disk` as a union of its rows (edges extend outward).
 
-    The running minimum (maximum) of each row over a chord of half-width ``w`` is that of
-    half-width ``w - 1`` with the two cells ``w`` away on either side (an edge cell is already
-    in it), so the chords are grown one cell at a time, from the narrowest to the widest, and
-    each is taken into the result, shifted by its row offset, as soon as it has its width:
-    two in-place minima (maxima) per width and one per row of the disk, O(cells · radius).
+    The running minimum (maximum) of each row over a chord of the row offset's half-width is
+    grown from the narrowest to the widest (:func:`_grow_chord`), and each is taken into the
+    result, shifted by its row offset, as soon as it has its width: one in-place minimum
+    (maximum) per row of the disk and two per distinct chord width, O(cells · radius).
     Minima and maxima are exact, so the result does not depend on the order they are taken in.
     ``a`` holds no NaN (a NaN spreads over its whole footprint): mark empty cells with ±inf.
     """
@@ -594,16 +656,12 @@ def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
     r = fp.shape[0] // 2
     op = np.minimum if erode else np.maximum
     halfw = fp.sum(axis=1) // 2  # chord half-width per row offset
-    n, m = a.shape
+    n = a.shape[0]
     out = np.full(a.shape, np.inf if erode else -np.inf)
-    chord = a.copy()
+    chord, spare = a.copy(), np.empty_like(a)
     w = 0
     for k in np.argsort(halfw, kind="stable"):  # row offsets, narrowest chord first
-        while w < halfw[k]:
-            w += 1
-            if w < m:
-                op(chord[:, : m - w], a[:, w:], out=chord[:, : m - w])
-                op(chord[:, w:], a[:, : m - w], out=chord[:, w:])
+        chord, spare, w = _grow_chord(chord, spare, a, w, int(halfw[k]), op)
         dy = int(k) - r
         # out[i] = op(out[i], chord[i + dy]) where i + dy is inside the grid
         lo, hi = max(0, -dy), min(n, n - dy)

@@ -72,17 +72,23 @@ class PatchParams:
     max_passes: int = 3
 
 
-def _tin_edges(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Directed edges (each undirected TIN edge both ways) of the plan Delaunay TIN of ``xy``."""
+def _tin_edges(xy: np.ndarray, tins=None) -> tuple[np.ndarray, np.ndarray]:
+    """Directed edges (each undirected TIN edge both ways) of the plan Delaunay TIN of ``xy``;
+    the TIN is left in ``tins`` (a :class:`workstation.ground.common.TinHandoff`) when given."""
     from .common import delaunay
 
-    tri = delaunay(xy - xy.min(axis=0))
+    pts = xy - xy.min(axis=0)
+    if tins is not None:
+        tins.clear()  # the previous pass's TIN is not needed any more
+    tri = delaunay(pts)
+    if tins is not None:
+        tins.put(pts, tri)
     indptr, indices = tri.vertex_neighbor_vertices
     src = np.repeat(np.arange(len(xy)), np.diff(indptr))
     return src, indices
 
 
-def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchParams()) -> np.ndarray:
+def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchParams(), tins=None) -> np.ndarray:
     """Ground flags (m,) bool with the raised patches taken out.
 
     Parameters
@@ -91,6 +97,9 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
         Local metric coordinates.
     ground : (m,) bool
         A ground filter's result.
+    tins : TinHandoff, optional
+        Where the last pass's TIN is left for a later step
+        (:class:`workstation.ground.common.TinHandoff`).
     """
     from scipy import ndimage
     from scipy.sparse import coo_matrix
@@ -110,7 +119,7 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
         rep = cell_rep[cell_rep >= 0]
         pts = xyz[idx[rep]]
         try:
-            src, dst = _tin_edges(pts[:, :2])
+            src, dst = _tin_edges(pts[:, :2], tins)
         except (QhullError, ValueError):  # collinear or too few distinct points: no TIN, nothing to test
             break
         dz = pts[src, 2] - pts[dst, 2]

@@ -47,7 +47,7 @@ True
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Callable, Mapping
 
 import numpy as np
@@ -60,6 +60,7 @@ from . import risers as _risers
 from . import understorey as _understorey
 from . import water as _water
 from .bridges import BridgeParams
+from .common import TinHandoff
 from .patches import PatchParams
 from .risers import RiserParams
 from .understorey import UnderstoreyParams
@@ -90,6 +91,10 @@ class Refine:
         (NaN elsewhere).
     deck : (m,) bool or None
         Points of bridge decks (None until the bridge step runs).
+    tins : TinHandoff
+        A TIN one step leaves for a later one on the same points
+        (:class:`workstation.ground.common.TinHandoff`; the raised-patch test's for the riser
+        fill).
     """
 
     xyz: np.ndarray
@@ -101,18 +106,19 @@ class Refine:
     water: np.ndarray | None = None
     water_confidence: np.ndarray | None = None
     deck: np.ndarray | None = None
+    tins: TinHandoff = field(default_factory=TinHandoff)
 
 
 def raised_patches(state: Refine, p: PatchParams) -> Refine:
     """The raised patches out of the ground (:func:`workstation.ground.patches.raised_patches`)."""
-    return replace(state, ground=_patches.raised_patches(state.xyz, state.ground, p))
+    return replace(state, ground=_patches.raised_patches(state.xyz, state.ground, p, state.tins))
 
 
 def risers(state: Refine, p: RiserParams) -> Refine:
     """The rejected points of unresolved terrain steps into the ground, those that at least
     ``p.min_votes`` members accepted when ``state.votes`` is given
     (:func:`workstation.ground.risers.riser_fill`)."""
-    return replace(state, ground=_risers.riser_fill(state.xyz, state.ground, state.votes, p))
+    return replace(state, ground=_risers.riser_fill(state.xyz, state.ground, state.votes, p, state.tins))
 
 
 def understorey(state: Refine, p: UnderstoreyParams) -> Refine:
@@ -195,11 +201,16 @@ def declare(steps, on: Mapping[str, bool] | None = None, params: Mapping[str, ob
 
 
 def run_chain(state: Refine, chain) -> Refine:
-    """``state`` after each step of ``chain`` (parameter objects, see :func:`declare`) in order."""
-    for p in chain:
+    """``state`` after each step of ``chain`` (parameter objects, see :func:`declare`) in order.
+
+    A TIN a step leaves (``state.tins``) is kept only for a riser fill right after it."""
+    chain = tuple(chain)
+    for i, p in enumerate(chain):
         step = _BY_PARAMS.get(type(p))
         if step is None:
             raise InvalidInputError(f"{type(p).__name__} is no refine step's parameters",
                                     "the steps take " + ", ".join(t.__name__ for t in _BY_PARAMS), field="chain")
         state = step(state, p)
+        if not (i + 1 < len(chain) and isinstance(chain[i + 1], RiserParams)):
+            state.tins.clear()
     return state
