@@ -12,7 +12,7 @@ Four lines against the benchmark's true pose (`gt.txt`, p_21 = T p_34):
    share of source points within 1, 2 and 3 cm of the target at the truth and at that pose.
 
     PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py [--data ../shared/data]
-    PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py --rooms 6 [--first SEED] [--ranks]
+    PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py --rooms 6 [--first SEED] [--ranks [--peaks N]]
     PYTHONPATH=. .venv/bin/python scripts/bench_register_rgbd.py --planes 2
 
 ``--rooms N`` runs the plane method instead on N simulated cluttered rooms
@@ -94,10 +94,11 @@ def within(M: np.ndarray, T: np.ndarray, degrees: float, metres: float) -> bool:
     return rot < degrees and shift < metres
 
 
-def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
-    """Where the true pose ``T`` stands among the plane method's candidates, prepared as
-    ``register`` prepares them: the agreement rank of the first raw hypothesis within 6 deg /
-    30 cm; the rank of the first verified (coarse) pose within 10 deg / 20 cm; the consistency,
+def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt, peaks: int | None = None) -> str:
+    """Where the true pose ``T`` stands among the plane method's candidates (``peaks``
+    shifts per turn, the default when None), prepared as ``register`` prepares them: the
+    agreement rank of the first raw hypothesis within 6 deg / 30 cm and where the short ICP
+    takes it; the rank of the first verified (coarse) pose within 10 deg / 20 cm; the consistency,
     free-space share and verified fitness of the true pose (after the same short ICP) against
     the winner's."""
     from workstation.core.geometry import default_origin
@@ -109,7 +110,7 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
 
     origin = default_origin(tgt)
     radii = Radii(estimate_voxel_size(tgt - origin))
-    v, P = radii.voxel, PlaneCoarseParams()
+    v, P = radii.voxel, PlaneCoarseParams() if peaks is None else PlaneCoarseParams(peaks=peaks)
     vps = tuple(None if p is None else np.asarray(p) - origin for p in (vs, vt))
     ps, pt = (prepare(x - origin, radii, features=False, viewpoint=p) for x, p in ((src, vps[0]), (tgt, vps[1])))
     TL = local_transform(T, origin, origin)
@@ -118,20 +119,26 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt) -> str:
     if not len(Ts):
         return "raw rank - of 0 (no plane pair gives a pose)"
     raw = [k for k, M in enumerate(Ts) if within(M, TL, 6, 0.3)]
+    icp = ""
+    if raw:
+        e0 = pose_error(Ts[raw[0]], TL)
+        e1 = pose_error(refine(ps.down, pt.down, v, Ts[raw[0]], QUICK_ICP, information=False).transform, TL)
+        icp = f" ({e0[0]:.1f} deg {e0[1]:.2f} m, after the short ICP {e1[0]:.1f} deg {e1[1]:.2f} m)"
     r = verify_plane_hypotheses(ps, pt, scores, Ts, P, images)
     m = r.meta
     ok = [k for k, M in enumerate(m["hypotheses"]) if within(M, TL, 10, 0.2)]
     q = refine(ps.down, pt.down, v, TL, QUICK_ICP, information=False)
     free = free_space_violations(ps.down, pt.down, q.transform, images, P.free_margin * v)
-    return (f"raw rank {raw[0] if raw else '-'} of {len(Ts)}, verified rank {ok[0] if ok else '-'} of "
+    return (f"raw rank {raw[0] if raw else '-'} of {len(Ts)}{icp}, verified rank {ok[0] if ok else '-'} of "
             f"{len(m['hypotheses'])}; truth: consistency {consistency(ps.down, pt.down, q.transform, v):.3f} "
             f"free {free:.3f} fitness {q.fitness:.3f}; winner ({pose_error(m['hypotheses'][0], TL)[0]:.0f} deg): "
             f"consistency {m['consistency'][0]:.3f} free {m['free_space'][0]:.3f} fitness {r.fitness:.3f}")
 
 
-def rooms(n: int, first: int = 0, ranks: bool = False) -> None:
+def rooms(n: int, first: int = 0, ranks: bool = False, peaks: int | None = None) -> None:
     """The plane method (point-to-point fine stage) on ``n`` simulated room view pairs (seeds
-    ``first`` on), the sensor positions given; with ``ranks``, where the true pose ranks."""
+    ``first`` on), the sensor positions given; with ``ranks``, where the true pose ranks
+    (among the candidates of ``peaks`` shifts per turn, the default when None)."""
     import sys
 
     from workstation.core.cloud import Cloud
@@ -158,7 +165,7 @@ def rooms(n: int, first: int = 0, ranks: bool = False) -> None:
         print(f"room {seed}: overlap {overlap:.2f}, {len(a)}/{len(b)} points: {rot:.2f} deg {shift:.3f} m, "
               f"{time.process_time() - c0:.1f} s CPU, {time.perf_counter() - w0:.1f} s wall", flush=True)
         if ranks:
-            print(f"  {ranking(src, tgt, T, vs, vt)}", flush=True)
+            print(f"  {ranking(src, tgt, T, vs, vt, peaks)}", flush=True)
     print(f"right (< 5 deg, < 10 cm): {right} of {n}")
 
 
@@ -168,10 +175,12 @@ def main() -> None:
     ap.add_argument("--rooms", type=int, default=0, help="run the plane method on this many simulated rooms instead")
     ap.add_argument("--first", type=int, default=0, help="seed of the first simulated room")
     ap.add_argument("--ranks", action="store_true", help="with --rooms: where the true pose ranks among the candidates")
+    ap.add_argument("--peaks", type=int, default=None,
+                    help="with --ranks: in-plane shifts kept per turn for the ranking (the method's default if unset)")
     ap.add_argument("--planes", type=int, default=0, help="only line 2 (the plane method), this many rounds")
     args = ap.parse_args()
     if args.rooms:
-        return rooms(args.rooms, args.first, args.ranks)
+        return rooms(args.rooms, args.first, args.ranks, args.peaks)
     folder = Path(args.data) / PAIR
     T = np.loadtxt(folder / "gt.txt")
     src, tgt = read_cloud(folder / "cloud_bin_34.ply"), read_cloud(folder / "cloud_bin_21.ply")

@@ -319,8 +319,9 @@ def test_plane_coarse_params_reject_invalid_values():
     from workstation.registration.planes import PlaneCoarseParams
 
     for field, value in (("free_margin", -1.0), ("free_cell", 0.0), ("step_deg", 0.0), ("verify", 0),
-                         ("min_share", 1.0), ("distance", -0.5)):
+                         ("min_share", 1.0), ("distance", -0.5), ("least_overlap", 1.5), ("least_overlap", -0.1)):
         with pytest.raises(InvalidInputError) as e:
             PlaneCoarseParams(**{field: value})
         assert e.value.field == field
     PlaneCoarseParams(free_margin=0.0)
+    PlaneCoarseParams(least_overlap=0.0)

@@ -38,8 +38,10 @@ phase-correlation idea of 2.5-D map matching, applied above a matched plane.
 Limits: in rooms whose views are mostly floor and plain walls, a turn by 90 or 180 degrees
 can lay floor on floor and wall on wall with more overlap than the true pose and with the
 moved points outside the other sensor's observed free space, so neither consistency nor the
-free-space test rejects it; the method is opt-in (``--method planes``) and its result should
-be checked.
+free-space test rejects it. In such views the floor pins neither the turn nor the shift in
+the plane: a near-true hypothesis can rank below the verified few on agreement, and the short
+ICP can slide it along the floor towards more overlap. The method is opt-in
+(``--method planes``) and its result should be checked.
 """
 
 from __future__ import annotations
@@ -83,6 +85,11 @@ class PlaneCoarseParams:
         Source points of the fast agreement score.
     verify : int
         Distinct best-scoring poses refined by ICP and ranked by consistency.
+    least_overlap : float
+        Only verified poses whose overlap (ICP fitness) reaches this share of the best one's
+        are ranked: a pose barely touching the other cloud has neither agreement nor
+        conflict. Low, because in views that are mostly floor a wrong turn laying floor on
+        floor can overlap 2-3 times more than the true pose.
     free_margin : float
         Depth by which a point must lie in front of the other sensor's observed surface to
         count as a free-space violation (absorbs range noise and fused-fragment blur).
@@ -100,6 +107,7 @@ class PlaneCoarseParams:
     peaks: int = 3
     sample: int = 800
     verify: int = 32
+    least_overlap: float = 0.25
     free_margin: float = 3.0
     free_cell: float = 2.0
 
@@ -117,6 +125,8 @@ class PlaneCoarseParams:
         if not 0.0 <= self.normal_angle_deg <= 90.0:
             raise InvalidInputError(f"normal_angle_deg must lie in [0, 90], got {self.normal_angle_deg}",
                                     field="normal_angle_deg")
+        if not 0.0 <= self.least_overlap <= 1.0:
+            raise InvalidInputError(f"least_overlap must lie in [0, 1], got {self.least_overlap}", field="least_overlap")
         if not self.free_margin >= 0:
             raise InvalidInputError(f"free_margin must not be negative, got {self.free_margin}", field="free_margin")
 
@@ -310,9 +320,10 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
     agreement ``scores``), each refined by a short point-to-plane ICP, by two-way surface
     consistency less the free-space violation share (:func:`free_space_violations` in
     ``images``, the :class:`RangeImage` of source and target; zero for a cloud whose image is
-    None). Only poses whose verified overlap reaches half the best one's are ranked (a pose
-    barely touching the other cloud has neither agreement nor conflict). ``meta`` holds the
-    ranked poses (``hypotheses``), best first, with their ``consistency`` and ``free_space``."""
+    None). Only poses whose verified overlap reaches ``least_overlap`` of the best one's are
+    ranked (a pose barely touching the other cloud has neither agreement nor conflict).
+    ``meta`` holds the ranked poses (``hypotheses``), best first, with their ``consistency``
+    and ``free_space``."""
     from .icp import QUICK_ICP, refine
     from .register import _distinct_pose, consistency
 
@@ -332,7 +343,7 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
         cands.append((consistency(src.down, tgt.down, q.transform, v), free, float(q.fitness), q))
         log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f, free-space %.3f",
                  s, q.fitness, cands[-1][0], free)
-    least = 0.5 * max(c[2] for c in cands)
+    least = params.least_overlap * max(c[2] for c in cands)
     order = sorted((c for c in cands if c[2] >= least), key=lambda c: c[1] - c[0])
     best = order[0][3]
     meta = {"consistency": [round(c[0], 4) for c in order], "free_space": [round(c[1], 4) for c in order],
