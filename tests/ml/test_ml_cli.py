@@ -102,6 +102,44 @@ def test_ground_method_ml_member_vote_option(tmp_path, capsys):
     assert main(["ground", str(src), "-o", str(tmp_path / "x.laz"), "--method", "csf", "--member-vote"]) == 2
 
 
+def test_ground_method_ml_member_vote_follows_raised_patches(tmp_path, capsys, monkeypatch):
+    """--member-vote --no-raised-patches runs the raised-patch test nowhere (neither in the
+    classifier's chain nor in auto's); --member-vote alone runs it."""
+    import workstation.ground.patches as patches
+
+    calls = []
+    real = patches.raised_patches
+
+    def counted(*a, **k):  # the real test, counted
+        calls.append(1)
+        return real(*a, **k)
+
+    monkeypatch.setattr(patches, "raised_patches", counted)
+    src = tmp_path / "in.laz"
+    write_cloud(two_class_scene(6), src)
+    ran = {}
+    for name, extra in (("on", []), ("off", ["--no-raised-patches"])):
+        calls.clear()
+        assert main(["ground", str(src), "-o", str(tmp_path / f"{name}.laz"), "--method", "ml", "--member-vote",
+                     *extra]) == 0
+        ran[name] = len(calls)
+    assert ran["off"] == 0 and ran["on"] >= 1
+
+
+def test_ground_method_ml_member_vote_refuses_clouds_over_the_tile_size(tmp_path, capsys):
+    """The member vote runs untiled: a cloud over --tile-points is a usage error naming
+    --member-vote; --tile-points 0 lifts the limit."""
+    src = tmp_path / "in.laz"
+    write_cloud(two_class_scene(6), src)  # 10,800 points
+    out = tmp_path / "mv.laz"
+    assert main(["ground", str(src), "-o", str(out), "--method", "ml", "--member-vote", "--tile-points", "5000"]) == 2
+    assert "--member-vote" in capsys.readouterr().err
+    assert not out.exists()
+    assert main(["ground", str(src), "-o", str(out), "--method", "ml", "--member-vote", "--tile-points", "0"]) == 0
+    assert main(["ground", str(src), "-o", str(tmp_path / "plain.laz"), "--method", "ml", "--tile-points",
+                 "5000"]) == 0
+
+
 def test_classify_roof_test_options(tmp_path, capsys):
     """The shipped model with and without the roof planarity test, and a looser tolerance:
     switching the test off or loosening it never gives fewer building points."""

@@ -27,11 +27,12 @@ def test_isprs_mean_total_error(shipped, shared_data):
 
     s = isprs_scores(lambda c: shipped.predict(c) == C.GROUND, shared_data / "isprs")
     assert len(s) == 7
-    # measured 3.24 % (3.49 % without the raised-patch step; 3.68 % before the slope-adaptive
-    # provisional surface); the
-    # 0.05 margin is for floating-point differences between CPUs, not for the model
+    # measured 3.24 % (3.49 % without the raised-patch step, 3.68 % before the slope-adaptive
+    # provisional surface), and samp42 1.54 % (2.90 % without the raised-patch step, so the
+    # bound catches the step switched off); the margins cover floating-point differences
+    # between CPUs, not the model
     assert s["mean_total"] <= 3.3, s["mean_total"]
-    assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 3.2
+    assert s["samp31"]["total"] <= 2.5 and s["samp21"]["total"] <= 2.0 and s["samp42"]["total"] <= 1.8, s
 
 
 @pytest.mark.parametrize("name", ["MixedConifer.laz", "Topography.laz", "bcts_1.laz", "bcts_2.laz", "autzen_trim.las"])
@@ -116,8 +117,8 @@ def test_ml_ground_member_vote_on_isprs(shared_data):
 
     p = MLGroundParams(device="cpu", member_vote=True)
     s = isprs_scores(lambda c: np.asarray(ml_ground(c, p).attrs["classification"]) == C.GROUND, shared_data / "isprs")
-    # measured 2.85 % (8.42, 1.33, 2.07, 1.09, 2.14, 2.04; auto 2.91 %: 7.92, 1.47, 2.56, 1.46,
+    # measured 2.84 % (7.87, 1.31, 2.11, 1.50, 2.27, 2.00; auto 2.91 %: 7.92, 1.47, 2.56, 1.46,
     # 2.46, 1.55): samp61's embankment crests, which the network's provisional surface cuts,
-    # come back with the members (2.60 -> 2.04 %)
+    # come back with the members (2.60 -> 2.00 %); samp42 is 3.48 % without the raised patches
     assert s["mean_total"] <= 2.9, s["mean_total"]
-    assert s["samp61"]["total"] <= 2.2 and s["samp42"]["total"] <= 1.3 and s["samp11"]["total"] <= 8.5, s
+    assert s["samp61"]["total"] <= 2.1 and s["samp42"]["total"] <= 1.6 and s["samp11"]["total"] <= 8.0, s

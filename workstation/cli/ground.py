@@ -74,7 +74,7 @@ def _filter_option(field: str, *decls, **attrs) -> dict:
     _filter_option("member_vote", "--member-vote/--no-member-vote",
                    help=f"{_for('member_vote')} the classifier's ground gate votes with auto's five members (ground "
                         "where 4 of the 6 accept a point), then auto's refine chain; costs the members' run time "
-                        "(default off)."),
+                        "and, untiled, refuses clouds of more than --tile-points points (default off)."),
     _filter_option("risers", "--risers/--no-risers",
                    help=f"{_for('risers')} put back rejected points on terrain steps the ground TIN spans (default on)."),
     _filter_option("max_window", "--max-window", type=positive_length, help=f"{_for('max_window')} largest window size, metres."),
@@ -113,7 +113,8 @@ def ground(src, output, method, preset, reclassify, all_returns, noise, noise_st
     Lengths are in metres whatever the CRS unit (a feet CRS is converted). Points already in
     classes other than 0, 1 and 2 keep them unless --reclassify. A cloud of more than
     --tile-points points is filtered tile by tile, each tile with --tile-buffer metres of its
-    neighbours (the point classifier, --method ml, tiles on its own).
+    neighbours; the point classifier (--method ml) tiles on its own, but with --member-vote it
+    refuses a cloud of more than --tile-points points.
     """
     import time
 
@@ -172,8 +173,9 @@ def _method_params(method: str, preset: str, given: dict, reclassify: bool):
 
 def _filter(cloud, method: str, params, given: dict, noise: bool, tiles: dict):
     """Classify noise first if asked, size the default cells by the points, then run the filter:
-    the point classifier, tile by tile above ``tiles["tile_points"]`` points (``tiles``: the
-    fields of :class:`~workstation.ground.tiles.TileParams`), or on the whole cloud.
+    the point classifier (its member vote refused above ``tiles["tile_points"]`` points), or
+    another filter tile by tile above ``tiles["tile_points"]`` points (``tiles``: the fields of
+    :class:`~workstation.ground.tiles.TileParams`) or on the whole cloud.
     Returns ``(classified cloud, the parameters used)``."""
     from workstation.ground.methods import methods
 
@@ -188,12 +190,23 @@ def _filter(cloud, method: str, params, given: dict, noise: bool, tiles: dict):
     if method == "ml":
         from workstation.ml.ground import ml_ground
 
+        _check_member_vote_size(cloud.n, params, tiles["tile_points"])
         return ml_ground(cloud, params), params
     if tiles["tile_points"] and cloud.n > tiles["tile_points"]:
         from workstation.ground.tiles import ground_tiled
 
         return ground_tiled(cloud, method, params, TileParams(**tiles)), params
     return methods()[method].func(cloud, params), params
+
+
+def _check_member_vote_size(n: int, params, tile_points: int) -> None:
+    """Refuse ``--member-vote`` on a cloud of more than ``tile_points`` points (0: no limit):
+    auto's members then run on the whole cloud at once, not tile by tile."""
+    if params.member_vote and tile_points and n > tile_points:
+        raise click.UsageError(
+            f"--member-vote runs auto's five members on the whole cloud, not tile by tile, and the cloud has {n} "
+            f"points (over --tile-points {tile_points}); cut it first (ws tile), drop --member-vote, or raise "
+            "--tile-points if the memory allows (0 = no limit)")
 
 
 def _after_filter(out, water: bool, hag: bool):
