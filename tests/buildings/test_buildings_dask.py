@@ -112,8 +112,14 @@ def _held_dtm(monkeypatch):
 
 
 def _children() -> set:
+    """This process's child processes, with multiprocessing's resource tracker started first: the
+    first cluster of a process starts it, a child that lives as long as the process, so a test
+    run alone would count it as a process its cluster left behind."""
+    import multiprocessing.resource_tracker
+
     import psutil
 
+    multiprocessing.resource_tracker.ensure_running()
     return {p.pid for p in psutil.Process().children(recursive=True)}
 
 

@@ -219,3 +219,27 @@ def test_vacancy_finds_an_empty_corner_that_chance_does_not_leave(density):
         assert _vacancy(rect, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL
         notch = pts[~((pts[:, 0] > 9) & (pts[:, 1] > 7))]
         assert _vacancy(rect, notch, density, cell, VACANCY_LEVEL) < 1e-3
+
+
+@pytest.mark.parametrize("chain, value", [([[0, 0], [1, 0], [1, 1], [2, 1]], 1.0),
+                                          ([[0, 0], [1, 0], [2, 0], [2, 1], [3, 1]], 2.0)])
+def test_steps_between_parallel_lines_with_inner_points_on_them(chain, value):
+    """Parallel lines 1 m apart (y = 0 and y = 1) joined by a traced chain whose inner points all
+    lie exactly on one or the other (no deviation anywhere): the crossing goes through the middle
+    of the chain's points, the line x = 1 or x = 2 heading up (the selection of the points at
+    least half the largest deviation holds them all, none being more)."""
+    from workstation.buildings.footprints import _steps
+
+    got = _steps(np.array(chain, float), (0, 0.0, np.array([1.0, 0])), (0, 1.0, np.array([1.0, 0])), 0.8)
+    assert len(got) == 1 and got[0][0] == 1
+    assert got[0][1] == value and np.allclose(got[0][2], [0.0, 1.0])
+
+
+@pytest.mark.parametrize("n, density", [(0, 4.0), (50, 0.0), (50, -1.0)])
+def test_vacancy_without_points_or_density_is_infinite(n, density):
+    """No points, or no positive density, give no scan statistic: ``inf`` (never under a level)."""
+    from workstation.buildings.footprints import _vacancy
+
+    rect = np.array([[0, 0], [12, 0], [12, 10], [0, 10]], float)
+    pts = np.random.default_rng(0).uniform([0, 0], [12, 10], (n, 2))
+    assert _vacancy(rect, pts, density, 0.25, 0.05) == np.inf

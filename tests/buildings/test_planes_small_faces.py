@@ -134,3 +134,26 @@ def test_reassign_with_every_plane_dropped_labels_nothing():
     lab, n, d = _reassign(pts, normals, np.array([0.0, -3.0]), 0.1)
     assert len(n) == 0 and len(d) == 0
     assert (lab == -1).all()
+
+
+def test_wall_points_leave_the_vertical_noise_and_the_dormer_faces():
+    """District seed 19, building 11 with 400 points of a facade under its longest footprint edge
+    (3 cm noise, 0.3-4 m below the eaves): segmentation finds a near-vertical plane through them,
+    whose residuals over its cosine of tilt (near zero) would set the vertical noise to metres
+    and fail the dormer faces' tests. Pooled over the roof planes only, the noise stays the
+    roof's and the four true faces are found, each within 4 degrees."""
+    b, pts, _ = segment_building(19, 11)
+    fp = np.asarray(b.footprint())
+    k = int(np.argmax(np.linalg.norm(np.roll(fp, -1, 0) - fp, axis=1)))
+    a, c = fp[k], fp[(k + 1) % len(fp)]
+    rng = np.random.default_rng(0)
+    t, z = rng.uniform(0, 1, 400), rng.uniform(pts[:, 2].min() - 4, pts[:, 2].min() - 0.3, 400)
+    wall = np.column_stack([a + (c - a) * t[:, None] + rng.normal(0, 0.03, (400, 2)), z])
+    r = segment_planes(np.vstack([pts, wall]))
+    roof = r.normals[:, 2] >= np.cos(np.radians(70.0))
+    lab = r.labels[: len(pts)]
+    on = (lab >= 0) & roof[np.maximum(lab, 0)]
+    assert (~roof).any()  # the facade is a plane: the case under test
+    assert on.mean() > 0.9
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < 4.0, (tilt, az, misfit)

@@ -685,51 +685,64 @@ def _heading(a: np.ndarray, b: np.ndarray, default: np.ndarray) -> np.ndarray:
 def _steps(chain: np.ndarray, a: tuple, b: tuple, tol: float, depth: int = 0) -> list:
     """Axis-parallel lines (class, value, direction) to put between lines ``a`` and ``b`` so
     the outline passes within ``tol`` (m) of the traced points ``chain`` (m, 2) that join them:
-    a rectilinear Douglas-Peucker. When ``a`` and ``b`` are perpendicular and the chain strays
-    farther than ``tol`` from their corner, a step (two lines through a chain point q) is added:
-    the q whose outline strays least from the chain, which is the inner corner of a notch and the
-    outer corner of a wing's end. Parallel lines ``tol`` or more apart get the perpendicular
-    line at the median of the middle half of the chain; closer ones a parallel line through the
-    chain's farthest point when it is beyond ``tol`` (a bump or notch in a side). Both halves
-    of the chain, split at the new lines, are treated the same way. The class of a line is 0
-    along x (its value y), 1 along y (its value x); directions follow the ring."""
+    a rectilinear Douglas-Peucker. Perpendicular ``a`` and ``b`` may get a step
+    (:func:`_corner_step`), parallel ones a crossing line or a bump (:func:`_side_step`). Both
+    halves of the chain, split at the new lines' chain point, are treated the same way. The
+    class of a line is 0 along x (its value y), 1 along y (its value x); directions follow the
+    ring."""
     inner = chain[1:-1]
     if len(inner) < 1 or depth > 8:
         return []
-    (ca, va, da), (cb, vb, db) = a, b
-    if ca != cb:
-        corner = np.empty(2)
-        corner[1 - ca], corner[1 - cb] = va, vb
-        s, e = chain[0].copy(), chain[-1].copy()
-        s[1 - ca], e[1 - cb] = va, vb
-        if _path_deviation(inner, np.array([[s, corner, e]])).max() <= tol:
-            return []
-        # outlines s, c1, q, c2, e for every chain point q (c1 on line a, c2 on line b)
-        m = len(inner)
-        verts = np.repeat(np.array([[s, s, s, e, e]]), m, axis=0)
-        verts[:, 1, 1 - cb] = verts[:, 2, 1 - cb] = inner[:, 1 - cb]
-        verts[:, 2, 1 - ca] = verts[:, 3, 1 - ca] = inner[:, 1 - ca]
-        i = int(np.argmin(_path_deviation(inner, verts).max(axis=1)))
-        p = inner[i]
-        add = [(cb, float(p[1 - cb]), _heading(verts[i, 1], p, db)), (ca, float(p[1 - ca]), _heading(p, verts[i, 3], da))]
-    else:
-        off = inner[:, 1 - ca]
-        dev = np.minimum(np.abs(off - va), np.abs(off - vb))
-        i = int(np.argmax(dev))
-        p = inner[i]
-        if abs(va - vb) >= tol:
-            mid = np.flatnonzero(dev > 0.5 * dev[i])
-            at = float(np.median(inner[mid, ca]))
-            i = int(mid[np.argmin(np.abs(inner[mid, ca] - at))])
-            d = np.zeros(2)
-            d[1 - ca] = math.copysign(1.0, vb - va)
-            add = [(1 - ca, at, d)]
-        elif dev[i] > tol:
-            add = [(ca, float(p[1 - ca]), da)]
-        else:
-            return []
+    i, add = (_corner_step if a[0] != b[0] else _side_step)(chain, inner, a, b, tol)
+    if not add:
+        return []
     k = i + 1
     return _steps(chain[:k + 1], a, add[0], tol, depth + 1) + add + _steps(chain[k:], add[-1], b, tol, depth + 1)
+
+
+def _corner_step(chain, inner, a, b, tol):
+    """For perpendicular lines ``a`` and ``b`` (:func:`_steps`): nothing (``(0, [])``) when the
+    chain stays within ``tol`` of their corner, else a step, two lines through a chain point q:
+    the q whose outline (s, c1, q, c2, e, c1 on line a, c2 on line b) strays least from the
+    chain, which is the inner corner of a notch and the outer corner of a wing's end. Returns
+    (the index of q in ``inner``, the lines)."""
+    (ca, va, da), (cb, vb, db) = a, b
+    corner = np.empty(2)
+    corner[1 - ca], corner[1 - cb] = va, vb
+    s, e = chain[0].copy(), chain[-1].copy()
+    s[1 - ca], e[1 - cb] = va, vb
+    if _path_deviation(inner, np.array([[s, corner, e]])).max() <= tol:
+        return 0, []
+    verts = np.repeat(np.array([[s, s, s, e, e]]), len(inner), axis=0)
+    verts[:, 1, 1 - cb] = verts[:, 2, 1 - cb] = inner[:, 1 - cb]
+    verts[:, 2, 1 - ca] = verts[:, 3, 1 - ca] = inner[:, 1 - ca]
+    i = int(np.argmin(_path_deviation(inner, verts).max(axis=1)))
+    p = inner[i]
+    return i, [(cb, float(p[1 - cb]), _heading(verts[i, 1], p, db)),
+               (ca, float(p[1 - ca]), _heading(p, verts[i, 3], da))]
+
+
+def _side_step(chain, inner, a, b, tol):
+    """For parallel lines ``a`` and ``b`` (:func:`_steps`), with each inner chain point's
+    deviation the smaller of its offsets from the two: when they are ``tol`` or more apart, the
+    perpendicular line through the middle of the crossing, the median (along the lines) of the
+    points whose deviation is at least half the largest (every one when the chain has none); when
+    closer, a parallel line through the farthest point if it is beyond ``tol`` (a bump or notch
+    in a side), else nothing (``(0, [])``). Returns (the index in ``inner`` of the point the new
+    line passes, the lines)."""
+    (ca, va, da), (cb, vb, db) = a, b
+    off = inner[:, 1 - ca]
+    dev = np.minimum(np.abs(off - va), np.abs(off - vb))
+    i = int(np.argmax(dev))
+    if abs(va - vb) >= tol:
+        mid = np.flatnonzero(dev >= 0.5 * dev[i])  # holds i
+        at = float(np.median(inner[mid, ca]))
+        d = np.zeros(2)
+        d[1 - ca] = math.copysign(1.0, vb - va)
+        return int(mid[np.argmin(np.abs(inner[mid, ca] - at))]), [(1 - ca, at, d)]
+    if dev[i] > tol:
+        return i, [(ca, float(inner[i, 1 - ca]), da)]
+    return 0, []
 
 
 def _fit_offsets(dirs, mids, lengths, pts, tol, margin, min_band, density, weight):
@@ -792,6 +805,8 @@ def _vacancy(poly: np.ndarray, pts: np.ndarray, density: float, cell: float, lev
     from scipy import ndimage
     from scipy.spatial import cKDTree
 
+    if density <= 0 or not len(pts):
+        return math.inf
     P = shapely.Polygon(poly)
     n = density * P.area
     k_min = math.log(max(n / level, math.e))
@@ -812,7 +827,10 @@ def _vacancy(poly: np.ndarray, pts: np.ndarray, density: float, cell: float, lev
     cand, r = cand[r >= r_min], r[r >= r_min]
     if not len(cand):
         return math.inf
-    gx, gy = np.meshgrid(x0 + (np.arange(shape[1]) + 0.5) * cell, y0 + (np.arange(shape[0]) + 0.5) * cell)
+    reach = float(r.max())  # the cells any disc can hold: the candidates' window widened by it
+    j0, i0 = np.maximum(np.floor((cand.min(axis=0) - reach - [x0, y0]) / cell).astype(np.int64) - 1, 0)
+    j1, i1 = np.minimum(np.ceil((cand.max(axis=0) + reach - [x0, y0]) / cell).astype(np.int64) + 1, shape[::-1])
+    gx, gy = np.meshgrid(x0 + (np.arange(j0, j1) + 0.5) * cell, y0 + (np.arange(i0, i1) + 0.5) * cell)
     c = np.column_stack([gx.ravel(), gy.ravel()])
     c = c[shapely.contains_xy(P, c[:, 0], c[:, 1])]
     k = density * cell * cell * float(cKDTree(c).query_ball_point(cand, r, return_length=True).max())

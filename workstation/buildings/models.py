@@ -237,9 +237,10 @@ def detach_raised(part_of_plane, dropped, steps, min_cells: int = 4, borders=Non
     or a raised annex joined to the main roof by its valleys but standing on it behind a front
     wall, which the part's continuous roof cannot hold. The detached planes that touch form one
     new part each. With ``borders`` (p, p) (the shared cell borders of :func:`border_steps`), a
-    left-out plane sharing a border with a detached one of its part goes with it: the other face
-    of a dormer, whose front wall the raster gave to the first face, meets the main roof in a
-    valley only and the detached face at the dormer's ridge."""
+    left-out plane sharing a border with a detached one of its part goes with it, and so on
+    through left-out planes that touch (one shared cell border suffices): the other face of a
+    dormer, whose front wall the raster gave to the first face, meets the main roof in a valley
+    only and the detached face at the dormer's ridge."""
     from .planes import small_components
 
     p = len(part_of_plane)

@@ -140,8 +140,8 @@ def reconstruct_buildings(xyz: np.ndarray, classification: np.ndarray, params: B
     planes and model (:func:`build_unit`) follow one after the other, or, with ``workers`` > 1
     or a ``scheduler`` address, in batches on a Dask cluster (a local one of ``workers``
     single-threaded processes, started while the district raster is made, or the running one
-    at ``scheduler``): the same models, in the same order, either way. Spawned worker processes need the ``if __name__ == "__main__":``
-    guard in a script that asks for them.
+    at ``scheduler``): the same models, in the same order, either way. Spawned worker processes
+    need the ``if __name__ == "__main__":`` guard in a script that asks for them.
     """
     if workers < 1:
         raise InvalidInputError(f"workers {workers} is below 1", "use 1 or more processes", field="workers")
@@ -226,18 +226,27 @@ def _district_pass(xyz, cls, bxyz, params, footprints, threads, t) -> DistrictPa
 
 
 def _on_cluster(xyz, cls, bxyz, params, footprints, workers: int, scheduler: str | None, t: dict, t0: float):
-    """:func:`_district_pass` (on ``workers`` threads, one with a ``scheduler``) in a thread
-    while the Dask cluster starts (or is reached) here, then its buildings on the cluster:
-    (district pass, :func:`build_unit` results in building order). The cluster is closed on
-    the way out, an error or Ctrl-C included; a Ctrl-C while the workers start is lost
-    (:func:`workstation.core.signals.workers_starting`), one after is raised at once."""
+    """:func:`_district_pass` in a thread (:func:`workstation.core.dasktasks.alongside`), then
+    its buildings on the Dask cluster: (district pass, :func:`build_unit` results in building
+    order). With a local cluster the pass, on ``workers`` threads, overlaps the workers' start
+    here; a running ``scheduler`` is reached first (an address that fails costs no pass, and
+    the overlap would gain nothing), the pass on one thread beside the workers' imports. The
+    cluster is closed on the way out, an error or Ctrl-C included; a Ctrl-C while the workers
+    start is lost (:func:`workstation.core.signals.workers_starting`), one after is raised at
+    once. On an error or Ctrl-C the pass's thread still runs to its end, its CPU not reclaimed."""
     from workstation.core.dasktasks import alongside, wait_for
     from workstation.core.signals import caught_signals
 
     td: dict = {}  # the district pass's seconds, taken into t once it is done
-    pending = alongside(_district_pass, xyz, cls, bxyz, params, footprints, 1 if scheduler else workers, td)
+
+    def district():
+        return alongside(_district_pass, xyz, cls, bxyz, params, footprints, 1 if scheduler else workers, td)
+
+    pending = None if scheduler else district()
     with _dask_client(workers, scheduler) as client, caught_signals() as latch:
         t["cluster_s"] = time.perf_counter() - t0
+        if pending is None:
+            pending = district()
         # the workers import while the district pass ends (futures held till the end)
         warm = [client.submit(_warm_up, pure=False, workers=[w]) for w in client.scheduler_info()["workers"]]
         t1 = time.perf_counter()

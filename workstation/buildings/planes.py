@@ -474,8 +474,12 @@ def pooled_noise(xyz, labels, normals, offsets, vertical: bool = False) -> float
     squares; the local PCA figure of :func:`local_geometry` is biased low, being the smallest of
     three eigenvalues of small neighbourhoods). With ``vertical``, the noise along z: each
     residual over its plane's cosine of tilt (airborne ranging noise is about vertical, and a
-    plane tilted by t sees sigma_z cos(t) of it along its normal)."""
+    plane tilted by t sees sigma_z cos(t) of it along its normal), pooled over the roof planes
+    only (no steeper than :data:`MAX_ROOF_TILT_DEG`): on a wall the cosine nears zero and the
+    quotient grows without bound."""
     on = labels >= 0
+    if vertical:
+        on &= np.abs(normals[np.maximum(labels, 0), 2]) >= math.cos(math.radians(MAX_ROOF_TILT_DEG))
     if not on.any():
         return float("nan")
     r = np.einsum("ij,ij->i", normals[labels[on]], xyz[on]) + offsets[labels[on]]
@@ -570,8 +574,10 @@ def _reassign(pts, normals, offsets, band, rounds: int = 2):
     smoothness term). Sequential RANSAC gives a point within the band of two planes (near where
     two small faces meet, a dormer's ridge) to the plane drawn first, and on a face of 20 points
     the few such points of the other face turn its plane by degrees; the nearest plane once both
-    are known is the better guess. A plane left with under four points is dropped. Returns
-    (labels (m,), normals, offsets)."""
+    are known is the better guess. A plane left with under four points in an assignment is
+    dropped before its refit; the last assignment follows the last refit, so a plane may end
+    with fewer than four points (the caller's tests reject it). Returns (labels (m,), normals,
+    offsets)."""
     for _ in range(rounds):
         if not len(normals):
             break
@@ -653,7 +659,7 @@ def _residual_faces(xyz, labels, normals, offsets, idx, eps, params, spacing):
                                  sigma * pn[q, 2], eps, spacing)
             if loose is None:  # the smaller proposals of the cluster are not tested
                 break
-            out[free[members[on]]] = len(known_n) - len(normals) + labels.max() + 1
+            out[free[members[on]]] = len(known_n)  # the face's row in known_n
             promised.append(loose)
             known_n, known_d = np.vstack([known_n, pn[q]]), np.r_[known_d, pd[q]]
     return out, np.r_[np.zeros(len(normals), bool), np.array(promised, bool)]

@@ -71,7 +71,8 @@ def alongside(fn: Callable, *args) -> Future:
     only (threads it starts inherit the mask), and a signal held back during the cluster's
     start (:func:`workstation.core.signals.workers_starting`) is not taken there. Being a
     daemon, it is never joined: a caller that gives up on the future (an error, Ctrl-C)
-    returns at once, and the thread's result is dropped when it ends."""
+    returns at once, while the thread runs ``fn`` to its end (nothing stops it, its CPU is
+    not reclaimed) and its result is dropped."""
     import signal
     import threading
 
