@@ -9,6 +9,8 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
     PYTHONPATH=. python scripts/bench_classify.py simtiles           # whole sim validation tiles, roof test on/off
     PYTHONPATH=. python scripts/bench_classify.py simwater           # water on the sim validation tiles, step on/off
+    PYTHONPATH=. python scripts/bench_classify.py vegdiag            # real tiles: confusion, steps off one at a time
+    PYTHONPATH=. python scripts/bench_classify.py simroof            # sim tiles: what the roof test and understorey step move
 
 Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
 """
@@ -225,6 +227,72 @@ def simwater():
                                              ("precision", tp / max(p, 1)))})
 
 
+def _confusion(ref: np.ndarray, pred: np.ndarray) -> dict:
+    """{reference code: {predicted code: count}} of two code arrays."""
+    return {int(r): {int(p): int(n) for p, n in zip(*np.unique(pred[ref == r], return_counts=True))}
+            for r in np.unique(ref)}
+
+
+def vegdiag(model=None):
+    """Vegetation diagnosis on the real tiles with vegetation classes (the check, not a tuning
+    set): the confusion matrix (reference code -> predicted code -> points), then building and
+    vegetation F1 with each step switch off in turn and with all off, and the points that
+    switch changes (reference code -> "code with the step off->code with it on" -> points)."""
+    from dataclasses import fields
+
+    from workstation.io import read_cloud
+    from workstation.ml.classifier import PointClassifier, StepSwitches
+    from workstation.ml.realdata import VEG, f1
+
+    clf = PointClassifier.load(model, device="cpu")
+    names = [f.name for f in fields(StepSwitches)]
+    for f in ("warsaw_small.las", "lidarhd_extra_bytes.laz", "sample_c.las"):
+        cloud = read_cloud(DATA / "lidar" / f)
+        ref = np.asarray(cloud.attrs["classification"])
+        base = clf.predict_codes(cloud).codes
+        emit(bench="veg_confusion", file=f, confusion=_confusion(ref, base))
+        runs = [("none", None)] + [(n, StepSwitches(**{n: False})) for n in names]
+        runs.append(("all", StepSwitches(**{n: False for n in names})))
+        for off, sw in runs:
+            pred = base if sw is None else clf.predict_codes(cloud, sw).codes
+            ch = pred != base
+            moved = {int(r): {f"{a // 256}->{a % 256}": int(n) for a, n in
+                              zip(*np.unique(pred[ch & (ref == r)].astype(int) * 256 + base[ch & (ref == r)], return_counts=True))}
+                     for r in np.unique(ref[ch])}
+            emit(bench="veg_steps_off", file=f, off=off, changed=int(ch.sum()), building_f1=f1(ref == 6, pred == 6),
+                 vegetation_f1=f1(np.isin(ref, VEG), np.isin(pred, VEG)), moved_off_to_on=moved)
+
+
+def simroof():
+    """On the whole simulated validation tiles (a tuning set): the points the roof test takes
+    from building and those the understorey step takes from ground, by their true model class
+    (ground, vegetation, building, water, other, noise) and the code they take now, summed
+    over the tiles; and the roof test's failures by true class and single / multi-echo pulse."""
+    from workstation.ml.classifier import PointClassifier, StepSwitches
+    from workstation.ml.dataset import MODEL_CLASSES, asprs_to_model, load_dataset_recipe, simulated_tiles
+
+    recipe = load_dataset_recipe(REPO / "datasets_synth" / "ml_train.toml")
+    clf = PointClassifier.load(None, device="cpu")
+    steps = {"roof_test": 6, "understorey": 2}  # step -> the code it takes points from
+    table = {k: np.zeros((len(MODEL_CLASSES), 256), np.int64) for k in steps}
+    echoes = np.zeros((len(MODEL_CLASSES), 2), np.int64)  # roof failures: single / multi-echo pulses
+    for _name, _seed, _t, _val, cloud, _rng in simulated_tiles(recipe, validation_only=True):
+        true = asprs_to_model(np.asarray(cloud.attrs["classification"]))
+        on = clf.predict_codes(cloud).codes
+        for step, code in steps.items():
+            off = clf.predict_codes(cloud, StepSwitches(**{step: False})).codes
+            moved = (off == code) & (on != code)
+            np.add.at(table[step], (true[moved], on[moved]), 1)
+            if step == "roof_test":
+                nr = np.asarray(cloud.attrs.get("number_of_returns", np.ones(cloud.n)))  # some tiles have none
+                np.add.at(echoes, (true[moved], (nr[moved] > 1).astype(int)), 1)
+    for step, t in table.items():
+        emit(bench="sim_step_moves", step=step, by_true_class={
+            MODEL_CLASSES[i]: {int(c): int(n) for c, n in enumerate(row) if n} for i, row in enumerate(t) if row.any()})
+    emit(bench="sim_roof_failures_by_echoes", by_true_class={
+        MODEL_CLASSES[i]: {"single_echo": int(a), "multi_echo": int(b)} for i, (a, b) in enumerate(echoes) if a + b})
+
+
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
@@ -244,5 +312,9 @@ if __name__ == "__main__":
         simtiles()
     elif what == "simwater":
         simwater()
+    elif what == "vegdiag":
+        vegdiag(model)
+    elif what == "simroof":
+        simroof()
     else:
         raise SystemExit(f"unknown benchmark {what!r}")

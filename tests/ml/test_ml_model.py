@@ -290,3 +290,31 @@ def test_water_step_makes_still_water_class_9(tiny_model, tmp_path):
         assert loaded.water is False and loaded.config()["water"] is False
     finally:
         tiny_model.water = True
+
+
+def test_roof_failures_of_multi_echo_pulses_take_vegetation(tiny_model):
+    """A crown the network calls building, with "other" as its second class: the roof test
+    sends its single-echo points to "other" and its points of multi-echo pulses to
+    vegetation; without return numbers nothing but the network's order decides."""
+    from tests.ml.test_ml_roofs import gabled_house_and_crown
+
+    xyz, label, hag = gabled_house_and_crown(seed=5)
+    n = len(xyz)
+    crown = label == 5
+    multi = crown & (np.arange(n) % 2 == 0)
+    nr = np.where(multi, 2, 1).astype(np.uint8)
+    cloud = Cloud(xyz + [500000, 5000000, 100], {"return_number": np.ones(n, np.uint8), "number_of_returns": nr},
+                  crs="EPSG:32632")
+    P = np.zeros((n, len(MODEL_CLASSES)), np.float32)
+    P[label == 2, 0] = 1.0
+    P[label != 2, 2], P[label != 2, 4], P[label != 2, 1] = 0.7, 0.2, 0.1  # building, then other, vegetation
+    hs = np.column_stack([hag, np.zeros(n)]).astype(np.float32)
+    codes, conf = tiny_model.codes_from_proba(P, hs, cloud)
+    moved = crown & (codes != C.BUILDING)
+    assert moved.mean() / crown.mean() > 0.8
+    assert (codes[moved & multi] == C.HIGH_VEGETATION).all()
+    assert (codes[moved & ~multi] == C.UNCLASSIFIED).all()
+    np.testing.assert_allclose(conf[moved & multi], 0.1 / 0.3, rtol=1e-5)
+    assert (codes[label == 6] == C.BUILDING).mean() > 0.97
+    plain = tiny_model.codes_from_proba(P, hs, cloud.without_attrs("return_number", "number_of_returns"))[0]
+    assert (plain[moved] == C.UNCLASSIFIED).all()

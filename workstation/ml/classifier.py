@@ -15,6 +15,8 @@ the largest feature radius, each point taking the prediction of the tile whose c
 
 References
 ----------
+A. Alharthy, J. Bethel (2002). Heuristic filtering and 3D feature extraction from LIDAR data.
+ISPRS Archives XXXIV-3A:29-34.
 L. Breiman (2001). Random forests. Machine Learning 45:5-32.
 """
 
@@ -241,8 +243,9 @@ class PointClassifier:
         nearest raised points nor any of its four half-discs fits a plane within
         ``roof_tolerance``; one test per 1 m voxel, each point taking the majority of the 5
         tests nearest to it) take the network's best class other than ground and building
-        (:class:`workstation.ml.roofs.RoofTest`, lasclassify's ``-planar`` test). A rule,
-        not learned; its settings were chosen on the LiDAR HD tile.
+        (:class:`workstation.ml.roofs.RoofTest`, lasclassify's ``-planar`` test), vegetation
+        for a point of a pulse with several echoes. A rule, not learned; its settings were
+        chosen on the LiDAR HD tile.
     roof_tolerance : float
         RMS distance (m) to the local plane above which a building point fails the roof
         test (0.08); raise it for a noisy scan, as lasclassify's documentation advises for
@@ -638,7 +641,9 @@ class PointClassifier:
             conf = P[np.arange(len(P)), k].astype(np.float32)
             gate = k == 0
         if on["roof_test"]:
-            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, roof))
+            nr = None if cloud is None else cloud.attrs.get("number_of_returns")
+            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, roof),
+                                         None if nr is None else np.asarray(nr) > 1)
         codes = self._asprs(k, hag)
         decks = tuple(p for p in chain if isinstance(p, BridgeParams))
         if decks:
@@ -665,15 +670,21 @@ class PointClassifier:
         return k, conf
 
     @staticmethod
-    def _roof_classes(P: np.ndarray, k: np.ndarray, conf: np.ndarray, fail) -> tuple[np.ndarray, np.ndarray]:
+    def _roof_classes(P: np.ndarray, k: np.ndarray, conf: np.ndarray, fail,
+                      multi: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
         """Building points (class 2 of ``k``) that ``fail`` the roof test take the network's best
-        class other than ground and building, with its share of those classes' probability."""
+        class other than ground and building, with its share of those classes' probability;
+        those of pulses with several echoes (``multi``: ``number_of_returns > 1``, None when
+        unknown) take vegetation: rough and penetrated by the pulse, the canopy signature that
+        first/last-pulse methods tell trees from roofs by (Alharthy & Bethel 2002)."""
         if fail is None:
             return k, conf
         fail &= k == 2
         if fail.any():
             others = np.array([1, 3, 4, 5])  # vegetation, water, other, noise
             best = others[P[fail][:, others].argmax(axis=1)]
+            if multi is not None:
+                best = np.where(multi[fail], 1, best)
             k = k.copy()
             k[fail] = best
             conf = conf.copy()
