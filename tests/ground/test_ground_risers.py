@@ -64,43 +64,93 @@ def test_auto_runs_the_riser_fill_and_can_leave_it_out():
     assert ((np.asarray(out.attrs["classification"]) == 2) == off).sum() > 0.99 * len(xyz)
 
 
-def test_the_riser_fill_takes_the_raised_patch_tests_tin_only_for_the_same_points():
-    from workstation.ground import common
-    from workstation.ground.patches import raised_patches
-
+def _corner_scene():
+    """terrace(3) in local coordinates, its ground (the face, house and shrub left out) and
+    votes, with the lowest ground point moved to the corner (0, 0): the raised-patch test's and
+    the riser fill's grids and local origins agree, so the riser fill can take the patch TIN."""
     xyz, face, house, shrub = terrace(3)
     local = xyz - xyz.min(axis=0)
     ground = ~face & ~house & ~shrub
-    votes = np.where(ground, 5, 1)
-    corner = np.flatnonzero(ground)[0]  # the lowest ground point at the corner: both steps'
-    local[corner] = (0.0, 0.0, local[corner, 2] - 0.2)  # grids and local origins agree
+    corner = np.flatnonzero(ground)[0]
+    local[corner] = (0.0, 0.0, local[corner, 2] - 0.2)
+    return local, ground, np.where(ground, 5, 1)
+
+
+def _count_riser_triangulations(monkeypatch) -> list:
+    """A list that gets one entry per Delaunay triangulation the riser fill makes (those of
+    other steps are not counted)."""
+    from workstation.ground import common, risers
+
+    made, inside = [], []
+    real_tin, real_fill = common.delaunay, risers.riser_fill
+
+    def tin(*a, **k):
+        if inside:
+            made.append(1)
+        return real_tin(*a, **k)
+
+    def fill(*a, **k):
+        inside.append(1)
+        try:
+            return real_fill(*a, **k)
+        finally:
+            inside.pop()
+
+    monkeypatch.setattr(common, "delaunay", tin)
+    monkeypatch.setattr(risers, "riser_fill", fill)
+    return made
+
+
+def test_the_riser_fill_takes_the_raised_patch_tests_tin_only_for_the_same_points(monkeypatch):
+    from workstation.ground import common, risers
+    from workstation.ground.patches import raised_patches
+
+    local, ground, votes = _corner_scene()
     tins = common.TinHandoff()
     g = raised_patches(local, ground, tins=tins)
-    left = tins._tri
-    assert left is not None  # the last pass's TIN, left for a later step
-    made = []
-    real = common.delaunay
-    try:  # count the riser fill's own triangulations
-        common.delaunay = lambda *a, **k: made.append(1) or real(*a, **k)
-        shared = riser_fill(local, g, votes, tins=tins)
-    finally:
-        common.delaunay = real
-    assert not made and tins._tri is None  # taken, not made again; the slot emptied
-    assert np.array_equal(shared, riser_fill(local, g, votes))  # the same ground as its own TIN's
+    assert tins._slot is not None  # the last pass's TIN, left for a later step
+    left = tins._slot[1]
+    made = _count_riser_triangulations(monkeypatch)
+    shared = risers.riser_fill(local, g, votes, tins=tins)
+    assert not made and tins._slot is None  # taken, not made again; the slot emptied
+    own = risers.riser_fill(local, g, votes)
+    assert len(made) == 1 and np.array_equal(shared, own)  # the same ground as its own TIN's
     # other points (or other coordinates of them) are triangulated anew
     pts = np.random.default_rng(0).uniform(0, 9, (20, 2))
     tins.put(pts, left)
     assert tins.take(pts + 0.0) is left and tins.take(pts) is None
     tins.put(pts, left)
     assert tins.take(pts[::-1]) is None and tins.take(pts[:5]) is None
+    tins.put(pts, left)
+    assert tins.take(pts.astype(np.float32)) is None  # another dtype
+    tins.put(pts, left)
+    assert tins.take(np.asfortranarray(pts)) is left  # the same values in another layout
+    tins.put(pts.astype(np.float32), left)
+    assert tins.take(pts.astype(np.float32)) is left  # other dtypes compare byte for byte
+    tins.put(np.zeros(3), left)
+    assert tins.take(-np.zeros(3)) is None  # bit for bit: -0.0 is not 0.0
 
 
-def test_a_chain_keeps_the_patch_tin_only_for_a_riser_fill_right_after():
+def test_a_chain_hands_the_patch_tin_only_to_a_riser_fill_right_after(monkeypatch):
+    from workstation.ground import common
     from workstation.ground.patches import PatchParams
     from workstation.ground.refine import Refine, run_chain
     from workstation.ground.understorey import UnderstoreyParams
 
-    xyz, face, house, shrub = terrace(4)
-    state = Refine(xyz - xyz.min(axis=0), ~face & ~house & ~shrub)
-    for chain in ((PatchParams(),), (PatchParams(), UnderstoreyParams(), RiserParams()), (PatchParams(), RiserParams())):
-        assert run_chain(state, chain).tins._tri is None  # nothing large held after the chain
+    local, ground, votes = _corner_scene()
+    made = _count_riser_triangulations(monkeypatch)
+    mine = common.TinHandoff()
+    marker = (np.zeros((3, 2)), object())
+    mine.put(*marker)
+    state = Refine(local, ground, votes=votes, tins=mine)
+    outs = {}
+    for chain in ((PatchParams(), RiserParams()), (PatchParams(), UnderstoreyParams(), RiserParams()), (PatchParams(),)):
+        made.clear()
+        out = run_chain(state, chain)
+        outs[len(chain)] = (len(made), out.ground)
+        assert out.tins._slot is None  # nothing large held after the chain
+        assert mine._slot is not None and mine._slot[1] is marker[1]  # the caller's handoff untouched
+    assert outs[2][0] == 0  # the riser fill took the patch test's TIN
+    assert outs[3][0] == 1  # not across another step: triangulated anew
+    assert outs[2][1].sum() > outs[1][1].sum()  # the fill ran and added ground
+    assert np.array_equal(outs[2][1], outs[3][1])  # the same ground either way (no return numbers)

@@ -2,10 +2,11 @@
 final test on it flags what a fresh triangulation of the ground points flags."""
 
 import numpy as np
+import pytest
 from scipy.spatial import Delaunay, cKDTree
 
 from workstation.ground import common
-from workstation.ground.ptd import PTDParams, _delaunay, _densify, ptd_ground
+from workstation.ground.ptd import PTDParams, _delaunay, _densify, densify, ptd_ground
 
 
 def _terrain(n: int, seed: int) -> np.ndarray:
@@ -56,9 +57,13 @@ def _final_by_fresh_tin(xyz: np.ndarray, gidx: np.ndarray, threshold: float, sca
     return out
 
 
-def test_final_test_on_the_densified_tin_equals_a_fresh_triangulation(monkeypatch):
+@pytest.mark.parametrize("chunk, ratio", [(1 << 18, 20), (1000, 20), (1 << 18, 0)])
+def test_final_test_on_the_densified_tin_equals_a_fresh_triangulation(monkeypatch, chunk, ratio):
+    # the walk on the updated TIN in one chunk or many, and the fresh TIN of a dense cloud
     import workstation.ground.ptd as ptd
 
+    monkeypatch.setattr(ptd, "_WALK_CHUNK", chunk)
+    monkeypatch.setattr(ptd, "_FRESH_RATIO", ratio)
     xyz = _terrain(20000, 7)
     p = PTDParams(final_scalar=1.0)
     seen = {}
@@ -94,3 +99,23 @@ def test_bulk_transforms_locate_as_scipy_does():
     q = rng.uniform(-5.0, 55.0, (20000, 2))
     q = q[np.lexsort((q[:, 0], np.floor(q[:, 1])))]
     assert np.array_equal(common.locate(_delaunay(xy), q), Delaunay(xy).find_simplex(q))
+
+
+def test_densify_skips_the_final_tin_update():
+    xyz = _terrain(6000, 5)
+    cand = xyz[np.lexsort((xyz[:, 0], np.floor(xyz[:, 1])))]
+    ground, tin, near = _densify(cand, PTDParams(), None)
+    bare = _densify(cand, PTDParams(), None, with_tin=False)
+    assert bare[1] is None and bare[2] is None
+    assert np.array_equal(bare[0], ground) and np.array_equal(densify(cand, PTDParams()), ground)
+
+
+def test_bulk_transforms_fill_only_an_empty_cache():
+    xy = np.random.default_rng(4).uniform(0.0, 10.0, (50, 2))
+    tri = Delaunay(xy)
+    assert common.with_bulk_transforms(tri) is tri
+    assert np.array_equal(tri.transform, common.barycentric_transforms(xy, tri.simplices), equal_nan=True)
+    own = Delaunay(xy)
+    own.transform  # scipy's own, cached on first use
+    kept = own._transform
+    assert common.with_bulk_transforms(own)._transform is kept

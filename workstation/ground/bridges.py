@@ -241,9 +241,10 @@ def _jump_voids(ahead: np.ndarray, empty: np.ndarray, rounds: int) -> tuple[np.n
 def _follow_chains(end: np.ndarray, steps: np.ndarray, cap: int, rounds: int) -> tuple[np.ndarray, np.ndarray]:
     """Pointer doubling along the chains ``end`` (changed in place, as ``steps``) to their
     terminal cells (those pointing to themselves), at most ``rounds`` doublings; ``steps``
-    (capped at ``cap``) counts the steps to the terminal. A cell whose pointer rests on a
-    terminal cell is done (the terminal adds 0 steps), so each round updates only the others,
-    all from the previous round's values: the same as doubling every cell."""
+    (capped at ``cap``) counts the steps to the terminal. Preconditions: every terminal cell
+    holds 0 steps and every cell at most ``cap`` on entry. A cell whose pointer rests on a
+    terminal cell is then done (the terminal adds 0 steps), so each round updates only the
+    others, all from the previous round's values: the same as doubling every cell."""
     act = np.flatnonzero(end[end] != end)
     for _ in range(rounds):
         if act.size == 0:

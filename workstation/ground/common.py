@@ -375,6 +375,18 @@ def barycentric_transforms(points: np.ndarray, simplices: np.ndarray) -> np.ndar
     return out
 
 
+def with_bulk_transforms(tri):
+    """``tri`` (a scipy ``Delaunay``, returned) with the barycentric transforms its
+    ``find_simplex`` walks on computed in bulk (:func:`barycentric_transforms`) instead of
+    triangle by triangle as scipy builds them on first use. ``_transform`` is scipy's private
+    cache of them (checked with scipy 1.17: the bulk-location test of the PTD TIN and the
+    inpainting test on a curved surface fail if it is ignored or misread); it is filled only
+    while empty, and a ``Delaunay`` without it is left alone."""
+    if getattr(tri, "_transform", False) is None:
+        tri._transform = barycentric_transforms(tri.points, tri.simplices)
+    return tri
+
+
 def locate(tri, q: np.ndarray) -> np.ndarray:
     """Triangle index (k,) of each point ``q`` (k, 2) in a scipy ``Delaunay``, -1 outside,
     with BLAS on one thread (see :func:`_one_blas_thread`); queries in raster order keep the
@@ -445,25 +457,36 @@ class TinHandoff:
     """
 
     def __init__(self):
-        self._pts: np.ndarray | None = None
-        self._tri = None
+        self._slot: tuple[np.ndarray, object] | None = None  # (points, TIN), set and taken whole
 
     def put(self, pts: np.ndarray, tri) -> None:
         """Leave ``tri``, the TIN of ``pts`` (kept as given: not to be changed afterwards)."""
-        self._pts, self._tri = pts, tri
+        self._slot = (pts, tri)
 
     def clear(self) -> None:
         """Drop the TIN left (before a new one is made: one at a time in memory)."""
-        self._pts = self._tri = None
+        self._slot = None
 
     def take(self, pts: np.ndarray):
         """The TIN left for an array equal to ``pts`` bit for bit, else None; the slot is
         emptied either way (a TIN is large)."""
-        left, tri = self._pts, self._tri
-        self.clear()
-        if left is None or left.shape != pts.shape or left.dtype != pts.dtype:
+        slot, self._slot = self._slot, None
+        if slot is None:
             return None
-        return tri if np.ascontiguousarray(left).tobytes() == np.ascontiguousarray(pts).tobytes() else None
+        left, tri = slot
+        return tri if _same_bits(left, pts) else None
+
+
+def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
+    """``a`` and ``b`` hold the same values bit for bit (shape and dtype included; -0.0 and
+    0.0 differ, a NaN equals the same NaN), compared in place: float64 arrays as uint64 views,
+    others as byte views of contiguous copies."""
+    if a.shape != b.shape or a.dtype != b.dtype:
+        return False
+    if a.dtype == np.float64:
+        return bool(np.array_equal(a.view(np.uint64), b.view(np.uint64)))
+    a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
+    return bool(np.array_equal(a.reshape(-1).view(np.uint8), b.reshape(-1).view(np.uint8)))
 
 
 def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
@@ -498,11 +521,8 @@ def inpaint(grid: np.ndarray, offset=(0, 0)) -> np.ndarray:
         return near
     # the walk's transforms, vectorised: a query (a cell centre) lies far beyond rounding
     # distance of every edge between the jittered corners, so the walk ends in the triangle
-    # scipy's own transforms lead to (tin_eval weighs the corners itself); ``_transform`` is
-    # scipy's private cache of them (checked with scipy 1.17; the inpainting test on a curved
-    # surface fails if it is ignored or misread)
-    if hasattr(tri, "_transform"):
-        tri._transform = barycentric_transforms(tri.points, tri.simplices)
+    # scipy's own transforms lead to (tin_eval weighs the corners itself)
+    with_bulk_transforms(tri)
     out[er, ec] = tin_eval(tri, sv, np.column_stack([er, ec]).astype(np.float64))
     nan = np.isnan(out)
     out[nan] = near[nan]
@@ -648,7 +668,8 @@ def _disk_filter(a: np.ndarray, radius: int, erode: bool) -> np.ndarray:
     The running minimum (maximum) of each row over a chord of the row offset's half-width is
     grown from the narrowest to the widest (:func:`_grow_chord`), and each is taken into the
     result, shifted by its row offset, as soon as it has its width: one in-place minimum
-    (maximum) per row of the disk and two per distinct chord width, O(cells · radius).
+    (maximum) per row of the disk and two minima (maxima) per growth step (one cell, or a jump
+once the chord is at least half the target), O(cells · radius).
     Minima and maxima are exact, so the result does not depend on the order they are taken in.
     ``a`` holds no NaN (a NaN spreads over its whole footprint): mark empty cells with ±inf.
     """

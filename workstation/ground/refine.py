@@ -94,7 +94,8 @@ class Refine:
     tins : TinHandoff
         A TIN one step leaves for a later one on the same points
         (:class:`workstation.ground.common.TinHandoff`; the raised-patch test's for the riser
-        fill).
+        fill). States derived by ``replace`` share it: :func:`run_chain` gives each chain its
+        own.
     """
 
     xyz: np.ndarray
@@ -106,7 +107,7 @@ class Refine:
     water: np.ndarray | None = None
     water_confidence: np.ndarray | None = None
     deck: np.ndarray | None = None
-    tins: TinHandoff = field(default_factory=TinHandoff)
+    tins: TinHandoff = field(default_factory=TinHandoff, repr=False, compare=False)
 
 
 def raised_patches(state: Refine, p: PatchParams) -> Refine:
@@ -203,8 +204,10 @@ def declare(steps, on: Mapping[str, bool] | None = None, params: Mapping[str, ob
 def run_chain(state: Refine, chain) -> Refine:
     """``state`` after each step of ``chain`` (parameter objects, see :func:`declare`) in order.
 
-    A TIN a step leaves (``state.tins``) is kept only for a riser fill right after it."""
+    A TIN a step leaves (``state.tins``) is kept only for a riser fill right after it; the
+    chain works on a handoff of its own, so the caller's ``state.tins`` is left as it was."""
     chain = tuple(chain)
+    state = replace(state, tins=TinHandoff())
     for i, p in enumerate(chain):
         step = _BY_PARAMS.get(type(p))
         if step is None:
