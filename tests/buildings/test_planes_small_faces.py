@@ -63,16 +63,22 @@ def test_pooled_noise_recovers_the_noise_of_two_planes():
     assert s == pytest.approx(want, rel=0.05)
 
 
+def _assert_four_faces_found(seed: int, building: int, max_misfit: float) -> None:
+    """The building's four faces are planes, each within ``max_misfit`` degrees of its true
+    face, and most points of each dormer face carry one label."""
+    b, pts, r = segment_building(seed, building)
+    assert len(r.normals) == 4
+    for tilt, az, misfit in true_face_misfits(b, r):
+        assert misfit < max_misfit, (tilt, az, misfit)
+    for lab in _dormer_face_labels(b, pts, r.labels):
+        assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)
+
+
 def test_small_dormer_faces_are_recovered():
     """Dormer faces of 15-30 points that the region-growing passes leave out (district seed 7,
     building 2: one cheek of 18 points, of which 15 were on no plane) become planes of their own,
     each within 2 degrees of the true face."""
-    b, pts, r = segment_building(7, 2)
-    assert len(r.normals) == 4
-    for tilt, az, misfit in true_face_misfits(b, r):
-        assert misfit < 2.0, (tilt, az, misfit)
-    for lab in _dormer_face_labels(b, pts, r.labels):
-        assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)
+    _assert_four_faces_found(7, 2, max_misfit=2.0)
 
 
 def test_clutter_above_a_roof_gives_no_plane():
@@ -116,12 +122,7 @@ def test_both_faces_of_a_dormer_whose_first_proposal_takes_ridge_points():
     two faces are found, each within the noise of its true face: free planes of 15-20 points
     (before the model regularises them) have tilt and azimuth standard errors of about 0.75 and
     1.4 degrees, so 4 degrees combined is three of them."""
-    b, pts, r = segment_building(19, 11)
-    assert len(r.normals) == 4
-    for tilt, az, misfit in true_face_misfits(b, r):
-        assert misfit < 4.0, (tilt, az, misfit)
-    for lab in _dormer_face_labels(b, pts, r.labels):
-        assert np.mean(lab >= 0) > 0.8 and np.bincount(lab[lab >= 0]).max() > 0.7 * len(lab)
+    _assert_four_faces_found(19, 11, max_misfit=4.0)
 
 
 def test_reassign_with_every_plane_dropped_labels_nothing():

@@ -105,16 +105,8 @@ def test_ground_method_ml_member_vote_option(tmp_path, capsys):
 def test_ground_method_ml_member_vote_follows_raised_patches(tmp_path, capsys, monkeypatch):
     """--member-vote --no-raised-patches runs the raised-patch test nowhere (neither in the
     classifier's chain nor in auto's); --member-vote alone runs it."""
-    import workstation.ground.patches as patches
 
-    calls = []
-    real = patches.raised_patches
-
-    def counted(*a, **k):  # the real test, counted
-        calls.append(1)
-        return real(*a, **k)
-
-    monkeypatch.setattr(patches, "raised_patches", counted)
+    calls = _count_raised_patches(monkeypatch)
     src = tmp_path / "in.laz"
     write_cloud(two_class_scene(6), src)
     ran = {}
@@ -158,12 +150,9 @@ def test_classify_roof_test_options(tmp_path, capsys):
     assert counts["default"] < counts["off"]  # the network calls part of the crown building
 
 
-def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
-    """The raised-patch test runs on the gate's ground by default and not with
-    --no-raised-patches, and it only ever takes ground away."""
+def _count_raised_patches(monkeypatch) -> list:
+    """A list that grows by one each time the real raised-patch test runs."""
     import workstation.ground.patches as patches
-    from tests.ground.ground_synth import terrain_with_boxes
-    from workstation.core.cloud import Cloud
 
     calls = []
     real = patches.raised_patches
@@ -173,6 +162,16 @@ def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
         return real(*a, **k)
 
     monkeypatch.setattr(patches, "raised_patches", counted)
+    return calls
+
+
+def test_classify_raised_patches_option(tmp_path, capsys, monkeypatch):
+    """The raised-patch test runs on the gate's ground by default and not with
+    --no-raised-patches, and it only ever takes ground away."""
+    from tests.ground.ground_synth import terrain_with_boxes
+    from workstation.core.cloud import Cloud
+
+    calls = _count_raised_patches(monkeypatch)
     xyz, truth = terrain_with_boxes(density=4.0)
     src = tmp_path / "boxes.laz"
     write_cloud(Cloud(xyz, crs="EPSG:32632"), src)
