@@ -478,8 +478,8 @@ def pooled_noise(xyz, labels, normals, offsets, vertical: bool = False) -> float
     only (no steeper than :data:`MAX_ROOF_TILT_DEG`): on a wall the cosine nears zero and the
     quotient grows without bound."""
     on = labels >= 0
-    if vertical:
-        on &= np.abs(normals[np.maximum(labels, 0), 2]) >= math.cos(math.radians(MAX_ROOF_TILT_DEG))
+    if vertical and on.any():
+        on[on] = np.abs(normals[labels[on], 2]) >= math.cos(math.radians(MAX_ROOF_TILT_DEG))
     if not on.any():
         return float("nan")
     r = np.einsum("ij,ij->i", normals[labels[on]], xyz[on]) + offsets[labels[on]]
