@@ -5,6 +5,8 @@ the fitted points the planes."""
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 from scipy.spatial import cKDTree
@@ -110,16 +112,37 @@ def test_ridge_and_valley_of_a_dormer():
 
 
 def test_a_building_without_planes_gets_a_model():
-    # points with no plane (clutter on a footprint): the fit mask is empty, the model is flat
+    """Points with no plane (clutter on a footprint): no neighbourhood is planar, so there is
+    no noise estimate (NaN); no plane, every point unlabelled and unfitted, the fit mask empty,
+    the model flat, and no numpy warning on the way."""
     from workstation.buildings.models import fit_mask
 
     assert not fit_mask(np.full(5, -1), np.zeros(5, bool)).any()
     pts = np.random.default_rng(0).uniform([0, 0, 0], [10, 10, 8], (300, 3))
-    r = segment_planes(pts)
-    assert len(r.normals) == 0
     fp = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])
-    m = build_building(0, fp, pts, r.labels, r, 0.0, cell=0.5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = segment_planes(pts)
+        m = build_building(0, fp, pts, r.labels, r, 0.0, cell=0.5)
+    assert len(r.normals) == 0 and np.all(r.labels == -1) and not r.fitted.any()
+    assert np.isnan(r.noise) and np.isnan(r.threshold) and r.spacing > 0
     assert m is not None
+
+
+@pytest.mark.parametrize("pts", [
+    np.array([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]),  # 3 collinear points
+    np.ones((30, 3)),  # one spot
+    np.column_stack([np.linspace(0, 10, 30)] * 3),  # a line
+    np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.5], [0.0, 1.0, 0.0], [1.0, 1.0, 0.5]]),  # a plane of 4 points
+], ids=["collinear3", "identical", "line", "plane4"])
+def test_degenerate_clouds_have_no_planes(pts):
+    """Too few points for a plane or its noise and spacing, or points on no area in plan: no
+    plane, every point unlabelled, noise and spacing NaN (not estimated), and no warning."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = segment_planes(pts)
+    assert len(r.normals) == 0 and np.all(r.labels == -1) and not r.fitted.any()
+    assert np.isnan(r.noise) and np.isnan(r.spacing)
 
 
 def test_segmented_faces_keep_their_points_and_models_fit_the_kept_ones():

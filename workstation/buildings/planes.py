@@ -1044,8 +1044,30 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
     se[snap] = np.degrees(sigma / np.sqrt(l2[snap]))
     return normals, offsets, se
 
+
+def _spans_area(xy: np.ndarray) -> bool:
+    """Whether plan points (n, 2) spread over an area: the smaller eigenvalue of their
+    covariance above 1e-12 of the larger (false for one spot and for points on a line)."""
+    w = np.linalg.eigvalsh(np.cov(xy, rowvar=False))
+    return bool(w[0] > 1e-12 * w[1])
+
+
+def _no_planes(n: int, origin: np.ndarray, noise, spacing, params: PlaneParams) -> RoofPlanes:
+    """The result with no plane: every one of the ``n`` points unlabelled and unfitted. An
+    unknown (None) noise or spacing is NaN, and then so is the threshold."""
+    noise = math.nan if noise is None else float(noise)
+    spacing = math.nan if spacing is None else float(spacing)
+    return RoofPlanes(np.full(n, -1, np.int64), np.zeros((0, 3)), np.zeros(0), origin, np.zeros(0),
+                      np.zeros(0, np.int64), distance_threshold(noise, spacing, params.angle_deg), noise,
+                      spacing, params.angle_deg, np.zeros(0, bool), np.zeros(n, bool))
+
+
 def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> RoofPlanes:
     """Planes of a cloud of roof points (n, 3) (m) by region growing, RANSAC and merging.
+
+    A cloud of fewer than max(``min_points``, 9) points, one on no area in plan (a spot, a
+    line) or one without a planar neighbourhood (clutter) has no plane: every point is
+    unlabelled, and the noise (and threshold) not estimated is NaN.
 
     Examples
     --------
@@ -1061,12 +1083,22 @@ def segment_planes(xyz: np.ndarray, params: PlaneParams = PlaneParams()) -> Roof
         raise InvalidInputError("plane segmentation needs an (n, 3) array of at least 3 points", field="xyz")
     origin = xyz.min(axis=0)
     loc = xyz - origin
+    if len(loc) < max(params.min_points, 9) or not _spans_area(loc[:, :2]):
+        # scan_frame needs 8 neighbours per point, a plane min_points points, and a roof plane
+        # points spread over an area in plan (not one spot or a line): no noise or spacing to
+        # estimate, so they are NaN unless given
+        return _no_planes(len(loc), origin, params.noise, params.spacing, params)
     frame = scan_frame(loc[:, :2])
     normals, sigma, idx = local_geometry(loc, params.k_neighbors, frame=frame)
     spacing = params.spacing
     if spacing is None:  # the across-line spacing bounds how far neighbours may be
         spacing = frame[2] if frame[2] > frame[1] else float(np.median(np.linalg.norm(loc[idx[:, 1]] - loc, axis=1)))
-    noise = params.noise if params.noise is not None else float(np.median(sigma[np.isfinite(sigma)]))
+    finite = np.isfinite(sigma)
+    if params.noise is None and not finite.any():
+        # no neighbourhood is planar (clutter): no plane can be grown, and the noise, the
+        # median planar residual, is undefined (NaN)
+        return _no_planes(len(loc), origin, None, spacing, params)
+    noise = params.noise if params.noise is not None else float(np.median(sigma[finite]))
     eps = distance_threshold(noise, spacing, params.angle_deg)
     regions = _grow_regions(loc, normals, sigma, idx, eps, spacing, params.angle_deg)
     labels, pn, pd = _ransac_regions(loc, regions, eps, params)
