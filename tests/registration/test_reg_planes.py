@@ -67,9 +67,9 @@ def test_plane_yaw_search_recovers_a_turn_about_the_floor_and_a_shift():
 def test_plane_hypotheses_of_a_low_overlap_pair_include_the_true_pose():
     """Two parts of one room corner, each about 60 % of it and sharing about a third, under
     random poses (no common gravity axis): the plane hypotheses (steps 1-3, before any
-    verification) include the true pose. Which one ranks first is the verification's call:
-    on this nearly symmetric corner turns that swap the walls, or slide along them, fit about
-    as well, so the returned pose is tested on an asymmetric scene below."""
+    verification) include one near the true pose. Which one ranks first is the
+    verification's call: on this nearly symmetric corner turns that swap the walls, or slide
+    along them, fit about as well, so the returned pose is tested on an asymmetric scene below."""
     from workstation.interop.open3d import local_transform
     from workstation.registration.planes import plane_hypotheses
 
@@ -84,7 +84,11 @@ def test_plane_hypotheses_of_a_low_overlap_pair_include_the_true_pose():
     truth = local_transform(Tb @ np.linalg.inv(Ta), o, o)
     errors = [transform_error(T, truth, center=(a - o).mean(axis=0)) for T in Ts]
     assert len(errors) >= 2
-    assert min(r + 100 * t for r, t in errors) < 4.0 + 100 * 0.10, min(errors, key=lambda e: e[0] + 100 * e[1])
+    # a raw hypothesis lies on the 10 cm grid of the in-plane shift and the 3 degree turns, and
+    # which grid point comes nearest depends on the RANSAC draws: within 6 deg / 20 cm
+    # (bench_register_rgbd.py --ranks counts a raw hypothesis within 6 deg / 30 cm)
+    k = int(np.argmin([r + 100 * t for r, t in errors]))
+    assert errors[k][0] < 6.0 and errors[k][1] < 0.2, errors[k]
 
 
 def _floor_with_boxes(rng, spacing=0.1):
@@ -325,3 +329,53 @@ def test_plane_coarse_params_reject_invalid_values():
         assert e.value.field == field
     PlaneCoarseParams(free_margin=0.0)
     PlaneCoarseParams(least_overlap=0.0)
+
+
+def _planes_and_hypotheses():
+    """The planes of both room views and the plane hypotheses of the pair, as arrays."""
+    from workstation.registration.planes import plane_hypotheses
+
+    src, tgt, pa, pb = _room_views()
+    scores, Ts, ps, pt = plane_hypotheses(src, tgt, viewpoints=(pa, pb))
+    return [*(getattr(p, f) for p in (ps, pt) for f in ("normal", "offset", "centroid", "count")), scores, Ts]
+
+
+def test_plane_hypotheses_are_the_same_in_every_run():
+    """One input gives the same planes and hypotheses, bit for bit, run after run in one
+    process and in another process (the RANSAC of the extraction draws from a fixed seed)."""
+    import hashlib
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    runs = [_planes_and_hypotheses() for _ in range(3)]
+    assert len(runs[0][-1]) > 0
+    for run in runs[1:]:
+        for x, y in zip(runs[0], run):
+            np.testing.assert_array_equal(x, y)
+    digest = hashlib.sha256(b"".join(np.ascontiguousarray(x).tobytes() for x in runs[0])).hexdigest()
+    here = Path(__file__).parent
+    code = ("import hashlib, sys, numpy as np; sys.path.insert(0, sys.argv[1]); "
+            "from test_reg_planes import _planes_and_hypotheses as f; "
+            "print(hashlib.sha256(b''.join(np.ascontiguousarray(x).tobytes() for x in f())).hexdigest())")
+    out = subprocess.run([sys.executable, "-c", code, str(here)], capture_output=True, text=True, check=True,
+                         cwd=here.parents[1])
+    assert out.stdout.split()[-1] == digest
+
+
+def test_extract_planes_is_the_same_in_every_run():
+    """A room view on which Open3D's threaded RANSAC (seeded or not) gave one of two plane
+    sets from call to call: the extraction gives one, bit for bit."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from rooms import view_pair_with_sensors
+
+    p = prepare(view_pair_with_sensors(104, step=1.0)[1], Radii(0.05), features=False)
+    x, n = np.asarray(p.down.points), np.asarray(p.down.normals)
+    first = extract_planes(x, n, 0.05)
+    for _ in range(20):  # the old extraction differed in about one call of ten here
+        pl = extract_planes(x, n, 0.05)
+        for f in ("normal", "offset", "centroid", "count"):
+            np.testing.assert_array_equal(getattr(pl, f), getattr(first, f))

@@ -7,8 +7,9 @@ plane-pair rotations. One plane seen in both clouds still fixes three of the six
 freedom; the other three are searched exhaustively:
 
 1. **Extraction.** Planes are peeled off the downsampled cloud one at a time by RANSAC
-   (Open3D ``segment_plane``), keeping the inliers whose normal agrees with the plane's, and
-   described by unit normal ``n``, offset ``d`` (``n . x = d``), centroid and point count.
+   (:func:`ransac_plane`, seeded: one input always gives the same planes), keeping the
+   inliers whose normal agrees with the plane's, and described by unit normal ``n``, offset
+   ``d`` (``n . x = d``), centroid and point count.
 2. **Plane alignment.** For each of the largest source planes, each of the largest target
    planes and both normal signs, the source is turned and shifted so that the two planes
    coincide (the gravity prior of indoor scenes when the planes are floors or worktops).
@@ -142,19 +143,48 @@ class Planes:
     count: np.ndarray
 
 
+def ransac_plane(x: np.ndarray, threshold: float, iterations: int, rng: np.random.Generator):
+    """The plane of most points of ``x`` (n, 3) within ``threshold``, by RANSAC (Fischler and
+    Bolles 1981) over ``iterations`` random point triples drawn from ``rng``, fewer inliers'
+    mean squared distance breaking ties, as Open3D's ``segment_plane`` draws them: ``(unit
+    normal refitted by least squares on the inliers, inlier indices)``. Open3D's own draws
+    run in threads and differ between runs even when seeded; these are vectorised and
+    follow ``rng`` alone."""
+    tri = x[rng.integers(0, x.shape[0], size=(iterations, 3))]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    norm = np.linalg.norm(n, axis=1)
+    ok = norm > 0  # collinear or repeated triples give no plane
+    n, p0 = n[ok] / norm[ok, None], tri[ok, 0]
+    best, key = None, (-1, 0.0)
+    m = max(1, min(64, 2**22 // x.shape[0]))  # triples a block: at most 4 M distances
+    for k in range(0, n.shape[0], m):
+        d = np.abs(x @ n[k:k + m].T - np.einsum("ij,ij->i", n[k:k + m], p0[k:k + m]))
+        inl = d < threshold
+        cnt = inl.sum(axis=0)
+        top = np.flatnonzero(cnt == cnt.max())  # the most inliers; the least mean square among them
+        mse = np.where(inl[:, top], d[:, top] ** 2, 0.0).sum(axis=0) / max(cnt[top[0]], 1)
+        j = top[np.argmin(mse)]
+        if (cnt[j], -mse.min()) > key:
+            best, key = k + j, (cnt[j], -mse.min())
+    if best is None:
+        return np.array([0.0, 0.0, 1.0]), np.zeros(0, dtype=np.int64)
+    inl = np.flatnonzero(np.abs((x - p0[best]) @ n[best]) < threshold)
+    c = x[inl].mean(axis=0)
+    w = np.linalg.eigh(np.cov((x[inl] - c).T))[1][:, 0] if inl.size >= 3 else n[best]
+    return w * (np.sign(w @ n[best]) or 1.0), inl
+
+
 def extract_planes(xyz: np.ndarray, normals: np.ndarray, voxel: float,
                    params: PlaneCoarseParams = PlaneCoarseParams(), seed: int = 0) -> Planes:
     """Peel planes off a downsampled cloud by repeated RANSAC (see the module docstring).
 
-    A RANSAC plane keeps only its inliers whose normal lies within ``normal_angle_deg`` of the
-    plane normal (a plane cutting through a curved or slanted surface keeps few); extraction
-    stops at ``max_planes``, when the remaining points are too few, or after several planes in
-    a row fall below ``min_share``.
+    A RANSAC plane (:func:`ransac_plane`, 200 triples, random draws from ``seed``) keeps only
+    its inliers whose normal lies within ``normal_angle_deg`` of the plane normal (a plane
+    cutting through a curved or slanted surface keeps few); extraction stops at
+    ``max_planes``, when the remaining points are too few, or after several planes in a row
+    fall below ``min_share``.
     """
-    from workstation.interop.open3d import points_to_legacy, require_open3d
-
-    o3d = require_open3d()
-    o3d.utility.random.seed(int(seed))
+    rng = np.random.default_rng(seed)
     xyz = np.asarray(xyz, dtype=np.float64)
     normals = np.asarray(normals, dtype=np.float64)
     least = max(30, int(params.min_share * xyz.shape[0]))
@@ -162,10 +192,7 @@ def extract_planes(xyz: np.ndarray, normals: np.ndarray, voxel: float,
     left = np.arange(xyz.shape[0])
     out, misses = [], 0
     while len(out) < params.max_planes and left.size >= least and misses < 3:
-        model, inl = points_to_legacy(xyz[left]).segment_plane(float(params.distance * voxel), 3, 200)
-        inl = np.asarray(inl, dtype=np.int64)
-        n = np.asarray(model[:3], dtype=np.float64)
-        n /= np.linalg.norm(n)
+        n, inl = ransac_plane(xyz[left], float(params.distance * voxel), 200, rng)
         good = inl[np.abs(normals[left[inl]] @ n) >= cos_n]
         if good.size < least:
             misses += 1
