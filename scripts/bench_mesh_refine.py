@@ -15,8 +15,8 @@ DATA = Path(os.environ.get("WS_SHARED_DATA", ROOT.parent / "shared" / "data"))
 sys.path.insert(0, str(ROOT)); sys.path.insert(0, str(ROOT / "tests" / "mesh"))
 from workstation.core.cloud import Cloud, concatenate
 from workstation.core.products import Mesh
-from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, NormalParams, PoissonParams, QualityParams,
-                              estimate_normals, mesh_cloud, clean, decimate, mesh_quality)
+from workstation.mesh import (CleanParams, DecimateParams, MeshChainParams, PoissonParams, QualityParams,
+                              mesh_cloud, clean, decimate, mesh_quality)
 from workstation.mesh.reconstruct import RefineParams, refine_to_cloud
 spec = importlib.util.spec_from_file_location("bm", ROOT / "scripts" / "bench_mesh.py")
 bm = importlib.util.module_from_spec(spec); spec.loader.exec_module(bm)
@@ -70,7 +70,6 @@ elif which == "scanlines":
 elif which == "tls":
     # bench_mesh.heritage, the Poisson done once, then each k
     captured = {}
-    orig = bm.mesh_cloud if hasattr(bm, "mesh_cloud") else None
     import workstation.mesh as wm
     real = wm.mesh_cloud
     def grab(cloud, params, vp):
@@ -79,7 +78,7 @@ elif which == "tls":
         captured["cloud"], captured["raw"] = cloud, r.mesh
         return r
     wm.mesh_cloud = grab
-    orig_emit, orig_mvt = bm.emit, bm.mesh_vs_truth
+    orig_mvt = bm.mesh_vs_truth
     bm.mesh_vs_truth = lambda mesh, truth: (captured.__setitem__("truth", truth), ({"rms": 0.0}, {}))[1]
     bm.emit = lambda **kw: None
     bm.heritage()

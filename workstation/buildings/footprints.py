@@ -852,13 +852,18 @@ def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell
     when the building is not orthogonal at either radius."""
     density = ref / (cell * cell)
     first = orthogonal_outline(pts, ring, spacing, ref, CORNER_RADIUS)
-    if first is not None and _cost(first, pts, density, STRAY_WEIGHT) - len(pts) < math.sqrt(len(pts)) \
-            and _vacancy(first, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL:
-        return first
-    cands = [c for c in (first, orthogonal_outline(pts, ring, spacing, ref, FINE_RADIUS)) if c is not None]
-    if not cands:
+    scored = []  # (cost, outline) of the outlines found
+    if first is not None:
+        scored.append((_cost(first, pts, density, STRAY_WEIGHT), first))
+        if scored[0][0] - len(pts) < math.sqrt(len(pts)) \
+                and _vacancy(first, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL:
+            return first
+    fine = orthogonal_outline(pts, ring, spacing, ref, FINE_RADIUS)
+    if fine is not None:
+        scored.append((_cost(fine, pts, density, STRAY_WEIGHT), fine))
+    if not scored:
         return regularize(ring, spacing, params)
-    return cands[int(np.argmin([_cost(c, pts, density, STRAY_WEIGHT) for c in cands]))]
+    return scored[int(np.argmin([c for c, _ in scored]))][1]
 
 
 @dataclass(frozen=True)

@@ -578,22 +578,21 @@ def _reassign(pts, normals, offsets, band, rounds: int = 2):
     dropped before its refit; the last assignment follows the last refit, so a plane may end
     with fewer than four points (the caller's tests reject it). Returns (labels (m,), normals,
     offsets)."""
+    def nearest(normals, offsets):  # each point's nearest plane within the band, else -1
+        r = np.abs(pts @ normals.T + offsets)
+        best = np.argmin(r, axis=1)
+        return np.where(r.min(axis=1) < band * normals[best, 2], best, -1)
+
     for _ in range(rounds):
         if not len(normals):
             break
-        r = np.abs(pts @ normals.T + offsets)
-        best = np.argmin(r, axis=1)
-        lab = np.where(r.min(axis=1) < band * normals[best, 2], best, -1)
+        lab = nearest(normals, offsets)
         cnt = np.bincount(lab[lab >= 0], minlength=len(normals))
         keep = np.flatnonzero(cnt >= 4)
         fits = [fit_plane(pts[lab == q]) for q in keep]
         normals = np.array([f[0] for f in fits]).reshape(-1, 3)
         offsets = np.array([f[1] for f in fits], float)
-    lab = np.full(len(pts), -1, np.int64)  # the labels of the planes kept (none: all -1)
-    if len(normals):
-        r = np.abs(pts @ normals.T + offsets)
-        best = np.argmin(r, axis=1)
-        lab = np.where(r.min(axis=1) < band * normals[best, 2], best, -1)
+    lab = nearest(normals, offsets) if len(normals) else np.full(len(pts), -1, np.int64)
     return lab, normals, offsets
 
 

@@ -46,17 +46,26 @@ def local_worker_settings() -> dict:
 
 
 @contextlib.contextmanager
+def starting_local_workers():
+    """The block in which a local cluster's workers start: signals held back (a half-started
+    cluster cannot be closed cleanly) and :func:`local_worker_settings` in Dask's config."""
+    import dask
+
+    from workstation.core.signals import workers_starting
+
+    with workers_starting(), dask.config.set(local_worker_settings()):
+        yield
+
+
+@contextlib.contextmanager
 def local_client(workers: int):
     """A Dask client on a new local cluster of ``workers`` single-threaded processes started
     with :func:`local_worker_settings` (closed with the client)."""
     import logging
 
-    import dask
     from distributed import Client, LocalCluster
 
-    from workstation.core.signals import workers_starting
-
-    with workers_starting(), dask.config.set(local_worker_settings()):  # a half-started cluster cannot be closed
+    with starting_local_workers():
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster) as client:

@@ -150,10 +150,10 @@ def auto(cloud: Cloud, params: AutoParams | None = None, **overrides) -> Cloud:
         ``classification`` 2 on ground, 1 elsewhere (other classes kept unless ``reclassify``).
     """
     p = replace(params or AutoParams(), **overrides)
-    return common.run_filter(cloud, p, STAGE, lambda prep: auto_ground(prep.xyz, p, *_echoes(cloud, prep)))
+    return common.run_filter(cloud, p, STAGE, lambda prep: auto_ground(prep.xyz, p, *echoes(cloud, prep)))
 
 
-def _echoes(cloud: Cloud, prep: common.Prepared) -> tuple[np.ndarray | None, np.ndarray | None]:
+def echoes(cloud: Cloud, prep: common.Prepared) -> tuple[np.ndarray | None, np.ndarray | None]:
     """Return number and number of returns of the prepared points, (None, None) when the cloud
     has no return numbers."""
     if not ("return_number" in cloud.attrs and "number_of_returns" in cloud.attrs):

@@ -173,6 +173,13 @@ def write_classes(cloud: Cloud, prep: Prepared, ground_local: np.ndarray, stage:
     return out.with_history(stage, pd, time.perf_counter() - t0)
 
 
+def prepare_filter(cloud: Cloud, params, stage: str) -> Prepared:
+    """The points a ground method with ``params`` (reclassify, last_returns_only, noise,
+    noise_params) filters: :func:`prepare` as :func:`run_filter` calls it."""
+    return prepare(cloud, stage, params.reclassify, params.last_returns_only,
+                   noise=params.noise_params if params.noise else None)
+
+
 def run_filter(cloud: Cloud, params, stage: str, core: Callable[[Prepared], np.ndarray]) -> Cloud:
     """The run of every ground filter: select and convert the points (:func:`prepare`, with the
     low-noise step when ``params.noise``), flag their ground with ``core``, write the classes
@@ -188,8 +195,7 @@ def run_filter(cloud: Cloud, params, stage: str, core: Callable[[Prepared], np.n
         metres); ``prep.index`` places them in ``cloud``.
     """
     t0 = time.perf_counter()
-    prep = prepare(cloud, stage, params.reclassify, params.last_returns_only,
-                   noise=params.noise_params if params.noise else None)
+    prep = prepare_filter(cloud, params, stage)
     return write_classes(cloud, prep, core(prep), stage, params, t0, params.reclassify)
 
 

@@ -21,7 +21,7 @@ from workstation.core.geometry import require_spread
 
 from .normals import NormalParams, estimate_normals
 from .quality import QualityParams, mesh_quality
-from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, RefineParams, ball_pivoting,
+from .reconstruct import (BallPivotingParams, Delaunay25dParams, PoissonParams, RefineParams, ball_pivoting, centred_tree,
                           delaunay25d, poisson, refine_to_cloud)
 from .simplify import DecimateParams, SmoothParams, decimate, smooth
 from .steps import StepRecord, Timer
@@ -130,18 +130,21 @@ def mesh_cloud(cloud: Cloud, params: MeshChainParams = MeshChainParams(), viewpo
         if params.method in ("poisson", "bpa"):
             work, rec = estimate_normals(cloud, params.normals, viewpoints)
             steps.append(rec)
+        photos = isinstance(viewpoints, Reconstruction) or reconstruction is not None
+        refining = params.refine is not None and ((photos if photogrammetric is None else photogrammetric)
+                                                  or not params.refine.photos_only)
+        # Poisson's support trim and the refinement search the same tree of the cloud: build it once
+        tree = centred_tree(cloud.xyz) if refining and params.method == "poisson" and params.poisson.support_trim > 0 else None
         if params.method == "poisson":
-            mesh, rec = poisson(work, params.poisson)
+            mesh, rec = poisson(work, params.poisson, tree=tree)
         elif params.method == "bpa":
             mesh, rec = ball_pivoting(work, params.ball_pivoting)
         else:
             mesh, rec = delaunay25d(work, params.delaunay)
         steps.append(rec)
         log.info("%s: %d faces in %.1f s", rec.name, mesh.n_faces, rec.seconds)
-        photos = isinstance(viewpoints, Reconstruction) or reconstruction is not None
-        if params.refine is not None and ((photos if photogrammetric is None else photogrammetric)
-                                          or not params.refine.photos_only):
-            mesh, rec = refine_to_cloud(mesh, cloud, params.refine)
+        if refining:
+            mesh, rec = refine_to_cloud(mesh, cloud, params.refine, tree=tree)
             steps.append(rec)
         if params.clean is not None:
             cp = params.clean

@@ -163,8 +163,9 @@ def _check_mesh(stage: str, mesh: Mesh) -> Mesh:
     return mesh
 
 
-def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh, StepRecord]:
-    """Screened Poisson surface of an oriented cloud (needs ``normal``).
+def poisson(cloud: Cloud, params: PoissonParams = PoissonParams(), tree=None) -> tuple[Mesh, StepRecord]:
+    """Screened Poisson surface of an oriented cloud (needs ``normal``); ``tree``: the cloud's
+    :func:`centred_tree` for the support trim when the caller has it already.
 
     Returns
     -------
@@ -207,7 +208,7 @@ def poisson(cloud: Cloud, params: PoissonParams = PoissonParams()) -> tuple[Mesh
             mesh = keep_vertices(mesh, q >= thr)
         spacing, across, reach, n_support = None, None, None, 0
         if params.support_trim > 0 and mesh.n_faces:
-            tree = centred_tree(cloud.xyz)
+            tree = centred_tree(cloud.xyz) if tree is None else tree
             spacing, across = point_spacing(cloud.xyz, tree=tree), across_spacing(cloud.xyz, tree=tree)
             reach = params.support_trim * max(spacing, 0.5 * across)
             far = support_distance(mesh.vertices, cloud.xyz, reach, tree=tree) > reach
@@ -280,28 +281,28 @@ class RefineParams:
             raise InvalidInputError("chunk must be ≥ 1", field="chunk")
 
 
-def refine_to_cloud(mesh: Mesh, cloud: Cloud, params: RefineParams = RefineParams()) -> tuple[Mesh, StepRecord]:
+def refine_to_cloud(mesh: Mesh, cloud: Cloud, params: RefineParams = RefineParams(),
+                    tree=None) -> tuple[Mesh, StepRecord]:
     """Move every vertex to its foot on the Gaussian-weighted least-squares plane of its ``k``
     nearest cloud points: one first-order MLS projection step (Alexa et al., "Computing and
     rendering point set surfaces", IEEE TVCG 2003, with a plane as the local fit; bandwidth the
     median distance to the k-th neighbour). Screened Poisson interpolates its points, so the
     noise of a photogrammetric cloud stays in the surface; the projection averages it over the
-    points of every view near the vertex. Faces and attributes are kept.
+    points of every view near the vertex. Faces and attributes are kept. ``tree``: the cloud's
+    :func:`centred_tree` when the caller has it already (Poisson's support trim builds the same).
 
     Returns
     -------
     (Mesh, StepRecord)
         The record's summary gives the median and 95th percentile of the vertex moves.
     """
-    from scipy.spatial import cKDTree
-
     if cloud.n < params.k:
         raise InvalidInputError(f"{cloud.n} points: too few for planes of k={params.k}", field="k")
     with Timer() as t:
         origin = cloud.xyz.mean(axis=0)
         xyz = cloud.xyz - origin
         v = mesh.vertices - origin
-        tree = cKDTree(xyz)
+        tree = centred_tree(cloud.xyz) if tree is None else tree
         d, _ = tree.query(v[: min(len(v), 20_000)], k=params.k)
         h = float(np.median(d[:, -1]))
         out = np.empty_like(v)

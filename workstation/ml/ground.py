@@ -122,13 +122,13 @@ def member_vote_ground(cloud: Cloud, gate: np.ndarray, raised_patches: bool = Tr
         Indices of the low-noise step's low points (class 7 when written).
     """
     from workstation.ground import auto
-    from workstation.ground.common import prepare
+    from workstation.ground.common import prepare_filter
     from workstation.ground.methods import fit_to_points
 
     p = fit_to_points(auto.AutoParams(raised_patches=raised_patches, reclassify=reclassify), cloud)
-    prep = prepare(cloud, "ground_ml", p.reclassify, p.last_returns_only, noise=p.noise_params if p.noise else None)
+    prep = prepare_filter(cloud, p, "ground_ml")
     votes = auto.member_votes(prep.xyz, p).sum(axis=0, dtype=np.int8) + np.asarray(gate, dtype=np.int8)[prep.index]
-    voted = auto.refine_vote(prep.xyz, 2 * votes > len(auto.MEMBERS) + 1, votes, p, *auto._echoes(cloud, prep))
+    voted = auto.refine_vote(prep.xyz, 2 * votes > len(auto.MEMBERS) + 1, votes, p, *auto.echoes(cloud, prep))
     ground = np.zeros(cloud.n, dtype=bool)
     ground[prep.index[voted]] = True
     return ground, prep.noise

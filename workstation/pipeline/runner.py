@@ -23,7 +23,7 @@ from pathlib import Path
 
 from workstation.core.errors import InvalidInputError, WorkstationError
 from workstation.core.log import get_logger
-from workstation.core.signals import caught_signals, workers_starting
+from workstation.core.signals import caught_signals
 
 from . import plan as P
 from workstation.io.catalog import build_catalog
@@ -192,11 +192,9 @@ def _client(options: RunOptions, project):
     n = options.workers or project.dask.get("workers") or available_cores()
     if not (isinstance(n, int) and 1 <= n <= 512):
         raise InvalidInputError(f"workers {n!r} is not a number of processes", "use 1 or more", field="workers")
-    import dask
+    from workstation.core.dasktasks import starting_local_workers
 
-    from workstation.core.dasktasks import local_worker_settings
-
-    with workers_starting(), dask.config.set(local_worker_settings()):  # a half-started cluster cannot be closed cleanly
+    with starting_local_workers():
         # the cores a worker may use for LAZ (de)compression threads: its share of the machine
         share = str(max(1, available_cores() // n))
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",

@@ -363,11 +363,14 @@ def verify_plane_hypotheses(src: Prepared, tgt: Prepared, scores: np.ndarray, Ts
             picked.append((s, T))
         if len(picked) >= params.verify:
             break
+    from scipy.spatial import cKDTree
+
     cands = []
+    target_tree = cKDTree(np.asarray(tgt.down.points))  # one tree for every pose's consistency
     for s, T in picked:
         q = refine(src.down, tgt.down, v, T, QUICK_ICP, information=False)
         free = free_space_violations(src.down, tgt.down, q.transform, images, params.free_margin * v)
-        cands.append((consistency(src.down, tgt.down, q.transform, v), free, float(q.fitness), q))
+        cands.append((consistency(src.down, tgt.down, q.transform, v, target_tree), free, float(q.fitness), q))
         log.info("planes hypothesis: agreement %.3f, verified fitness %.3f, consistency %.3f, free-space %.3f",
                  s, q.fitness, cands[-1][0], free)
     least = params.least_overlap * max(c[2] for c in cands)

@@ -364,8 +364,11 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
     if method != "auto":  # the scanner positions (local frame, or None) let ``planes`` test free space
         r = COARSE_METHODS[method](ps, pt, params.coarse, viewpoints=viewpoints)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
+    from scipy.spatial import cKDTree
+
     voxel = ps.radii.voxel
     cands = []  # (name, fitness, transform, score)
+    target_tree = cKDTree(np.asarray(pt.down.points))  # one tree for every pose's consistency
     for name in ("clique", "fpfh_ransac", "fgr"):
         # a hypothesis explaining this share of the downsampled source is accepted as is
         if cands and max(c[1] for c in cands) >= max(0.4 if name == "fpfh_ransac" else 0.5, params.min_fitness):
@@ -377,7 +380,7 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
             continue
         for k, T in enumerate(r.meta.get("hypotheses", [r.transform])):
             q = refine(ps.down, pt.down, voxel, T, QUICK_ICP, information=False)
-            score = consistency(ps.down, pt.down, q.transform, voxel)
+            score = consistency(ps.down, pt.down, q.transform, voxel, target_tree)
             cands.append((name if k == 0 else f"{name}_{k}", float(q.fitness), q.transform, score))
             log.info("coarse %s hypothesis %d: verified fitness %.3f, consistency %.3f", name, k, q.fitness, score)
     if not cands:
@@ -404,7 +407,7 @@ def _distinct_pose(A: np.ndarray, B: np.ndarray, voxel: float) -> bool:
     return bool(angle > 2.0 or np.linalg.norm(A[:3, 3] - B[:3, 3]) > 2.0 * voxel)
 
 
-def consistency(src, tgt, T: np.ndarray, voxel: float) -> float:
+def consistency(src, tgt, T: np.ndarray, voxel: float, target_tree=None) -> float:
     """Agreement of two clouds (Open3D, with normals) under ``T``, averaged over both directions.
 
     In each direction a point *agrees* when a point of the other cloud lies within
@@ -413,7 +416,8 @@ def consistency(src, tgt, T: np.ndarray, voxel: float) -> float:
     landing beside a wall or on open ground: surfaces that should coincide do not). The score
     is (agreeing - conflicting) / points. Overlap alone favours a wrong pose that lays two
     large flat grounds onto each other over a right one with a smaller true overlap; the
-    conflicts, from the buildings that then stand where the other cloud has none, do not."""
+    conflicts, from the buildings that then stand where the other cloud has none, do not.
+    ``target_tree``: a cKDTree of ``tgt``'s points, for a caller scoring many poses."""
     from scipy.spatial import cKDTree
 
     from .transforms import apply_transform
@@ -423,8 +427,9 @@ def consistency(src, tgt, T: np.ndarray, voxel: float) -> float:
     na = np.asarray(src.normals) @ T[:3, :3].T
     nb = np.asarray(tgt.normals)
     scores = []
-    for x, y, ny in ((a, b, nb), (b, a, na)):
-        dist, j = cKDTree(y).query(x, distance_upper_bound=5.0 * voxel, workers=-1)
+    trees = (cKDTree(b) if target_tree is None else target_tree, cKDTree(a))
+    for (x, y, ny), tree in zip(((a, b, nb), (b, a, na)), trees):
+        dist, j = tree.query(x, distance_upper_bound=5.0 * voxel, workers=-1)
         near = dist < 1.5 * voxel
         jj = np.minimum(j, y.shape[0] - 1)
         on_plane = np.abs(np.einsum("ij,ij->i", ny[jj], x - y[jj])) < 0.1 * voxel
