@@ -98,43 +98,85 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = No
 
 def _face_rows(models: list, blds: list, roof_xyz: np.ndarray, noise: float, kind: str) -> list:
     """Per true sloped face of each building of ``kind``: its tilt and azimuth, the model face
-    matched as :func:`workstation.buildings.synth.evaluate` matches it (the best-overlapping
-    model's face of nearest normal) and its errors, the true face's points ``n`` (points of
-    ``roof_xyz`` whose true roof gradient, by central differences, is the face's) and the tilt
-    standard error a least-squares plane of those points has at vertical noise ``noise`` (m):
-    :func:`~workstation.buildings.planes.tilt_standard_error` at ``noise cos(tilt)`` along the
-    normal; ``tilt_z`` is the tilt error over it (beyond about 3: more than the points support
-    for a face fitted alone)."""
+    matched as :func:`workstation.buildings.synth.evaluate` matches it
+    (:func:`~workstation.buildings.synth.best_model`, :func:`~workstation.buildings.synth.matched_faces`)
+    and its errors, the true face's points ``n`` (points of ``roof_xyz`` whose true roof
+    gradient, by central differences, is the face's), the tilt and azimuth standard errors a
+    least-squares plane of those points has at vertical noise ``noise`` (m)
+    (:func:`~workstation.buildings.planes.plane_standard_errors` at ``noise cos(tilt)`` along
+    the normal) and the errors over them (``tilt_z``, ``azimuth_z``; beyond about 3: more than
+    the points support for a face fitted alone), and the errors of the oracle (``oracle_*``):
+    the least-squares plane z = g . xy + c of those true points, which with vertical Gaussian
+    noise no estimator using only them beats systematically (Gauss-Markov); for a face with an
+    opposite face on its ridge, the same for the tilt the two share once regularised
+    (``pair_*``, :func:`_pair_oracle`)."""
     import shapely
 
-    from workstation.buildings.planes import tilt_standard_error
+    from workstation.buildings.synth import best_model, matched_faces
 
     polys = [shapely.Polygon(m.footprint) for m in models]
+    tree = shapely.STRtree(polys)
     out = []
     for i, b in enumerate(blds):
-        if b.kind != kind or not polys:
+        j = best_model(polys, tree, b) if b.kind == kind else None
+        if j is None:
             continue
-        T = shapely.Polygon(b.footprint())
-        m = models[max(range(len(polys)), key=lambda k: polys[k].intersection(T).area)]
         pts = roof_xyz[b.inside(roof_xyz[:, :2])]
         h = 1e-3
         g = np.column_stack([(b.roof_z(pts[:, :2] + [h, 0]) - b.roof_z(pts[:, :2] - [h, 0])) / (2 * h),
                              (b.roof_z(pts[:, :2] + [0, h]) - b.roof_z(pts[:, :2] - [0, h])) / (2 * h)])
         dist = np.linalg.norm(g[:, None, :] - b.roof_gradients()[None], axis=2)
         on = np.where(dist.min(axis=1) < 1e-3, np.argmin(dist, axis=1), -1)  # -1: on an edge
-        normals = np.array([f.normal for f in m.roofs])
-        for q, (tilt, az) in enumerate(b.true_tilt_azimuth()):
-            if tilt <= 0:
-                continue
-            t, a = np.radians(tilt), np.radians(az)
-            nt = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
-            f = m.roofs[int(np.argmax(normals @ nt))]
-            se = tilt_standard_error(pts[on == q], nt, noise * np.cos(t)) if (on == q).sum() >= 4 else float("inf")
-            err = f.tilt_deg - tilt
-            out.append({"building": i, "kind": kind, "face": q, "tilt_deg": tilt, "azimuth_deg": az, "n": int((on == q).sum()),
-                        "model_tilt_deg": f.tilt_deg, "model_azimuth_deg": f.azimuth_deg, "tilt_err_deg": err,
-                        "azimuth_err_deg": (f.azimuth_deg - az + 180) % 360 - 180, "tilt_se_deg": se, "tilt_z": err / se})
+        for q, tilt, az, f in matched_faces(models[j], b):
+            out.append({"building": i, "kind": kind, "face": q, "tilt_deg": tilt, "azimuth_deg": az,
+                        "n": int((on == q).sum()), "model_tilt_deg": f.tilt_deg, "model_azimuth_deg": f.azimuth_deg,
+                        **_face_errors(pts[on == q], tilt, az, f.tilt_deg, f.azimuth_deg, noise),
+                        **_pair_oracle(pts, on, b.roof_gradients(), q, f.tilt_deg - tilt, noise)})
     return out
+
+
+def _pair_oracle(pts: np.ndarray, on: np.ndarray, grads: np.ndarray, q: int, err: float, noise: float) -> dict:
+    """For true face ``q`` with an opposite face (gradient ``-grads[q]``: the other side of its
+    ridge, of the same tilt), the oracle of the tilt the model shares between the two when it
+    regularises them: the least-squares slope s of z = -s w + c_face over both faces' true points
+    (``pts`` labelled ``on``), w the horizontal coordinate down each face's true slope, centred
+    per face (azimuths known). Its standard error is noise / sqrt(sum w^2) on s, cos^2(tilt) times
+    that on the tilt. Returns its tilt error, that standard error and ``err`` (the model's tilt
+    error) over it; nothing without an opposite face."""
+    opp = np.flatnonzero(np.linalg.norm(grads + grads[q], axis=1) < 1e-9)
+    if not len(opp):
+        return {}
+    swz = sww = 0.0
+    for k in (q, int(opp[0])):
+        down = -grads[k] / np.linalg.norm(grads[k])
+        w, z = pts[on == k, :2] @ down, pts[on == k, 2]
+        w, z = w - w.mean(), z - z.mean()
+        swz, sww = swz - w @ z, sww + w @ w
+    t = np.arctan(np.linalg.norm(grads[q]))
+    se = float(np.degrees(np.cos(t) ** 2 * noise / np.sqrt(sww))) if sww > 0 else float("inf")
+    return {"pair_oracle_tilt_err_deg": float(np.degrees(np.arctan(swz / sww) - t)) if sww > 0 else float("nan"),
+            "pair_tilt_se_deg": se, "pair_tilt_z": err / se}
+
+
+def _face_errors(pts: np.ndarray, tilt: float, az: float, model_tilt: float, model_az: float, noise: float) -> dict:
+    """Tilt and azimuth errors (degrees) of a model face against the true plane (``tilt``,
+    ``az``), their standard errors for the face's true points ``pts`` (m, 3) at vertical noise
+    ``noise`` and the errors of the oracle plane of those points (:func:`_face_rows`)."""
+    from workstation.buildings.planes import azimuth_of, plane_standard_errors
+
+    t, a = np.radians(tilt), np.radians(az)
+    nt = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
+    se_t, se_a = plane_standard_errors(pts, nt, noise * np.cos(t)) if len(pts) >= 4 else (np.inf, np.inf)
+    err_t, err_a = model_tilt - tilt, (model_az - az + 180) % 360 - 180
+    row = {"tilt_err_deg": err_t, "azimuth_err_deg": err_a, "tilt_se_deg": se_t, "azimuth_se_deg": se_a,
+           "tilt_z": err_t / se_t, "azimuth_z": err_a / se_a}
+    if len(pts) >= 4:
+        xy = pts[:, :2] - pts[:, :2].mean(axis=0)
+        gx, gy = np.linalg.lstsq(xy, pts[:, 2] - pts[:, 2].mean(), rcond=None)[0]
+        n = np.array([-gx, -gy, 1.0]) / np.sqrt(1.0 + gx * gx + gy * gy)
+        row["oracle_tilt_err_deg"] = float(np.degrees(np.arctan(np.hypot(gx, gy)))) - tilt
+        row["oracle_azimuth_err_deg"] = float((azimuth_of(n[None])[0] - az + 180) % 360 - 180)
+    return row
 
 
 def _complex_fields(k: list) -> dict:

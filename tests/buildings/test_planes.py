@@ -118,6 +118,28 @@ def test_scan_lines_far_apart_still_give_the_roof_planes():
     assert np.allclose(r.tilt_deg[big], np.degrees(np.arctan(3.0 / 4.5)), atol=1.0)
 
 
+def test_scan_frame_of_points_mostly_on_one_spot_is_the_cell_density_spacing():
+    """More than half the points repeated on one spot (their k-th neighbour at distance 0): the
+    median neighbour spacing is 0, so the frame is isotropic with the spacing of the density over
+    the occupied 2 m cells; segmentation of such a cloud runs through without an error or a
+    warning."""
+    import warnings
+
+    from workstation.buildings.planes import scan_frame
+
+    rng = np.random.default_rng(0)
+    xy = rng.uniform(0, 10, (400, 2))
+    plane = np.column_stack([xy, 0.3 * xy[:, 1] + rng.normal(0, 0.02, 400)])
+    pts = np.vstack([plane, np.tile([5.0, 5.0, 1.5], (600, 1))])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        u, a, b, density = scan_frame(pts[:, :2])
+        r = segment_planes(pts)
+    assert np.array_equal(u, [1.0, 0.0]) and density == pytest.approx(1000 / 100.0)  # 25 cells of 4 m2
+    assert a == b == pytest.approx(1 / math.sqrt(density))
+    assert r.labels.shape == (1000,)
+
+
 @pytest.mark.parametrize("p", [1, 7, 40, 64, 65, 600])
 def test_small_components_numbers_components_like_scipy(p):
     """Same labels, in the same order, as scipy's connected components: isolated nodes, self

@@ -244,3 +244,42 @@ def test_model_regularises_the_faces_segmentation_accepted_as_regular():
     az = azimuth_of(forced)
     assert np.ptp((az - az[0] + 45) % 90 - 45) < 1e-9 and forced[2, 2] == pytest.approx(forced[3, 2], abs=1e-12)
     assert np.allclose(np.einsum("ij,ij->i", forced, fp - points), 0.0, atol=1e-9)  # through the centroids
+
+
+def _exact_face(ridge, size, tilt, az, step=0.25):
+    """Noise-free grid points (m, 3) of a face as :func:`_face` lays it out."""
+    a, t = math.radians(az), math.radians(tilt)
+    down, level = np.array([math.sin(a), math.cos(a)]), np.array([math.cos(a), -math.sin(a)])
+    s = np.stack(np.meshgrid(np.arange(0.0, size[0] + 1e-9, step), np.arange(0.0, size[1] + 1e-9, step)), -1)
+    s = s.reshape(-1, 2) - [0.0, size[1] / 2]
+    return np.column_stack([ridge[:2] + s[:, :1] * down + s[:, 1:] * level, ridge[2] - math.tan(t) * s[:, 0]])
+
+
+@pytest.mark.parametrize("apart", [0.0, 8.0])
+def test_dormer_face_refused_alone_takes_the_direction_with_its_partner(apart):
+    """A gable along 23 degrees and a dormer at a quarter turn (faces of 25 points), one dormer
+    face turned 3.3 standard errors of its azimuth (at the given noise; the points are exact) off the direction:
+    alone its Bayes factor refuses the direction, but as the other side of a level ridge with its
+    partner (azimuths opposite within their errors, faces touching) their mean agrees, and both
+    take the direction and one tilt. Moved 8 m apart, the faces are no ridge: it stays free."""
+    from workstation.buildings.planes import plane_standard_errors
+
+    sigma = NOISE * math.cos(math.radians(40.0))
+    ridge, dormer = np.array([0.0, 0.0, 10.0]), np.array([20.0, 0.0, 9.0])
+    turned = _exact_face(dormer, (1.6, 2.0), 40.0, 23.0 + 270.0, 0.4)
+    t, a = math.radians(40.0), math.radians(23.0 + 270.0)
+    off = 3.3 * plane_standard_errors(turned, np.array([math.sin(t) * math.sin(a), math.sin(t) * math.cos(a),
+                                                         math.cos(t)]), sigma)[1]
+    faces = [_exact_face(ridge, (6.0, 10.0), 35.0, 23.0), _exact_face(ridge, (6.0, 10.0), 35.0, 203.0),
+             _exact_face(dormer, (1.6, 2.0), 40.0, 113.0, 0.4),
+             _exact_face(dormer + [0.0, apart, 0.0], (1.6, 2.0), 40.0, 293.0 + off, 0.4)]
+    xyz, labels = np.vstack(faces), np.repeat(np.arange(4), [len(f) for f in faces])
+    normals, offsets = _free_planes(xyz, labels)
+    n2, _, s = regularise_planes(xyz, labels, normals, offsets, sigma, 1.0)
+    az = azimuth_of(n2)
+    assert np.isfinite(s[:3]).all()  # the gable and the exact dormer face along the direction
+    if apart:
+        assert np.isnan(s[3]) and np.array_equal(n2[3], normals[3])
+    else:
+        assert np.isfinite(s[3]) and abs((az[3] - az[0] + 45) % 90 - 45) < 1e-9
+        assert n2[2, 2] == pytest.approx(n2[3, 2], abs=1e-12)

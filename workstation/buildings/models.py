@@ -767,22 +767,20 @@ def fit_mask(local, fit=None, least: int = 3):
     return use | (on & few[np.maximum(local, 0)])
 
 
-def regular_planes(xyz, local, normals, points, spacing, force=None, fit=None):
+def regular_planes(xyz, local, normals, points, spacing, force=None):
     """The building's planes (``normals`` (p, 3), ``points`` (p, 3)) of its points ``xyz`` labelled
     ``local``, refitted by :func:`~workstation.buildings.planes.regularise_planes` (azimuths along
     the building's directions, one tilt for the two sides of a ridge, each where the points do not
     reject it) at the noise pooled over the planes, with touching meaning within three point
     spacings (the neighbour reach of region growing). Planes marked in ``force`` (p,) bool (small
     faces that segmentation accepted as regularised, :attr:`~workstation.buildings.planes.RoofPlanes.regular`)
-    are regularised whatever the Bayes factors at this noise say. Only the points of ``fit``
-    (n,) bool count (the mask of :func:`fit_mask`; None: every labelled point). Returns (normals,
+    are regularised whatever the Bayes factors at this noise say. Only labelled points count
+    (pass the labels of the points the planes are fitted to, -1 elsewhere). Returns (normals,
     points)."""
     from .planes import pooled_noise, regularise_planes
 
     o = xyz.min(axis=0)
     loc = xyz - o
-    if fit is not None:
-        local = np.where(fit, local, -1)
     d = -np.einsum("ij,ij->i", normals, points - o)
     n, d, _ = regularise_planes(loc, local, normals, d, pooled_noise(loc, local, normals, d), 3.0 * spacing, force)
     q = points - o
@@ -857,15 +855,16 @@ def _lod2(fp, xyz, labels, keep, planes, ground, height, cell, least=None, fitte
             on = before >= 0
             mixed = np.bincount(local[on], ~planes.regular[keep][before[on]], minlength=len(normals))
             force = mixed == 0
-        normals, points = regular_planes(xyz, local, normals, points, planes.spacing, force, use)
+        fit_local = np.where(use, local, -1)  # the labels of the points the planes are fitted to
+        normals, points = regular_planes(xyz, fit_local, normals, points, planes.spacing, force)
     else:  # no plane: a flat roof at the median height
         c = fp.centroid
         normals = np.array([[0.0, 0.0, 1.0]])
         points = np.array([[c.x, c.y, float(np.median(xyz[:, 2])) if len(xyz) else height]])
-        local, use = np.zeros(len(xyz), np.int64), np.ones(len(xyz), bool)
-    is_small = np.bincount(local[use & (local >= 0)], minlength=len(normals)) < (least or 0)
+        fit_local = np.zeros(len(xyz), np.int64)
+    is_small = np.bincount(fit_local[fit_local >= 0], minlength=len(normals)) < (least or 0)
     # points out of the fits (near an edge) are owned by the refitted plane nearest to them
-    local = _claim_unlabelled(xyz, np.where(use, local, -1), normals, points, planes.threshold, cell)
+    local = _claim_unlabelled(xyz, fit_local, normals, points, planes.threshold, cell)
     grid, origin, centres = ownership_raster(fp, xyz, local, len(normals), cell)
     part_of_plane = split_parts(grid, origin, cell, normals, points, planes.threshold)
     solids, roofs, used = _part_solids(fp, grid, origin, centres, cell, part_of_plane, xyz, local, normals, points,

@@ -26,8 +26,9 @@ clouds using smoothness constraint"; Fischler & Bolles 1981 for RANSAC):
    against the planes already there) instead of a point count.
 7. Regularisation of a building's planes (:func:`regularise_planes`, used by
    :mod:`workstation.buildings.models` and by step 6): azimuths along the building's dominant
-   direction and its quarter turns, and one tilt for the two sides of a ridge, each imposed
-   where the Bayes factor of the constrained against the free fit favours it.
+   direction and its quarter turns (tested for the two sides of a level ridge together where
+   one alone fails), and one tilt for the two sides of a ridge, each imposed where the Bayes
+   factor of the constrained against the free fit favours it.
 8. Edges settled (:func:`settle_edges`): a point near the line where two planes meet, which the
    distance threshold lets either plane take, stays on its plane only when on that face's side
    of the line (ridge or valley) and not within two noise sigmas of it, else it is left out of
@@ -195,23 +196,34 @@ def distance_threshold(noise: float, spacing: float, angle_deg: float) -> float:
 
 def scan_frame(xy: np.ndarray, k: int = 8):
     """Anisotropy of airborne sampling: (unit scan-line direction (2,), along-line spacing a,
-    across-line spacing b) in metres. Along scan lines the ``k`` nearest neighbours lie nearly
-    all in one direction; then a is the median distance of the k-th neighbour over k / 2 (points
-    on both sides), and b = 1 / (density a) with the density counted over 2 m cells. Sampling
-    without a dominant direction gives b = a and direction (1, 0)."""
+    across-line spacing b, density) in metres and points/m2. Along scan lines the ``k`` nearest
+    neighbours lie nearly all in one direction; then a is the median distance of the k-th
+    neighbour over k / 2 (points on both sides), and b = 1 / (density a) with the density
+    counted over 2 m cells. Sampling without a dominant direction gives b = a, direction (1, 0)
+    and density 1 / a^2. Where more than half the points have k others on their spot (repeated
+    returns) the median distance is 0: then a = b = 1 / sqrt(density), the spacing of the cell
+    density, isotropic."""
     from scipy.spatial import cKDTree
 
     d, i = cKDTree(xy).query(xy, k=k + 1)
     v = (xy[i[:, 1:]] - xy[:, None, :]) / np.maximum(d[:, 1:, None], 1e-12)
     w, e = np.linalg.eigh(np.einsum("nki,nkj->ij", v, v) / v.shape[0] / k)
     a = float(np.median(d[:, k]) / (k / 2))
+    if not a > 0:  # most points on one spot: no spacing between neighbours, that of the density
+        density = _cell_density(xy)
+        return np.array([1.0, 0.0]), 1.0 / math.sqrt(density), 1.0 / math.sqrt(density), density
     if w[1] < ANISOTROPY:  # offsets spread over directions: isotropic enough
         return np.array([1.0, 0.0]), a, a, 1.0 / (a * a)
+    density = _cell_density(xy)
+    return e[:, 1], a, float(max(a, 1.0 / (density * max(a, 1e-9)))), density
+
+
+def _cell_density(xy: np.ndarray) -> float:
+    """Points per m2 of plan points (n, 2) over the 2 m cells they occupy."""
     cell = np.floor(xy / 2.0).astype(np.int64)
     cell -= cell.min(axis=0)
     occupied = len(np.unique(cell[:, 0] * (int(cell[:, 1].max()) + 1) + cell[:, 1]))  # distinct 2 m cells
-    density = len(xy) / (4.0 * occupied)
-    return e[:, 1], a, float(max(a, 1.0 / (density * max(a, 1e-9)))), density
+    return len(xy) / (4.0 * occupied)
 
 
 #: Share of the neighbour directions along one axis above which sampling counts as scan lines
@@ -491,14 +503,32 @@ def pooled_noise(xyz, labels, normals, offsets, vertical: bool = False) -> float
 
 def tilt_standard_error(pts: np.ndarray, normal: np.ndarray, sigma: float) -> float:
     """Standard error (degrees) of the tilt of the least-squares plane of ``pts`` (m, 3) with
-    unit ``normal`` (up), for noise ``sigma`` (m) along the normal. In the plane's own frame
-    (e1 downslope, e2 level; for a level plane e1 along the points' largest spread) the fitted
-    normal turns by a small vector with covariance sigma^2 (P^T P)^-1, P the centred in-plane
-    coordinates of the points; its part along e1 changes the tilt.
+    unit ``normal`` (up), for noise ``sigma`` (m) along the normal: the first value of
+    :func:`plane_standard_errors`.
 
     >>> xy = np.array([[x, y] for x in range(5) for y in range(4)], float)
     >>> round(tilt_standard_error(np.column_stack([xy, np.zeros(20)]), np.array([0.0, 0, 1]), 0.03), 3)
     0.272
+    """
+    return plane_standard_errors(pts, normal, sigma)[0]
+
+
+def plane_standard_errors(pts: np.ndarray, normal: np.ndarray, sigma: float) -> tuple:
+    """Standard errors (degrees) of the tilt and the azimuth of the least-squares plane of
+    ``pts`` (m, 3) with unit ``normal`` (up), for noise ``sigma`` (m) along the normal. In the
+    plane's own frame (e1 downslope, e2 level; for a level plane e1 along the points' largest
+    spread) the fitted normal turns by a small vector (a, b) with covariance sigma^2 (P^T P)^-1,
+    P the centred in-plane coordinates of the points. Its part a along e1 changes the tilt by a;
+    its part b along e2 turns the normal's horizontal component, of length sin(tilt), about the
+    vertical, so the azimuth by b / sin(tilt) (infinite for a level plane). Both are infinite
+    for fewer than 4 points or points on a line.
+
+    >>> xy = np.array([[x, y] for x in range(5) for y in range(5)], float)
+    >>> t = np.radians(30.0)
+    >>> pts, normal = np.column_stack([xy, xy[:, 1] * np.tan(t)]), np.array([0, -np.sin(t), np.cos(t)])
+    >>> se = plane_standard_errors(pts, normal, 0.03)  # the downslope spread is 1 / cos(t) wider:
+    >>> [round(x, 3) for x in se], round(float(se[1] * np.sin(t) * np.cos(t) / se[0]), 3)
+    ([0.211, 0.486], 1.0)
     """
     c = pts - pts.mean(axis=0)
     down = np.array([0.0, 0.0, -1.0]) - normal * -normal[2]  # -z projected on the plane
@@ -509,8 +539,11 @@ def tilt_standard_error(pts: np.ndarray, normal: np.ndarray, sigma: float) -> fl
     p = np.column_stack([c @ e1, c @ e2])
     ptp = p.T @ p
     if len(pts) < 4 or np.linalg.det(ptp) <= 1e-12 * np.trace(ptp) ** 2:
-        return float("inf")
-    return float(np.degrees(sigma * math.sqrt(np.linalg.inv(ptp)[0, 0])))
+        return float("inf"), float("inf")
+    cov = np.linalg.inv(ptp)
+    sin_t = math.hypot(normal[0], normal[1])
+    az = float(np.degrees(sigma * math.sqrt(cov[1, 1])) / sin_t) if sin_t > 1e-9 else float("inf")
+    return float(np.degrees(sigma * math.sqrt(cov[0, 0]))), az
 
 
 def _surface(xyz: np.ndarray, pts: np.ndarray, normal: np.ndarray, d: float, eps: float) -> bool:
@@ -969,6 +1002,35 @@ def _touching(xyz: np.ndarray, labels: np.ndarray, pairs: np.ndarray, reach: flo
                      for a, b in pairs], bool)
 
 
+def _ridge_pairs_along(xyz, labels, az, var, free, sloped, theta, v0, reach) -> np.ndarray:
+    """(p,) bool: the planes of a pair that together agree with the direction ``theta`` (variance
+    ``v0``) though one of them (``free``) did not alone. A pair is two ``sloped`` planes, one of
+    them ``free``, whose points touch (within ``reach``, :func:`_touching`) and whose azimuths
+    ``az`` (variances ``var``) are opposite by the Bayes factor of :func:`log_bayes_equal` (the
+    other's azimuth free over a full turn otherwise): the two sides of a level ridge, whose
+    normals' horizontal parts are opposite (Zhou & Neumann 2012's symmetric planes). Their
+    common direction, the inverse-variance mean, is then tested by :func:`_along`, so the
+    points of both decide where one narrow face's alone are too few."""
+    p = len(az)
+    out = np.zeros(p, bool)
+    i, j = np.triu_indices(p, 1)
+    pair = sloped[i] & sloped[j] & (free[i] | free[j])
+    i, j = i[pair], j[pair]
+    if not len(i):
+        return out
+    r = (az[j] - az[i]) % 360.0 - 180.0  # j's offset from the opposite of i
+    opposite = log_bayes_equal(np.r_[np.zeros(len(i)), r], np.r_[var[i], var[j]], np.tile(np.arange(len(i)), 2),
+                               4.0 * AZIMUTH_RANGE_DEG) > 0
+    i, j, r = i[opposite], j[opposite], r[opposite]
+    if len(i):
+        touch = _touching(xyz, labels, np.column_stack([i, j]), reach)
+        i, j, r = i[touch], j[touch], r[touch]
+    w = 1.0 / var[i] + 1.0 / var[j]
+    ok = _along(az[i] + r / var[j] / w, 1.0 / w, theta, v0)
+    out[i[ok]] = out[j[ok]] = True
+    return out
+
+
 def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, offsets: np.ndarray, sigma: float,
                       reach: float, force: np.ndarray | None = None):
     """Roof planes of one building refitted under the regularities of buildings (Zhou & Neumann
@@ -981,7 +1043,9 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
       level component over sin(tilt) is the azimuth's error. Planes of at least
       :data:`REGULAR_MIN_TILT_DEG` whose azimuth agrees with the building's dominant direction
       (:func:`dominant_direction`) or a quarter turn of it take that azimuth and are refitted with
-      it fixed (a line fit in the vertical plane along it);
+      it fixed (a line fit in the vertical plane along it); so do the two planes of a level ridge
+      (touching, azimuths opposite) whose mean azimuth agrees though one of them alone does not
+      (:func:`_ridge_pairs_along`);
     * tilt: two such planes facing opposite ways whose points touch (within ``reach`` (m): the two
       sides of a gable or a dormer) and whose constrained tilts (variance sigma^2 over the sum of
       squared downslope coordinates) agree share one tilt, fitted to the pooled points of both;
@@ -1007,7 +1071,9 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
     var_az = np.full(p, np.inf)
     var_az[sloped] = np.degrees(sigma) ** 2 * m[sloped, 0, 0] / det[sloped] / sin_t[sloped] ** 2
     az = azimuth_of(normals)
-    theta, _, snap = dominant_direction(az, var_az)
+    theta, v0, snap = dominant_direction(az, var_az)
+    if np.isfinite(theta):  # a face refused alone may agree as half of a level ridge
+        snap |= _ridge_pairs_along(xyz, labels, az, var_az, sloped & ~snap, sloped, theta, v0, reach)
     force = np.zeros(p, bool) if force is None else np.asarray(force, bool) & sloped
     if not snap.any() and force.any():  # no two other planes agree: the forced planes' own mean
         w, ref = 1.0 / var_az[force], float(az[force][np.argmin(var_az[force])])

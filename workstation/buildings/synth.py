@@ -265,11 +265,37 @@ def model_roof_z(model, xy: np.ndarray) -> np.ndarray:
     return z
 
 
+def best_model(polys: list, tree, building: SynthBuilding) -> int | None:
+    """Index of the model footprint among ``polys`` (shapely polygons, in the STRtree ``tree``)
+    overlapping ``building``'s footprint most; None where none intersects it."""
+    import shapely
+
+    T = shapely.Polygon(building.footprint())
+    cand = tree.query(T, predicate="intersects")
+    return int(max(cand, key=lambda k: polys[k].intersection(T).area)) if len(cand) else None
+
+
+def matched_faces(model, building: SynthBuilding) -> list:
+    """Per true sloped roof plane of ``building``: (its index q into
+    :meth:`SynthBuilding.roof_gradients`, tilt, azimuth (degrees), the face of ``model`` whose
+    normal is nearest to its normal)."""
+    normals = np.array([f.normal for f in model.roofs])
+    out = []
+    for q, (tilt, az) in enumerate(building.true_tilt_azimuth()):
+        if tilt <= 0:
+            continue
+        t, a = np.radians(tilt), np.radians(az)
+        n = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
+        out.append((q, tilt, az, model.roofs[int(np.argmax(normals @ n))]))
+    return out
+
+
 def evaluate(models: list, buildings: list, grid: float = 0.25) -> list[dict]:
     """Compare models with the analytic buildings: per true building, the best-overlapping
-    model's footprint IoU, roof-plane tilt and azimuth errors (degrees; each true sloped plane
-    against the model face with the nearest normal), the roof RMS (m) over a ``grid`` (m)
-    inside both footprints and whether all of that model's LoD2.2 solids are watertight."""
+    model's (:func:`best_model`) footprint IoU, roof-plane tilt and azimuth errors (degrees; each
+    true sloped plane against the model face with the nearest normal, :func:`matched_faces`), the
+    roof RMS (m) over a ``grid`` (m) inside both footprints and whether all of that model's
+    LoD2.2 solids are watertight."""
     import shapely
 
     from .models import is_watertight
@@ -278,26 +304,17 @@ def evaluate(models: list, buildings: list, grid: float = 0.25) -> list[dict]:
     tree = shapely.STRtree(polys)
     out = []
     for b in buildings:
-        T = shapely.Polygon(b.footprint())
-        cand = tree.query(T, predicate="intersects")
-        if not len(cand):
+        j = best_model(polys, tree, b)
+        if j is None:
             out.append({"kind": b.kind, "iou": 0.0, "found": False})
             continue
-        j = max(cand, key=lambda k: polys[k].intersection(T).area)
+        T = shapely.Polygon(b.footprint())
         m, P = models[j], polys[j]
         row = {"kind": b.kind, "found": True, "iou": P.intersection(T).area / P.union(T).area, "roof_type": m.roof_type,
                "watertight": all(is_watertight(s) for s in m.lod2)}
-        ta = b.true_tilt_azimuth()
-        normals = np.array([f.normal for f in m.roofs])
-        tilt_err, az_err = [], []
-        for tilt, az in ta[ta[:, 0] > 0]:
-            t, a = np.radians(tilt), np.radians(az)
-            n = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
-            f = m.roofs[int(np.argmax(normals @ n))]
-            tilt_err.append(abs(f.tilt_deg - tilt))
-            az_err.append(abs((f.azimuth_deg - az + 180) % 360 - 180))
-        row["tilt_err_deg"] = max(tilt_err) if tilt_err else 0.0
-        row["azimuth_err_deg"] = max(az_err) if az_err else 0.0
+        faces = matched_faces(m, b)
+        row["tilt_err_deg"] = max((abs(f.tilt_deg - t) for _, t, _, f in faces), default=0.0)
+        row["azimuth_err_deg"] = max((abs((f.azimuth_deg - a + 180) % 360 - 180) for _, _, a, f in faces), default=0.0)
         inter = P.intersection(T)
         x0, y0, x1, y1 = inter.bounds
         gx, gy = np.meshgrid(np.arange(x0, x1, grid), np.arange(y0, y1, grid))
