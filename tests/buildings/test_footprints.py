@@ -243,3 +243,52 @@ def test_vacancy_without_points_or_density_is_infinite(n, density):
     rect = np.array([[0, 0], [12, 0], [12, 10], [0, 10]], float)
     pts = np.random.default_rng(0).uniform([0, 0], [12, 10], (n, 2))
     assert _vacancy(rect, pts, density, 0.25, 0.05) == np.inf
+
+
+def test_sparse_t_keeps_its_stem_at_the_finest_smoothing():
+    """At 2 points/m2 the stem (5.5 x 4.1 m) of building 34 of this district is rounded away at
+    2.5 and 1.5 spacings (the likelier outline a rectangle, IoU 0.71); neither explains the
+    points, and the one-spacing smoothing keeps the stem."""
+    xyz, cls, blds = synth.district(40, seed=7, density=2.0, kinds=synth.COMPLEX_KINDS)
+    fps, _ = extract_footprints(xyz[cls == 6, :2])
+    b = blds[34]
+    poly = max((f.polygon for f in fps), key=lambda p: _iou(p, b.footprint()))
+    assert len(poly) == 8
+    assert _iou(poly, b.footprint()) >= 0.85
+
+
+def test_the_coarse_pass_looks_for_no_steps(monkeypatch):
+    """At the wide smoothing every corner region is left to the lines on either side: the
+    rectilinear Douglas-Peucker (:func:`_steps`) is never called."""
+    from workstation.buildings import footprints as F
+
+    def fail(*args, **kwargs):
+        raise AssertionError("steps looked for in the coarse pass")
+
+    rng = np.random.default_rng(3)
+    b = synth.SynthBuilding("cross_t", (0.0, 0.0), 14.0, 9.0, 0.0, 6.0, 3.0, 100.0)
+    pts = synth.sample_building(b, 4.0, 0.03, rng)[:, :2]
+    monkeypatch.setattr(F, "_steps", fail)
+    assert F._orthogonal_pass(pts, 0.5, 0.25, F.CORNER_RADIUS) is not None
+    with pytest.raises(AssertionError, match="coarse"):
+        F._orthogonal_pass(pts, 0.5, 0.25, F.FINE_RADIUS)
+
+
+def test_outlines_that_disagree_with_the_ring_compete_with_its_regularisation(monkeypatch):
+    """When no rectilinear outline agrees with the traced ring, the likeliest of them and the
+    regularised ring is kept: a right outline beats a ring regularised astray, and a wrong one
+    (a third of the building) loses to the right ring."""
+    from workstation.buildings import footprints as F
+
+    rng = np.random.default_rng(5)
+    rect = np.array([[0, 0], [14, 0], [14, 9], [0, 9]], float)
+    pts = rng.uniform([0, 0], [14, 9], (rng.poisson(2.0 * 126), 2))
+    field, origin, cell, ref = F.density_field(pts, 2 ** -0.5)
+    ring = F.trace_outline(field, origin, cell)
+    astray = np.array([[3, 2], [11, 2], [11, 7], [3, 7]], float)
+    monkeypatch.setattr(F, "regularize", lambda *a, **k: astray)
+    monkeypatch.setattr(F, "_rectilinear", lambda *a: (rect, False))
+    assert np.array_equal(F._outline(pts, ring, 2 ** -0.5, ref, cell, FootprintParams()), rect)
+    monkeypatch.setattr(F, "regularize", lambda *a, **k: rect)
+    monkeypatch.setattr(F, "_rectilinear", lambda *a: (astray, False))
+    assert np.array_equal(F._outline(pts, ring, 2 ** -0.5, ref, cell, FootprintParams()), rect)

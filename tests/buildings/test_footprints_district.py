@@ -104,3 +104,23 @@ def test_threads_do_not_change_the_footprints():
     fps, owner = extract_footprints(xy)
     assert len(fps) == len(one.components) == 6
     assert np.array_equal(owner >= 0, one.point_label > 0)
+
+
+def test_assignment_reach_covers_a_corner_beyond_the_half_density_line():
+    """On a uniform roof (a lattice at the spacing) the level-0.5 line of the smoothed density
+    passes a right-angled corner at sqrt(2) t CORNER_RADIUS spacings, Phi(t)^2 = 1/2 (1.93
+    spacings), where the corner's own points lie; the assignment reach leaves two half-spacing
+    deviations of the line beyond that."""
+    from statistics import NormalDist
+
+    from workstation.buildings.footprints import ASSIGN_REACH, CORNER_RADIUS, density_field, trace_outline
+
+    s = 0.5
+    g = np.arange(0.0, 20.0, s) + s / 2
+    xy = np.column_stack([a.ravel() for a in np.meshgrid(g, g)])
+    field, origin, cell, _ = density_field(xy, s)
+    ring = trace_outline(field, origin, cell)
+    # each point counts at the centre of its cell, half a cell up and right of the lattice's own
+    corner = float(np.hypot(*(ring - cell / 2).T).min())
+    assert corner == pytest.approx(math.sqrt(2) * NormalDist().inv_cdf(math.sqrt(0.5)) * CORNER_RADIUS * s, abs=0.02)
+    assert ASSIGN_REACH * s == pytest.approx(corner + 2 * 0.5 * s, abs=0.02)

@@ -20,22 +20,26 @@ without the bias of occupied cells:
    it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems: the
    corner regions the tracing breaks into slanted pieces are rebuilt as axis-parallel steps, a
    rectilinear Douglas-Peucker, and steps the points do not support by the Bayesian information
-   criterion are taken out again) and the outline under which the points are likelier is kept
-   (:func:`_cost`).
+   criterion are taken out again), and when neither fits, with ``FINEST_RADIUS`` (a wing a few
+   metres wide is only a few spacings wide at a low density); the outline under which the points
+   are likeliest is kept (:func:`_cost`).
 5. Other buildings: Douglas-Peucker (Douglas & Peucker 1973) and snapping of the edges within
-   their angular uncertainty of the dominant direction (:func:`regularize`).
+   their angular uncertainty of the dominant direction (:func:`regularize`); when no rectilinear
+   outline agrees with the traced one, the likeliest of them and that one is kept.
 
 All lengths derive from the nominal point spacing ``s = 1 / sqrt(density)`` (estimated from the
-nearest-neighbour distances when not given): cell ``s / 2``, smoothing ``2.5 s`` (and ``1.5 s``),
+nearest-neighbour distances when not given): cell ``s / 2``, smoothing ``2.5 s`` (and ``1.5 s``, ``s``),
 Douglas-Peucker tolerance ``2.5 s`` (about 3.5 times the lateral noise of the half-density
 outline of randomly sampled points, 0.7 s), snapping tolerance ``atan(2 s / L)`` for an edge of
-length L, clamped to 5-30 degrees, edge ends ``s`` left out when points place an edge.
+length L, clamped to 5-30 degrees, edge ends ``s`` left out when points place an edge, points
+outside every region joined to the nearest within ``2.93 s`` (``ASSIGN_REACH``).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from statistics import NormalDist
 
 import numpy as np
 
@@ -153,6 +157,11 @@ DP_TOLERANCE = 2.5
 #: a few metres long that the wider smoothing rounds away (see :func:`_outline`).
 FINE_RADIUS = 1.5
 
+#: Smoothing (in point spacings) of the third candidate, fitted when neither of the others
+#: explains the points (:func:`_outline`): at a low density a wing a few metres wide is only a
+#: few spacings wide, and one spacing (two cells) still resolves it.
+FINEST_RADIUS = 1.0
+
 #: log(roof density / density of stray points outside a roof): what leaving a point outside an
 #: outline costs against the empty area inside it (strays at 5 % of the roof density).
 STRAY_WEIGHT = 3.0
@@ -164,6 +173,15 @@ VACANCY_LEVEL = 0.05
 #: Length (in point spacings) left out at both ends of an edge when its points place it: the
 #: corner's own uncertainty, so points of a wing that meets the edge are not taken for its own.
 EDGE_MARGIN = 1.0
+
+#: Reach (in point spacings) within which a point outside every region joins the nearest one
+#: (:func:`district_components`). The level-0.5 line of the smoothed density passes a convex right
+#: angle at ``sqrt(2) t`` smoothing radii from its corner, Phi(t)^2 = 1/2 (t = 0.545): 1.93
+#: spacings, where the corner's own points lie. Along an edge the line wanders by the smoothed
+#: count's Poisson noise over its slope there: standard deviation ``s / (sigma sqrt(8 pi))`` over
+#: ``phi(0) / sigma``, half a spacing whatever the smoothing. The reach is the corner's distance
+#: plus two such deviations (2.93 spacings), so the corner points that place the edges are kept.
+ASSIGN_REACH = math.sqrt(2) * NormalDist().inv_cdf(math.sqrt(0.5)) * CORNER_RADIUS + 2 * 0.5
 
 
 def _dominant_direction_rect(p: np.ndarray) -> float:
@@ -495,17 +513,24 @@ def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: f
     traced outline ``ring`` is within 1.5 spacings times the perimeter (about 2.7 times what the
     outline's own lateral noise gives).
     """
+    poly, agrees = _rectilinear(pts, ring, spacing, ref, radius)
+    return poly if agrees else None
+
+
+def _rectilinear(pts, ring, spacing, ref, radius):
+    """The outline of :func:`orthogonal_outline` (None when no valid one is found) and whether
+    it agrees with the traced ``ring`` (the test that keeps it there)."""
     import shapely
 
     theta0 = _points_direction(pts)
     centre = ring.mean(axis=0)
     poly = _orthogonal_pass(_rot(pts - centre, -theta0), spacing, ref, radius)
     if poly is None:
-        return None
+        return None, False
     P, R = shapely.Polygon(poly), shapely.Polygon(_rot(ring - centre, -theta0))
-    if not P.is_valid or P.symmetric_difference(R).area > 1.5 * spacing * R.length:
-        return None
-    return ccw(_rot(poly, theta0) + centre)
+    if not P.is_valid:
+        return None, False
+    return ccw(_rot(poly, theta0) + centre), P.symmetric_difference(R).area <= 1.5 * spacing * R.length
 
 
 def _orthogonal_pass(rp, spacing, ref, radius):
@@ -636,8 +661,8 @@ def _axis_lines(segs, chords, cls, L, tol, cell):
     run of free edges between two snapped ones (a corner region the tracing broke into short
     slanted pieces) is replaced by the axis-parallel steps that bring the outline within ``tol``
     of its traced points (:func:`_steps`): none at a plain corner, the two lines of a notch or a
-    wing's end otherwise. Added lines weigh ``cell`` (m) against the snapped edges' lengths when
-    parallel lines are merged."""
+    wing's end otherwise (never at an infinite ``tol``, where the steps are not looked for). Added
+    lines weigh ``cell`` (m) against the snapped edges' lengths when parallel lines are merged."""
     snap = np.flatnonzero(cls >= 0)
     dirs, pts = _lines([segs[i] for i in snap], chords[snap], cls[snap], 0.0, 0.0)
     lines = [(int(cls[i]), float(p[1 - cls[i]]), d) for i, d, p in zip(snap, dirs, pts)]
@@ -646,7 +671,7 @@ def _axis_lines(segs, chords, cls, L, tol, cell):
         nxt = snap[(j + 1) % len(snap)]
         run = np.arange(i + 1, nxt if nxt > i else nxt + len(cls)) % len(cls)
         out.append((lines[j], pts[j], L[i]))
-        if len(run):
+        if len(run) and tol < math.inf:  # at an infinite tolerance every corner stays plain
             chain = np.vstack([segs[r] for r in run])
             out += [(ln, _on_line(ln, chain), cell) for ln in _steps(chain, lines[j], lines[(j + 1) % len(snap)], tol)]
     return (np.array([o[0][2] for o in out]), np.array([o[1] for o in out]), np.array([o[0][0] for o in out]),
@@ -841,28 +866,33 @@ def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell
              params: FootprintParams) -> np.ndarray:
     """Footprint polygon of one building from its points and traced outline.
 
-    The rectilinear outline at ``CORNER_RADIUS`` is kept when the points explain it as well as
-    the true outline would on average: its cost (:func:`_cost`) exceeds the number of points,
-    the cost's expectation under the true outline, by less than that count's Poisson standard
-    deviation, and it holds no empty region larger than a Poisson process of the roof density
-    leaves by chance (:func:`_vacancy` at least ``VACANCY_LEVEL``: the global count dilutes a
-    local deficit, and a few per cent of error in the density hide a filled notch in it).
-    Otherwise (a stem rounded away leaves points out, a filled notch adds empty area)
-    the outline at ``FINE_RADIUS`` is fitted too and the likelier kept; the regularised outline
-    when the building is not orthogonal at either radius."""
+    The rectilinear outlines at ``CORNER_RADIUS``, ``FINE_RADIUS`` and ``FINEST_RADIUS``
+    (:func:`orthogonal_outline`) are fitted in turn until the likeliest so far (:func:`_cost`)
+    explains the points as well as the true outline would on average: its cost exceeds the
+    number of points, the cost's expectation under the true outline, by less than that count's
+    Poisson standard deviation, and it holds no empty region larger than a Poisson process of the
+    roof density leaves by chance (:func:`_vacancy` at least ``VACANCY_LEVEL``: the global count
+    dilutes a local deficit, and a few per cent of error in the density hide a filled notch in
+    it). A stem rounded away leaves points out, a filled notch adds empty area; the finer
+    smoothings keep them. The likeliest outline is kept when none explains the points so.
+
+    When no rectilinear outline agrees with the traced ring (the building is not orthogonal, or,
+    at a low density, the ring is rounded far from it), the likeliest of those outlines and the
+    regularised ring (:func:`regularize`) is kept."""
     density = ref / (cell * cell)
-    first = orthogonal_outline(pts, ring, spacing, ref, CORNER_RADIUS)
-    scored = []  # (cost, outline) of the outlines found
-    if first is not None:
-        scored.append((_cost(first, pts, density, STRAY_WEIGHT), first))
-        if scored[0][0] - len(pts) < math.sqrt(len(pts)) \
-                and _vacancy(first, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL:
-            return first
-    fine = orthogonal_outline(pts, ring, spacing, ref, FINE_RADIUS)
-    if fine is not None:
-        scored.append((_cost(fine, pts, density, STRAY_WEIGHT), fine))
+    scored, disagreeing = [], []  # (cost, outline) of the outlines found
+    for radius in (CORNER_RADIUS, FINE_RADIUS, FINEST_RADIUS):
+        poly, agrees = _rectilinear(pts, ring, spacing, ref, radius)
+        if poly is not None:
+            (scored if agrees else disagreeing).append((_cost(poly, pts, density, STRAY_WEIGHT), poly))
+        if not scored or radius == FINEST_RADIUS:
+            continue
+        cost, best = scored[int(np.argmin([c for c, _ in scored]))]
+        if cost - len(pts) < math.sqrt(len(pts)) and _vacancy(best, pts, density, cell, VACANCY_LEVEL) >= VACANCY_LEVEL:
+            return best
     if not scored:
-        return regularize(ring, spacing, params)
+        reg = regularize(ring, spacing, params)
+        scored = disagreeing + [(_cost(reg, pts, density, STRAY_WEIGHT), reg)]
     return scored[int(np.argmin([c for c, _ in scored]))][1]
 
 
@@ -957,7 +987,7 @@ def _nearest_label(labels: np.ndarray, rows: np.ndarray, cols: np.ndarray, reach
 def district_components(xy: np.ndarray, params: FootprintParams = FootprintParams(), threads: int = 1) -> District:
     """The district-wide step of :func:`extract_footprints` on building points ``xy`` (n, 2) (m):
     density field, half-density mask and its regions, and the region of every point (points just
-    outside the outline, the edge itself, join the nearest region within two spacings).
+    outside the outline, the edge itself, join the nearest region within ``ASSIGN_REACH`` spacings).
     Regions under ``min_area`` are left out of ``components`` but keep their points. The spacing,
     the smoothing, the roof cores and the nearest regions are computed on ``threads`` threads
     (the same result); each component's outline field is made only when it is traced."""
@@ -968,7 +998,7 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
     field, origin, cell, ref = density_field(xy, spacing, threads=threads)
     labels = building_mask(field)
     ij = np.floor((xy - origin) / cell).astype(np.int64)
-    point_label = _nearest_label(labels, ij[:, 1], ij[:, 0], 2 * spacing / cell, threads)
+    point_label = _nearest_label(labels, ij[:, 1], ij[:, 0], ASSIGN_REACH * spacing / cell, threads)
     comps, slices = [], ndimage.find_objects(labels)
     for k, sl in enumerate(slices):
         sl = tuple(slice(max(a.start - 2, 0), a.stop + 2) for a in sl)

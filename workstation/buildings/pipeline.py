@@ -3,7 +3,6 @@ solar potential out (:func:`reconstruct_buildings`)."""
 
 from __future__ import annotations
 
-import contextlib
 import logging
 import time
 from dataclasses import dataclass, field, replace
@@ -234,7 +233,7 @@ def _on_cluster(xyz, cls, bxyz, params, footprints, workers: int, scheduler: str
     cluster is closed on the way out, an error or Ctrl-C included; a Ctrl-C while the workers
     start is lost (:func:`workstation.core.signals.workers_starting`), one after is raised at
     once. On an error or Ctrl-C the pass's thread still runs to its end, its CPU not reclaimed."""
-    from workstation.core.dasktasks import alongside, wait_for
+    from workstation.core.dasktasks import alongside, connect, local_client, wait_for
     from workstation.core.signals import caught_signals
 
     td: dict = {}  # the district pass's seconds, taken into t once it is done
@@ -243,7 +242,7 @@ def _on_cluster(xyz, cls, bxyz, params, footprints, workers: int, scheduler: str
         return alongside(_district_pass, xyz, cls, bxyz, params, footprints, 1 if scheduler else workers, td)
 
     pending = None if scheduler else district()
-    with _dask_client(workers, scheduler) as client, caught_signals() as latch:
+    with (connect(scheduler) if scheduler else local_client(workers)) as client, caught_signals() as latch:
         t["cluster_s"] = time.perf_counter() - t0
         if pending is None:
             pending = district()
@@ -307,7 +306,7 @@ def build_unit(items: list, setup: UnitSetup, dtm) -> list:
         t2 = time.perf_counter()
         ground = float(sample_grid(dtm[0], dtm[1], p.dtm_cell, fp.polygon).min()) if dtm is not None \
             else float(pts[:, 2].min())
-        model = build_building(-1, fp.polygon, pts, planes.labels, planes, ground, p.models, cell, planes.fitted)
+        model = build_building(-1, fp.polygon, pts, planes.labels, planes, ground, p.models, cell)
         out.append((fp, model, t1 - t0, t2 - t1, time.perf_counter() - t2, time.thread_time() - c0))
     return out
 
@@ -362,16 +361,6 @@ def batch_ranges(n_items: int, workers: int, largest: int = 32) -> list:
         out.append((a, min(b, n_items)))
         a = b
     return out
-
-
-@contextlib.contextmanager
-def _dask_client(workers: int, scheduler: str | None):
-    """A Dask client on the running scheduler at ``scheduler``, or on a new local cluster of
-    ``workers`` single-threaded processes (the cluster closed with the client)."""
-    from workstation.core.dasktasks import connect, local_client
-
-    with (connect(scheduler) if scheduler else local_client(workers)) as client:
-        yield client
 
 
 def _solar(models, xyz, params, spacing, t):
