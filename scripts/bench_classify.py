@@ -5,6 +5,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py speed              # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
     PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto]  # per-sample ISPRS, both paths
+    PYTHONPATH=. python scripts/bench_classify.py gatediag [--model M] [--samples samp11,...]  # ISPRS Type I: gate or chain
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
     PYTHONPATH=. python scripts/bench_classify.py simtiles           # whole sim validation tiles, roof test on/off
@@ -81,10 +82,9 @@ def isprs(model=None, with_auto=False):
     ``ws ground --method auto`` beside them; then each path's mean."""
     from workstation.core.classes import ASPRSClass as C
     from workstation.core.cloud import Cloud
-    from workstation.ground.evaluate import ground_errors, read_isprs_text
     from workstation.ml.classifier import PointClassifier
     from workstation.ml.ground import MLGroundParams, ml_ground
-    from workstation.ml.realdata import ISPRS_SAMPLES
+    from workstation.ml.realdata import isprs_scores
 
     clf = PointClassifier.load(model, device="cpu")
     def ground_ml(**kw):
@@ -97,22 +97,56 @@ def isprs(model=None, with_auto=False):
         from workstation.ground.methods import ground_filter
 
         paths["auto"] = lambda c: np.asarray(ground_filter(Cloud(c.xyz), "auto").attrs["classification"]) == C.GROUND
-    totals: dict = {k: [] for k in paths}
-    for s in ISPRS_SAMPLES:
-        p = DATA / "isprs" / f"{s}.txt"
-        if not p.exists():
-            continue
-        ref = read_isprs_text(p)
+    for k, fn in paths.items():
+        times = []  # (wall, cpu) seconds of each sample's run, in isprs_scores' order
+
+        def timed(c, fn=fn, times=times):
+            t0, c0 = time.perf_counter(), time.process_time()
+            out = fn(c)
+            times.append((time.perf_counter() - t0, time.process_time() - c0))
+            return out
+
+        scores = isprs_scores(timed, DATA / "isprs")
+        samples = [s for s in scores if s != "mean_total"]
+        for s, (wall, cpu) in zip(samples, times):
+            e = scores[s]
+            emit(bench="isprs_sample", path=k, sample=s, type1=round(e["type1"], 2), type2=round(e["type2"], 2),
+                 total=round(e["total"], 2), seconds=wall, cpu_seconds=cpu)
+        emit(bench="isprs_mean", path=k, samples=len(samples),
+             mean_total=round(float(scores["mean_total"]), 3) if samples else None)
+
+
+def gatediag(model=None, samples=("samp11", "samp31", "samp51"), heights=(1.5, 3.0, 5.0)):
+    """Where ``ws classify``'s Type I errors (reference ground called non-ground) on ISPRS
+    samples come from: the gate (outside SMRF's band of the provisional surface and not
+    promoted) or the refine chain after it; of the gate's, how many lie beyond the promotion
+    height, their height above the provisional surface and ground probability (quantiles 10,
+    25, 50, 75, 90 %); then the total error with the promotion height at each of ``heights``."""
+    from workstation.core.classes import ASPRSClass as C
+    from workstation.ground.evaluate import ground_errors, read_isprs_text
+    from workstation.ml.classifier import PointClassifier
+
+    clf = PointClassifier.load(model, device="cpu")
+    q = [0.1, 0.25, 0.5, 0.75, 0.9]
+    for s in samples:
+        ref = read_isprs_text(DATA / "isprs" / f"{s}.txt")
         ref_g = np.asarray(ref.attrs["label"]) == 0
         cloud = ref.without_attrs("label", "classification")
-        for k, fn in paths.items():
-            t0, c0 = time.perf_counter(), time.process_time()
-            e = ground_errors(ref_g, fn(cloud))
-            totals[k].append(100 * e.total_error)
-            emit(bench="isprs_sample", path=k, sample=s, type1=round(100 * e.type1, 2), type2=round(100 * e.type2, 2),
-                 total=round(100 * e.total_error, 2), seconds=time.perf_counter() - t0, cpu_seconds=time.process_time() - c0)
-    for k, v in totals.items():
-        emit(bench="isprs_mean", path=k, samples=len(v), mean_total=round(float(np.mean(v)), 3) if v else None)
+        P, hs, _ = clf._infer(cloud)
+        gate = clf._gate(P, hs)
+        t1 = ref_g & (clf.codes_from_proba(P, hs, cloud)[0] != C.GROUND)
+        rej = t1 & ~gate
+        far = rej & (np.abs(hs[:, 0]) > clf.gate_promote_height)
+        emit(bench="gate_type1", sample=s, type1=int(t1.sum()), gate_rejected=int(rej.sum()), chain_removed=int((t1 & gate).sum()),
+             beyond_promote_height=int(far.sum()), hag_quantiles=np.round(np.quantile(hs[rej, 0], q), 2).tolist() if rej.any() else None,
+             p_ground_quantiles=np.round(np.quantile(P[rej, 0], q), 3).tolist() if rej.any() else None)
+        h0 = clf.gate_promote_height
+        for h in heights:
+            clf.gate_promote_height = h
+            e = ground_errors(ref_g, clf.codes_from_proba(P, hs, cloud)[0] == C.GROUND)
+            emit(bench="gate_promote_height", sample=s, height=h, type1=round(100 * e.type1, 2), type2=round(100 * e.type2, 2),
+                 total=round(100 * e.total_error, 2))
+        clf.gate_promote_height = h0
 
 
 def _tileset():
@@ -304,6 +338,9 @@ if __name__ == "__main__":
         goals(PointClassifier.load(model, device="cpu"), "mlp")
     elif what == "isprs":
         isprs(model, with_auto="--with-auto" in sys.argv)
+    elif what == "gatediag":
+        given = sys.argv[sys.argv.index("--samples") + 1].split(",") if "--samples" in sys.argv else None
+        gatediag(model, *([given] if given else []))
     elif what == "baseline":
         baseline()
     elif what == "sim":

@@ -7,7 +7,8 @@ TOML with :func:`load_recipe`; the shipped ones live in ``datasets_synth/``) and
 the same pair always gives the same mesh, bit for bit.
 
 Contents: a heightfield terrain (regional slope, a ridge, a breakline where the slope changes
-abruptly, a roadside ditch, a steep embankment, fractal roughness, optional mountain relief),
+abruptly, a roadside ditch, a steep embankment, fractal roughness, optional mountain relief,
+optional earthworks: embankments and cuttings with a flat crest or floor and planar sides),
 a road with cars, a stream with a bridge, a pond, buildings with flat, gabled and hipped roofs
 with overhangs, courtyard blocks, a heritage church (nave, portico with columns, tower and
 spire), trees whose crowns are clouds of small leaf triangles (so part of a beam passes
@@ -137,6 +138,19 @@ class SceneRecipe:
         Stream with water surface; with ``road`` also a bridge carrying the road over it.
     pond : bool
     powerline : bool
+    embankments : int
+        Earth embankments on the terrain: dikes, levees, road and railway embankments, long
+        straight or gently curved ridges with a flat crest and planar side slopes, some
+        crossing the whole scene, some ending in ramps, about half carrying a road or track
+        on the crest (see :func:`_draw_earthworks`).
+    cuttings : int
+        Cuttings: the same shape carved into the terrain (a flat floor between side slopes).
+    earthwork_height : (float, float)
+        Embankment height and cutting depth range (m).
+    earthwork_crest : (float, float)
+        Crest (cutting floor) width range (m).
+    earthwork_side : (float, float)
+        Side slope range as horizontal run per metre of rise (1.5: a 1:1.5 slope).
     """
 
     name: str = "mixed"
@@ -166,6 +180,11 @@ class SceneRecipe:
     stream: bool = True
     pond: bool = True
     powerline: bool = True
+    embankments: int = 0
+    cuttings: int = 0
+    earthwork_height: tuple = (2.0, 8.0)
+    earthwork_crest: tuple = (3.0, 15.0)
+    earthwork_side: tuple = (1.5, 3.0)
 
 
 def _from_dict(cls, data: dict, where: str):
@@ -393,6 +412,84 @@ class _Line:
         return float(np.arctan2(self.d[1], self.d[0]))
 
 
+@dataclass(frozen=True)
+class _Earthwork:
+    """An embankment (``sign`` +1) or a cutting (-1) of trapezoidal cross-section.
+
+    The centre line is ``line`` bent sideways by ``amp * sin(2 pi s / wavelength + phase)``
+    (``s`` along the line); the crest (a cutting's floor) is ``crest`` wide, ``height`` above
+    (below) the terrain, with planar sides of ``side`` metres run per metre of rise. It runs
+    from ``s0`` to ``s1`` along the line (infinite: across the scene) and its height falls to
+    nought over ``ramp`` metres at each end. ``road``: half width of the road or track on
+    the crest (0: none), of material ``road_mat``.
+    """
+
+    line: _Line
+    sign: float
+    height: float
+    crest: float
+    side: float
+    amp: float
+    wavelength: float
+    phase: float
+    s0: float
+    s1: float
+    ramp: float
+    road: float
+    road_mat: int
+
+    def offset(self, x, y):
+        """Distance (m) of points (x, y) across the bent centre line, and their position along it."""
+        s = self.line.along(x, y)
+        bend = self.amp * np.sin(2 * np.pi * s / self.wavelength + self.phase)
+        return np.abs(self.line.signed(x, y) - bend), s
+
+    def rise(self, x, y) -> np.ndarray:
+        """Height (m, >= 0) the earthwork adds to (an embankment) or takes from (a cutting) the
+        terrain at (x, y): the crest height inside the crest, falling at 1:``side`` outside."""
+        d, s = self.offset(x, y)
+        h = self.height * np.clip(np.minimum(s - self.s0, self.s1 - s) / self.ramp, 0.0, 1.0)
+        return np.clip(self.crest / 2 + self.side * h - d, 0.0, self.side * h) / self.side
+
+    def covers(self, x, y, margin: float) -> bool:
+        """Whether (x, y) lies within ``margin`` m of the earthwork's footprint."""
+        d, s = self.offset(x, y)
+        return bool(d < self.crest / 2 + self.side * self.height + margin and self.s0 - margin < s < self.s1 + margin)
+
+    def to_meta(self) -> dict:
+        return {"kind": "embankment" if self.sign > 0 else "cutting", "p": self.line.p.tolist(),
+                "d": self.line.d.tolist(), "height": self.height, "crest": self.crest, "side": self.side,
+                "amp": self.amp, "wavelength": self.wavelength, "phase": self.phase,
+                "s0": self.s0 if np.isfinite(self.s0) else None, "s1": self.s1 if np.isfinite(self.s1) else None,
+                "ramp": self.ramp, "road_half_width": self.road}
+
+
+def _draw_earthworks(recipe: "SceneRecipe", rng: np.random.Generator, ext: float) -> tuple:
+    """The recipe's embankments then cuttings (:class:`_Earthwork`), a fixed number of draws
+    each: centre point within 0.6 of the half extent and direction uniform; height, crest and
+    side run uniform in the recipe's ranges; bend wavelength 150-600 m with an amplitude of
+    up to 5 % of it (gently curved); half of them cross the whole scene, the others are
+    0.6-2 half extents long with end ramps 1-6 times the side run long (dam ends to road
+    approaches); half carry a road (asphalt) or track (gravel) 4-7 m wide on a crest of 4 m
+    or more."""
+    out = []
+    for i in range(recipe.embankments + recipe.cuttings):
+        line = _Line(rng.uniform(-0.6, 0.6, 2) * ext, _unit(rng.uniform(0, np.pi)))
+        height, crest, side = (rng.uniform(*recipe.earthwork_height), rng.uniform(*recipe.earthwork_crest),
+                               rng.uniform(*recipe.earthwork_side))
+        wavelength = rng.uniform(150.0, 600.0)
+        amp, phase = rng.uniform(0.0, 0.05) * wavelength, rng.uniform(0, 2 * np.pi)
+        finite, half, mid = rng.uniform() < 0.5, rng.uniform(0.3, 1.0) * ext, rng.uniform(-0.3, 0.3) * ext
+        ramp = side * height * rng.uniform(1.0, 6.0)
+        with_road, road, track = rng.uniform() < 0.5, rng.uniform(2.0, 3.5), rng.uniform() < 0.4
+        s0, s1 = (mid - half, mid + half) if finite else (-np.inf, np.inf)
+        road = min(road, crest / 2 - 0.3) if with_road and crest >= 4.0 else 0.0
+        out.append(_Earthwork(line, 1.0 if i < recipe.embankments else -1.0, float(height), float(crest), float(side),
+                              float(amp), float(wavelength), float(phase), float(s0), float(s1), float(ramp),
+                              float(road), int(M["gravel"] if track else M["asphalt"])))
+    return tuple(out)
+
+
 def _unit(a):
     return np.array([np.cos(a), np.sin(a)])
 
@@ -402,7 +499,8 @@ def _unit(a):
 # options appear; only a recipe that uses them gets a different random stream.
 _LATER_FIELDS = frozenset({
     "building_length", "building_width", "large_buildings", "large_size", "large_height",
-    "houses", "house_size", "house_height",
+    "houses", "house_size", "house_height", "embankments", "cuttings", "earthwork_height", "earthwork_crest",
+    "earthwork_side",
 })
 
 
@@ -453,6 +551,8 @@ class _Layout:
         self.waves_rough = (rng.uniform(0.08, 0.6, k), rng.uniform(0, 2 * np.pi, k), rng.uniform(0, 2 * np.pi, k))
         self._occ = np.zeros((64, 3))  # (x, y, radius) of occupied discs
         self._n_occ = 0
+        # drawn last, and only when asked for, so that recipes without them keep their stream
+        self.earthworks = _draw_earthworks(recipe, rng, ext) if recipe.embankments + recipe.cuttings else ()
 
     @staticmethod
     def _waves(x, y, waves, amp):
@@ -479,6 +579,8 @@ class _Layout:
         if self.r.road and t.ditch_depth:
             d = np.abs(self.road.signed(x, y) - 7.5)
             z = z - t.ditch_depth * np.clip(1 - d / (t.ditch_width / 2), 0, None)
+        if self.earthworks:
+            z = z + self.earthwork_relief(x, y)
         if self.r.stream and with_water_cuts:
             # carve the channel below the (level, downhill-only) water surface; 45 degree banks
             d = np.abs(self.stream.signed(x, y))
@@ -494,6 +596,18 @@ class _Layout:
             r = self.pond_r
             z = np.minimum(z, self.pond_level + np.where(d <= r, -1.5 + 1.3 * d / r, -0.2 + (d - r)))
         return z
+
+    def earthwork_relief(self, x, y) -> np.ndarray:
+        """Height (m) the earthworks add at (x, y): the highest embankment there less the deepest
+        cutting (crossing embankments meet at the higher crest)."""
+        up = np.zeros(np.shape(x))
+        down = np.zeros(np.shape(x))
+        for e in self.earthworks:
+            if e.sign > 0:
+                up = np.maximum(up, e.rise(x, y))
+            else:
+                down = np.maximum(down, e.rise(x, y))
+        return up - down
 
     def _stream_profile(self) -> tuple[np.ndarray, np.ndarray]:
         """Water level along the stream: the centreline ground 0.6 m down, never rising downstream."""
@@ -523,6 +637,8 @@ class _Layout:
         if r.powerline and abs(self.power.signed(x, y)) < radius + 6.0:
             return False
         if self.pond_c is not None and np.hypot(x - self.pond_c[0], y - self.pond_c[1]) < radius + self.pond_r + 3:
+            return False
+        if any(e.covers(x, y, radius + 2.0) for e in self.earthworks):
             return False
         o = self._occ[: self._n_occ]
         return not bool(np.any(np.hypot(o[:, 0] - x, o[:, 1] - y) < radius + o[:, 2] + 1.5))
@@ -570,6 +686,12 @@ def _terrain(b: _Builder, L: _Layout, rng):
         mat[on_road] = M["asphalt"]
         shoulder = (np.abs(L.road.signed(cen[:, 0], cen[:, 1])) >= 3.5) & (np.abs(L.road.signed(cen[:, 0], cen[:, 1])) < 4.5)
         mat[shoulder] = M["gravel"]
+    for e in L.earthworks:  # roads and tracks along the crests (cutting floors)
+        if e.road:
+            d, s = e.offset(cen[:, 0], cen[:, 1])
+            on = (d < e.road) & (s > e.s0) & (s < e.s1)
+            cls[on] = C.ROAD_SURFACE
+            mat[on] = e.road_mat
     b.add((v, f), cls, mat, 0)
     return Z
 
@@ -920,6 +1042,8 @@ def _scene_meta(recipe: SceneRecipe, seed: int, b: "_Builder", L: "_Layout") -> 
         meta["road"] = {"p": L.road.p.tolist(), "d": L.road.d.tolist(), "half_width": 3.5}
     if recipe.stream:
         meta["stream"] = {"p": L.stream.p.tolist(), "d": L.stream.d.tolist(), "half_width": L.stream_width / 2}
+    if L.earthworks:
+        meta["earthworks"] = [e.to_meta() for e in L.earthworks]
     return meta
 
 
