@@ -104,3 +104,39 @@ def test_planar_segments_group_a_roof_and_the_context_step_follows_them():
     assert Q[odd].argmax() == 1
     np.testing.assert_allclose(Q.sum(axis=1), 1.0, atol=1e-6)
     assert np.array_equal(Q[lab == 0], P[lab == 0])
+
+
+def test_relief_and_fine_extreme_columns_follow_their_definitions():
+    # columns 0-6 and 16-17 are made in reused float64 buffers: the same values as the plain
+    # expressions (height above each radius's minimum grid, relief, depth; kNN extremes)
+    from scipy import ndimage
+
+    from workstation.ml.features import _eigen_features, _grid, _relief_features, _voxel_eigen, fill_nearest, grid_reduce
+
+    rng = np.random.default_rng(11)
+    xyz = rng.uniform(0, 80, (20_000, 3)) * [1, 1, 0.1]
+    z = xyz[:, 2]
+    p = FeatureParams()
+    r, c, shape = _grid(xyz[:, :2], 1.0)
+    zmin = grid_reduce(z, r, c, shape, np.minimum, np.inf)
+    zmax = grid_reduce(z, r, c, shape, np.maximum, -np.inf)
+    zmin_f = fill_nearest(zmin, ~np.isfinite(zmin))
+    flat = r * shape[1] + c
+    F = np.zeros((len(z), len(FEATURE_NAMES)), np.float32, order="F")
+    _relief_features(F, z, zmin_f, zmax, flat, 1.0, p)
+    at = lambda g: g.ravel()[flat]  # noqa: E731
+    for t, rad in enumerate(p.min_radii):
+        m = ndimage.minimum_filter(zmin_f, size=2 * int(round(rad / 1.0)) + 1, mode="nearest")
+        assert np.array_equal(F[:, t], np.minimum(z - at(m), 60.0).astype(np.float32))
+    mx = at(ndimage.maximum_filter(zmax, size=5, mode="nearest"))
+    m0 = at(ndimage.minimum_filter(zmin_f, size=5, mode="nearest"))
+    assert np.array_equal(F[:, 5], np.minimum(mx - m0, 60.0).astype(np.float32))
+    assert np.array_equal(F[:, 6], np.minimum(mx - z, 60.0).astype(np.float32))
+    fine = _voxel_eigen(xyz, p.fine_voxel, p.k_fine, 1)
+    coarse = _voxel_eigen(xyz, p.coarse_voxel, p.k_coarse, 1)
+    _eigen_features(F, z, fine, coarse)
+    ef, zr, _, finv = fine
+    zf = zr[finv]
+    assert np.array_equal(F[:, 16], np.clip(z - (zf - ef[finv, 6]), 0, 30).astype(np.float32))
+    assert np.array_equal(F[:, 17], np.clip((zf + ef[finv, 7]) - z, 0, 30).astype(np.float32))
+    assert np.array_equal(F[:, 10], ef[finv, 0]) and np.array_equal(F[:, 23], coarse[0][coarse[3], 5])

@@ -318,3 +318,44 @@ def test_roof_failures_of_multi_echo_pulses_take_vegetation(tiny_model):
     assert (codes[label == 6] == C.BUILDING).mean() > 0.97
     plain = tiny_model.codes_from_proba(P, hs, cloud.without_attrs("return_number", "number_of_returns"))[0]
     assert (plain[moved] == C.UNCLASSIFIED).all()
+
+
+def test_cpu_inference_equals_the_plain_forward(tiny_model):
+    # predict_logits on the CPU standardises by numpy into C-ordered batches run with torch on
+    # one intra-op thread: the same values as the module's own forward on the whole matrix,
+    # torch's thread setting restored afterwards
+    torch = pytest.importorskip("torch")
+    from workstation.ml import model as m
+
+    rng = np.random.default_rng(3)
+    X = np.asfortranarray(rng.normal(0, 3, (m.CPU_BATCH * 2 + 777, len(FEATURE_NAMES))).astype(np.float32))
+    net = tiny_model.net_.cpu().eval()
+    with torch.inference_mode():
+        ref = torch.softmax(net(torch.from_numpy(np.ascontiguousarray(X))), dim=1).numpy()
+    before = torch.get_num_threads()  # (fitting on the CPU left one thread)
+    torch.set_num_threads(2)
+    try:
+        P = m.predict_logits(net, X, "cpu")
+        assert P.dtype == np.float32 and np.array_equal(P, ref)
+        assert torch.get_num_threads() == 2
+    finally:
+        torch.set_num_threads(before)
+
+
+def test_roof_vote_without_mixed_decisions_needs_no_lookup():
+    # all tested candidates pass (or all fail): every candidate takes that decision, as the
+    # majority of its nearest tested candidates would give
+    from workstation.ml.roofs import RoofTest
+
+    rng = np.random.default_rng(2)
+    xyz = rng.uniform(0, 30, (3000, 3))
+    t = RoofTest(xyz, xyz[:, 2])
+    cand = xyz[:, 2] > 10
+    tested, bad = t.test(cand)
+    assert len(tested) > 5
+    for value in (False, True):
+        mask = np.full(len(tested), value)
+        assert np.array_equal(t.vote(cand, tested, mask), cand & value)
+    mixed = np.arange(len(tested)) % 2 == 0  # the lookup path still votes among neighbours
+    v = t.vote(cand, tested, mixed)
+    assert v[cand].any() and not v[cand].all() and not v[~cand].any()

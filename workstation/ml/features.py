@@ -564,21 +564,25 @@ def _relief_features(F: np.ndarray, z: np.ndarray, zmin_f: np.ndarray, zmax: np.
                      cell: float, p: FeatureParams) -> None:
     """Columns 0-6 of ``F``: height above the lowest cell minimum within each of ``p.min_radii``,
     then the relief (highest minus lowest) within the smallest radius and the depth below its
-    highest point; metres, capped at 60."""
+    highest point; metres, capped at 60. The float64 per-point differences are made in one
+    reused buffer."""
     from scipy import ndimage
 
-    def at(grid):
-        return np.take(grid.ravel(), flat)
-
-    for t, rad in enumerate(p.min_radii):
-        size = 2 * int(round(rad / cell)) + 1
-        m = ndimage.minimum_filter(zmin_f, size=size, mode="nearest")
-        F[:, t] = np.minimum(z - at(m), 60.0)
+    buf = np.empty(len(z))
     size = 2 * int(round(p.min_radii[0] / cell)) + 1
-    mx = at(ndimage.maximum_filter(zmax, size=size, mode="nearest"))
-    m0 = at(ndimage.minimum_filter(zmin_f, size=size, mode="nearest"))
-    F[:, 5] = np.minimum(mx - m0, 60.0)
-    F[:, 6] = np.minimum(mx - z, 60.0)
+    m0 = None  # the smallest radius's minimum grid, used again for the relief
+    for t, rad in enumerate(p.min_radii):
+        m = ndimage.minimum_filter(zmin_f, size=2 * int(round(rad / cell)) + 1, mode="nearest")
+        m0 = m if t == 0 else m0
+        np.take(m.ravel(), flat, out=buf)
+        np.subtract(z, buf, out=buf)
+        F[:, t] = np.minimum(buf, 60.0, out=buf)
+    mx = np.take(ndimage.maximum_filter(zmax, size=size, mode="nearest").ravel(), flat)
+    np.take(m0.ravel(), flat, out=buf)
+    np.subtract(mx, buf, out=buf)
+    F[:, 5] = np.minimum(buf, 60.0, out=buf)
+    np.subtract(mx, z, out=buf)
+    F[:, 6] = np.minimum(buf, 60.0, out=buf)
 
 
 def _ground_features(F: np.ndarray, xyz: np.ndarray, zmin: np.ndarray, zmin_f: np.ndarray, rc, cell: float,
@@ -594,12 +598,18 @@ def _ground_features(F: np.ndarray, xyz: np.ndarray, zmin: np.ndarray, zmin_f: n
     steps = opening_steps(zmin_f, cell, windows)
     g = provisional_ground(xyz, cell, windows[0], p.ground_slope, zmin=zmin, rc=(r, c, shape),
                            trend_slope=p.ground_trend_slope, trend_window=p.trend_window, steps=steps[0])
-    F[:, 7] = np.clip(z - grid_bilinear(g, xyz[:, :2], cell), -20, 60)
+    F[:, 7] = _height_above(z, grid_bilinear(g, xyz[:, :2], cell))
     g2 = provisional_ground(xyz, cell, windows[1], p.ground_slope * 2, zmin=zmin, rc=(r, c, shape),
                             steps=steps[1])
-    F[:, 8] = np.clip(z - grid_bilinear(g2, xyz[:, :2], cell), -20, 60)
+    F[:, 8] = _height_above(z, grid_bilinear(g2, xyz[:, :2], cell))
     gy, gx = gradient(g, cell)  # 0 across a grid of one cell
     F[:, 9] = np.minimum(np.take(np.hypot(gx, gy).ravel(), r * shape[1] + c), 3.0)
+
+
+def _height_above(z: np.ndarray, ground: np.ndarray) -> np.ndarray:
+    """``clip(z - ground, -20, 60)`` (float64), made in ``ground``'s array."""
+    np.subtract(z, ground, out=ground)
+    return np.clip(ground, -20, 60, out=ground)
 
 
 def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
@@ -608,14 +618,21 @@ def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
     18-23 coarse), the fine neighbourhood's extremes relative to each point's own height (16-17,
     metres, capped at 30) and the log of the local spacing relative to its median (31)."""
     (ef, zr, dh, finv), (ec, _, _, inv) = fine, coarse
-    # broadcast: one ``take`` per column straight into F's (Fortran-order) columns, no (n, 8) temporaries
+    # broadcast: one ``take`` per column from a contiguous row of the transposed features
+    # straight into F's (Fortran-order) columns, no (n, 8) temporaries
+    eft, ect = np.ascontiguousarray(ef.T), np.ascontiguousarray(ec.T)
     for a in range(6):
-        np.take(ef[:, a], finv, out=F[:, 10 + a])
-        np.take(ec[:, a], inv, out=F[:, 18 + a])
-    # extremes relative to each point's own height
-    zf = zr.take(finv)
-    F[:, 16] = np.clip(z - (zf - ef[:, 6].take(finv)), 0, 30)
-    F[:, 17] = np.clip((zf + ef[:, 7].take(finv)) - z, 0, 30)
+        np.take(eft[a], finv, out=F[:, 10 + a])
+        np.take(ect[a], inv, out=F[:, 18 + a])
+    # extremes relative to each point's own height: the representatives' lowest and highest
+    # neighbour heights (float64, as their per-point differences) broadcast, then subtracted
+    buf = np.empty(len(z))
+    np.take(zr - eft[6], finv, out=buf)
+    np.subtract(z, buf, out=buf)
+    F[:, 16] = np.clip(buf, 0, 30, out=buf)
+    np.take(zr + eft[7], finv, out=buf)
+    np.subtract(buf, z, out=buf)
+    F[:, 17] = np.clip(buf, 0, 30, out=buf)
     dh = dh.take(finv)
     med = float(np.median(dh)) if len(z) else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)

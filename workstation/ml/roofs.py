@@ -219,7 +219,10 @@ class RoofTest:
 
         out = np.zeros(len(self.xyz), bool)
         q = np.flatnonzero(candidate)
-        if len(q) == 0 or len(tested) == 0:
+        if len(q) == 0 or len(tested) == 0 or not bad.any():
+            return out
+        if bad.all():  # every vote fails: no neighbours to look up
+            out[q] = True
             return out
         vote = int(min(max(self.params.vote, 1), len(tested)))
         _, j = cKDTree(tested).query((self.xyz[q] - self.origin).astype(np.float32), k=vote, workers=self.workers)
