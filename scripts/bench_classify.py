@@ -2,7 +2,7 @@
 
 Prints one JSON line per result. Usage::
 
-    PYTHONPATH=. python scripts/bench_classify.py speed              # inference points/s
+    PYTHONPATH=. python scripts/bench_classify.py speed [--points N] # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
     PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto]  # per-sample ISPRS, both paths
     PYTHONPATH=. python scripts/bench_classify.py gatediag [--model M] [--samples samp11,...]  # ISPRS Type I: gate or chain
@@ -34,14 +34,22 @@ def emit(**kw):
     print(json.dumps(kw, default=float), flush=True)
 
 
-def speed(model=None):
-    """Inference rate (features + network) on bcts_1 + bcts_2 (1.36 M points)."""
+def speed(model=None, points=None):
+    """Inference rate (`ws classify`'s whole path) on bcts_1 + bcts_2 (1.36 M points), or with
+    ``points`` on the ground benchmark's synthetic tile of that many points (bcts_2 repeated on
+    a grid of shifted copies with jitter: ``bench_ground.py speed``'s tile)."""
     from workstation.core.cloud import concatenate
     from workstation.io import read_cloud
     from workstation.ml.classifier import PointClassifier
 
     clf = PointClassifier.load(model, device="cpu")
-    cloud = concatenate([read_cloud(DATA / "lidar" / "bcts_1.laz"), read_cloud(DATA / "lidar" / "bcts_2.laz")])
+    if points:
+        sys.path.insert(0, str(REPO / "scripts"))
+        from bench_ground import synthetic_tile
+
+        cloud = synthetic_tile(int(points), DATA)
+    else:
+        cloud = concatenate([read_cloud(DATA / "lidar" / "bcts_1.laz"), read_cloud(DATA / "lidar" / "bcts_2.laz")])
     clf.classify(cloud[:20000])  # warm-up (imports)
     best = None
     for _ in range(2):
@@ -331,7 +339,7 @@ if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
     if what == "speed":
-        speed(model)
+        speed(model, int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else None)
     elif what == "goals":
         from workstation.ml.classifier import PointClassifier
 
