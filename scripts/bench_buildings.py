@@ -7,6 +7,7 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex [--seed 5]  # the same on cross-gabled L / T and dormer roofs
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --faces dormer  # and a line per true face of the dormers
     PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --seed 7 --density 4  # a sparser district (points/m2)
+    PYTHONPATH=. python scripts/bench_buildings.py accuracy --kinds complex --seed 7 --density 2 --alone  # each house on its own
     PYTHONPATH=. python scripts/bench_buildings.py solar                     # clear-sky kWh/m2/year at 48 N; against PVGIS
     PYTHONPATH=. python scripts/bench_buildings.py real                      # ../shared/data/lidar urban tiles
 
@@ -60,12 +61,14 @@ def _children_cpu() -> float:
     return u.ru_utime + u.ru_stime
 
 
-def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = None, density: float = 10.0):
+def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = None, density: float = 10.0,
+             alone: bool = False):
     """Goals of issue 26 per roof kind on a district of analytic buildings (10 points/m2, 3 cm noise):
     the ``basic`` kinds (flat to L-shaped) or the ``complex`` ones (cross-gabled L and T, dormer),
     whose expected roof type is none of the model's classes, so the types found are counted. With
     ``faces`` (a kind), one line per true sloped face of the buildings of that kind
-    (:func:`_face_rows`)."""
+    (:func:`_face_rows`). With ``alone``, every building is reconstructed from the points of its
+    own plot only (:func:`_alone`), as for a tile holding one house."""
     from workstation.buildings import synth
     from workstation.buildings.export import cityjson_document, validate_cityjson
     from workstation.buildings.models import is_watertight
@@ -74,7 +77,7 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = No
     names = synth.KINDS if kinds == "basic" else synth.COMPLEX_KINDS
     xyz, cls, blds = synth.district(n, seed=seed, density=density, noise=0.03, kinds=names)
     t, c = time.perf_counter(), time.process_time()
-    r = reconstruct_buildings(xyz, cls, BuildingsParams(solar=None))
+    r = _alone(xyz, cls, blds) if alone else reconstruct_buildings(xyz, cls, BuildingsParams(solar=None))
     dt, dc = time.perf_counter() - t, time.process_time() - c
     rows = synth.evaluate(r.models, blds)
     for row in _face_rows(r.models, blds, xyz[cls == 6], 0.03, faces) if faces else ():
@@ -93,7 +96,22 @@ def accuracy(n: int, seed: int = 5, kinds: str = "basic", faces: str | None = No
     doc = cityjson_document(r.models, r.solar_kwh_m2_year)
     emit(bench="validity", watertight=float(np.mean([is_watertight(s) for m in r.models for s in m.lod2])),
          cityjson_errors=len(validate_cityjson(doc)), buildings=len(r.models), truth=len(blds), seed=seed, kinds=kinds,
-         seconds=dt, cpu_seconds=dc, load=os.getloadavg()[0])
+         density=density, alone=alone, seconds=dt, cpu_seconds=dc, load=os.getloadavg()[0])
+
+
+def _alone(xyz: np.ndarray, cls: np.ndarray, blds: list, pitch: float = 30.0):
+    """:func:`~workstation.buildings.pipeline.reconstruct_buildings` run once per building of a
+    :func:`~workstation.buildings.synth.district` on the points (roof and ground) of its own
+    square plot of side ``pitch`` (m, the district's) centred on it; the models of all runs
+    gathered in one result."""
+    from dataclasses import replace
+
+    from workstation.buildings.pipeline import BuildingsParams, reconstruct_buildings
+
+    runs = [reconstruct_buildings(xyz[sel], cls[sel], BuildingsParams(solar=None))
+            for sel in (np.all(np.abs(xyz[:, :2] - np.asarray(b.center)) < pitch / 2, axis=1) for b in blds)]
+    return replace(runs[0], models=[m for r in runs for m in r.models],
+                   solar_kwh_m2_year=[s for r in runs for s in r.solar_kwh_m2_year])
 
 
 def _face_rows(models: list, blds: list, roof_xyz: np.ndarray, noise: float, kind: str) -> list:
@@ -260,13 +278,14 @@ def main():
                    help="basic: flat, shed, gabled, hipped, multi-level, L; complex: cross-gabled L and T, dormer")
     a.add_argument("--faces", default=None, help="a kind: also a line per true sloped face of its buildings")
     a.add_argument("--density", type=float, default=10.0, help="points/m2 of the simulated district (10: the reported one)")
+    a.add_argument("--alone", action="store_true", help="reconstruct each building from its own plot's points only")
     sub.add_parser("solar")
     sub.add_parser("real")
     args = ap.parse_args()
     if args.cmd == "speed":
         speed(args.buildings, solar=args.solar, workers=args.workers)
     elif args.cmd == "accuracy":
-        accuracy(args.buildings, args.seed, args.kinds, args.faces, density=args.density)
+        accuracy(args.buildings, args.seed, args.kinds, args.faces, density=args.density, alone=args.alone)
     elif args.cmd == "solar":
         solar()
     else:

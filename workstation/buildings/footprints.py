@@ -357,6 +357,7 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     if len(poly) < 3 or not shapely.is_valid(shapely.Polygon(poly)):
         return simple
     reg, ref = shapely.Polygon(poly), shapely.Polygon(simple)
+    ref = ref if shapely.is_valid(ref) else shapely.make_valid(ref)  # a simplified ring may cross itself
     if reg.symmetric_difference(ref).area > 0.25 * ref.area:  # regularisation went astray
         return simple
     return ccw(poly)
@@ -397,10 +398,10 @@ def density_field(xy: np.ndarray, spacing: float, ref: float | None = None, radi
     origin = xy.min(axis=0) - pad * cell
     ij = np.floor((xy - origin) / cell).astype(np.int64)
     shape = (int(ij[:, 1].max()) + pad + 1, int(ij[:, 0].max()) + pad + 1)
-    counts = np.bincount(ij[:, 1] * shape[1] + ij[:, 0], minlength=shape[0] * shape[1]).reshape(shape)
-    field = _smooth(counts.astype(float), sig, threads)
+    counts = np.bincount(ij[:, 1] * shape[1] + ij[:, 0], minlength=shape[0] * shape[1]).reshape(shape).astype(float)
+    field = _smooth(counts, sig, threads)
     if ref is None:
-        ref = _roof_density(field, sig, threads)
+        ref = _roof_density(counts, field, sig, threads)
     return field / ref, origin, cell, ref
 
 
@@ -439,15 +440,40 @@ def _smooth(counts: np.ndarray, sig: float, threads: int) -> np.ndarray:
     return _by_bands(lambda a: ndimage.gaussian_filter(a, sig, mode="constant", truncate=3.0), counts, reach, threads)
 
 
-def _roof_density(field: np.ndarray, sig: float, threads: int = 1) -> float:
-    """Typical smoothed roof density of a field smoothed with sigma ``sig`` (cells): the median
-    over the cells at least two sigmas inside the half-density mask, where the kernel lies wholly
-    on the roof (a straight edge at two sigmas still lowers the field by 2.3 %); the margins,
-    where the field falls off to half and below, would bias it low and move every outline out.
+#: Smallest sigma (cells, half a point spacing) at which :func:`_roof_density` looks for roof
+#: cores; a kernel of 1.25 cells still averages about five points at the nominal spacing.
+MIN_SIGMA = 1.0
 
-    A first level comes from the median over covered cells, twice (the second without the thin
-    margins); it is kept when no core as large as the erosion square remains (tiny buildings only).
-    Dense facade lines of a few cells do not move either median, unlike the maximum. The cores'
+
+def _roof_density(counts: np.ndarray, field: np.ndarray, sig: float, threads: int = 1) -> float:
+    """Typical smoothed roof density of ``field``, the point ``counts`` per cell smoothed with
+    sigma ``sig`` (cells): the median over the cells at least two sigmas inside the half-density
+    mask, where the kernel lies wholly on the roof (a straight edge at two sigmas still lowers the
+    field by 2.3 %); the margins, where the field falls off to half and below, would bias it low
+    and move every outline out (:func:`_core_median`).
+
+    Where no core as large as the erosion square remains (a building processed alone that is
+    narrower than about four sigmas plus the mask's margin), the counts are smoothed again with
+    half the sigma, down to :data:`MIN_SIGMA`, until cores remain: a normalised kernel keeps the
+    mean count of a roof's interior at every scale, so only the spread of the estimate grows (a
+    kernel of half the sigma averages a quarter of the points) while the erosion shrinks by half.
+    Without a core at any scale, the first level of :func:`_core_median` at the finest one (tiny
+    buildings only).
+    """
+    ref, first = _core_median(field, sig, threads)
+    while ref is None and sig / 2 >= MIN_SIGMA:
+        sig /= 2
+        ref, first = _core_median(_smooth(counts, sig, threads), sig, threads)
+    return first if ref is None else ref
+
+
+def _core_median(field: np.ndarray, sig: float, threads: int = 1):
+    """(median of ``field`` over its cores or None, first level) for a field smoothed with sigma
+    ``sig`` (cells); None when no core as large as the erosion square remains.
+
+    The first level is the median over covered cells, twice (the second without the thin
+    margins); the cores are the cells at least two sigmas inside the mask above half of it. Dense
+    facade lines of a few cells do not move either median, unlike the maximum. The cores'
     minimum filter runs by bands of rows on ``threads`` threads (:func:`_by_bands`, the same result).
     """
     from scipy import ndimage
@@ -458,7 +484,7 @@ def _roof_density(field: np.ndarray, sig: float, threads: int = 1) -> float:
     core = _by_bands(lambda a: ndimage.minimum_filter(a, size=size), (field > 0.5 * first).view(np.uint8),
                      size // 2 + 1, threads)
     inner = field[core.view(bool)]
-    return float(np.median(inner)) if inner.size >= size * size else first
+    return (float(np.median(inner)) if inner.size >= size * size else None), first
 
 
 def fill_holes(mask: np.ndarray) -> np.ndarray:
