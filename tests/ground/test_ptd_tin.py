@@ -119,3 +119,20 @@ def test_bulk_transforms_fill_only_an_empty_cache():
     own.transform  # scipy's own, cached on first use
     kept = own._transform
     assert common.with_bulk_transforms(own)._transform is kept
+
+
+def test_delaunay_q5_is_scipys_triangulation_bit_for_bit():
+    # Q5 only skips Qhull's final outer-plane check: the triangulation every ground step reads
+    # (simplices, neighbours, equations, coplanar points, paraboloid) is scipy's default one,
+    # here on gridded points with ties and duplicates as ground grids have
+    from scipy.spatial import Delaunay
+
+    from workstation.ground.common import delaunay
+
+    rng = np.random.default_rng(5)
+    pts = np.round(rng.uniform(0, 60, (20_000, 2)), 1)
+    pts = np.vstack([pts, pts[:50]])  # duplicates become coplanar points
+    ours, plain = delaunay(pts), Delaunay(pts)
+    for name in ("simplices", "neighbors", "equations", "coplanar"):
+        assert np.array_equal(getattr(ours, name), getattr(plain, name)), name
+    assert (ours.paraboloid_scale, ours.paraboloid_shift) == (plain.paraboloid_scale, plain.paraboloid_shift)
