@@ -379,3 +379,15 @@ def test_extract_planes_is_the_same_in_every_run():
         pl = extract_planes(x, n, 0.05)
         for f in ("normal", "offset", "centroid", "count"):
             np.testing.assert_array_equal(getattr(pl, f), getattr(first, f))
+
+
+def test_prepared_clouds_carry_their_scanner_positions_to_the_plane_method():
+    """``prepare`` keeps the scanner position on the prepared cloud, and the plane method uses
+    it when no positions are given: the same pose as with the positions given."""
+    src, tgt, pa, pb = _room_views()
+    np.testing.assert_array_equal(src.viewpoint, pa)
+    np.testing.assert_array_equal(tgt.viewpoint, pb)
+    assert prepare(np.asarray(src.down.points), Radii(0.05), features=False).viewpoint is None
+    carried, given = plane_registration(src, tgt), plane_registration(src, tgt, viewpoints=(pa, pb))
+    # Open3D's ICP sums in threads: one input gives the same pose but for the last bits
+    np.testing.assert_allclose(carried.transform, given.transform, rtol=0, atol=1e-12)

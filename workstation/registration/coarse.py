@@ -293,30 +293,15 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
                      "hypotheses": [{"scale": round(x[1], 6), "score": round(x[0], 4)} for x in cands]}
 
 
-def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams(), viewpoints=None) -> RegistrationResult:
+def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
     """Coarse registration from matched planes (:func:`~workstation.registration.planes.plane_registration`
     with its own defaults, :class:`~workstation.registration.planes.PlaneCoarseParams`: this
-    stage's ``params`` do not apply), testing free space where the scanner positions
-    ``viewpoints`` (source, target; local frame, or None) are known."""
+    stage's ``params`` do not apply), testing free space where the prepared clouds carry their
+    scanner positions (``Prepared.viewpoint``)."""
     from .planes import plane_registration
 
-    return plane_registration(src, tgt, viewpoints=(None, None) if viewpoints is None else tuple(viewpoints))
+    return plane_registration(src, tgt)
 
 
-def _without_viewpoints(method):
-    """``method`` taking the ``viewpoints`` keyword of :data:`COARSE_METHODS` and ignoring it
-    (a method that does not use the scanner positions)."""
-    from functools import wraps
-
-    @wraps(method)
-    def run(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams(), viewpoints=None) -> RegistrationResult:
-        return method(src, tgt, params)
-
-    return run
-
-
-#: The coarse methods by name, each called as ``method(src, tgt, params, viewpoints=None)``
-#: (``viewpoints``: the scanner positions of source and target in the local frame, or None;
-#: only ``planes`` uses them).
-COARSE_METHODS = {"fpfh_ransac": _without_viewpoints(fpfh_ransac), "fgr": _without_viewpoints(fgr),
-                  "clique": _without_viewpoints(clique_registration), "planes": _planes}
+#: The coarse methods by name, each called as ``method(src, tgt, params)``.
+COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration, "planes": _planes}

@@ -318,19 +318,21 @@ def range_images(src: Prepared, tgt: Prepared, viewpoints, params: PlaneCoarsePa
             for c, p in zip((src, tgt), viewpoints)]
 
 
-def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=(None, None)) -> RegistrationResult:
+def plane_registration(src: Prepared, tgt: Prepared, params=None, viewpoints=None) -> RegistrationResult:
     """Coarse registration from planes (module docstring): the hypotheses of
     :func:`plane_hypotheses`, verified by :func:`verify_plane_hypotheses`.
 
     ``params`` may be a :class:`PlaneCoarseParams`; anything else (the coarse stage's
     :class:`~workstation.registration.coarse.CoarseParams`) uses the defaults. ``viewpoints``
-    holds the scanner positions of source and target in their own (local) frames, or None.
+    holds the scanner positions of source and target in their own (local) frames (each None
+    when unknown), by default those the prepared clouds carry (``Prepared.viewpoint``).
 
     ``meta["hypotheses"]`` holds the verified poses, best first, with their ``consistency``
     and ``free_space`` shares. Raises :class:`~workstation.core.errors.StageError` when no
     plane pair gives a pose (a cloud with no plane, or no slice of the two clouds at matching
     heights)."""
     params = params if isinstance(params, PlaneCoarseParams) else PlaneCoarseParams()
+    viewpoints = (src.viewpoint, tgt.viewpoint) if viewpoints is None else tuple(viewpoints)
     images = range_images(src, tgt, viewpoints, params)
     scores, Ts, ps, pt = plane_hypotheses(src, tgt, params, viewpoints, images)
     if not len(Ts):

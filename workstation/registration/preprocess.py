@@ -135,12 +135,16 @@ class Prepared:
     full : open3d.geometry.PointCloud
         All points (local frame) with normals, for the fine stage.
     radii : Radii
+    viewpoint : (3,) float or None
+        The scanner position (local frame) the normals face, None when unknown; the plane
+        method tests free space with it.
     """
 
     down: object
     fpfh: object
     full: object
     radii: Radii
+    viewpoint: np.ndarray | None = None
 
 
 def prepare(xyz_local: np.ndarray, radii: Radii, *, features: bool = True, colors: np.ndarray | None = None,
@@ -185,7 +189,7 @@ def prepare(xyz_local: np.ndarray, radii: Radii, *, features: bool = True, color
     if features:
         fpfh = o3d.pipelines.registration.compute_fpfh_feature(
             down, o3d.geometry.KDTreeSearchParamHybrid(radius=radii.feature, max_nn=100))
-    return Prepared(down, fpfh, full, radii)
+    return Prepared(down, fpfh, full, radii, None if viewpoint is None else np.asarray(viewpoint, dtype=np.float64))
 
 
 def orient_normals(pcd, viewpoint: np.ndarray | None = None) -> None:

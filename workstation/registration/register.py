@@ -222,7 +222,7 @@ def register(source: Cloud, target: Cloud, params: RegisterParams = RegisterPara
     if need_coarse or scale_coarse:
         t0 = time.perf_counter()
         if need_coarse:
-            T0, coarse_meta = _coarse(ps, pt, method, params, viewpoints=(vs, vt))
+            T0, coarse_meta = _coarse(ps, pt, method, params)
         else:
             T0, coarse_meta = scale_search(xs, pt, params.coarse, viewpoint=vs, remove_outliers=params.remove_outliers)
         meta.update(coarse_meta)
@@ -259,7 +259,9 @@ def _check_pair(source: Cloud, target: Cloud) -> None:
 
 def _viewpoints(params: RegisterParams, source: Cloud, target: Cloud, origin: np.ndarray):
     """The scanner positions of source and target relative to ``origin`` (or None): the given
-    ``params.viewpoint_*``, else the clouds' ``meta["scanner_position"]``. They orient normals."""
+    ``params.viewpoint_*``, else the clouds' ``meta["scanner_position"]``. They orient normals,
+    and the prepared clouds carry them (``Prepared.viewpoint``) for the plane method's
+    free-space tests."""
     vps = params.viewpoint_source if params.viewpoint_source is not None else source.meta.get("scanner_position")
     vpt = params.viewpoint_target if params.viewpoint_target is not None else target.meta.get("scanner_position")
     vs = None if vps is None else np.asarray(vps, float) - origin
@@ -352,7 +354,7 @@ def _with_information(res: RegistrationResult, src, tgt, d: float) -> Registrati
     return replace(res, information=info)
 
 
-def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)) -> tuple[np.ndarray, dict]:
+def _coarse(ps, pt, method: str, params: RegisterParams) -> tuple[np.ndarray, dict]:
     """Coarse transform (local frame) and what was tried.
 
     ``auto``: every hypothesis (the clique estimator's distinct cliques, then RANSAC and FGR
@@ -361,8 +363,8 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
     but off its surface. The best is kept; ``meta["ambiguous"]`` is set when a distinct
     runner-up scores within ``AMBIGUOUS_MARGIN`` of it. Only hypotheses whose verified fitness
     reaches half the best one's (and ``params.min_fitness``) are ranked."""
-    if method != "auto":  # the scanner positions (local frame, or None) let ``planes`` test free space
-        r = COARSE_METHODS[method](ps, pt, params.coarse, viewpoints=viewpoints)
+    if method != "auto":
+        r = COARSE_METHODS[method](ps, pt, params.coarse)
         return r.transform, {"coarse_method": method, "coarse_fitness": r.fitness}
     from scipy.spatial import cKDTree
 
@@ -374,7 +376,7 @@ def _coarse(ps, pt, method: str, params: RegisterParams, viewpoints=(None, None)
         if cands and max(c[1] for c in cands) >= max(0.4 if name == "fpfh_ransac" else 0.5, params.min_fitness):
             break
         try:
-            r = COARSE_METHODS[name](ps, pt, params.coarse, viewpoints=viewpoints)
+            r = COARSE_METHODS[name](ps, pt, params.coarse)
         except RuntimeError as e:  # Open3D raises RuntimeError on degenerate input
             log.info("coarse %s failed: %s", name, e)
             continue
