@@ -16,7 +16,6 @@ torch is imported inside the functions, never at module import.
 
 from __future__ import annotations
 
-import threading
 from contextlib import contextmanager
 
 import numpy as np
@@ -126,8 +125,8 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
     Each batch is standardised by numpy straight into a C-ordered buffer (``X`` may be the
     feature pass's Fortran-ordered matrix: no separate contiguous copy) with the model's own
     float32 ``(x - mean) / std``, then passed through ``model.net`` on one torch thread
-    (:func:`_one_torch_thread`): torch's own threads spin-wait between the small layers,
-    which on a busy two-core machine doubled the network's CPU time. Each row goes through
+    (:func:`_one_torch_thread`): torch's own threads would spin-wait between the small
+    layers, costing CPU time that other work on the machine needs. Each row goes through
     the same kernels whatever the batching, so the values do not depend on it.
     """
     import torch
@@ -145,26 +144,16 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
     return out
 
 
-_TORCH_LOCK = threading.Lock()
-#: Callers inside :func:`_one_torch_thread` and torch's thread count to restore after the last.
-_TORCH_STATE = [0, 1]
-
-
 @contextmanager
 def _one_torch_thread():
-    """Run torch on one intra-op thread inside the block (torch's setting is process-wide:
-    the first of concurrent callers sets it, the last one restores it)."""
+    """Run torch on one intra-op thread inside the block, in the calling thread. With torch's
+    OpenMP backend the setting belongs to the thread that makes it (and is the default of
+    threads that start torch meanwhile), so each caller sets it and restores its own."""
     import torch
 
-    with _TORCH_LOCK:
-        if _TORCH_STATE[0] == 0:
-            _TORCH_STATE[1] = torch.get_num_threads()
-            torch.set_num_threads(1)
-        _TORCH_STATE[0] += 1
+    before = torch.get_num_threads()
+    torch.set_num_threads(1)
     try:
         yield
     finally:
-        with _TORCH_LOCK:
-            _TORCH_STATE[0] -= 1
-            if _TORCH_STATE[0] == 0:
-                torch.set_num_threads(_TORCH_STATE[1])
+        torch.set_num_threads(before)
