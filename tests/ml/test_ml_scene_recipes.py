@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from workstation.core.classes import ASPRSClass as C
 from workstation.lidar.scene import SceneRecipe, TerrainSpec, build_scene, load_recipe
@@ -123,3 +124,17 @@ def test_earthwork_crests_stand_their_height_above_the_feet():
             rise = [_above_plane(v[crest & (bins == b)], v[feet & (bins == b)]) for b in common]
             sign = 1.0 if w["kind"] == "embankment" else -1.0
             assert np.mean(np.abs(sign * np.array(rise) - w["height"]) < 0.3) > 0.5, (w, rise)
+
+
+@pytest.mark.parametrize("field, value", [("earthwork_side", (0.0, 2.0)), ("earthwork_height", (0.0, 3.0)),
+                                          ("earthwork_crest", (5.0, 2.0)), ("embankments", -1)])
+def test_earthwork_ranges_that_give_no_shape_are_refused(field, value):
+    from dataclasses import replace
+
+    from workstation.core.errors import InvalidInputError
+    from workstation.lidar.scene import build_scene, load_recipe
+
+    r = replace(load_recipe("earthworks"), extent=(60.0, 60.0), **{field: value})
+    with pytest.raises(InvalidInputError) as e:
+        build_scene(r, seed=0)
+    assert e.value.field == field

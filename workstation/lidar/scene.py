@@ -471,7 +471,7 @@ def _draw_earthworks(recipe: "SceneRecipe", rng: np.random.Generator, ext: float
     up to 5 % of it (gently curved); half of them cross the whole scene, the others are
     0.6-2 half extents long with end ramps 1-6 times the side run long (dam ends to road
     approaches); half carry a road (asphalt) or track (gravel) 4-7 m wide on a crest of 4 m
-    or more."""
+    or more, narrowed to leave 0.3 m of crest on each side."""
     out = []
     for i in range(recipe.embankments + recipe.cuttings):
         line = _Line(rng.uniform(-0.6, 0.6, 2) * ext, _unit(rng.uniform(0, np.pi)))
@@ -488,6 +488,19 @@ def _draw_earthworks(recipe: "SceneRecipe", rng: np.random.Generator, ext: float
                               float(amp), float(wavelength), float(phase), float(s0), float(s1), float(ramp),
                               float(road), int(M["gravel"] if track else M["asphalt"])))
     return tuple(out)
+
+
+def _check_earthworks(recipe: "SceneRecipe") -> None:
+    """Refuse earthwork ranges that give no shape: counts below 0, heights and side runs
+    that are not positive, crests below 0, a range whose low end exceeds its high end."""
+    if recipe.embankments < 0 or recipe.cuttings < 0:
+        field = "embankments" if recipe.embankments < 0 else "cuttings"
+        raise InvalidInputError(f"{field} must be 0 or more", field=field)
+    for field, zero_ok in (("earthwork_height", False), ("earthwork_crest", True), ("earthwork_side", False)):
+        lo, hi = (float(v) for v in getattr(recipe, field))
+        if not (lo >= 0.0 if zero_ok else lo > 0.0) or hi < lo:
+            what = "0 or more" if zero_ok else "positive"
+            raise InvalidInputError(f"{field} [{lo}, {hi}] must be {what}, low end first", field=field)
 
 
 def _unit(a):
@@ -1072,6 +1085,7 @@ def build_scene(recipe: SceneRecipe | str | Path = "mixed", seed: int = 0) -> Sc
         recipe = load_recipe(recipe)
     if recipe.extent[0] <= 0 or recipe.extent[1] <= 0:
         raise InvalidInputError(f"extent {recipe.extent} must be positive", field="extent")
+    _check_earthworks(recipe)
     rng = _seed_for(recipe, seed)
     L = _Layout(recipe, rng)
     b = _Builder()
