@@ -123,7 +123,7 @@ def _face_rows(models: list, blds: list, roof_xyz: np.ndarray, noise: float, kin
     least-squares plane of those points has at vertical noise ``noise`` (m)
     (:func:`~workstation.buildings.planes.plane_standard_errors` at ``noise cos(tilt)`` along
     the normal) and the errors over them (``tilt_z``, ``azimuth_z``; beyond about 3: more than
-    the points support for a face fitted alone), and the errors of the oracle (``oracle_*``):
+    the points support for a face fitted alone; null for under 4 points), and the errors of the oracle (``oracle_*``):
     the least-squares plane z = g . xy + c of those true points, which with vertical Gaussian
     noise no estimator using only them beats systematically (Gauss-Markov); for a face with an
     opposite face on its ridge, the same for the tilt the two share once regularised
@@ -173,7 +173,13 @@ def _pair_oracle(pts: np.ndarray, on: np.ndarray, grads: np.ndarray, q: int, err
     t = np.arctan(np.linalg.norm(grads[q]))
     se = float(np.degrees(np.cos(t) ** 2 * noise / np.sqrt(sww))) if sww > 0 else float("inf")
     return {"pair_oracle_tilt_err_deg": float(np.degrees(np.arctan(swz / sww) - t)) if sww > 0 else float("nan"),
-            "pair_tilt_se_deg": se, "pair_tilt_z": err / se}
+            "pair_tilt_se_deg": se, "pair_tilt_z": _z(err, se)}
+
+
+def _z(err: float, se: float):
+    """``err`` over its standard error ``se``; None (JSON null) when ``se`` is infinite (too few
+    true points to fit a plane): no measure of consistency, where err / inf would read 0."""
+    return float(err / se) if np.isfinite(se) else None
 
 
 def _face_errors(pts: np.ndarray, tilt: float, az: float, model_tilt: float, model_az: float, noise: float) -> dict:
@@ -184,10 +190,10 @@ def _face_errors(pts: np.ndarray, tilt: float, az: float, model_tilt: float, mod
 
     t, a = np.radians(tilt), np.radians(az)
     nt = np.array([np.sin(t) * np.sin(a), np.sin(t) * np.cos(a), np.cos(t)])
-    se_t, se_a = plane_standard_errors(pts, nt, noise * np.cos(t)) if len(pts) >= 4 else (np.inf, np.inf)
+    se_t, se_a = plane_standard_errors(pts, nt, noise * np.cos(t))  # inf for under 4 points
     err_t, err_a = model_tilt - tilt, (model_az - az + 180) % 360 - 180
     row = {"tilt_err_deg": err_t, "azimuth_err_deg": err_a, "tilt_se_deg": se_t, "azimuth_se_deg": se_a,
-           "tilt_z": err_t / se_t, "azimuth_z": err_a / se_a}
+           "tilt_z": _z(err_t, se_t), "azimuth_z": _z(err_a, se_a)}
     if len(pts) >= 4:
         xy = pts[:, :2] - pts[:, :2].mean(axis=0)
         gx, gy = np.linalg.lstsq(xy, pts[:, 2] - pts[:, 2].mean(), rcond=None)[0]

@@ -283,3 +283,44 @@ def test_dormer_face_refused_alone_takes_the_direction_with_its_partner(apart):
     else:
         assert np.isfinite(s[3]) and abs((az[3] - az[0] + 45) % 90 - 45) < 1e-9
         assert n2[2, 2] == pytest.approx(n2[3, 2], abs=1e-12)
+
+
+def test_ridge_partner_far_off_its_quarter_turn_faces_opposite_its_partner():
+    """A dormer face (9 exact points, 5.5 degrees tilt) at 343 degrees, 50 degrees off the
+    opposite (293) of its touching partner at 113: its azimuth's error is so large that it is
+    that partner's other side, and snapped as half of the ridge pair it faces 293 degrees, the
+    direction the pair agreed on, not the quarter turn nearest its own azimuth (23)."""
+    ridge, dormer = np.array([0.0, 0.0, 10.0]), np.array([20.0, 0.0, 9.0])
+    faces = [_exact_face(ridge, (6.0, 10.0), 35.0, 23.0), _exact_face(ridge, (6.0, 10.0), 35.0, 203.0),
+             _exact_face(dormer, (1.6, 2.0), 40.0, 113.0, 0.4), _exact_face(dormer, (1.0, 1.0), 5.5, 343.0, 0.4)]
+    xyz, labels = np.vstack(faces), np.repeat(np.arange(4), [len(f) for f in faces])
+    normals, offsets = _free_planes(xyz, labels)
+    n2, _, s = regularise_planes(xyz, labels, normals, offsets, 0.1, 1.0)
+    assert np.isfinite(s).all()
+    assert np.allclose(azimuth_of(n2), [23.0, 203.0, 113.0, 293.0], atol=1e-6)
+
+
+def test_ridge_pair_is_tested_against_the_direction_of_the_other_dominant_planes():
+    """Planes at 0 (azimuth variance 4) and 97 degrees (9) set the direction; a plane at 172 (9),
+    refused alone, is opposite the first within their errors. Their mean (-2.5) agrees with the
+    mean direction of both dominant planes (2.2), which holds the first plane itself, but not
+    with that of the other, 97 (7 modulo a quarter turn, variance 9): the pair is tested against
+    the latter (leave one out) and refused. A plane at 168 (25) opposite a precise one at 0 (1),
+    the other at 91 (1), is refused alone but accepted with its partner, the two facing the
+    pair's mean and its opposite."""
+    from workstation.buildings.planes import _along, _ridge_pairs_along, dominant_direction
+
+    at, same = np.zeros((3, 3)), np.ones(3, bool)  # every plane touches every other
+    az, var = np.array([0.0, 97.0, 172.0]), np.array([4.0, 9.0, 9.0])
+    theta, v0, dom = dominant_direction(az, var)
+    assert dom.tolist() == [True, True, False]
+    w = 1 / 4.0 + 1 / 9.0
+    m = -8.0 / 9.0 / w
+    assert _along(np.array([m]), 1 / w, theta, v0)[0] and not _along(np.array([m]), 1 / w, 7.0, 9.0)[0]
+    assert np.isnan(_ridge_pairs_along(at, np.arange(3), az, var, dom, same, theta, v0, 1.0)).all()
+    az, var = np.array([0.0, 91.0, 168.0]), np.array([1.0, 1.0, 25.0])
+    theta, v0, dom = dominant_direction(az, var)
+    assert dom.tolist() == [True, True, False]
+    m = -12.0 / 25.0 / (1.0 + 1 / 25.0)
+    out = _ridge_pairs_along(at, np.arange(3), az, var, dom, same, theta, v0, 1.0)
+    assert out[0] == pytest.approx(m % 360.0) and np.isnan(out[1]) and out[2] == pytest.approx(m + 180.0)

@@ -106,11 +106,18 @@ def _norm(v: np.ndarray) -> np.ndarray:
 
 def nominal_spacing(xy: np.ndarray, threads: int = 1) -> float:
     """1/sqrt(density) (m) from the median 2-D nearest-neighbour distance (Poisson: d = 0.5 s),
-    the neighbours looked up on ``threads`` threads."""
+    the neighbours looked up on ``threads`` threads. Where more than half the points repeat
+    another (the median is 0), that of the distinct points; NaN for fewer than two of them."""
     from scipy.spatial import cKDTree
 
+    if len(xy) < 2:
+        return float("nan")
     d, _ = cKDTree(xy).query(xy, k=2, workers=threads)
-    return float(2.0 * np.median(d[:, 1]))
+    s = float(2.0 * np.median(d[:, 1]))
+    if s > 0:
+        return s
+    distinct = np.unique(xy, axis=0)
+    return nominal_spacing(distinct, threads) if len(distinct) < len(xy) else float("nan")
 
 
 def douglas_peucker(ring: np.ndarray, tol: float) -> np.ndarray:
@@ -209,8 +216,11 @@ def _points_direction(pts: np.ndarray) -> float:
     making a point object per vertex)."""
     import shapely
 
-    rect = np.asarray(shapely.minimum_rotated_rectangle(shapely.linestrings(pts)).exterior.coords)
-    e = rect[1] - rect[0]
+    if len(pts) < 2:
+        return 0.0
+    # points on a line have a line for rectangle, one spot a point: its direction, or 0
+    rect = shapely.get_coordinates(shapely.minimum_rotated_rectangle(shapely.linestrings(pts)))
+    e = rect[1] - rect[0] if len(rect) > 1 else np.array([1.0, 0.0])
     return math.atan2(e[1], e[0])
 
 
@@ -329,7 +339,8 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     under 3 smoothing radii) are dropped; snapped edges share one orientation fitted to all of
     them (or ``direction``, radians, when given: a building part takes its footprint's);
     consecutive parallel lines closer than the Douglas-Peucker tolerance are merged.
-    Returns the counter-clockwise polygon (m, 2); the simplified ring when regularisation fails.
+    Returns the counter-clockwise polygon (m, 2); when regularisation fails, the simplified ring,
+    or where that crosses itself the outer ring of its largest part (:func:`_simple_ring`).
     """
     import shapely
 
@@ -352,15 +363,34 @@ def regularize(ring: np.ndarray, spacing: float, params: FootprintParams = Footp
     dirs, pts = _lines(segs, chords, cls, theta0, 2 * CORNER_RADIUS * spacing)
     dirs, pts, cls = _merge_runs(dirs, pts, cls, L, tol)
     if len(dirs) < 3:
-        return simple
+        return _simple_ring(simple, ring)
     poly = _drop_short(edge_intersections(dirs, pts), spacing / 4)
     if len(poly) < 3 or not shapely.is_valid(shapely.Polygon(poly)):
-        return simple
+        return _simple_ring(simple, ring)
     reg, ref = shapely.Polygon(poly), shapely.Polygon(simple)
-    ref = ref if shapely.is_valid(ref) else shapely.make_valid(ref)  # a simplified ring may cross itself
+    if not shapely.is_valid(ref):  # a simplified ring may cross itself: the area it encloses
+        ref = shapely.make_valid(ref, method="structure", keep_collapsed=False)
     if reg.symmetric_difference(ref).area > 0.25 * ref.area:  # regularisation went astray
-        return simple
+        return _simple_ring(simple, ring)
     return ccw(poly)
+
+
+def _simple_ring(ring: np.ndarray, fallback: np.ndarray) -> np.ndarray:
+    """``ring`` (k, 2) when it bounds a valid polygon; else (a simplified ring may cross itself)
+    the counter-clockwise outer ring of the largest polygon of its repair by
+    ``shapely.make_valid(method="structure")``, which keeps the area the ring encloses (a
+    bow-tie's two triangles) where the shoelace sum of a crossing ring cancels part of it; or
+    ``fallback`` when that repair leaves no area."""
+    import shapely
+
+    poly = shapely.Polygon(ring)
+    if shapely.is_valid(poly):
+        return ring
+    parts = shapely.get_parts(shapely.make_valid(poly, method="structure", keep_collapsed=False))
+    parts = parts[(shapely.get_type_id(parts) == 3) & (shapely.area(parts) > 0)]  # polygons
+    if not len(parts):
+        return fallback
+    return ccw(shapely.get_coordinates(shapely.get_exterior_ring(parts[np.argmax(shapely.area(parts))]))[:-1])
 
 
 def _drop_short(poly: np.ndarray, tol: float) -> np.ndarray:
@@ -441,7 +471,8 @@ def _smooth(counts: np.ndarray, sig: float, threads: int) -> np.ndarray:
 
 
 #: Smallest sigma (cells, half a point spacing) at which :func:`_roof_density` looks for roof
-#: cores; a kernel of 1.25 cells still averages about five points at the nominal spacing.
+#: cores; a Gaussian kernel of sigma s cells weighs as many cells as 4 pi s^2 equal ones, at the
+#: nominal spacing a quarter point each, so at 1 cell it still averages about three (pi) points.
 MIN_SIGMA = 1.0
 
 
@@ -1016,11 +1047,14 @@ def district_components(xy: np.ndarray, params: FootprintParams = FootprintParam
     outside the outline, the edge itself, join the nearest region within ``ASSIGN_REACH`` spacings).
     Regions under ``min_area`` are left out of ``components`` but keep their points. The spacing,
     the smoothing, the roof cores and the nearest regions are computed on ``threads`` threads
-    (the same result); each component's outline field is made only when it is traced."""
+    (the same result); each component's outline field is made only when it is traced. Under two
+    distinct points (no spacing, :func:`nominal_spacing`) there is no region."""
     from scipy import ndimage
 
     xy = np.asarray(xy, float)
     spacing = params.spacing or nominal_spacing(xy, threads)
+    if not (math.isfinite(spacing) and spacing > 0):  # under two distinct points: no region
+        return District(spacing, math.nan, math.nan, [], np.zeros(len(xy), np.int64), 0)
     field, origin, cell, ref = density_field(xy, spacing, threads=threads)
     labels = building_mask(field)
     ij = np.floor((xy - origin) / cell).astype(np.int64)

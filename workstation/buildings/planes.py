@@ -530,6 +530,8 @@ def plane_standard_errors(pts: np.ndarray, normal: np.ndarray, sigma: float) -> 
     >>> [round(x, 3) for x in se], round(float(se[1] * np.sin(t) * np.cos(t) / se[0]), 3)
     ([0.211, 0.486], 1.0)
     """
+    if len(pts) < 4:
+        return float("inf"), float("inf")
     c = pts - pts.mean(axis=0)
     down = np.array([0.0, 0.0, -1.0]) - normal * -normal[2]  # -z projected on the plane
     if np.linalg.norm(down) < 1e-9:  # level: the direction of the largest spread
@@ -538,7 +540,7 @@ def plane_standard_errors(pts: np.ndarray, normal: np.ndarray, sigma: float) -> 
     e2 = np.cross(normal, e1)
     p = np.column_stack([c @ e1, c @ e2])
     ptp = p.T @ p
-    if len(pts) < 4 or np.linalg.det(ptp) <= 1e-12 * np.trace(ptp) ** 2:
+    if np.linalg.det(ptp) <= 1e-12 * np.trace(ptp) ** 2:
         return float("inf"), float("inf")
     cov = np.linalg.inv(ptp)
     sin_t = math.hypot(normal[0], normal[1])
@@ -1002,19 +1004,25 @@ def _touching(xyz: np.ndarray, labels: np.ndarray, pairs: np.ndarray, reach: flo
                      for a, b in pairs], bool)
 
 
-def _ridge_pairs_along(xyz, labels, az, var, free, sloped, theta, v0, reach) -> np.ndarray:
-    """(p,) bool: the planes of a pair that together agree with the direction ``theta`` (variance
-    ``v0``) though one of them (``free``) did not alone. A pair is two ``sloped`` planes, one of
-    them ``free``, whose points touch (within ``reach``, :func:`_touching`) and whose azimuths
-    ``az`` (variances ``var``) are opposite by the Bayes factor of :func:`log_bayes_equal` (the
-    other's azimuth free over a full turn otherwise): the two sides of a level ridge, whose
-    normals' horizontal parts are opposite (Zhou & Neumann 2012's symmetric planes). Their
-    common direction, the inverse-variance mean, is then tested by :func:`_along`, so the
-    points of both decide where one narrow face's alone are too few."""
+def _ridge_pairs_along(xyz, labels, az, var, dominant, sloped, theta, v0, reach) -> np.ndarray:
+    """(p,) azimuths (degrees) of the planes of a pair that together agree with the direction
+    ``theta`` (variance ``v0``, the mean of the planes ``dominant`` of :func:`dominant_direction`)
+    though one of them did not alone; NaN for the other planes. A pair is two ``sloped`` planes,
+    at least one of them not ``dominant``, whose points touch (within ``reach``,
+    :func:`_touching`) and whose azimuths ``az`` (variances ``var``) are opposite by the Bayes
+    factor of :func:`log_bayes_equal` (the other's azimuth free over a full turn otherwise): the
+    two sides of a level ridge, whose normals' horizontal parts are opposite (Zhou & Neumann
+    2012's symmetric planes). Their common direction, the inverse-variance mean m, is then tested
+    by :func:`_along` against the dominant direction without the pair's dominant plane, if any
+    (the leave-one-out mean of :func:`_agreeing`), so the points of both decide where one narrow
+    face's alone are too few. The first plane of the pair faces m, the second m + 180 degrees
+    (of a plane in several pairs, the pair of the largest weight decides); the quarter turn a
+    plane snaps to follows from that direction, not from its own azimuth, which may be far off
+    (a face of large variance is opposite its partner's within it)."""
     p = len(az)
-    out = np.zeros(p, bool)
+    out = np.full(p, np.nan)
     i, j = np.triu_indices(p, 1)
-    pair = sloped[i] & sloped[j] & (free[i] | free[j])
+    pair = sloped[i] & sloped[j] & ~(dominant[i] & dominant[j])
     i, j = i[pair], j[pair]
     if not len(i):
         return out
@@ -1026,8 +1034,17 @@ def _ridge_pairs_along(xyz, labels, az, var, free, sloped, theta, v0, reach) -> 
         touch = _touching(xyz, labels, np.column_stack([i, j]), reach)
         i, j, r = i[touch], j[touch], r[touch]
     w = 1.0 / var[i] + 1.0 / var[j]
-    ok = _along(az[i] + r / var[j] / w, 1.0 / w, theta, v0)
-    out[i[ok]] = out[j[ok]] = True
+    m = az[i] + r / var[j] / w
+    # the dominant mean without the pair's dominant plane d: theta is the weighted mean of the
+    # set's offsets from it (their sum is 0), so leaving d out moves it by -w_d r_d / (1/v0 - w_d)
+    d = np.where(dominant[i], i, j)
+    wd = np.where(dominant[d], 1.0 / var[d], 0.0)
+    rd = (az[d] - theta + 45.0) % 90.0 - 45.0
+    ok = _along(m, 1.0 / w, theta - wd * rd / (1.0 / v0 - wd), 1.0 / (1.0 / v0 - wd))
+    faces, facing, ws = np.r_[i[ok], j[ok]], np.r_[m[ok], m[ok] + 180.0] % 360.0, np.r_[w[ok], w[ok]]
+    order = np.lexsort((-ws, faces))
+    first = np.unique(faces[order], return_index=True)[1]
+    out[faces[order][first]] = facing[order][first]
     return out
 
 
@@ -1045,7 +1062,8 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
       (:func:`dominant_direction`) or a quarter turn of it take that azimuth and are refitted with
       it fixed (a line fit in the vertical plane along it); so do the two planes of a level ridge
       (touching, azimuths opposite) whose mean azimuth agrees though one of them alone does not
-      (:func:`_ridge_pairs_along`);
+      (:func:`_ridge_pairs_along`), the quarter turn of such a plane the one its pair's mean
+      (or its opposite) gives;
     * tilt: two such planes facing opposite ways whose points touch (within ``reach`` (m): the two
       sides of a gable or a dormer) and whose constrained tilts (variance sigma^2 over the sum of
       squared downslope coordinates) agree share one tilt, fitted to the pooled points of both;
@@ -1073,7 +1091,9 @@ def regularise_planes(xyz: np.ndarray, labels: np.ndarray, normals: np.ndarray, 
     az = azimuth_of(normals)
     theta, v0, snap = dominant_direction(az, var_az)
     if np.isfinite(theta):  # a face refused alone may agree as half of a level ridge
-        snap |= _ridge_pairs_along(xyz, labels, az, var_az, sloped & ~snap, sloped, theta, v0, reach)
+        paired = _ridge_pairs_along(xyz, labels, az, var_az, snap, sloped, theta, v0, reach)
+        az = np.where(np.isfinite(paired) & ~snap, paired, az)  # facing its ridge pair's direction
+        snap |= np.isfinite(paired)
     force = np.zeros(p, bool) if force is None else np.asarray(force, bool) & sloped
     if not snap.any() and force.any():  # no two other planes agree: the forced planes' own mean
         w, ref = 1.0 / var_az[force], float(az[force][np.argmin(var_az[force])])
