@@ -12,6 +12,8 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py simwater           # water on the sim validation tiles, step on/off
     PYTHONPATH=. python scripts/bench_classify.py vegdiag            # real tiles: confusion, steps off one at a time
     PYTHONPATH=. python scripts/bench_classify.py simroof            # sim tiles: what the roof test and understorey step move
+    PYTHONPATH=. python scripts/bench_classify.py tiles [--tile-points N] [--points N] [--only whole|tiled|layout]
+                                                  # tiled vs one-tile codes (default 400 k per tile)
 
 Real data come from ../shared/data (or $WS_SHARED_DATA) and are never copied.
 """
@@ -61,6 +63,102 @@ def speed(model=None, points=None):
     wall, cpu = best
     emit(bench="classify_speed", points=cloud.n, seconds=wall, points_per_s=cloud.n / wall, cpu_seconds=cpu,
          cpu_points_per_core_s=cloud.n / cpu, load_avg=os.getloadavg()[0], cores=os.cpu_count())
+
+
+def _tiles_cloud(points=None):
+    """bcts_1 + bcts_2 (with their own classes), or the ground benchmark's synthetic tile."""
+    from workstation.core.cloud import concatenate
+    from workstation.io import read_cloud
+
+    if points:
+        sys.path.insert(0, str(REPO / "scripts"))
+        from bench_ground import synthetic_tile
+
+        return synthetic_tile(int(points), DATA)
+    return concatenate([read_cloud(DATA / "lidar" / "bcts_1.laz"), read_cloud(DATA / "lidar" / "bcts_2.laz")])
+
+
+def _border_distance(clf, cloud) -> np.ndarray:
+    """Each point's horizontal distance (m) to the nearest border between the cores of the
+    classifier's tiles (inf for a single tile): the cores' bounding boxes' inner edges."""
+    from workstation.ml.features import metric_xyz
+
+    xy = metric_xyz(cloud)[0][:, :2]
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    d = np.full(cloud.n, np.inf)
+    for core, _sel in clf._tiles(cloud):
+        a, b = xy[core].min(axis=0), xy[core].max(axis=0)
+        for ax in (0, 1):
+            if a[ax] > lo[ax]:
+                d[core] = np.minimum(d[core], xy[core, ax] - a[ax])
+            if b[ax] < hi[ax]:
+                d[core] = np.minimum(d[core], b[ax] - xy[core, ax])
+    return d
+
+
+def tiles(model=None, tile_points=400_000, points=None, only=None):
+    """Whether the classes depend on how the cloud is cut: the codes of one tile against those
+    of tiles of ``tile_points`` (bcts_1 + bcts_2, or with ``points`` the synthetic tile): the
+    share that differ, by distance to the nearest tile border, the probabilities' largest
+    difference, CPU and wall seconds of each (twice), and ground / building / vegetation F1
+    against the files' classes. ``only`` ("whole" or "tiled") runs that one alone and reports
+    the process's peak RSS (run it in a fresh process); "layout" only prints the sizes of the
+    classifier's tiles with their buffers (``PointClassifier._tiles``), which every run prints
+    first."""
+    import resource
+
+    from workstation.ml.classifier import PointClassifier
+    from workstation.ml.realdata import VEG, f1
+
+    cloud = _tiles_cloud(points)
+    ref = np.asarray(cloud.attrs["classification"]) if "classification" in cloud.attrs else None
+    if ref is not None:
+        cloud = cloud.without_attrs("classification")
+    clf = PointClassifier.load(model, device="cpu")
+    clf.tile_points = int(tile_points)
+    sizes = [len(sel) for _core, sel in clf._tiles(cloud)]
+    emit(bench="tiles_layout", points=cloud.n, tile_points=int(tile_points), tiles=len(sizes),
+         points_in_tiles=int(sum(sizes)), buffer_share=sum(sizes) / cloud.n - 1, largest_tile=max(sizes))
+    if only == "layout":
+        return
+    clf.predict(cloud[:20000])  # warm-up (imports)
+    runs = {"whole": cloud.n + 1, "tiled": int(tile_points)}
+    out = {}
+    for name, tp in runs.items():
+        if only and name != only:
+            continue
+        clf.tile_points = tp
+        for rep in range(1 if only else 2):
+            t0, c0 = time.perf_counter(), time.process_time()
+            pred = clf.predict_codes(cloud)
+            wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+            emit(bench="tiles_run", run=name, tile_points=tp, points=cloud.n, repeat=rep, seconds=wall, cpu_seconds=cpu,
+                 peak_rss_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024 if only else None,
+                 load_avg=os.getloadavg()[0])
+        out[name] = pred
+        if ref is not None:
+            c = pred.codes
+            emit(bench="tiles_f1", run=name, ground_f1=f1(ref == 2, c == 2), building_f1=f1(ref == 6, c == 6),
+                 vegetation_f1=f1(np.isin(ref, VEG), np.isin(c, VEG)))
+    if only:
+        return
+    clf.tile_points = int(tile_points)
+    d = _border_distance(clf, cloud)
+    diff = out["whole"].codes != out["tiled"].codes
+    edges = [0, 5, 20, 50, 110, 200, np.inf]
+    band = {f"{a}-{b}m": [int(diff[(d >= a) & (d < b)].sum()), int(((d >= a) & (d < b)).sum())]
+            for a, b in zip(edges[:-1], edges[1:])}
+    emit(bench="tiles_diff", points=cloud.n, tile_points=int(tile_points), tiles=sum(1 for _ in clf._tiles(cloud)),
+         changed=int(diff.sum()), changed_pct=100.0 * diff.mean(),
+         changed_by_border_distance=band,
+         max_abs_proba_diff=float(np.abs(out["whole"].proba - out["tiled"].proba).max()),
+         changed_pairs=_pairs(out["whole"].codes[diff], out["tiled"].codes[diff]))
+
+
+def _pairs(a: np.ndarray, b: np.ndarray) -> dict:
+    """{"a->b": count} of paired codes."""
+    u, n = np.unique(np.stack([a, b]), axis=1, return_counts=True) if len(a) else (np.zeros((2, 0), int), [])
+    return {f"{x}->{y}": int(k) for (x, y), k in zip(u.T, n)}
 
 
 def goals(clf, label):
@@ -361,5 +459,8 @@ if __name__ == "__main__":
         vegdiag(model)
     elif what == "simroof":
         simroof()
+    elif what == "tiles":
+        arg = lambda k: sys.argv[sys.argv.index(k) + 1] if k in sys.argv else None  # noqa: E731
+        tiles(model, int(arg("--tile-points") or 400_000), arg("--points"), arg("--only"))
     else:
         raise SystemExit(f"unknown benchmark {what!r}")

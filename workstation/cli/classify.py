@@ -18,7 +18,8 @@ from .options import RegistryChoice, field_option, positive_float
 @field_option(resolve_device, "device", "--device", type=RegistryChoice(DEVICES), show_default=True,
               help="Where the network runs (auto: CUDA when present).")
 @click.option("--tile-points", type=click.IntRange(10_000), default=None,
-              help="Largest number of points classified per tile (tiles overlap by the feature radius).")
+              help="Above this many points the feature pass's neighbourhoods (its largest memory) are "
+                   "computed tile by tile (default 3,000,000); the classes are the same either way.")
 @click.option("--roof-tolerance", type=positive_float, default=None,
               help="Roof planarity test: RMS distance (m) to the local plane above which a building point "
                    "is not a roof (default 0.08, the model's setting); raise it for a noisy scan, as with "

@@ -10,8 +10,10 @@ provisional ground (< 0.5 m, < 2 m, above), building 6, water 9, other 1 (cars, 
 towers), noise 7 below the ground and 18 above it; bridge decks 17 by a geometric test after
 the network (:func:`workstation.ground.bridges.bridge_decks`).
 
-Large clouds are classified tile by tile in metric coordinates with an overlap that covers
-the largest feature radius, each point taking the prediction of the tile whose core holds it.
+Large clouds have the feature pass's kNN neighbourhoods, its largest memory, computed tile by
+tile (square tiles with buffers wide enough that every neighbourhood is the whole cloud's);
+the grids, statistics and objects are the whole cloud's, so the classes do not depend on the
+tiling.
 
 References
 ----------
@@ -40,7 +42,15 @@ from workstation.ground.bridges import BridgeParams
 from workstation.ground.refine import Refine, check_steps, declare, run_chain
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
-from .features import FEATURE_NAMES, FeatureParams, compute_features, features_and_segments, metric_xyz
+from .features import (
+    FEATURE_NAMES,
+    FeatureParams,
+    compute_features,
+    features_and_segments,
+    knn_buffer,
+    metric_xyz,
+    square_tiles,
+)
 
 log = get_logger(__name__)
 
@@ -201,7 +211,8 @@ class PointClassifier:
         ``auto`` (CUDA when present), ``cpu`` or ``cuda``.
     feature_params : FeatureParams
     tile_points : int
-        Largest number of points classified in one tile (memory bound).
+        Above this many points the feature pass's kNN scales are computed tile by tile, each
+        tile's core holding about 0.64 of it (memory bound); the classes are the same.
     veg_low_max, veg_medium_max : float
         Height above ground (m) splitting low / medium / high vegetation.
     ignore_features : sequence of str
@@ -494,30 +505,25 @@ class PointClassifier:
             self.net_ = self.net_.to(dev)
         return predict_logits(self.net_, F, dev)
 
+    def _tile_side(self, cloud: Cloud) -> float | None:
+        """Side (m) of the square tiles of the feature pass's kNN scales (None: one tile, the
+        cloud has at most ``tile_points`` points): a core of about 0.64 ``tile_points`` at
+        the cloud's mean density over its bounding box."""
+        if cloud.n <= self.tile_points:
+            return None
+        ext = metric_xyz(cloud)[0][:, :2].max(axis=0)
+        area = max(float(ext[0] * ext[1]), 1.0)
+        return max(float(np.sqrt(self.tile_points / (cloud.n / area))) * 0.8, 4 * knn_buffer(self.feature_params))
+
     def _tiles(self, cloud: Cloud):
-        """(core mask, tile-with-buffer index array) pairs covering the cloud."""
-        n = cloud.n
-        if n <= self.tile_points:
-            yield np.ones(n, bool), np.arange(n)
+        """(core mask, tile-with-buffer index array) pairs of the kNN tiles
+        (:func:`workstation.ml.features.square_tiles`; one tile when the cloud is small)."""
+        side = self._tile_side(cloud)
+        if side is None:
+            yield np.ones(cloud.n, bool), np.arange(cloud.n)
             return
-        xyz, _, _ = metric_xyz(cloud)
-        ext = xyz[:, :2].max(axis=0)
-        area = max(ext[0] * ext[1], 1.0)
-        side = float(np.sqrt(self.tile_points / (n / area))) * 0.8
-        buf = max(self.feature_params.min_radii) + self.feature_params.ground_window
-        side = max(side, 2 * buf)
-        nx, ny = int(np.ceil(ext[0] / side)) or 1, int(np.ceil(ext[1] / side)) or 1
-        ix = np.minimum((xyz[:, 0] / side).astype(np.int64), nx - 1)
-        iy = np.minimum((xyz[:, 1] / side).astype(np.int64), ny - 1)
-        for a in range(nx):
-            for b in range(ny):
-                core = (ix == a) & (iy == b)
-                if not core.any():
-                    continue
-                x0, x1 = a * side - buf, (a + 1) * side + buf
-                y0, y1 = b * side - buf, (b + 1) * side + buf
-                sel = np.flatnonzero((xyz[:, 0] >= x0) & (xyz[:, 0] < x1) & (xyz[:, 1] >= y0) & (xyz[:, 1] < y1))
-                yield core, sel
+        for core, sel, _rect in square_tiles(metric_xyz(cloud)[0][:, :2], side, knn_buffer(self.feature_params)):
+            yield core, sel
 
     def _roof_tester(self, cloud: Cloud, hag: np.ndarray):
         from .roofs import RoofParams, RoofTest
@@ -526,46 +532,39 @@ class PointClassifier:
                         workers=self.feature_params.workers)
 
     def _infer(self, cloud: Cloud, roof: bool = False):
-        """Probabilities, provisional-ground height and slope, and (``roof``, a single tile)
-        the roof test already under way in the background (:class:`_RoofJob`), else None.
+        """Probabilities, provisional-ground height and slope, and (``roof``) the roof test
+        already under way in the background (:class:`_RoofJob`), else None.
 
-        For a single tile the roof test's KD-tree is built beside the network, and its
+        The roof test's KD-tree is built beside the kNN scales and the network, and its
         queries start on the building points (after the segment step and the gate) while
-        :meth:`_codes` runs the refine chain, whose steps may add a few more (tested there)."""
+        :meth:`_codes` runs the refine chain, whose steps may add a few more (tested there).
+        Above ``tile_points`` points only the feature pass's kNN scales go tile by tile: every
+        value is the one the whole cloud gives (:func:`features_and_segments`)."""
         self._check_fitted()
         if cloud.n < 3:
             raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
-        P = np.zeros((cloud.n, len(MODEL_CLASSES)), np.float32)
-        hag = np.zeros((cloud.n, 2), np.float32)
-        for core, sel in self._tiles(cloud):
-            whole = len(sel) == cloud.n and bool(core.all())
-            sub = cloud if len(sel) == cloud.n else cloud[sel]
-            pool = ThreadPoolExecutor(max_workers=1)
-            try:
-                tester = []  # the roof test's KD-tree, built while the feature pass waits for its kNN threads
+        side = self._tile_side(cloud)
+        pool = ThreadPoolExecutor(max_workers=1)
+        try:
+            tester = []  # the roof test's KD-tree, built while the feature pass waits for its kNN threads
 
-                def build(hag, sub=sub, tester=tester):
-                    tester.append(pool.submit(self._roof_tester, sub, hag.copy()))
+            def build(hag):
+                tester.append(pool.submit(self._roof_tester, cloud, hag.copy()))
 
-                want = whole and roof
-                F, segments = features_and_segments(sub, self.feature_params, with_hag=build if want else None)
-                F = self._mask(F)
-                tester = tester[0] if tester else None
-                p = self.predict_proba_features(F)
-                if self.segment_weight > 0:
-                    p = _segment_mean(p, segments, self.segment_weight)
-                job = None
-                if tester is not None:  # the candidates _codes will have, but the refine chain's
-                    cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])
-                    job = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
-            finally:
-                pool.shutdown(wait=False)  # the roof job runs on
-            if whole:  # one tile: no copies
-                return p, F[:, [_HAG_COL, _SLOPE_COL]], job
-            keep = core[sel]
-            P[sel[keep]] = p[keep]
-            hag[sel[keep]] = F[:, [_HAG_COL, _SLOPE_COL]][keep]
-        return P, hag, None
+            F, segments = features_and_segments(cloud, self.feature_params, with_hag=build if roof else None,
+                                                tile_side=side)
+            F = self._mask(F)
+            tester = tester[0] if tester else None
+            p = self.predict_proba_features(F)
+            if self.segment_weight > 0:
+                p = _segment_mean(p, segments, self.segment_weight)
+            job = None
+            if tester is not None:  # the candidates _codes will have, but the refine chain's
+                cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])
+                job = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
+        finally:
+            pool.shutdown(wait=False)  # the roof job runs on
+        return p, F[:, [_HAG_COL, _SLOPE_COL]], job
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
         """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes

@@ -17,9 +17,9 @@ model trained on simulated scans transfer to real ones:
   of a grid-subsampled cloud and broadcast back to its points (Hackel et al. 2016);
 * **echo features**: return number / number of returns, number of returns, first/last flags,
   and a flag saying whether returns are present at all;
-* **intensity** normalised per tile by robust statistics (median and 10-90 % range), with a
+* **intensity** normalised per cloud by robust statistics (median and 10-90 % range), with a
   flag when it is missing or constant, so a model survives missing or rescaled intensity;
-* **local density**: log of the mean horizontal kNN distance relative to the tile's median;
+* **local density**: log of the mean kNN distance relative to the cloud's median;
 * **object areas**: the footprint area of the connected raised region (more than 1 m above
   the provisional ground) a point belongs to, and of the connected raised *planar* region
   (see :func:`_object_areas`), the object-level context that separates a car (a few m²)
@@ -28,6 +28,9 @@ model trained on simulated scans transfer to real ones:
 The kNN neighbourhoods are taken among one representative point per voxel (0.75 m fine,
 1.5 m coarse) and broadcast back to the voxel's points, and the covariances are float32
 moments, which keeps the whole feature pass at a few CPU-seconds per million points.
+Neighbours at equal distances are taken in the representatives' order, so a neighbourhood
+does not depend on the KD-tree, and the kNN scales, the pass's largest memory, can go tile by
+tile (``tile_side`` of :func:`features_and_segments`) with every value the whole cloud's.
 
 References
 ----------
@@ -293,11 +296,12 @@ def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv
 
 
-def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
+def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: bool = False):
     """Eigenvalue features of the kNN covariance of each query point among reference points.
 
     Returns (m, 8) float32: linearity, planarity, scattering, verticality, |n_z|, z std,
-    z - kNN min z, kNN max z - z; and the mean neighbour distance (m,).
+    z - kNN min z, kNN max z - z; and the mean neighbour distance (m,); with ``reach`` also
+    the distance of the farthest neighbour (m,).
 
     With ``workers`` other than 1 the rows after the KD-tree query are done in two halves on
     two threads (numpy releases the GIL): the fine scale is the feature pass's longest task,
@@ -308,10 +312,7 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
 
     k = int(min(k, len(xyz_ref)))
     tree = cKDTree(xyz_ref, balanced_tree=False, compact_nodes=False)
-    d, j = tree.query(xyz_q, k=k, workers=workers)
-    if k == 1:
-        j = j[:, None]
-        d = d[:, None]
+    d, j = _knn(tree, xyz_q, k, workers)
     ref32 = np.ascontiguousarray(xyz_ref.T, dtype=np.float32)  # (3, r): x, y, z rows
     m = len(xyz_q)
     out = np.empty((m, 8), np.float32)
@@ -323,7 +324,40 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int):
             other = pool.submit(_eigen_rows, xyz_q[half:], ref32, j[half:], k, out[half:])
             _eigen_rows(xyz_q[:half], ref32, j[:half], k, out[:half])
             other.result()
+    if reach:
+        return out, d.mean(axis=1), d[:, -1]
     return out, d.mean(axis=1)
+
+
+def _knn(tree, xyz_q: np.ndarray, k: int, workers: int) -> tuple[np.ndarray, np.ndarray]:
+    """The ``k`` nearest reference points (distances, indices; (m, k)) of each query, ties
+    of equal distance taken in reference order, so that neighbours and their order do not
+    depend on the tree: any set of reference points holding a query's neighbours, in the same
+    relative order, gives the same (the tiled feature pass). Queries ``k + 1`` to see a tie
+    at the k-th distance; the rare rows whose tie runs beyond are queried again, wider."""
+    n = tree.n
+    kq = min(k + 1, n)
+    d, j = tree.query(xyz_q, k=kq, workers=workers)
+    d, j = d.reshape(len(xyz_q), kq), j.reshape(len(xyz_q), kq)
+    if kq > 1:
+        tie = np.flatnonzero((d[:, 1:] == d[:, :-1]).any(axis=1))
+        if len(tie):
+            d, j = d[:, :k].copy(), j[:, :k].copy()
+            d[tie], j[tie] = _ordered_ties(tree, xyz_q[tie], k, kq, workers)
+    return d[:, :k], j[:, :k]
+
+
+def _ordered_ties(tree, q: np.ndarray, k: int, kq: int, workers: int) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_knn` of the queries ``q`` that have ties: every reference point as near as the
+    k-th (queried until the farthest returned is farther, or all are), sorted by distance and
+    then index."""
+    n = tree.n
+    d, j = tree.query(q, k=kq, workers=workers)
+    while kq < n and (d[:, kq - 1] == d[:, k - 1]).any():
+        kq = min(2 * kq, n)
+        d, j = tree.query(q, k=kq, workers=workers)
+    order = np.lexsort((j, d), axis=-1)[:, :k]
+    return np.take_along_axis(d, order, axis=1), np.take_along_axis(j, order, axis=1)
 
 
 def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
@@ -344,7 +378,11 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
     for a in range(3):
         c = np.take(ref32[a], jt)  # (k, m)
         # mean as numpy's: the neighbours added in order, then a true division by an intp count
-        np.true_divide(np.add.reduce(c, axis=0), np.intp(k), out=mu[a], casting="unsafe")
+        # (added row by row: numpy's own reduce turns pairwise for a single query, m == 1)
+        total = c[0].copy()
+        for i in range(1, k):
+            total += c[i]
+        np.true_divide(total, np.intp(k), out=mu[a], casting="unsafe")
         c -= mu[a]
         cols.append(c)
     x, y, zc = cols
@@ -503,7 +541,7 @@ def compute_features(cloud: Cloud, params: FeatureParams = FeatureParams()) -> n
 
 
 def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
-                          with_hag=None) -> tuple[np.ndarray, np.ndarray]:
+                          with_hag=None, tile_side: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Per-point feature matrix, and the planar raised object of each point (the components
     behind the ``planar_area`` feature, found on the way; the classifier's context step).
 
@@ -517,6 +555,10 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
         Called with the height above the provisional ground (the ``hag_prov`` column) as
         soon as it is known, while the kNN threads are still running: work that needs only
         that height can use the idle core (the classifier builds its roof test's KD-tree).
+    tile_side : float, optional
+        Compute the kNN scales, the pass's memory, tile by tile in squares of this side (m;
+        :func:`_tiled_eigen_columns`), with the same values: the grids, the statistics and the
+        objects are the whole cloud's either way.
 
     Returns
     -------
@@ -532,10 +574,31 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     p = params
     # the two kNN scales run in worker threads (KD-tree queries and numpy release the GIL)
     # while this thread does the grid features
-    pool = ThreadPoolExecutor(max_workers=1 if p.workers == 1 else 2)
-    futures = [pool.submit(_voxel_eigen, xyz, v, k, p.workers)
-               for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
+    pool = futures = None
+    if tile_side is None:
+        pool = ThreadPoolExecutor(max_workers=1 if p.workers == 1 else 2)
+        futures = [pool.submit(_voxel_eigen, xyz, v, k, p.workers)
+                   for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
     F = np.empty((n, len(FEATURE_NAMES)), np.float32, order="F")
+    cell, (r, c, shape) = _grid_columns(F, cloud, xyz, p)
+    if with_hag is not None:
+        with_hag(F[:, 7])
+    if pool is not None:
+        fine, coarse = [f.result() for f in futures]
+        pool.shutdown()
+        dh = _eigen_columns(F, xyz[:, 2], fine, coarse)
+    else:
+        dh = _tiled_eigen_columns(F, xyz, p, float(tile_side))
+    _density_column(F, dh)
+    F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
+    if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
+        np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
+    return F, segments
+
+
+def _grid_columns(F: np.ndarray, cloud: Cloud, xyz: np.ndarray, p: FeatureParams):
+    """Columns 0-9 (the grid features) and 24-30 (echoes, intensity) of ``F``; returns the
+    grid's cell (m) and each point's (row, column, grid shape)."""
     from workstation.ground.common import auto_cell
 
     cell = auto_cell(xyz[:, :2], p.cell)  # sparse data over a large extent: grids sized by the points
@@ -546,18 +609,140 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     flat = r * shape[1] + c  # each point's cell in the raveled grids
     _relief_features(F, xyz[:, 2], zmin_f, zmax, flat, cell, p)
     _ground_features(F, xyz, zmin, zmin_f, (r, c, shape), cell, p)
-    # while the kNN threads finish
     F[:, 24:29] = _echo_features(cloud)
     F[:, 29:31] = _intensity_features(cloud)
-    if with_hag is not None:
-        with_hag(F[:, 7])
-    fine, coarse = [f.result() for f in futures]
-    pool.shutdown()
-    _eigen_features(F, xyz[:, 2], fine, coarse)
-    F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
-    if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
-        np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
-    return F, segments
+    return cell, (r, c, shape)
+
+
+def knn_buffer(p: FeatureParams) -> float:
+    """First buffer (m) of a kNN tile (:func:`_tiled_eigen_columns` widens it where needed)."""
+    return 8.0 * max(p.fine_voxel, p.coarse_voxel, 1.0)
+
+
+def square_tiles(xy: np.ndarray, side: float, buffer: float):
+    """Square tiles of ``side`` (m) over local metric ``xy`` (origin 0): (core mask, indices
+    of the points within ``buffer`` of the core, that rectangle (x0, x1, y0, y1)) of each
+    occupied tile; every point lies in one core."""
+    ext = xy.max(axis=0)
+    nx, ny = int(np.ceil(ext[0] / side)) or 1, int(np.ceil(ext[1] / side)) or 1
+    ix = np.minimum((xy[:, 0] / side).astype(np.int64), nx - 1)
+    iy = np.minimum((xy[:, 1] / side).astype(np.int64), ny - 1)
+    for a in range(nx):
+        for b in range(ny):
+            core = (ix == a) & (iy == b)
+            if not core.any():
+                continue
+            rect = (a * side - buffer, (a + 1) * side + buffer, b * side - buffer, (b + 1) * side + buffer)
+            yield core, _in_rect(xy, rect), rect
+
+
+def _in_rect(xy: np.ndarray, rect) -> np.ndarray:
+    """Indices of the points of ``xy`` in ``[x0, x1) x [y0, y1)``."""
+    x0, x1, y0, y1 = rect
+    return np.flatnonzero((xy[:, 0] >= x0) & (xy[:, 0] < x1) & (xy[:, 1] >= y0) & (xy[:, 1] < y1))
+
+
+def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side: float) -> np.ndarray:
+    """:func:`_eigen_columns` of the whole cloud, the kNN scales computed tile by tile
+    (:func:`square_tiles`, buffer :func:`knn_buffer`): each core point takes its voxel
+    representative's features from :func:`_exact_scale`, the same neighbours as in the
+    whole cloud. Returns each point's mean neighbour distance (the density column's input)."""
+    dh = np.empty(len(xyz))
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
+        keep = core[sel]
+        scales = [_exact_scale(xyz, sel, keep, rect, (lo, hi), v, k, p.workers)
+                  for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
+        Ft = np.empty((len(sel), len(FEATURE_NAMES)), np.float32, order="F")
+        d = _eigen_columns(Ft, xyz[sel, 2], *scales)
+        rows = sel[keep]
+        F[rows, 10:24] = Ft[keep, 10:24]
+        dh[rows] = d[keep]
+    return dh
+
+
+def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: int):
+    """:func:`_voxel_eigen` of the points ``sel`` of ``xyz`` (a tile and its buffer, the
+    rectangle ``rect``), exact for the representatives of the points ``keep`` of ``sel`` (the
+    core): the same neighbours as among the whole cloud's representatives.
+
+    The representatives of the voxels inside ``rect`` are the whole cloud's (the first point
+    of each, ``sel`` being in the cloud's order); those of voxels cut by its edge may differ,
+    but all lie within ``voxel`` of the edge. So a representative's k neighbours are the whole
+    cloud's when the farthest of them is nearer than its distance to each edge inside the
+    cloud's ``extent`` (lo, hi) less ``voxel``; the others are queried again among the
+    representatives of a wider rectangle, until none is left."""
+    part = xyz[sel]
+    if voxel > 0:
+        first, inv = voxel_ids(part, voxel)
+    else:
+        first, inv = np.arange(len(part)), np.arange(len(part))
+    ref = part[first]
+    e, dist, reach = _eigen(ref, ref, k, workers, reach=True)
+    used = np.zeros(len(ref), bool)
+    used[inv[keep]] = True
+    q = np.flatnonzero(used & ~_inside(ref, reach, rect, extent, voxel, len(ref) >= k))
+    while len(q):
+        # by what the farthest lacks, and at least the rectangle's half-width (few rounds)
+        grow = max(float(np.max(reach[q])) + 2 * voxel + 1.0, 0.5 * max(rect[1] - rect[0], rect[3] - rect[2]))
+        rect = (rect[0] - grow, rect[1] + grow, rect[2] - grow, rect[3] + grow)
+        wide = xyz[_in_rect(xyz[:, :2], rect)]
+        wref = wide[voxel_ids(wide, voxel)[0]] if voxel > 0 else wide
+        e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True)
+        q = q[~_inside(ref[q], reach[q], rect, extent, voxel, len(wref) >= k)]
+    return e, ref[:, 2], dist, inv
+
+
+def _inside(ref: np.ndarray, reach: np.ndarray, rect, extent, voxel: float, full: bool) -> np.ndarray:
+    """Whether each representative's neighbourhood (radius ``reach``) stays clear of the
+    rectangle's edges inside the cloud's extent by more than ``voxel`` (see
+    :func:`_exact_scale`); none does when the rectangle held fewer than k representatives
+    (``full`` false) unless it covers the extent."""
+    (lo, hi), (x0, x1, y0, y1) = extent, rect
+    clear = np.full(len(ref), np.inf)
+    for edge, inner, axis, sign in ((x0, x0 > lo[0], 0, 1), (x1, x1 <= hi[0], 0, -1),
+                                    (y0, y0 > lo[1], 1, 1), (y1, y1 <= hi[1], 1, -1)):
+        if inner:
+            np.minimum(clear, sign * (ref[:, axis] - edge) - voxel, out=clear)
+    if not full:
+        return np.isinf(clear)
+    return reach < clear
+
+
+def _eigen_columns(F: np.ndarray, z: np.ndarray, fine, coarse) -> np.ndarray:
+    """Columns 10-23 of ``F`` from the two :func:`_voxel_eigen` scales (one query per voxel
+    representative, broadcast to its points): six eigen features per scale (10-15 fine, 18-23
+    coarse) and the fine neighbourhood's extremes relative to each point's own height (16-17,
+    metres, capped at 30). Returns each point's mean fine neighbour distance."""
+    (ef, zr, dh, finv), (ec, _, _, inv) = fine, coarse
+    # broadcast: one ``take`` per column from a contiguous row of the transposed features
+    # straight into F's (Fortran-order) columns, no (n, 8) temporaries
+    eft, ect = np.ascontiguousarray(ef.T), np.ascontiguousarray(ec.T)
+    for a in range(6):
+        np.take(eft[a], finv, out=F[:, 10 + a])
+        np.take(ect[a], inv, out=F[:, 18 + a])
+    # extremes relative to each point's own height: the representatives' lowest and highest
+    # neighbour heights (float64, as their per-point differences) broadcast, then subtracted
+    buf = np.empty(len(z))
+    np.take(zr - eft[6], finv, out=buf)
+    np.subtract(z, buf, out=buf)
+    F[:, 16] = np.clip(buf, 0, 30, out=buf)
+    np.take(zr + eft[7], finv, out=buf)
+    np.subtract(buf, z, out=buf)
+    F[:, 17] = np.clip(buf, 0, 30, out=buf)
+    return dh.take(finv)
+
+
+def _density_column(F: np.ndarray, dh: np.ndarray) -> None:
+    """Column 31 of ``F``: the log of each point's local spacing ``dh`` (its mean fine
+    neighbour distance) relative to the cloud's median."""
+    med = float(np.median(dh)) if len(dh) else 1.0
+    F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
+
+
+def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
+    """Columns 10-23 and 31 of ``F`` (:func:`_eigen_columns`, :func:`_density_column`)."""
+    _density_column(F, _eigen_columns(F, z, fine, coarse))
 
 
 def _relief_features(F: np.ndarray, z: np.ndarray, zmin_f: np.ndarray, zmax: np.ndarray, flat: np.ndarray,
@@ -610,29 +795,3 @@ def _height_above(z: np.ndarray, ground: np.ndarray) -> np.ndarray:
     """``clip(z - ground, -20, 60)`` (float64), made in ``ground``'s array."""
     np.subtract(z, ground, out=ground)
     return np.clip(ground, -20, 60, out=ground)
-
-
-def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
-    """Columns 10-23 and 31 of ``F`` from the two :func:`_voxel_eigen` scales (one query per
-    voxel representative, broadcast to its points): six eigen features per scale (10-15 fine,
-    18-23 coarse), the fine neighbourhood's extremes relative to each point's own height (16-17,
-    metres, capped at 30) and the log of the local spacing relative to its median (31)."""
-    (ef, zr, dh, finv), (ec, _, _, inv) = fine, coarse
-    # broadcast: one ``take`` per column from a contiguous row of the transposed features
-    # straight into F's (Fortran-order) columns, no (n, 8) temporaries
-    eft, ect = np.ascontiguousarray(ef.T), np.ascontiguousarray(ec.T)
-    for a in range(6):
-        np.take(eft[a], finv, out=F[:, 10 + a])
-        np.take(ect[a], inv, out=F[:, 18 + a])
-    # extremes relative to each point's own height: the representatives' lowest and highest
-    # neighbour heights (float64, as their per-point differences) broadcast, then subtracted
-    buf = np.empty(len(z))
-    np.take(zr - eft[6], finv, out=buf)
-    np.subtract(z, buf, out=buf)
-    F[:, 16] = np.clip(buf, 0, 30, out=buf)
-    np.take(zr + eft[7], finv, out=buf)
-    np.subtract(buf, z, out=buf)
-    F[:, 17] = np.clip(buf, 0, 30, out=buf)
-    dh = dh.take(finv)
-    med = float(np.median(dh)) if len(z) else 1.0
-    F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
