@@ -124,3 +124,17 @@ def test_assignment_reach_covers_a_corner_beyond_the_half_density_line():
     corner = float(np.hypot(*(ring - cell / 2).T).min())
     assert corner == pytest.approx(math.sqrt(2) * NormalDist().inv_cdf(math.sqrt(0.5)) * CORNER_RADIUS * s, abs=0.02)
     assert ASSIGN_REACH * s == pytest.approx(corner + 2 * 0.5 * s, abs=0.02)
+
+
+def test_given_footprints_over_one_spot_of_building_points_give_a_clear_error():
+    # 20 building points on one spot have no spacing: a StageError naming the cause, not a
+    # NaN cell deep in the models
+    from workstation.buildings.pipeline import reconstruct_buildings
+    from workstation.core.errors import StageError
+
+    rng = np.random.default_rng(0)
+    ground = np.column_stack([rng.uniform(0, 40, (2000, 2)), np.zeros(2000)])
+    xyz = np.vstack([ground, np.tile([[20.0, 20.0, 8.0]], (20, 1))])
+    cls = np.r_[np.full(2000, 2), np.full(20, 6)].astype(np.uint8)
+    with pytest.raises(StageError, match="fewer than two distinct positions"):
+        reconstruct_buildings(xyz, cls, footprints=[np.array([[10.0, 10], [30, 10], [30, 30], [10, 30]])])

@@ -127,7 +127,8 @@ def test_earthwork_crests_stand_their_height_above_the_feet():
 
 
 @pytest.mark.parametrize("field, value", [("earthwork_side", (0.0, 2.0)), ("earthwork_height", (0.0, 3.0)),
-                                          ("earthwork_crest", (5.0, 2.0)), ("embankments", -1)])
+                                          ("earthwork_crest", (5.0, 2.0)), ("embankments", -1),
+                                          ("earthwork_side", (1.0, float("nan"))), ("earthwork_height", (1.0, float("inf")))])
 def test_earthwork_ranges_that_give_no_shape_are_refused(field, value):
     from dataclasses import replace
 

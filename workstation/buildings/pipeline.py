@@ -212,6 +212,9 @@ def _district_pass(xyz, cls, bxyz, params, footprints, threads, t) -> DistrictPa
     t0 = time.perf_counter()
     dtm_f = alongside(_ground, xyz, cls, params) if threads > 1 else None
     spacing = params.footprints.spacing or nominal_spacing(bxyz[:, :2], threads)
+    if not spacing > 0:  # fewer than two distinct building points: nothing to model
+        raise StageError("buildings", f"the {len(bxyz)} building points hold fewer than two distinct positions",
+                         "check that building points are classified (class 6)")
     shapes, owner, ref, cell = _district(bxyz, footprints, replace(params.footprints, spacing=spacing), threads)
     t["district_s"] = time.perf_counter() - t0
     dtm = dtm_f.result() if dtm_f is not None else _ground(xyz, cls, params)

@@ -492,13 +492,14 @@ def _draw_earthworks(recipe: "SceneRecipe", rng: np.random.Generator, ext: float
 
 def _check_earthworks(recipe: "SceneRecipe") -> None:
     """Refuse earthwork ranges that give no shape: counts below 0, heights and side runs
-    that are not positive, crests below 0, a range whose low end exceeds its high end."""
+    that are not positive, crests below 0, a range whose low end exceeds its high end, ends
+    that are not finite."""
     if recipe.embankments < 0 or recipe.cuttings < 0:
         field = "embankments" if recipe.embankments < 0 else "cuttings"
         raise InvalidInputError(f"{field} must be 0 or more", field=field)
     for field, zero_ok in (("earthwork_height", False), ("earthwork_crest", True), ("earthwork_side", False)):
         lo, hi = (float(v) for v in getattr(recipe, field))
-        if not (lo >= 0.0 if zero_ok else lo > 0.0) or hi < lo:
+        if not (np.isfinite(lo) and np.isfinite(hi)) or not (lo >= 0.0 if zero_ok else lo > 0.0) or hi < lo:
             what = "0 or more" if zero_ok else "positive"
             raise InvalidInputError(f"{field} [{lo}, {hi}] must be {what}, low end first", field=field)
 

@@ -334,30 +334,41 @@ def _knn(tree, xyz_q: np.ndarray, k: int, workers: int) -> tuple[np.ndarray, np.
     of equal distance taken in reference order, so that neighbours and their order do not
     depend on the tree: any set of reference points holding a query's neighbours, in the same
     relative order, gives the same (the tiled feature pass). Queries ``k + 1`` to see a tie
-    at the k-th distance; the rare rows whose tie runs beyond are queried again, wider."""
+    at the k-th distance; the rare rows whose tie runs beyond are queried again, wider. Ties
+    at distance 0 are left as the tree gives them: those neighbours share the query's
+    coordinates, so their order changes no feature (and a cloud of many duplicates would
+    otherwise query every duplicate of every one)."""
     n = tree.n
     kq = min(k + 1, n)
     d, j = tree.query(xyz_q, k=kq, workers=workers)
     d, j = d.reshape(len(xyz_q), kq), j.reshape(len(xyz_q), kq)
     if kq > 1:
-        tie = np.flatnonzero((d[:, 1:] == d[:, :-1]).any(axis=1))
+        tie = np.flatnonzero(((d[:, 1:] == d[:, :-1]) & (d[:, 1:] > 0)).any(axis=1))
         if len(tie):
+            d2, j2 = _ordered_ties(tree, xyz_q[tie], d[tie], j[tie], k, workers)
             d, j = d[:, :k].copy(), j[:, :k].copy()
-            d[tie], j[tie] = _ordered_ties(tree, xyz_q[tie], k, kq, workers)
+            d[tie], j[tie] = d2, j2
     return d[:, :k], j[:, :k]
 
 
-def _ordered_ties(tree, q: np.ndarray, k: int, kq: int, workers: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`_knn` of the queries ``q`` that have ties: every reference point as near as the
-    k-th (queried until the farthest returned is farther, or all are), sorted by distance and
-    then index."""
-    n = tree.n
-    d, j = tree.query(q, k=kq, workers=workers)
-    while kq < n and (d[:, kq - 1] == d[:, k - 1]).any():
-        kq = min(2 * kq, n)
-        d, j = tree.query(q, k=kq, workers=workers)
-    order = np.lexsort((j, d), axis=-1)[:, :k]
-    return np.take_along_axis(d, order, axis=1), np.take_along_axis(j, order, axis=1)
+def _ordered_ties(tree, q: np.ndarray, d: np.ndarray, j: np.ndarray, k: int, workers: int):
+    """:func:`_knn` of the queries ``q`` that have ties, given their first query (``d``, ``j``;
+    ``kq`` > k columns): every reference point as near as the k-th (each row queried, wider,
+    until the farthest returned is farther, or all are), sorted by distance and then index."""
+    n, kq = tree.n, d.shape[1]
+    out_d, out_j = np.empty((len(q), k)), np.empty((len(q), k), np.intp)
+    rows = np.arange(len(q))
+    while len(rows):
+        wider = (kq < n) & (d[:, kq - 1] == d[:, k - 1])  # the tie may run past the last column
+        done = ~wider
+        order = np.lexsort((j[done], d[done]), axis=-1)[:, :k]
+        out_d[rows[done]] = np.take_along_axis(d[done], order, axis=1)
+        out_j[rows[done]] = np.take_along_axis(j[done], order, axis=1)
+        rows, q = rows[wider], q[wider]
+        if len(rows):
+            kq = min(2 * kq, n)
+            d, j = tree.query(q, k=kq, workers=workers)
+    return out_d, out_j
 
 
 def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
@@ -671,7 +682,7 @@ def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: in
     but all lie within ``voxel`` of the edge. So a representative's k neighbours are the whole
     cloud's when the farthest of them is nearer than its distance to each edge inside the
     cloud's ``extent`` (lo, hi) less ``voxel``; the others are queried again among the
-    representatives of a wider rectangle, until none is left."""
+    representatives of a rectangle around them, wider each round, until none is left."""
     part = xyz[sel]
     if voxel > 0:
         first, inv = voxel_ids(part, voxel)
@@ -682,10 +693,13 @@ def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: in
     used = np.zeros(len(ref), bool)
     used[inv[keep]] = True
     q = np.flatnonzero(used & ~_inside(ref, reach, rect, extent, voxel, len(ref) >= k))
+    grow = float(np.max(reach[q])) + 2 * voxel + 1.0 if len(q) else 0.0
     while len(q):
-        # by what the farthest lacks, and at least the rectangle's half-width (few rounds)
-        grow = max(float(np.max(reach[q])) + 2 * voxel + 1.0, 0.5 * max(rect[1] - rect[0], rect[3] - rect[2]))
-        rect = (rect[0] - grow, rect[1] + grow, rect[2] - grow, rect[3] + grow)
+        # around the stragglers only (a lone high point reaches far): their box widened by
+        # what the farthest neighbour needs, doubled each round until every one is settled
+        lo, hi = ref[q, :2].min(axis=0), ref[q, :2].max(axis=0)
+        rect = (lo[0] - grow, hi[0] + grow, lo[1] - grow, hi[1] + grow)
+        grow *= 2.0
         wide = xyz[_in_rect(xyz[:, :2], rect)]
         wref = wide[voxel_ids(wide, voxel)[0]] if voxel > 0 else wide
         e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True)

@@ -16,6 +16,7 @@ torch is imported inside the functions, never at module import.
 
 from __future__ import annotations
 
+import threading
 from contextlib import contextmanager
 
 import numpy as np
@@ -146,11 +147,15 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
 
 @contextmanager
 def _one_torch_thread():
-    """Run torch on one intra-op thread inside the block, in the calling thread. With torch's
-    OpenMP backend the setting belongs to the thread that makes it (and is the default of
-    threads that start torch meanwhile), so each caller sets it and restores its own."""
+    """Run torch on one intra-op thread inside the block when called from the main thread,
+    restoring its count after. Torch keeps the count per thread, but a thread that first
+    uses torch takes the count last set anywhere as its own for good, so other threads (a
+    Dask worker's, say) are left as they are rather than risk leaving them on one thread."""
     import torch
 
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
     before = torch.get_num_threads()
     torch.set_num_threads(1)
     try:

@@ -262,17 +262,18 @@ class _Scorer:
 
 
 def plane_hypotheses(src: Prepared, tgt: Prepared, params: PlaneCoarseParams = PlaneCoarseParams(),
-                     viewpoints=(None, None), images=None):
+                     viewpoints=None, images=None):
     """Poses laying a large source plane onto a large target plane (module docstring, steps
     1-3), with their fast agreement scores: ``(scores (k,), transforms (k, 4, 4), source
     planes, target planes)``, best first. With both scanner positions (``viewpoints``, local
-    frames) known, a plane is laid only on planes whose scanner lies on the same side of it
+    frames; by default those the prepared clouds carry) known, a plane is laid only on planes whose scanner lies on the same side of it
     (:func:`_same_side_offsets`): a floor seen from above is not laid on one seen from below.
     The agreement score counts free-space violations (:class:`_Scorer`) in ``images``, the
     :class:`RangeImage` of source and target (None where the scanner is unknown), built
     from ``viewpoints`` when not given."""
     v = src.radii.voxel
     xs, xt = np.asarray(src.down.points), np.asarray(tgt.down.points)
+    viewpoints = (src.viewpoint, tgt.viewpoint) if viewpoints is None else tuple(viewpoints)
     if images is None:
         images = range_images(src, tgt, viewpoints, params)
     ps = extract_planes(xs, np.asarray(src.down.normals), v, params)
