@@ -296,12 +296,13 @@ def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv
 
 
-def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: bool = False):
+def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: bool = False, tree=None):
     """Eigenvalue features of the kNN covariance of each query point among reference points.
 
     Returns (m, 8) float32: linearity, planarity, scattering, verticality, |n_z|, z std,
     z - kNN min z, kNN max z - z; and the mean neighbour distance (m,); with ``reach`` also
-    the distance of the farthest neighbour (m,).
+    the distance of the farthest neighbour (m,). ``tree``: a cKDTree of ``xyz_ref`` (built
+    here when None).
 
     With ``workers`` other than 1 the rows after the KD-tree query are done in two halves on
     two threads (numpy releases the GIL): the fine scale is the feature pass's longest task,
@@ -311,7 +312,8 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: 
     from scipy.spatial import cKDTree
 
     k = int(min(k, len(xyz_ref)))
-    tree = cKDTree(xyz_ref, balanced_tree=False, compact_nodes=False)
+    if tree is None:
+        tree = cKDTree(xyz_ref, balanced_tree=False, compact_nodes=False)
     d, j = _knn(tree, xyz_q, k, workers)
     ref32 = np.ascontiguousarray(xyz_ref.T, dtype=np.float32)  # (3, r): x, y, z rows
     m = len(xyz_q)
@@ -660,9 +662,10 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     whole cloud. Returns each point's mean neighbour distance (the density column's input)."""
     dh = np.empty(len(xyz))
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    whole: dict = {}  # voxel -> the whole cloud's representatives and their tree, made when first needed
     for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
         keep = core[sel]
-        scales = [_exact_scale(xyz, sel, keep, rect, (lo, hi), v, k, p.workers)
+        scales = [_exact_scale(xyz, sel, keep, rect, (lo, hi), v, k, p.workers, whole)
                   for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
         Ft = np.empty((len(sel), len(FEATURE_NAMES)), np.float32, order="F")
         d = _eigen_columns(Ft, xyz[sel, 2], *scales)
@@ -672,7 +675,7 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     return dh
 
 
-def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: int):
+def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: int, whole: dict):
     """:func:`_voxel_eigen` of the points ``sel`` of ``xyz`` (a tile and its buffer, the
     rectangle ``rect``), exact for the representatives of the points ``keep`` of ``sel`` (the
     core): the same neighbours as among the whole cloud's representatives.
@@ -681,8 +684,9 @@ def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: in
     of each, ``sel`` being in the cloud's order); those of voxels cut by its edge may differ,
     but all lie within ``voxel`` of the edge. So a representative's k neighbours are the whole
     cloud's when the farthest of them is nearer than its distance to each edge inside the
-    cloud's ``extent`` (lo, hi) less ``voxel``; the others are queried again among the
-    representatives of a rectangle around them, wider each round, until none is left."""
+    cloud's ``extent`` (lo, hi) less ``voxel``. The few others (a lone point far above the
+    rest reaches across tiles) are queried among the whole cloud's representatives, made once
+    per voxel size into ``whole`` when a tile first needs them."""
     part = xyz[sel]
     if voxel > 0:
         first, inv = voxel_ids(part, voxel)
@@ -693,17 +697,14 @@ def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: in
     used = np.zeros(len(ref), bool)
     used[inv[keep]] = True
     q = np.flatnonzero(used & ~_inside(ref, reach, rect, extent, voxel, len(ref) >= k))
-    grow = float(np.max(reach[q])) + 2 * voxel + 1.0 if len(q) else 0.0
-    while len(q):
-        # around the stragglers only (a lone high point reaches far): their box widened by
-        # what the farthest neighbour needs, doubled each round until every one is settled
-        lo, hi = ref[q, :2].min(axis=0), ref[q, :2].max(axis=0)
-        rect = (lo[0] - grow, hi[0] + grow, lo[1] - grow, hi[1] + grow)
-        grow *= 2.0
-        wide = xyz[_in_rect(xyz[:, :2], rect)]
-        wref = wide[voxel_ids(wide, voxel)[0]] if voxel > 0 else wide
-        e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True)
-        q = q[~_inside(ref[q], reach[q], rect, extent, voxel, len(wref) >= k)]
+    if len(q):
+        if voxel not in whole:
+            from scipy.spatial import cKDTree
+
+            wref = xyz[voxel_ids(xyz, voxel)[0]] if voxel > 0 else xyz
+            whole[voxel] = (wref, cKDTree(wref, balanced_tree=False, compact_nodes=False))
+        wref, tree = whole[voxel]
+        e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True, tree=tree)
     return e, ref[:, 2], dist, inv
 
 
