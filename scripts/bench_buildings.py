@@ -279,7 +279,8 @@ def main():
     s.add_argument("--workers", type=int, default=1, help="processes of a local Dask cluster (1: this process)")
     a = sub.add_parser("accuracy")
     a.add_argument("--buildings", type=int, default=60)
-    a.add_argument("--seed", type=int, default=5, help="district seed (5: the reported one; 7, 11: validation)")
+    a.add_argument("--seed", type=int, default=5, help="district seed (5: the reported one; which seeds tuned and which validated a choice "
+                   "is said with each figure in docs/benchmarks.md)")
     a.add_argument("--kinds", choices=("basic", "complex"), default="basic",
                    help="basic: flat, shed, gabled, hipped, multi-level, L; complex: cross-gabled L and T, dormer")
     a.add_argument("--faces", default=None, help="a kind: also a line per true sloped face of its buildings")

@@ -40,18 +40,10 @@ def speed(model=None, points=None):
     """Inference rate (`ws classify`'s whole path) on bcts_1 + bcts_2 (1.36 M points), or with
     ``points`` on the ground benchmark's synthetic tile of that many points (bcts_2 repeated on
     a grid of shifted copies with jitter: ``bench_ground.py speed``'s tile)."""
-    from workstation.core.cloud import concatenate
-    from workstation.io import read_cloud
     from workstation.ml.classifier import PointClassifier
 
     clf = PointClassifier.load(model, device="cpu")
-    if points:
-        sys.path.insert(0, str(REPO / "scripts"))
-        from bench_ground import synthetic_tile
-
-        cloud = synthetic_tile(int(points), DATA)
-    else:
-        cloud = concatenate([read_cloud(DATA / "lidar" / "bcts_1.laz"), read_cloud(DATA / "lidar" / "bcts_2.laz")])
+    cloud = _tiles_cloud(points)
     clf.classify(cloud[:20000])  # warm-up (imports)
     best = None
     for _ in range(2):

@@ -114,8 +114,8 @@ def ranking(src: np.ndarray, tgt: np.ndarray, T: np.ndarray, vs, vt, peaks: int 
     vps = tuple(None if p is None else np.asarray(p) - origin for p in (vs, vt))
     ps, pt = (prepare(x - origin, radii, features=False, viewpoint=p) for x, p in ((src, vps[0]), (tgt, vps[1])))
     TL = local_transform(T, origin, origin)
-    images = range_images(ps, pt, vps, P)
-    scores, Ts, _, _ = plane_hypotheses(ps, pt, P, vps, images)  # what plane_registration does, in its two steps
+    images = range_images(ps, pt, (ps.viewpoint, pt.viewpoint), P)  # the positions the prepared clouds carry
+    scores, Ts, _, _ = plane_hypotheses(ps, pt, P, images=images)  # what plane_registration does, in its two steps
     if not len(Ts):
         return "raw rank - of 0 (no plane pair gives a pose)"
     raw = [k for k, M in enumerate(Ts) if within(M, TL, 6, 0.3)]

@@ -34,7 +34,6 @@ def test_run_bounded_makes_arguments_only_for_free_slots_and_collects_every_resu
     assert max(in_flight for _, in_flight in made) <= 2 - 1  # the limit held when each was made
 
 
-
 def test_alongside_runs_in_a_thread_that_takes_no_signals_and_wait_for_gives_its_outcome():
     import signal
     import threading

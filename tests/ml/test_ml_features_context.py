@@ -111,7 +111,8 @@ def test_relief_and_fine_extreme_columns_follow_their_definitions():
     # expressions (height above each radius's minimum grid, relief, depth; kNN extremes)
     from scipy import ndimage
 
-    from workstation.ml.features import _eigen_features, _grid, _relief_features, _voxel_eigen, fill_nearest, grid_reduce
+    from workstation.ml.features import (_density_column, _eigen_columns, _grid, _relief_features, _voxel_eigen,
+                                         fill_nearest, grid_reduce)
 
     rng = np.random.default_rng(11)
     xyz = rng.uniform(0, 80, (20_000, 3)) * [1, 1, 0.1]
@@ -134,7 +135,7 @@ def test_relief_and_fine_extreme_columns_follow_their_definitions():
     assert np.array_equal(F[:, 6], np.minimum(mx - z, 60.0).astype(np.float32))
     fine = _voxel_eigen(xyz, p.fine_voxel, p.k_fine, 1)
     coarse = _voxel_eigen(xyz, p.coarse_voxel, p.k_coarse, 1)
-    _eigen_features(F, z, fine, coarse)
+    _density_column(F, _eigen_columns(F, z, fine, coarse))
     ef, zr, _, finv = fine
     zf = zr[finv]
     assert np.array_equal(F[:, 16], np.clip(z - (zf - ef[finv, 6]), 0, 30).astype(np.float32))

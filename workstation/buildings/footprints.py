@@ -15,7 +15,7 @@ without the bias of occupied cells:
    into the frame of their minimum-area rectangle, rasterise them again, open and close the mask
    with a square of the Douglas-Peucker tolerance, trace it, keep axis-parallel edges, merge
    parallel runs, and move every edge to its maximum-likelihood place among the points
-   (:func:`orthogonal_outline`). When the points do not fit that outline (:func:`_outline`: too
+   (:func:`_rectilinear`). When the points do not fit that outline (:func:`_outline`: too
    few of them for its area, or an empty region in it that chance would not leave, :func:`_vacancy`),
    it is fitted again with the finer ``FINE_RADIUS`` (which keeps short wings and stems: the
    corner regions the tracing breaks into slanted pieces are rebuilt as axis-parallel steps, a
@@ -556,27 +556,19 @@ def _rot(p: np.ndarray, theta: float) -> np.ndarray:
     return np.column_stack([p[:, 0] * c - p[:, 1] * s, p[:, 0] * s + p[:, 1] * c])
 
 
-def orthogonal_outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float,
-                       radius: float = CORNER_RADIUS) -> np.ndarray | None:
-    """Rectilinear outline of one building's points ``pts`` (m, 2) in its dominant frame, or
-    None when the building is not orthogonal.
+def _rectilinear(pts, ring, spacing, ref, radius):
+    """Rectilinear outline of one building's points ``pts`` (m, 2) in its dominant frame (None
+    when no valid one is found) and whether it agrees with the traced outline ``ring``.
 
     The points are rotated so the sides of their minimum-area rectangle
     (:func:`_points_direction`) are the axes and rasterised again there, smoothed with sigma
     ``radius`` spacings; the half-density mask is opened and closed with a square of the
     Douglas-Peucker tolerance (removing teeth and notches smaller than that), traced, and reduced
     to axis-parallel edges; each edge line is then moved to its maximum-likelihood place among
-    the points (:func:`_fit_offsets`). The result is kept when its symmetric difference with the
+    the points (:func:`_fit_offsets`). It agrees when its symmetric difference with the
     traced outline ``ring`` is within 1.5 spacings times the perimeter (about 2.7 times what the
     outline's own lateral noise gives).
     """
-    poly, agrees = _rectilinear(pts, ring, spacing, ref, radius)
-    return poly if agrees else None
-
-
-def _rectilinear(pts, ring, spacing, ref, radius):
-    """The outline of :func:`orthogonal_outline` (None when no valid one is found) and whether
-    it agrees with the traced ``ring`` (the test that keeps it there)."""
     import shapely
 
     theta0 = _points_direction(pts)
@@ -924,7 +916,7 @@ def _outline(pts: np.ndarray, ring: np.ndarray, spacing: float, ref: float, cell
     """Footprint polygon of one building from its points and traced outline.
 
     The rectilinear outlines at ``CORNER_RADIUS``, ``FINE_RADIUS`` and ``FINEST_RADIUS``
-    (:func:`orthogonal_outline`) are fitted in turn until the likeliest so far (:func:`_cost`)
+    (:func:`_rectilinear`) are fitted in turn until the likeliest so far (:func:`_cost`)
     explains the points as well as the true outline would on average: its cost exceeds the
     number of points, the cost's expectation under the true outline, by less than that count's
     Poisson standard deviation, and it holds no empty region larger than a Poisson process of the

@@ -726,16 +726,15 @@ def _claim_unlabelled(xyz, local, normals, points, eps, cell):
     return out
 
 
-def merge_building_planes(xyz, local, normals, eps, angle_deg, fit=None):
+def merge_building_planes(xyz, local, normals, eps, angle_deg, fit):
     """Merge the planes of one building that are the same plane (normals within ``angle_deg``,
     each centroid within ``eps`` of the other plane) even where they do not touch (pieces of one
     roof side cut by a chimney or a tree crown), then refit each: (labels, normals, points).
-    Centroids and fits use the points of ``fit`` (n,) bool only (the mask of :func:`fit_mask`;
-    None: every labelled point); the labels returned are every point's."""
+    Centroids and fits use the points of ``fit`` (n,) bool only (the mask of :func:`fit_mask`);
+    the labels returned are every point's."""
     from .planes import fit_plane, small_components
 
     p = len(normals)
-    fit = local >= 0 if fit is None else fit
     cen = np.array([xyz[fit & (local == q)].mean(axis=0) for q in range(p)])
     i, j = np.triu_indices(p, 1)
     same = np.einsum("ij,ij->i", normals[i], normals[j]) > math.cos(math.radians(angle_deg))

@@ -564,11 +564,11 @@ def ptd_ground(xyz: np.ndarray, p: PTDParams, seeds: np.ndarray | None = None) -
         init[_seeds(xyz[ci], 1e9)] = True  # the corners, so the TIN covers the extent
     g_c, tin, near_c = _densify(xyz[ci], p, init)
     # the final test walks from the triangle of the candidate of each point's cell
-    cell_cand = (np.cumsum(imin.ravel() >= 0) - 1)[r * shape[1] + c]
+    cell = r * shape[1] + c  # each point's cell in the raveled grid
+    cell_cand = (np.cumsum(imin.ravel() >= 0) - 1)[cell]
     if tin is not None:
         tin = tin.reindexed(ci, xyz[:, :2])  # a view: the walk gathers its triangles' corners
-    return final_ground(xyz, ci[g_c], tin, near_c[cell_cand], p.final_threshold, p.final_scalar,
-                        r * shape[1] + c)
+    return final_ground(xyz, ci[g_c], tin, near_c[cell_cand], p.final_threshold, p.final_scalar, cell)
 
 
 def ptd(cloud: Cloud, params: PTDParams | None = None, **overrides) -> Cloud:

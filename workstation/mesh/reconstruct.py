@@ -302,7 +302,10 @@ def refine_to_cloud(mesh: Mesh, cloud: Cloud, params: RefineParams = RefineParam
         origin = cloud.xyz.mean(axis=0)
         xyz = cloud.xyz - origin
         v = mesh.vertices - origin
-        tree = centred_tree(cloud.xyz) if tree is None else tree
+        if tree is None:  # centred_tree's, made from the centred points already here
+            from scipy.spatial import cKDTree
+
+            tree = cKDTree(xyz)
         d, _ = tree.query(v[: min(len(v), 20_000)], k=params.k)
         h = float(np.median(d[:, -1]))
         out = np.empty_like(v)

@@ -517,7 +517,9 @@ class PointClassifier:
 
     def _tiles(self, cloud: Cloud):
         """(core mask, tile-with-buffer index array) pairs of the kNN tiles
-        (:func:`workstation.ml.features.square_tiles`; one tile when the cloud is small)."""
+        (:func:`workstation.ml.features.square_tiles`; one tile when the cloud is small), for
+        the tiling benchmark and tests: the buffer is the first one, before the feature pass
+        widens it for its stragglers."""
         side = self._tile_side(cloud)
         if side is None:
             yield np.ones(cloud.n, bool), np.arange(cloud.n)

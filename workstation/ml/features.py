@@ -296,6 +296,14 @@ def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     return first, inv
 
 
+def _representatives(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
+    """(first point of each voxel, each point's voxel) of :func:`voxel_ids`; every point its
+    own representative when ``voxel`` is 0."""
+    if voxel > 0:
+        return voxel_ids(xyz, voxel)
+    return np.arange(len(xyz)), np.arange(len(xyz))
+
+
 def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: bool = False, tree=None):
     """Eigenvalue features of the kNN covariance of each query point among reference points.
 
@@ -500,11 +508,8 @@ def _voxel_eigen(xyz: np.ndarray, voxel: float, k: int, workers: int):
     inv : (n,) int64
         Each point's representative.
     """
-    if voxel > 0:
-        first, inv = voxel_ids(xyz, voxel)
-        ref = xyz[first]
-    else:
-        ref, inv = xyz, np.arange(len(xyz))
+    first, inv = _representatives(xyz, voxel)
+    ref = xyz[first]
     e, dist = _eigen(ref, ref, k, workers)
     return e, ref[:, 2], dist, inv
 
@@ -665,13 +670,14 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     whole: dict = {}  # voxel -> the whole cloud's representatives and their tree, made when first needed
     for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
         keep = core[sel]
-        scales = [_exact_scale(xyz, sel, keep, rect, (lo, hi), v, k, p.workers, whole)
-                  for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse))]
-        Ft = np.empty((len(sel), len(FEATURE_NAMES)), np.float32, order="F")
-        d = _eigen_columns(Ft, xyz[sel, 2], *scales)
         rows = sel[keep]
-        F[rows, 10:24] = Ft[keep, 10:24]
-        dh[rows] = d[keep]
+        scales = []
+        for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)):
+            e, zr, dist, inv = _exact_scale(xyz, sel, keep, rect, (lo, hi), v, k, p.workers, whole)
+            scales.append((e, zr, dist, inv[keep]))  # the core's points only
+        Ft = np.empty((len(rows), 24), np.float32, order="F")  # _eigen_columns writes columns 10-23
+        dh[rows] = _eigen_columns(Ft, xyz[rows, 2], *scales)
+        F[rows, 10:24] = Ft[:, 10:24]
     return dh
 
 
@@ -688,20 +694,19 @@ def _exact_scale(xyz, sel, keep, rect, extent, voxel: float, k: int, workers: in
     rest reaches across tiles) are queried among the whole cloud's representatives, made once
     per voxel size into ``whole`` when a tile first needs them."""
     part = xyz[sel]
-    if voxel > 0:
-        first, inv = voxel_ids(part, voxel)
-    else:
-        first, inv = np.arange(len(part)), np.arange(len(part))
+    first, inv = _representatives(part, voxel)
     ref = part[first]
-    e, dist, reach = _eigen(ref, ref, k, workers, reach=True)
     used = np.zeros(len(ref), bool)
     used[inv[keep]] = True
-    q = np.flatnonzero(used & ~_inside(ref, reach, rect, extent, voxel, len(ref) >= k))
+    u = np.flatnonzero(used)  # the core's representatives: the only rows read (the others stay 0)
+    e, dist, reach = np.zeros((len(ref), 8), np.float32), np.zeros(len(ref)), np.zeros(len(ref))
+    e[u], dist[u], reach[u] = _eigen(ref[u], ref, k, workers, reach=True)
+    q = u[~_inside(ref[u], reach[u], rect, extent, voxel, len(ref) >= k)]
     if len(q):
         if voxel not in whole:
             from scipy.spatial import cKDTree
 
-            wref = xyz[voxel_ids(xyz, voxel)[0]] if voxel > 0 else xyz
+            wref = xyz[_representatives(xyz, voxel)[0]]
             whole[voxel] = (wref, cKDTree(wref, balanced_tree=False, compact_nodes=False))
         wref, tree = whole[voxel]
         e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True, tree=tree)
@@ -753,11 +758,6 @@ def _density_column(F: np.ndarray, dh: np.ndarray) -> None:
     neighbour distance) relative to the cloud's median."""
     med = float(np.median(dh)) if len(dh) else 1.0
     F[:, 31] = np.clip(np.log((dh + 1e-3) / (med + 1e-3)), -3, 3)
-
-
-def _eigen_features(F: np.ndarray, z: np.ndarray, fine, coarse) -> None:
-    """Columns 10-23 and 31 of ``F`` (:func:`_eigen_columns`, :func:`_density_column`)."""
-    _density_column(F, _eigen_columns(F, z, fine, coarse))
 
 
 def _relief_features(F: np.ndarray, z: np.ndarray, zmin_f: np.ndarray, zmax: np.ndarray, flat: np.ndarray,
