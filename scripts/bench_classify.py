@@ -4,7 +4,7 @@ Prints one JSON line per result. Usage::
 
     PYTHONPATH=. python scripts/bench_classify.py speed [--points N] # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
-    PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto]  # per-sample ISPRS, both paths
+    PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto] [--without-patches]  # per-sample ISPRS, both paths
     PYTHONPATH=. python scripts/bench_classify.py gatediag [--model M] [--samples samp11,...]  # ISPRS Type I: gate or chain
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
@@ -172,12 +172,13 @@ def goals(clf, label):
         emit(bench="real_tile", model=label, file=f, seconds=time.perf_counter() - t0, **r)
 
 
-def isprs(model=None, with_auto=False):
+def isprs(model=None, with_auto=False, without_patches=False):
     """Per-sample ISPRS Type I / Type II / total error (%) of the classifier's ground paths:
     ``ws classify`` (:meth:`PointClassifier.predict`, the model's own step switches), ``ws
     ground --method ml`` (:func:`workstation.ml.ground.ml_ground`) and the same with
-    ``member_vote`` (the gate as a sixth voter of ``auto``'s members), and with ``with_auto``
-    ``ws ground --method auto`` beside them; then each path's mean."""
+    ``member_vote`` (the gate as a sixth voter of ``auto``'s members), with ``with_auto``
+    ``ws ground --method auto`` beside them, with ``without_patches`` ``ws classify
+    --no-raised-patches``; then each path's mean."""
     from workstation.core.classes import ASPRSClass as C
     from workstation.core.cloud import Cloud
     from workstation.ml.classifier import PointClassifier
@@ -191,6 +192,10 @@ def isprs(model=None, with_auto=False):
 
     paths = {"classify": lambda c: clf.predict(c) == C.GROUND, "ground_ml": ground_ml(),
              "ground_ml_member_vote": ground_ml(member_vote=True)}
+    if without_patches:
+        plain = PointClassifier.load(model, device="cpu")
+        plain.raised_patches = False
+        paths["classify_no_raised_patches"] = lambda c: plain.predict(c) == C.GROUND
     if with_auto:
         from workstation.ground.methods import ground_filter
 
@@ -435,7 +440,7 @@ if __name__ == "__main__":
 
         goals(PointClassifier.load(model, device="cpu"), "mlp")
     elif what == "isprs":
-        isprs(model, with_auto="--with-auto" in sys.argv)
+        isprs(model, with_auto="--with-auto" in sys.argv, without_patches="--without-patches" in sys.argv)
     elif what == "gatediag":
         given = sys.argv[sys.argv.index("--samples") + 1].split(",") if "--samples" in sys.argv else None
         gatediag(model, *([given] if given else []))
