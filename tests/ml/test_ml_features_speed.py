@@ -1,0 +1,76 @@
+"""The feature pass's faster paths give the plain paths' arrays: voxel numbering by packed
+column keys, kNN queries within a sampled distance bound, and the tiled kNN scales run
+beside the grid features."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.spatial import cKDTree
+
+from workstation.ml import features as fx
+from workstation.ml.features import FeatureParams, _knn, features_and_segments, voxel_ids
+
+from tests.ml.test_ml_tiles import scene
+
+
+def _unique_ids(xyz: np.ndarray, voxel: float):
+    """The reference numbering: np.unique of the (x, y, z) voxel keys."""
+    v = np.floor(xyz / voxel).astype(np.int64)
+    v -= v.min(axis=0)
+    dims = v.max(axis=0) + 1
+    key = (v[:, 0] * dims[1] + v[:, 1]) * dims[2] + v[:, 2]
+    _, first, inv = np.unique(key, return_index=True, return_inverse=True)
+    return first, inv.ravel()
+
+
+@pytest.mark.parametrize("case", ["ground", "tall", "sparse", "split", "one", "column"])
+def test_voxel_ids_are_np_uniques(case):
+    rng = np.random.default_rng(3)
+    if case == "ground":  # a sloping surface with canopy: columns of a few layers
+        xyz = rng.uniform(0, 60, (20000, 3)) * [1, 1, 0.2] + [0, 0, 0]
+        xyz[:, 2] += 0.3 * xyz[:, 0]
+    elif case == "tall":  # towers over empty columns
+        xyz = rng.uniform(0, 30, (5000, 3)) * [1, 1, 8]
+    elif case == "sparse":  # a few points over a wide extent: the sorting path
+        xyz = rng.uniform(0, 5000, (300, 3))
+    elif case == "split":  # two layers 10 km apart in the same columns: the sorting path
+        xyz = rng.uniform(0, 20, (2000, 3)) * [1, 1, 0]
+        xyz[::2, 2] = 10000
+    elif case == "one":
+        xyz = np.array([[1.0, 2.0, 3.0]])
+    else:  # one column of voxels
+        xyz = np.column_stack([np.full(500, 0.2), np.full(500, 0.3), rng.uniform(0, 40, 500)])
+    for voxel in (0.75, 1.5):
+        first, inv = voxel_ids(xyz, voxel)
+        f0, i0 = _unique_ids(xyz, voxel)
+        assert np.array_equal(first, f0) and np.array_equal(inv, i0)
+        assert first.dtype == np.intp and inv.dtype == np.intp
+
+
+def test_bounded_queries_are_the_plain_ones(monkeypatch):
+    """Far-off points (beyond the sampled bound) are queried again: every row is the plain
+    query's, ties of equal distance included (a 1 cm grid, as real files)."""
+    rng = np.random.default_rng(5)
+    xyz = np.round(np.vstack([rng.uniform(0, 80, (30000, 3)) * [1, 1, 0.1],
+                              rng.uniform(0, 80, (40, 3)) + [0, 0, 50]]), 2)
+    tree = cKDTree(xyz, balanced_tree=False, compact_nodes=False)
+    d, j = fx._bounded_query(tree, xyz, 11, 1)
+    d0, j0 = tree.query(xyz, k=11)
+    assert np.array_equal(d, d0)
+    assert np.isfinite(d).all()
+    same = (d0[:, 1:] != d0[:, :-1]).all(axis=1)  # rows without ties: the indices too
+    assert np.array_equal(j[same], j0[same])
+    dk, jk = _knn(tree, xyz, 10, 2)
+    monkeypatch.setattr(fx, "_BOUND_SAMPLE", 10 ** 9)  # no bound
+    dp, jp = _knn(tree, xyz, 10, 2)
+    assert np.array_equal(dk, dp) and np.array_equal(jk, jp)
+
+
+def test_tiled_features_with_one_worker_are_the_whole_clouds():
+    """The tiles run in a worker thread beside the grid features with ``workers=1`` too."""
+    c = scene(2)
+    p = FeatureParams(workers=1)
+    F, seg = features_and_segments(c, p)
+    T, tseg = features_and_segments(c, p, tile_side=40.0)
+    assert np.array_equal(F, T) and np.array_equal(seg, tseg)
