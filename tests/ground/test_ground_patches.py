@@ -42,10 +42,10 @@ def test_terrain_patches_are_kept_on_a_steep_hillside():
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
-    from workstation.ground.patches import _tin_edges
+    from workstation.ground.retile import full_edges
 
     pts = xyz[ground]
-    src, dst = _tin_edges(pts[:, :2])
+    src, dst, _ = full_edges(pts[:, :2])
     joined = np.abs(pts[src, 2] - pts[dst, 2]) < PatchParams().step
     graph = coo_matrix((np.ones(joined.sum()), (src[joined], dst[joined])), shape=(len(pts),) * 2)
     assert connected_components(graph, directed=False)[0] >= 5
