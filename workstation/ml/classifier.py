@@ -81,10 +81,10 @@ def _segment_mean(P: np.ndarray, labels: np.ndarray, weight: float) -> np.ndarra
     cnt = np.maximum(np.bincount(lab, minlength=k), 1).astype(np.float64)
     obj = P[sel, 1:].astype(np.float64)
     obj /= np.maximum(obj.sum(axis=1, keepdims=True), 1e-12)
-    blend = np.empty_like(obj)
+    mean = np.empty((k, obj.shape[1]))
     for j in range(obj.shape[1]):
-        mean = np.bincount(lab, weights=obj[:, j], minlength=k) / cnt
-        blend[:, j] = (1.0 - weight) * obj[:, j] + weight * mean[lab]
+        mean[:, j] = np.bincount(lab, weights=obj[:, j], minlength=k) / cnt
+    blend = (1.0 - weight) * obj + weight * mean[lab]  # one gather of each point's segment means
     out = P.copy()
     out[sel, 1:] = blend * (1.0 - P[sel, :1])
     return out
@@ -101,11 +101,29 @@ class _RoofJob:
     result: object
 
 
+@dataclass
+class _Started:
+    """Work :meth:`PointClassifier._infer` started for :meth:`PointClassifier._codes`: the
+    roof test (:class:`_RoofJob`) and the future of the refine chain's ground steps on the
+    gate's ground (:meth:`PointClassifier._ground_chain`), None where not started."""
+
+    roof: _RoofJob | None = None
+    chain: object = None
+    ground: np.ndarray | None = None  # the gate's ground the chain started on
+
+
 def _run_roof_job(tester, candidate):
-    """The roof test of :class:`_RoofJob`: (tested points, their failures, the vote)."""
+    """The roof test of :class:`_RoofJob`: (tested points, their failures, the vote, the vote's
+    KD-tree of the tested points, None when the vote needed none)."""
     t = tester.result()
     tested, bad = t.test(candidate)
-    return tested, bad, t.vote(candidate, tested, bad)
+    tree = t.vote_tree(tested) if bad.any() and not bad.all() else None
+    return tested, bad, t.vote(candidate, tested, bad, tree), tree
+
+
+def _ground_steps(chain) -> tuple:
+    """The ground steps of a declared refine chain (all but ``bridges``)."""
+    return tuple(p for p in chain if not isinstance(p, BridgeParams))
 
 
 @dataclass(frozen=True)
@@ -533,20 +551,24 @@ class PointClassifier:
         return RoofTest(metric_xyz(cloud)[0], hag, RoofParams(tolerance=self.roof_tolerance),
                         workers=self.feature_params.workers)
 
-    def _infer(self, cloud: Cloud, roof: bool = False):
-        """Probabilities, provisional-ground height and slope, and (``roof``) the roof test
-        already under way in the background (:class:`_RoofJob`), else None.
+    def _infer(self, cloud: Cloud, roof: bool = False, chain=()):
+        """Probabilities, provisional-ground height and slope, and the work started in the
+        background for :meth:`_codes` (:class:`_Started`): (``roof``) the roof test and the
+        ground steps ``chain`` of the refine chain (with the gate).
 
-        The roof test's KD-tree is built beside the kNN scales and the network, and its
-        queries start on the building points (after the segment step and the gate) while
-        :meth:`_codes` runs the refine chain, whose steps may add a few more (tested there).
+        The roof test's KD-tree is built beside the kNN scales and the network; the ground
+        steps start on the gate's ground as soon as the network has run (the segment step
+        leaves the ground probability, all the gate reads, as it is), and the roof test's
+        queries on the building points after the segment step and the gate, while the
+        ground steps run on; those may add a few building points (tested in :meth:`_codes`).
         Above ``tile_points`` points only the feature pass's kNN scales go tile by tile: every
         value is the one the whole cloud gives (:func:`features_and_segments`)."""
         self._check_fitted()
         if cloud.n < 3:
             raise InvalidInputError(f"needs at least 3 points, got {cloud.n}", field="xyz")
         side = self._tile_side(cloud)
-        pool = ThreadPoolExecutor(max_workers=1)
+        pool = ThreadPoolExecutor(max_workers=2)
+        started = _Started()
         try:
             tester = []  # the roof test's KD-tree, built while the feature pass waits for its kNN threads
 
@@ -558,22 +580,25 @@ class PointClassifier:
             F = self._mask(F)
             tester = tester[0] if tester else None
             p = self.predict_proba_features(F)
+            hs = F[:, [_HAG_COL, _SLOPE_COL]]
+            if chain and self.ground_gate:
+                started.ground = self._gate(p, hs)
+                started.chain = pool.submit(self._ground_chain, started.ground, cloud, tuple(chain))
             if self.segment_weight > 0:
                 p = _segment_mean(p, segments, self.segment_weight)
-            job = None
             if tester is not None:  # the candidates _codes will have, but the refine chain's
-                cand = self._building_candidates(p, F[:, [_HAG_COL, _SLOPE_COL]])
-                job = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
+                cand = self._building_candidates(p, hs)
+                started.roof = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
         finally:
-            pool.shutdown(wait=False)  # the roof job runs on
-        return p, F[:, [_HAG_COL, _SLOPE_COL]], job
+            pool.shutdown(wait=False)  # the roof job and the ground steps run on
+        return p, hs, started
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
         """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes
         (:data:`workstation.ml.dataset.MODEL_CLASSES`)."""
         return self._infer(cloud)[0]
 
-    def _nonplanar(self, candidate: np.ndarray, hag: np.ndarray, cloud: Cloud | None, job) -> np.ndarray | None:
+    def _nonplanar(self, candidate: np.ndarray, hag: np.ndarray, cloud: Cloud | None, job: _RoofJob | None) -> np.ndarray | None:
         """Building candidates that fail the roof planarity test (see ``roof_test``); ``job``:
         the test started by :meth:`_infer`, completed here for the candidates it did not have."""
         if cloud is None:
@@ -582,12 +607,12 @@ class PointClassifier:
             if int(np.count_nonzero(candidate)) < 3:
                 return None
             return self._roof_tester(cloud, hag).nonplanar(candidate)
-        tested, bad, fail = job.result.result()
+        tested, bad, fail, tree = job.result.result()
         extra = candidate & ~job.tested
         if extra.any():  # the newcomers: their voxels' tests, then their votes among every test
             t = job.tester.result()
             t2, b2 = t.test(extra)
-            fail = fail | t.vote(extra, np.concatenate([tested, t2]), np.concatenate([bad, b2]))
+            fail = fail | t.vote_more(extra, tested, bad, tree, t2, b2)
         return fail
 
     def _gate(self, P: np.ndarray, hs: np.ndarray) -> np.ndarray:
@@ -624,26 +649,29 @@ class PointClassifier:
         only); ``overrides``: step switches for this call."""
         return self._codes(np.asarray(proba), np.asarray(hag_slope), cloud, None, self.switches(overrides))[:2]
 
-    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, roof, on: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _codes(self, P: np.ndarray, hs: np.ndarray, cloud: Cloud | None, started: _Started | None,
+               on: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """ASPRS codes, confidences and the gate's ground (:attr:`Prediction.gate`) from the
         probabilities and the provisional-ground height and slope; ``cloud`` (the same points)
-        enables the refine chain and the roof planarity test (``roof``: the test :meth:`_infer`
-        started, if any); ``on``: the step switches. The chain's ground steps run on the gate's
-        ground, its ``bridges`` step on the classes after the roof test (noise is no deck's
-        surface)."""
+        enables the refine chain and the roof planarity test (``started``: the work
+        :meth:`_infer` started for them, if any, with the ground steps of this chain); ``on``:
+        the step switches. The chain's ground steps run on the gate's ground, its ``bridges``
+        step on the classes after the roof test (noise is no deck's surface)."""
         hag = hs[:, 0]
+        started = started or _Started()
         chain = declare(self.steps, on) if cloud is not None else ()
         xyz = metric_xyz(cloud)[0] if chain else None
         if self.ground_gate:  # (the roof test started by _infer runs on meanwhile)
             gate = self._gate(P, hs)
-            k, conf = self._gated(P, gate, cloud, xyz, tuple(p for p in chain if not isinstance(p, BridgeParams)))
+            done = started.chain if started.ground is not None and np.array_equal(started.ground, gate) else None
+            k, conf = self._gated(P, gate, cloud, _ground_steps(chain), done)
         else:
             k = P.argmax(axis=1)
             conf = P[np.arange(len(P)), k].astype(np.float32)
             gate = k == 0
         if on["roof_test"]:
             nr = None if cloud is None else cloud.attrs.get("number_of_returns")
-            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, roof),
+            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, started.roof),
                                          None if nr is None else np.asarray(nr) > 1)
         codes = self._asprs(k, hag)
         decks = tuple(p for p in chain if isinstance(p, BridgeParams))
@@ -651,14 +679,19 @@ class PointClassifier:
             codes[run_chain(Refine(xyz, k == 0, surface=k != 5), decks).deck] = C.BRIDGE_DECK
         return codes, conf, gate
 
-    def _gated(self, P: np.ndarray, ground: np.ndarray, cloud: Cloud | None, xyz, chain) -> tuple[np.ndarray, np.ndarray]:
+    def _ground_chain(self, ground: np.ndarray, cloud: Cloud, chain) -> Refine:
+        """The refine chain's ground steps ``chain`` run on the gate's ground ``ground``."""
+        return run_chain(Refine(metric_xyz(cloud)[0], ground, return_number=cloud.attrs.get("return_number"),
+                                number_of_returns=cloud.attrs.get("number_of_returns")), chain)
+
+    def _gated(self, P: np.ndarray, ground: np.ndarray, cloud: Cloud | None, chain, done=None) -> tuple[np.ndarray, np.ndarray]:
         """Model classes (n,) and confidences of the gate: its ground ``ground`` refined by
-        ``chain`` is class 0 (its water class 3), every other point takes the network's best
-        non-ground class."""
+        ``chain`` (``done``: the future of :meth:`_ground_chain`'s state, when started) is
+        class 0 (its water class 3), every other point takes the network's best non-ground
+        class."""
         water = None
         if chain:
-            state = run_chain(Refine(xyz, ground, return_number=cloud.attrs.get("return_number"),
-                                     number_of_returns=cloud.attrs.get("number_of_returns")), chain)
+            state = done.result() if done is not None else self._ground_chain(ground, cloud, chain)
             ground, water = state.ground, state.water
         rest = P[:, 1:]
         k2 = rest.argmax(axis=1) + 1
@@ -683,13 +716,15 @@ class PointClassifier:
         fail &= k == 2
         if fail.any():
             others = np.array([1, 3, 4, 5])  # vegetation, water, other, noise
-            best = others[P[fail][:, others].argmax(axis=1)]
+            rows = np.flatnonzero(fail)
+            po = P[np.ix_(rows, others)]
+            best = others[po.argmax(axis=1)]
             if multi is not None:
-                best = np.where(multi[fail], 1, best)
+                best = np.where(multi[rows], 1, best)
             k = k.copy()
-            k[fail] = best
+            k[rows] = best
             conf = conf.copy()
-            conf[fail] = P[fail, best] / np.maximum(P[fail][:, others].sum(axis=1), 1e-6)
+            conf[rows] = P[rows, best] / np.maximum(po.sum(axis=1), 1e-6)
         return k, conf
 
     def _asprs(self, k: np.ndarray, hag: np.ndarray) -> np.ndarray:
@@ -708,8 +743,8 @@ class PointClassifier:
         (:class:`Prediction`); ``overrides``: step switches for this call (e.g.
         ``StepSwitches(roof_test=False)``), the classifier's own left as they are."""
         on = self.switches(overrides)
-        P, hag, roof = self._infer(cloud, roof=on["roof_test"])
-        codes, conf, gate = self._codes(P, hag, cloud, roof, on)
+        P, hag, started = self._infer(cloud, roof=on["roof_test"], chain=_ground_steps(self.chain(overrides)))
+        codes, conf, gate = self._codes(P, hag, cloud, started, on)
         return Prediction(codes, conf, P, gate)
 
     def predict(self, cloud: Cloud) -> np.ndarray:

@@ -16,7 +16,9 @@ torch is imported inside the functions, never at module import.
 
 from __future__ import annotations
 
+import os
 import threading
+from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 
 import numpy as np
@@ -127,38 +129,63 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
     feature pass's Fortran-ordered matrix: no separate contiguous copy) with the model's own
     float32 ``(x - mean) / std``, then passed through ``model.net`` on one torch thread
     (:func:`_one_torch_thread`): torch's own threads would spin-wait between the small
-    layers, costing CPU time that other work on the machine needs. Each row goes through
-    the same kernels whatever the batching, so the values do not depend on it.
+    layers, costing CPU time that other work on the machine needs. Called from the main
+    thread, the batches are shared out in contiguous runs among one Python thread per core
+    (:func:`_batch_runs`), each running torch on one thread: the cores work without waiting
+    on each other. Each row goes through the same kernels whatever the batching and the
+    thread, so the values do not depend on them.
     """
     import torch
 
     out = np.empty((len(X), model.net[-1].out_features), np.float32)
     mean, std = model.mean.cpu().numpy(), model.std.cpu().numpy()
-    buf = np.empty((CPU_BATCH, X.shape[1]), np.float32)
-    with _one_torch_thread(), torch.inference_mode():
-        for s in range(0, len(X), CPU_BATCH):
-            e = min(s + CPU_BATCH, len(X))
-            xb = buf[:e - s]
-            np.subtract(X[s:e], mean, out=xb)
-            np.divide(xb, std, out=xb)
-            out[s:e] = torch.softmax(model.net(torch.from_numpy(xb)), dim=1).numpy()
+
+    def run(starts):  # one run of batches, with its own buffer
+        buf = np.empty((CPU_BATCH, X.shape[1]), np.float32)
+        with torch.inference_mode():
+            for s in starts:
+                e = min(s + CPU_BATCH, len(X))
+                xb = buf[:e - s]
+                np.subtract(X[s:e], mean, out=xb)
+                np.divide(xb, std, out=xb)
+                out[s:e] = torch.softmax(model.net(torch.from_numpy(xb)), dim=1).numpy()
+
+    with _one_torch_thread() as main:
+        runs = _batch_runs(len(X), (os.cpu_count() or 1) if main else 1)
+        if len(runs) == 1:
+            run(runs[0])
+            return out
+        with ThreadPoolExecutor(max_workers=len(runs) - 1) as pool:
+            helpers = [pool.submit(run, r) for r in runs[1:]]
+            run(runs[0])
+            for h in helpers:
+                h.result()
     return out
+
+
+def _batch_runs(n: int, threads: int) -> list:
+    """The starts of the ``CPU_BATCH``-row batches of ``n`` rows in at most ``threads``
+    contiguous runs of nearly equal length (one run: all of them, in order)."""
+    starts = np.arange(0, n, CPU_BATCH)
+    return [r.tolist() for r in np.array_split(starts, max(min(threads, len(starts)), 1))]
 
 
 @contextmanager
 def _one_torch_thread():
     """Run torch on one intra-op thread inside the block when called from the main thread,
-    restoring its count after. Torch keeps the count per thread, but a thread that first
-    uses torch takes the count last set anywhere as its own for good, so other threads (a
-    Dask worker's, say) are left as they are rather than risk leaving them on one thread."""
+    restoring its count after; yields whether it did. Torch keeps the count per thread, but
+    a thread that first uses torch takes the count last set anywhere as its own for good, so
+    other threads (a Dask worker's, say) are left as they are rather than risk leaving them
+    on one thread; the threads started inside the block (:func:`_predict_cpu`'s) take the
+    one thread."""
     import torch
 
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield False
         return
     before = torch.get_num_threads()
     torch.set_num_threads(1)
     try:
-        yield
+        yield True
     finally:
         torch.set_num_threads(before)

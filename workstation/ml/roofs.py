@@ -104,11 +104,13 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
     tree = tree if tree is not None else cKDTree(ref, balanced_tree=False, compact_nodes=False)
     best = np.empty(len(query))
     dk = np.empty(len(query))
+    order = z_order(query)  # neighbouring queries in turn: the tree's nodes stay in the cache
+    query = query[order]
 
     def block(s):  # one block of candidates: its query and its moments stay in the cache
         d, i = tree.query(query[s:s + step], k=k, workers=1)
-        dk[s:s + step] = d[:, -1]
-        best[s:s + step] = _min_plane_variance(np.take(ref, i, axis=0) - query[s:s + step, None, :], k)
+        dk[order[s:s + step]] = d[:, -1]
+        best[order[s:s + step]] = _min_plane_variance(np.take(ref, i, axis=0) - query[s:s + step, None, :], k)
 
     step = 8192
     starts = range(0, len(query), step)
@@ -120,6 +122,28 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
         for s in starts:
             block(s)
     return np.sqrt(np.maximum(best, 0.0)), dk
+
+
+def z_order(xyz: np.ndarray, cell: float = 4.0) -> np.ndarray:
+    """Indices of the points ``xyz`` (m, >= 2) in the Z-order (Morton 1966) of their
+    ``cell``-metre plan cells, stably: a KD-tree queried in that order finds each query's
+    nodes where the previous one left them (each query's answer is its own whatever the
+    order). The cells are coarsened to at most 256 a side, so the key holds 16 bits and
+    numpy sorts it by radix.
+
+    References
+    ----------
+    G. M. Morton (1966). A computer oriented geodetic data base and a new technique in file
+    sequencing. IBM Ltd., Ottawa.
+    """
+    if len(xyz) == 0:
+        return np.zeros(0, np.intp)
+    c = np.floor((xyz[:, :2] - xyz[:, :2].min(axis=0)) / cell).astype(np.int64)
+    c >>= max(int(c.max()).bit_length() - 8, 0)
+    key = np.zeros(len(xyz), np.uint16)
+    for b in range(8):  # interleave the bits of x and y
+        key |= (((c[:, 0] >> b) & 1) << (2 * b) | ((c[:, 1] >> b) & 1) << (2 * b + 1)).astype(np.uint16)
+    return np.argsort(key, kind="stable")
 
 
 def _min_plane_variance(off: np.ndarray, k: int) -> np.ndarray:
@@ -211,12 +235,10 @@ class RoofTest:
             bad[sparse] = (r2 > p.sparse_tolerance) & (d2 <= p.max_radius)
         return tested, bad
 
-    def vote(self, candidate: np.ndarray, tested: np.ndarray, bad: np.ndarray) -> np.ndarray:
+    def vote(self, candidate: np.ndarray, tested: np.ndarray, bad: np.ndarray, tree=None) -> np.ndarray:
         """(n,) bool: each candidate fails when most of the ``params.vote`` tested points
         nearest to it failed (:meth:`test`; decisions that do not flip from point to point at
-        the edge of a crown)."""
-        from scipy.spatial import cKDTree
-
+        the edge of a crown); ``tree``: :meth:`vote_tree`'s of ``tested``, if built."""
         out = np.zeros(len(self.xyz), bool)
         q = np.flatnonzero(candidate)
         if len(q) == 0 or len(tested) == 0 or not bad.any():
@@ -225,8 +247,50 @@ class RoofTest:
             out[q] = True
             return out
         vote = int(min(max(self.params.vote, 1), len(tested)))
-        _, j = cKDTree(tested).query((self.xyz[q] - self.origin).astype(np.float32), k=vote, workers=self.workers)
+        tree = tree if tree is not None else self.vote_tree(tested)
+        _, j = tree.query((self.xyz[q] - self.origin).astype(np.float32), k=vote, workers=self.workers)
         out[q] = bad[j.reshape(len(q), vote)].sum(axis=1) * 2 > vote
+        return out
+
+    @staticmethod
+    def vote_tree(tested: np.ndarray):
+        """The KD-tree :meth:`vote` looks the tested points ``tested`` up in."""
+        from scipy.spatial import cKDTree
+
+        return cKDTree(tested)
+
+    def vote_more(self, candidate: np.ndarray, tested: np.ndarray, bad: np.ndarray, tree,
+                  more: np.ndarray, more_bad: np.ndarray) -> np.ndarray:
+        """:meth:`vote` among ``tested`` then ``more`` (their failures ``bad``, ``more_bad``)
+        without a tree of both: ``tree`` is :meth:`vote_tree`'s of ``tested`` (None: one of
+        both is built).
+
+        Each candidate's ``vote + 1`` nearest of the two are among the ``vote + 1`` nearest
+        of each, merged by distance; the distances are those one tree of both computes, so
+        where the ``vote``-th lies nearer than the next the ``vote`` nearest are the ones
+        that tree returns, and their majority is its. Where the two lie at one distance (a
+        tie the tree breaks its own way) the tree of both decides."""
+        from scipy.spatial import cKDTree
+
+        allt, allb = np.concatenate([tested, more]), np.concatenate([bad, more_bad])
+        vote = int(min(max(self.params.vote, 1), len(allt)))
+        q = np.flatnonzero(candidate)
+        if tree is None or len(more) == 0 or len(tested) <= vote or len(q) == 0 or allb.all() or not allb.any():
+            return self.vote(candidate, allt, allb)
+        pts = (self.xyz[q] - self.origin).astype(np.float32)
+        da, ja = tree.query(pts, k=vote + 1, workers=self.workers)
+        kb = min(vote + 1, len(more))
+        db, jb = cKDTree(more).query(pts, k=list(range(1, kb + 1)), workers=self.workers)
+        d, j = np.concatenate([da, db], axis=1), np.concatenate([ja, jb + len(tested)], axis=1)
+        o = np.argsort(d, axis=1, kind="stable")[:, :vote + 1]
+        d, j = np.take_along_axis(d, o, axis=1), np.take_along_axis(j, o, axis=1)
+        out = np.zeros(len(self.xyz), bool)
+        out[q] = allb[j[:, :vote]].sum(axis=1) * 2 > vote
+        tie = q[d[:, vote - 1] == d[:, vote]]
+        if len(tie):
+            sel = np.zeros(len(self.xyz), bool)
+            sel[tie] = True
+            out[tie] = self.vote(sel, allt, allb)[tie]
         return out
 
 
