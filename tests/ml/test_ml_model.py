@@ -359,3 +359,33 @@ def test_roof_vote_without_mixed_decisions_needs_no_lookup():
     mixed = np.arange(len(tested)) % 2 == 0  # the lookup path still votes among neighbours
     v = t.vote(cand, tested, mixed)
     assert v[cand].any() and not v[cand].all() and not v[~cand].any()
+
+
+def test_started_chain_is_used_only_for_its_own_gate_and_steps():
+    """The refine chain _infer starts early is taken only for the gate and steps it ran on;
+    otherwise it is cancelled (if not yet begun) and _codes runs the chain itself."""
+    from concurrent.futures import Future
+
+    from workstation.ml.classifier import _Started
+
+    gate = np.array([True, False, True])
+    fut = Future()
+    started = _Started(chain=fut, ground=gate, steps=("a",))
+    assert started.chain_for(gate.copy(), ("a",)) is fut
+    assert started.chain_for(~gate, ("a",)) is None and fut.cancelled()
+    assert _Started(chain=Future(), ground=gate, steps=("a",)).chain_for(gate, ("b",)) is None
+    assert _Started().chain_for(gate, ("a",)) is None
+
+
+def test_cpu_prediction_is_the_same_on_one_or_several_threads():
+    """The network's CPU batches shared among threads give the values one thread gives."""
+    import torch
+
+    from workstation.ml.model import CPU_BATCH, _predict_cpu
+
+    net = torch.nn.Sequential(torch.nn.Linear(5, 8), torch.nn.ReLU(), torch.nn.Linear(8, 3))
+    model = type("M", (), {})()
+    model.net, model.mean, model.std = net, torch.zeros(5), torch.ones(5)
+    X = np.random.default_rng(0).normal(size=(3 * CPU_BATCH + 17, 5)).astype(np.float32)
+    one = _predict_cpu(model, X, threads=1)
+    assert np.array_equal(one, _predict_cpu(model, X, threads=3))

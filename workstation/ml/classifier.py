@@ -28,7 +28,7 @@ import io
 import json
 import time
 import warnings
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
@@ -36,6 +36,7 @@ import numpy as np
 
 from workstation.core.classes import ASPRSClass as C
 from workstation.core.cloud import Cloud
+from workstation.core.cpu import available_cores
 from workstation.core.errors import InvalidInputError, NotFittedError, StageError
 from workstation.core.log import get_logger
 from workstation.ground.bridges import BridgeParams
@@ -108,8 +109,19 @@ class _Started:
     gate's ground (:meth:`PointClassifier._ground_chain`), None where not started."""
 
     roof: _RoofJob | None = None
-    chain: object = None
+    chain: Future | None = None
     ground: np.ndarray | None = None  # the gate's ground the chain started on
+    steps: tuple = ()  # and its steps
+
+    def chain_for(self, ground: np.ndarray, steps: tuple) -> Future | None:
+        """The started chain's future when it ran ``steps`` on ``ground``, else None (and the
+        started one, of no use, is cancelled if it has not begun)."""
+        if self.chain is None:
+            return None
+        if self.steps == steps and np.array_equal(self.ground, ground):
+            return self.chain
+        self.chain.cancel()
+        return None
 
 
 def _run_roof_job(tester, candidate):
@@ -521,7 +533,8 @@ class PointClassifier:
         dev = resolve_device(self.device)
         if next(self.net_.parameters()).device != dev:
             self.net_ = self.net_.to(dev)
-        return predict_logits(self.net_, F, dev)
+        workers = self.feature_params.workers
+        return predict_logits(self.net_, F, dev, threads=available_cores() if workers < 1 else min(workers, available_cores()))
 
     def _tile_side(self, cloud: Cloud) -> float | None:
         """Side (m) of the square tiles of the feature pass's kNN scales (None: one tile, the
@@ -582,8 +595,8 @@ class PointClassifier:
             p = self.predict_proba_features(F)
             hs = F[:, [_HAG_COL, _SLOPE_COL]]
             if chain and self.ground_gate:
-                started.ground = self._gate(p, hs)
-                started.chain = pool.submit(self._ground_chain, started.ground, cloud, tuple(chain))
+                started.ground, started.steps = self._gate(p, hs), tuple(chain)
+                started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps)
             if self.segment_weight > 0:
                 p = _segment_mean(p, segments, self.segment_weight)
             if tester is not None:  # the candidates _codes will have, but the refine chain's
@@ -663,8 +676,8 @@ class PointClassifier:
         xyz = metric_xyz(cloud)[0] if chain else None
         if self.ground_gate:  # (the roof test started by _infer runs on meanwhile)
             gate = self._gate(P, hs)
-            done = started.chain if started.ground is not None and np.array_equal(started.ground, gate) else None
-            k, conf = self._gated(P, gate, cloud, _ground_steps(chain), done)
+            steps = _ground_steps(chain)
+            k, conf = self._gated(P, gate, cloud, steps, started.chain_for(gate, steps))
         else:
             k = P.argmax(axis=1)
             conf = P[np.arange(len(P)), k].astype(np.float32)

@@ -16,7 +16,6 @@ torch is imported inside the functions, never at module import.
 
 from __future__ import annotations
 
-import os
 import threading
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
@@ -99,17 +98,18 @@ def resolve_device(device: str = "auto"):
     return torch.device(device)
 
 
-def predict_logits(model, X: np.ndarray, device, batch: int = 65_536) -> np.ndarray:
+def predict_logits(model, X: np.ndarray, device, batch: int = 65_536, threads: int = 1) -> np.ndarray:
     """Softmax probabilities (m, c) float32 of feature rows, in batches, without gradients.
 
-    On the CPU (:func:`_predict_cpu`) batches of 16,384 rows run on one torch thread;
+    On the CPU (:func:`_predict_cpu`) batches of 16,384 rows run on one torch thread each,
+    shared among up to ``threads`` Python threads when called from the main thread;
     elsewhere ``batch`` rows go to the device at a time.
     """
     import torch
 
     model.eval()
     if torch.device(device).type == "cpu":
-        return _predict_cpu(model, X)
+        return _predict_cpu(model, X, threads)
     out = np.empty((len(X), model.net[-1].out_features), np.float32)
     with torch.inference_mode():
         for s in range(0, len(X), batch):
@@ -122,7 +122,7 @@ def predict_logits(model, X: np.ndarray, device, batch: int = 65_536) -> np.ndar
 CPU_BATCH = 16_384
 
 
-def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
+def _predict_cpu(model, X: np.ndarray, threads: int = 1) -> np.ndarray:
     """:func:`predict_logits` on the CPU.
 
     Each batch is standardised by numpy straight into a C-ordered buffer (``X`` may be the
@@ -130,7 +130,7 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
     float32 ``(x - mean) / std``, then passed through ``model.net`` on one torch thread
     (:func:`_one_torch_thread`): torch's own threads would spin-wait between the small
     layers, costing CPU time that other work on the machine needs. Called from the main
-    thread, the batches are shared out in contiguous runs among one Python thread per core
+    thread, the batches are shared out in contiguous runs among ``threads`` Python threads
     (:func:`_batch_runs`), each running torch on one thread: the cores work without waiting
     on each other. Each row goes through the same kernels whatever the batching and the
     thread, so the values do not depend on them.
@@ -151,7 +151,7 @@ def _predict_cpu(model, X: np.ndarray) -> np.ndarray:
                 out[s:e] = torch.softmax(model.net(torch.from_numpy(xb)), dim=1).numpy()
 
     with _one_torch_thread() as main:
-        runs = _batch_runs(len(X), (os.cpu_count() or 1) if main else 1)
+        runs = _batch_runs(len(X), threads if main else 1)
         if len(runs) == 1:
             run(runs[0])
             return out
