@@ -341,3 +341,70 @@ def test_cli_bridges_switch_reaches_the_parameters(tmp_path, capsys, method):
     assert main(["ground", str(tmp_path / "c.laz"), "-o", str(tmp_path / "g.laz"), "--method", method,
                  "--no-bridges", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["params"]["bridges"] is False
+
+
+def _walked_drops(z, x, y, p: BridgeParams, cell: float) -> np.ndarray:
+    """The rays of the module notes walked one cell at a time (the definition the grid
+    arithmetic of :func:`workstation.ground.bridges._drops` follows)."""
+    from workstation.ground.bridges import AXES, _bumps
+
+    rows, cols = z.shape
+    both = np.full(z.shape + (4,), np.nan)
+    for i, d in enumerate(AXES):
+        diag = cell * float(np.hypot(*d))
+        reach = int(np.ceil(p.span / diag))
+        filled = np.isfinite(z) & ~_bumps(z, d, p.step)
+        rays = []
+        for s in (1, -1):
+            depth = np.full(z.shape, np.nan)
+            for r0, c0 in zip(*np.nonzero(filled)):
+                cur, steps = (r0, c0), 0
+                while True:
+                    gap, nxt = 0, None
+                    while gap <= reach:
+                        gap += 1
+                        rr, cc = cur[0] + s * gap * d[0], cur[1] + s * gap * d[1]
+                        if not (0 <= rr < rows and 0 <= cc < cols):
+                            break
+                        if filled[rr, cc]:
+                            nxt = (rr, cc)
+                            break
+                    if nxt is None or gap > reach:
+                        break
+                    dz = z[cur] - z[nxt]
+                    if abs(dz) < p.step:
+                        steps += gap
+                        if steps > reach:
+                            break
+                        cur = nxt
+                        continue
+                    dist = np.hypot(x[nxt] - x[cur], y[nxt] - y[cur])
+                    dist = min(dist, diag) if gap > 1 else dist
+                    if dz >= p.step and dz >= p.gradient * dist and abs(z[r0, c0] - z[cur]) <= p.clearance:
+                        depth[r0, c0] = min(z[r0, c0], z[cur]) - z[nxt]
+                    break
+            rays.append(depth)
+        both[..., i] = np.minimum(*rays)
+    return both
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_drops_follow_the_walked_rays(seed):
+    """The rays' grid arithmetic gives the rays walked one cell at a time, on a grid of
+    terraces, voids and one-cell bumps (a non-square one, so the diagonals' order is tried)."""
+    from workstation.ground.bridges import _drops
+
+    rng = np.random.default_rng(seed)
+    rows, cols = 23, 31
+    z = np.repeat(np.repeat(rng.choice([0.0, 0.4, 1.5, 3.0, 5.0], (6, 8)), 4, 0), 4, 1)[:rows, :cols]
+    z = z + rng.normal(0.0, 0.1, z.shape)
+    z[rng.random(z.shape) < 0.03] += 3.0  # posts
+    z[rng.random(z.shape) < 0.2] = np.nan  # voids
+    r, c = np.mgrid[0:rows, 0:cols]
+    x, y = c + rng.random(z.shape), r + rng.random(z.shape)
+    x[np.isnan(z)] = np.nan
+    y[np.isnan(z)] = np.nan
+    for p in (BridgeParams(span=8.0, clearance=1.0), BridgeParams(span=40.0, gradient=1.0)):
+        want = _walked_drops(z, x, y, p, 1.0)
+        assert np.isfinite(want).any()
+        np.testing.assert_array_equal(_drops(z, x, y, p, 1.0), want)
