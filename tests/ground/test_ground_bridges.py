@@ -389,14 +389,17 @@ def _walked_drops(z, x, y, p: BridgeParams, cell: float) -> np.ndarray:
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
-def test_drops_follow_the_walked_rays(seed):
+@pytest.mark.parametrize("shape", [(23, 31), (31, 23)])
+def test_drops_follow_the_walked_rays(seed, shape):
     """The rays' grid arithmetic gives the rays walked one cell at a time, on a grid of
-    terraces, voids and one-cell bumps (a non-square one, so the diagonals' order is tried)."""
+    terraces, voids and one-cell bumps (wide and tall ones, so both orders of the diagonals
+    are tried)."""
     from workstation.ground.bridges import _drops
 
     rng = np.random.default_rng(seed)
-    rows, cols = 23, 31
-    z = np.repeat(np.repeat(rng.choice([0.0, 0.4, 1.5, 3.0, 5.0], (6, 8)), 4, 0), 4, 1)[:rows, :cols]
+    rows, cols = shape
+    blocks = rng.choice([0.0, 0.4, 1.5, 3.0, 5.0], (-(-rows // 4), -(-cols // 4)))
+    z = np.repeat(np.repeat(blocks, 4, 0), 4, 1)[:rows, :cols]
     z = z + rng.normal(0.0, 0.1, z.shape)
     z[rng.random(z.shape) < 0.03] += 3.0  # posts
     z[rng.random(z.shape) < 0.2] = np.nan  # voids

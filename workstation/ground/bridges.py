@@ -192,7 +192,9 @@ def _lines(filled: np.ndarray, d):
     """The cells ``filled`` (bool grid) in order along the lines of the axis ``d`` (row, col):
     their flat indices, the line of each and its position along it (in steps of ``d``),
     sorted by line, then position. Rows and columns come in that order from ``nonzero``; the
-    diagonals by a counting sort over their (line, row) keys."""
+    diagonals by a counting sort over their (line, place) keys, the place counted along the
+    grid's shorter side (the row, or the column the way ``d`` goes), so the keys number at
+    most twice the cells whatever the grid's shape."""
     rows, cols = filled.shape
     if d == (0, 1):
         r, c = np.nonzero(filled)
@@ -202,9 +204,16 @@ def _lines(filled: np.ndarray, d):
         return r * cols + c, c, r
     r, c = np.nonzero(filled)
     line = c - r + (rows - 1) if d == (1, 1) else r + c
-    key = np.zeros((rows + cols - 1) * rows, bool)
-    key[line * rows + r] = True
-    line, r = np.divmod(np.flatnonzero(key), rows)
+    side = min(rows, cols)
+    place = r if rows <= cols else (c if d == (1, 1) else cols - 1 - c)
+    key = np.zeros((rows + cols - 1) * side, bool)
+    key[line * side + place] = True
+    line, place = np.divmod(np.flatnonzero(key), side)
+    if rows <= cols:
+        r = place
+    else:
+        c = place if d == (1, 1) else cols - 1 - place
+        r = c - line + (rows - 1) if d == (1, 1) else line - c
     c = line - (rows - 1) + r if d == (1, 1) else line - r
     return r * cols + c, line, r
 
@@ -262,7 +271,7 @@ def _drops(z, x, y, p: BridgeParams, cell: float) -> np.ndarray:
     cells that dropped forward; a cell of a one-cell bump on an axis counts as a void on it,
     :func:`_bumps`)."""
     both = np.full(z.shape + (len(AXES),), np.nan)
-    finite = np.isfinite(z)
+    finite = ~np.isnan(z)  # an answered cell (+-inf: all its points NaN/inf) blocks, as it did
     zf, xf, yf = z.ravel(), x.ravel(), y.ravel()
     for i, d in enumerate(AXES):
         diag = cell * float(np.hypot(*d))
