@@ -46,6 +46,11 @@ def test_voxel_ids_are_np_uniques(case):
         f0, i0 = _unique_ids(xyz, voxel)
         assert np.array_equal(first, f0) and np.array_equal(inv, i0)
         assert first.dtype == np.intp and inv.dtype == np.intp
+    fine = voxel_ids(xyz, 0.75)
+    for voxel in (1.5, 3.0, 1.2):  # from the fine representatives (1.2: not nested, all the points)
+        coarse = fx._coarser_representatives(xyz, fine, 0.75, voxel)
+        f0, i0 = _unique_ids(xyz, voxel)
+        assert np.array_equal(coarse[0], f0) and np.array_equal(coarse[1], i0)
 
 
 def test_bounded_queries_are_the_plain_ones(monkeypatch):
@@ -74,3 +79,26 @@ def test_tiled_features_with_one_worker_are_the_whole_clouds():
     F, seg = features_and_segments(c, p)
     T, tseg = features_and_segments(c, p, tile_side=40.0)
     assert np.array_equal(F, T) and np.array_equal(seg, tseg)
+
+
+@pytest.mark.parametrize("block", [1, 7, 10 ** 9])
+def test_eigen_rows_in_blocks_are_the_whole_arrays(monkeypatch, block):
+    """The rows go a block at a time (the last one a single row here): the same features as
+    in one block, whose means are numpy's ``mean(axis=1)`` of the (m, k, 3) neighbourhoods."""
+    rng = np.random.default_rng(11)
+    xyz = np.round(rng.uniform(0, 30, (3000, 3)) * [1, 1, 0.3], 2)
+    ref32 = np.ascontiguousarray(xyz.T, dtype=np.float32)
+    tree = cKDTree(xyz)
+    q = xyz[:50]
+    _, j = _knn(tree, q, 10, 1)
+    monkeypatch.setattr(fx, "_ROW_BLOCK", block)
+    out = np.empty((50, 8), np.float32)
+    fx._eigen_rows(q, ref32, j, 10, out)
+    monkeypatch.setattr(fx, "_ROW_BLOCK", 10 ** 9)
+    whole = np.empty((50, 8), np.float32)
+    fx._eigen_rows(q, ref32, j, 10, whole)
+    assert np.array_equal(out, whole)
+    nb = ref32.T[j]  # (m, k, 3)
+    mean_z = nb[:, :, 2].mean(axis=1)
+    zc = nb[:, :, 2] - mean_z[:, None]
+    assert np.array_equal(out[:, 7], np.minimum(zc.max(axis=1) - (q[:, 2] - mean_z), 30.0).astype(np.float32))

@@ -271,9 +271,10 @@ def grid_bilinear(grid: np.ndarray, xy: np.ndarray, cell: float) -> np.ndarray:
     return bilinear(grid, xy, cell, (0.0, 0.0))
 
 
-def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
+def voxel_ids(xyz: np.ndarray, voxel: float, index: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Voxel representative (first point) indices and each point's voxel index, the voxels
-    numbered in (x, y, z) order."""
+    numbered in (x, y, z) order; with ``index`` (each row's point number) the representative
+    is the smallest ``index`` of the voxel's rows."""
     from workstation.ground.common import column_max, column_min
 
     f = np.divide(xyz, voxel)
@@ -289,7 +290,11 @@ def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
         key, size = _column_keys(col, v[:, 2], ncol)
     if size is None or size > 8 * len(key) + 1_000_000:  # a sparse voxel grid: sort
         _, first, inv = np.unique(key, return_index=True, return_inverse=True)
-        return first, inv.ravel()
+        inv = inv.ravel()
+        if index is not None:
+            first = np.full(len(first), np.iinfo(np.intp).max, np.intp)
+            np.minimum.at(first, inv, index)
+        return first, inv
     # a dense one (the usual case): the occupied voxels in key order from a mask of the keys,
     # each one's rank written at its key (the other entries are never read), and each voxel's
     # smallest point index, without a sort: the same arrays as
@@ -300,8 +305,8 @@ def voxel_ids(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndarray]:
     rank = np.empty(size, np.intp)
     rank[cells] = np.arange(len(cells))
     inv = rank.take(key)
-    first = np.full(len(cells), len(key), np.intp)
-    np.minimum.at(first, inv, np.arange(len(key)))
+    first = np.full(len(cells), np.iinfo(np.intp).max, np.intp)
+    np.minimum.at(first, inv, np.arange(len(key)) if index is None else index)
     return first, inv
 
 
@@ -330,6 +335,21 @@ def _representatives(xyz: np.ndarray, voxel: float) -> tuple[np.ndarray, np.ndar
     if voxel > 0:
         return voxel_ids(xyz, voxel)
     return np.arange(len(xyz)), np.arange(len(xyz))
+
+
+def _coarser_representatives(xyz: np.ndarray, fine, fine_voxel: float, voxel: float):
+    """:func:`_representatives` of ``xyz`` for ``voxel``, given ``fine``, those for
+    ``fine_voxel``. When ``voxel`` is ``fine_voxel`` times a power of two, every fine voxel
+    lies in one coarse voxel (``x / voxel`` is ``x / fine_voxel`` halved exactly, and
+    floor(y / 2) = floor(floor(y) / 2)), so the coarse voxels are numbered among the fine
+    representatives alone, each one's first point the smallest of its fine voxels' first
+    points: the same arrays from about half the rows."""
+    first, inv = fine
+    s = round(float(np.log2(voxel / fine_voxel))) if fine_voxel > 0 and voxel > fine_voxel else 0
+    if s < 1 or voxel != fine_voxel * 2.0 ** s:
+        return _representatives(xyz, voxel)
+    cfirst, cinv = voxel_ids(xyz[first], voxel, index=first)
+    return cfirst, cinv.take(inv)
 
 
 def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: bool = False, tree=None):
@@ -405,6 +425,9 @@ def _bounded_query(tree, q: np.ndarray, kq: int, workers: int) -> tuple[np.ndarr
         return d.reshape(m, kq), j.reshape(m, kq)
     ds, _ = tree.query(q[::_BOUND_SAMPLE], k=kq, workers=workers)
     bound = float(np.quantile(ds.reshape(-1, kq)[:, -1], _BOUND_SHARE))
+    if not np.isfinite(bound) or bound <= 0:  # duplicates to the kq-th neighbour: no bound prunes
+        d, j = tree.query(q, k=kq, workers=workers)
+        return d.reshape(m, kq), j.reshape(m, kq)
     d, j = tree.query(q, k=kq, workers=workers, distance_upper_bound=bound)
     d, j = d.reshape(m, kq), j.reshape(m, kq)
     miss = np.flatnonzero(np.isinf(d[:, -1]))
@@ -443,17 +466,30 @@ def _transposed(a: np.ndarray, block: int = 32768) -> np.ndarray:
     return out
 
 
+#: Query rows per block of :func:`_eigen_rows`: a block's (k, rows) neighbour coordinates and
+#: the eigen solver's temporaries stay in the core's cache.
+_ROW_BLOCK = 16384
+
+
 def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
     """:func:`_eigen`'s features of the query rows ``xyz_q`` whose neighbours are ``j`` (column
     indices of ``ref32``, the reference points' float32 x, y, z rows (3, r)), written into
-    ``out`` (len(xyz_q), 8).
+    ``out`` (len(xyz_q), 8), a block of :data:`_ROW_BLOCK` rows at a time
+    (:func:`_eigen_block`; the rows are independent, so the values do not depend on the
+    blocks)."""
+    for s in range(0, len(xyz_q), _ROW_BLOCK):
+        _eigen_block(xyz_q[s:s + _ROW_BLOCK], ref32, j[s:s + _ROW_BLOCK], k, out[s:s + _ROW_BLOCK])
+
+
+def _eigen_block(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
+    """:func:`_eigen_rows` of one block of rows.
 
     The neighbourhoods are gathered neighbour-major, (k, m) per coordinate, so that every
     reduction over the neighbours is a sequence of whole-row operations: the sums add the
     neighbours one after the other, as ``nb.mean(axis=1)`` and ``einsum("mk,mk->m")`` of an
     (m, k, 3) array do, so the values are the same bit for bit, at about half the CPU time."""
     m = len(xyz_q)
-    jt = _transposed(j)  # (k, m)
+    jt = np.ascontiguousarray(j.T)  # (k, m)
     # float32 second moments of the neighbours about their mean (local metric coordinates, so
     # float32 keeps 0.1 mm at a kilometre)
     mu = np.empty((3, m), np.float32)
@@ -470,15 +506,16 @@ def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out
         cols.append(c)
     x, y, zc = cols
     # the six distinct covariance entries, each a contiguous float64 row: xx, yy, zz, xy, xz, yz
-    # (float32 products accumulated from zero in neighbour order, as einsum does, then / k)
+    # (float32 products accumulated from zero in neighbour order, as einsum does, then / k):
+    # each entry's k products in one call, then added row by row
     cov = np.empty((6, m), np.float64)
     acc = np.empty(m, np.float32)
-    tmp = np.empty(m, np.float32)
+    prod = np.empty((k, m), np.float32)
     for a, (u, v) in enumerate(((x, x), (y, y), (zc, zc), (x, y), (x, zc), (y, zc))):
+        np.multiply(u, v, out=prod)
         acc.fill(0)
         for i in range(k):
-            np.multiply(u[i], v[i], out=tmp)
-            acc += tmp
+            acc += prod[i]
         cov[a] = acc / k
     cov[:3] += 1e-8
     l1, l2, l3 = sym3_eigenvalues(*cov)
@@ -702,15 +739,19 @@ def square_tiles(xy: np.ndarray, side: float, buffer: float):
     """Square tiles of ``side`` (m) over local metric ``xy`` (origin 0): (core mask, indices
     of the points within ``buffer`` of the core, that rectangle (x0, x1, y0, y1)) of each
     occupied tile; every point lies in one core."""
-    ext = xy.max(axis=0)
+    from workstation.ground.common import column_max
+
+    ext = column_max(xy)
     nx, ny = int(np.ceil(ext[0] / side)) or 1, int(np.ceil(ext[1] / side)) or 1
-    ix = np.minimum((xy[:, 0] / side).astype(np.int64), nx - 1)
-    iy = np.minimum((xy[:, 1] / side).astype(np.int64), ny - 1)
+    tile = np.minimum((xy[:, 0] / side).astype(np.int64), nx - 1)  # each point's tile, a * ny + b
+    tile *= ny
+    tile += np.minimum((xy[:, 1] / side).astype(np.int64), ny - 1)
+    occupied = np.bincount(tile, minlength=nx * ny)
     for a in range(nx):
         for b in range(ny):
-            core = (ix == a) & (iy == b)
-            if not core.any():
+            if not occupied[a * ny + b]:
                 continue
+            core = tile == a * ny + b
             rect = (a * side - buffer, (a + 1) * side + buffer, b * side - buffer, (b + 1) * side + buffer)
             yield core, _in_rect(xy, rect), rect
 
@@ -726,28 +767,32 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     (:func:`square_tiles`, buffer :func:`knn_buffer`): each core point takes its voxel
     representative's features from :func:`_exact_scale`, the same neighbours as in the
     whole cloud. Returns each point's mean neighbour distance (the density column's input)."""
+    from workstation.ground.common import column_max, column_min
+
     dh = np.empty(len(xyz))
-    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    lo, hi = column_min(xyz[:, :2]), column_max(xyz[:, :2])
     whole: dict = {}  # voxel -> the whole cloud's representatives and their tree, made when first needed
     for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
         keep = core[sel]
         rows = sel[keep]
         part = xyz[sel]
-        scales = []
-        for v, k in ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)):
-            e, zr, dist, inv = _exact_scale(xyz, part, keep, rect, (lo, hi), v, k, p.workers, whole)
-            scales.append((e, zr, dist, inv[keep]))  # the core's points only
+        fine = _representatives(part, p.fine_voxel)
+        reps = (fine, _coarser_representatives(part, fine, p.fine_voxel, p.coarse_voxel))
+        scales = [_exact_scale(xyz, part, keep, r, rect, (lo, hi), v, k, p.workers, whole)
+                  for r, (v, k) in zip(reps, ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)))]
         Ft = np.empty((len(rows), 24), np.float32, order="F")  # _eigen_columns writes columns 10-23
         dh[rows] = _eigen_columns(Ft, xyz[rows, 2], *scales)
         F[rows, 10:24] = Ft[:, 10:24]
     return dh
 
 
-def _exact_scale(xyz, part, keep, rect, extent, voxel: float, k: int, workers: int, whole: dict):
+def _exact_scale(xyz, part, keep, reps, rect, extent, voxel: float, k: int, workers: int, whole: dict):
     """:func:`_voxel_eigen` of the points ``part`` of ``xyz`` (a tile and its buffer, the
-    rectangle ``rect``, in the cloud's order), exact for the representatives of the points
-    ``keep`` of ``part`` (the core): the same neighbours as among the whole cloud's
-    representatives.
+    rectangle ``rect``, in the cloud's order; ``reps``: its :func:`_representatives`), exact
+    for the representatives of the points ``keep`` of ``part`` (the core): the same
+    neighbours as among the whole cloud's representatives. Returns the core's representatives' features, heights and mean kNN
+    distances, and each core point's representative among them (the arrays of
+    :func:`_voxel_eigen` without the representatives no core point reads).
 
     The representatives of the voxels inside ``rect`` are the whole cloud's (the first point
     of each, ``part`` being in the cloud's order); those of voxels cut by its edge may differ,
@@ -756,23 +801,26 @@ def _exact_scale(xyz, part, keep, rect, extent, voxel: float, k: int, workers: i
     cloud's ``extent`` (lo, hi) less ``voxel``. The few others (a lone point far above the
     rest reaches across tiles) are queried among the whole cloud's representatives, made once
     per voxel size into ``whole`` when a tile first needs them."""
-    first, inv = _representatives(part, voxel)
+    first, inv = reps
     ref = part[first]
+    own = inv[keep]  # each core point's representative
     used = np.zeros(len(ref), bool)
-    used[inv[keep]] = True
-    u = np.flatnonzero(used)  # the core's representatives: the only rows read (the others stay 0)
-    e, dist, reach = np.zeros((len(ref), 8), np.float32), np.zeros(len(ref)), np.zeros(len(ref))
-    e[u], dist[u], reach[u] = _eigen(ref[u], ref, k, workers, reach=True)
-    q = u[~_inside(ref[u], reach[u], rect, extent, voxel, len(ref) >= k)]
-    if len(q):
+    used[own] = True
+    u = np.flatnonzero(used)  # the core's representatives: the only rows queried
+    rank = np.empty(len(ref), np.intp)
+    rank[u] = np.arange(len(u))
+    q = ref[u]
+    e, dist, reach = _eigen(q, ref, k, workers, reach=True)
+    far = np.flatnonzero(~_inside(q, reach, rect, extent, voxel, len(ref) >= k))
+    if len(far):
         if voxel not in whole:
             from scipy.spatial import cKDTree
 
             wref = xyz[_representatives(xyz, voxel)[0]]
             whole[voxel] = (wref, cKDTree(wref, balanced_tree=False, compact_nodes=False))
         wref, tree = whole[voxel]
-        e[q], dist[q], reach[q] = _eigen(ref[q], wref, k, workers, reach=True, tree=tree)
-    return e, ref[:, 2], dist, inv
+        e[far], dist[far], reach[far] = _eigen(q[far], wref, k, workers, reach=True, tree=tree)
+    return e, q[:, 2], dist, rank.take(own)
 
 
 def _inside(ref: np.ndarray, reach: np.ndarray, rect, extent, voxel: float, full: bool) -> np.ndarray:
