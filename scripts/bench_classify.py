@@ -3,6 +3,7 @@
 Prints one JSON line per result. Usage::
 
     PYTHONPATH=. python scripts/bench_classify.py speed [--points N] # inference points/s
+    PYTHONPATH=. python scripts/bench_classify.py phases [--points N] # where speed's time goes (wall / CPU per phase)
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
     PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto] [--without-patches]  # per-sample ISPRS, both paths
     PYTHONPATH=. python scripts/bench_classify.py gatediag [--model M] [--samples samp11,...]  # ISPRS Type I: gate or chain
@@ -55,6 +56,54 @@ def speed(model=None, points=None):
     wall, cpu = best
     emit(bench="classify_speed", points=cloud.n, seconds=wall, points_per_s=cloud.n / wall, cpu_seconds=cpu,
          cpu_points_per_core_s=cloud.n / cpu, load_avg=os.getloadavg()[0], cores=os.cpu_count())
+
+
+def phases(model=None, points=None):
+    """Wall and CPU seconds (CPU: all threads of the process) of the phases of one
+    ``classify`` on :func:`speed`'s cloud, each phase timed by wrapping its function: the
+    feature pass and, inside it, the grid columns and the tiled kNN scales (which run side by
+    side), the network, the refine chain's ground steps (started beside the roof test), the
+    raised-patch test inside them, the wait for the roof test, and the bridge step. Phases that
+    overlap each other add up to more than the total."""
+    import functools
+
+    import workstation.ground.bridges as bridges
+    import workstation.ground.patches as patches
+    import workstation.ml.classifier as classifier
+    import workstation.ml.features as features
+    from workstation.ml.classifier import PointClassifier
+
+    spent = {}
+
+    def timed(owner, name, label):
+        real = getattr(owner, name)
+
+        @functools.wraps(real)
+        def wrapper(*a, **k):
+            t0, c0 = time.perf_counter(), time.process_time()
+            try:
+                return real(*a, **k)
+            finally:
+                w, c = spent.get(label, (0.0, 0.0))
+                spent[label] = (w + time.perf_counter() - t0, c + time.process_time() - c0)
+
+        setattr(owner, name, wrapper)
+
+    for owner, name, label in ((classifier, "features_and_segments", "features"), (features, "_grid_columns", "grid_columns"),
+                               (features, "_tiled_eigen_columns", "knn_scales_tiled"), (features, "_voxel_eigen", "knn_scales_whole"),
+                               (PointClassifier, "predict_proba_features", "network"), (PointClassifier, "_ground_chain", "ground_steps"),
+                               (patches, "raised_patches", "raised_patches"), (PointClassifier, "_nonplanar", "roof_test_wait"),
+                               (bridges, "bridge_decks", "bridges"), (PointClassifier, "_codes", "codes")):
+        timed(owner, name, label)
+    clf = PointClassifier.load(model, device="cpu")
+    cloud = _tiles_cloud(points)
+    clf.classify(cloud[:20000])
+    spent.clear()
+    t0, c0 = time.perf_counter(), time.process_time()
+    clf.classify(cloud)
+    emit(bench="classify_phases", points=cloud.n, seconds=time.perf_counter() - t0, cpu_seconds=time.process_time() - c0,
+         phases={k: {"seconds": round(w, 2), "cpu_seconds": round(c, 2)} for k, (w, c) in spent.items()},
+         load_avg=os.getloadavg()[0])
 
 
 def _tiles_cloud(points=None):
@@ -433,8 +482,8 @@ def simroof():
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
-    if what == "speed":
-        speed(model, int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else None)
+    if what in ("speed", "phases"):
+        (speed if what == "speed" else phases)(model, int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else None)
     elif what == "goals":
         from workstation.ml.classifier import PointClassifier
 
