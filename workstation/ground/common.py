@@ -393,6 +393,37 @@ def with_bulk_transforms(tri):
     return tri
 
 
+def orient2d(a: np.ndarray, b: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Twice the signed area of (a, b, q), rows of (n, 2): positive when q is left of a -> b
+    (the triangle counter-clockwise)."""
+    return (b[:, 0] - a[:, 0]) * (q[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (q[:, 0] - a[:, 0])
+
+
+def walk_tin(xy: np.ndarray, simp: np.ndarray, nbr: np.ndarray, q: np.ndarray, start: np.ndarray,
+             max_steps: int = 10000) -> np.ndarray:
+    """Triangle (n,) of a TIN (vertices ``xy``, triangles ``simp``, ``nbr[t, j]`` the neighbour
+    across from corner j, -1 on the hull) holding each point ``q`` (n, 2), by visibility walks
+    (Devillers, Pion & Teillaud, *Walking in a triangulation*, 2002) from the triangles
+    ``start``; -1 outside the hull, -2 where the walk did not end within ``max_steps``
+    (degenerate input). The triangles may turn either way."""
+    t = np.asarray(start, dtype=np.int64).copy()
+    act = np.flatnonzero(t >= 0)
+    for _ in range(max_steps):
+        if act.size == 0:
+            return t
+        v = xy[simp[t[act]]]
+        sgn = np.sign(orient2d(v[:, 0], v[:, 1], v[:, 2]))[:, None]
+        qa = q[act]
+        o = np.column_stack([orient2d(v[:, 1], v[:, 2], qa), orient2d(v[:, 2], v[:, 0], qa),
+                             orient2d(v[:, 0], v[:, 1], qa)]) * sgn
+        j = np.argmin(o, axis=1)
+        out = o[np.arange(act.size), j] < 0
+        t[act[out]] = nbr[t[act[out]], j[out]]
+        act = act[out & (t[act] >= 0)]
+    t[act] = -2
+    return t
+
+
 def locate(tri, q: np.ndarray) -> np.ndarray:
     """Triangle index (k,) of each point ``q`` (k, 2) in a scipy ``Delaunay``, -1 outside,
     with BLAS on one thread (see :func:`_one_blas_thread`); queries in raster order keep the

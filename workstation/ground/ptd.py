@@ -165,17 +165,12 @@ def facet_test(q: np.ndarray, a: np.ndarray, b: np.ndarray, c: np.ndarray, tan_a
     return dist_ok & (s / np.sqrt(1.0 - s * s) < tan_angle), d, dist_ok
 
 
-def _orient(a: np.ndarray, b: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Twice the signed area of (a, b, q), rows of (n, 2): positive when q is left of a -> b."""
-    return (b[:, 0] - a[:, 0]) * (q[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (q[:, 0] - a[:, 0])
-
-
 def _in_circle(xy: np.ndarray, tri: np.ndarray, q: np.ndarray) -> np.ndarray:
     """(n,) bool: ``q`` (n, 2) strictly inside the circumcircle of the triangles ``tri`` (n, 3)."""
     a, b, c = (xy[tri[:, i]] - q for i in range(3))
     det = ((a * a).sum(1) * (b[:, 0] * c[:, 1] - c[:, 0] * b[:, 1]) - (b * b).sum(1) * (a[:, 0] * c[:, 1] - c[:, 0] * a[:, 1])
            + (c * c).sum(1) * (a[:, 0] * b[:, 1] - b[:, 0] * a[:, 1]))
-    return det * np.sign(_orient(xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]])) > 0
+    return det * np.sign(common.orient2d(xy[tri[:, 0]], xy[tri[:, 1]], xy[tri[:, 2]])) > 0
 
 
 def _delaunay(xy: np.ndarray):
@@ -233,22 +228,7 @@ class _Tin:
     def walk(self, q: np.ndarray, start: np.ndarray, max_steps: int = 10000) -> np.ndarray:
         """Triangle (n,) of each point ``q`` (n, 2) by a visibility walk from the triangles
         ``start``, -1 outside the hull; -2 where the walk did not end (degenerate input)."""
-        t = np.asarray(start, dtype=np.int64).copy()
-        act = np.flatnonzero(t >= 0)
-        for _ in range(max_steps):
-            if act.size == 0:
-                return t
-            v = self.xy[self.simp[t[act]]]
-            sgn = np.sign(_orient(v[:, 0], v[:, 1], v[:, 2]))[:, None]
-            qa = q[act]
-            o = np.column_stack([_orient(v[:, 1], v[:, 2], qa), _orient(v[:, 2], v[:, 0], qa),
-                                 _orient(v[:, 0], v[:, 1], qa)]) * sgn
-            j = np.argmin(o, axis=1)
-            out = o[np.arange(act.size), j] < 0
-            t[act[out]] = self.nbr[t[act[out]], j[out]]
-            act = act[out & (t[act] >= 0)]
-        t[act] = -2
-        return t
+        return common.walk_tin(self.xy, self.simp, self.nbr, q, start, max_steps)
 
     def insert(self, new: np.ndarray, start: np.ndarray, rest: np.ndarray, s_rest: np.ndarray) -> np.ndarray | None:
         """Add the candidates ``new``, inside the TIN in the triangles ``start``, by

@@ -13,6 +13,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .common import orient2d, walk_tin
+
 
 def full_edges(xy: np.ndarray, tins=None):
     """(src, dst, tri): the directed edges (each undirected TIN edge both ways, in scipy's
@@ -122,11 +124,6 @@ def pass_edges(xyz, gid, pts, base, tins, step: float):
     return src, dst, _Base(gid, tri, {}), True
 
 
-def _orient(a, b, c) -> np.ndarray:
-    """Twice the signed area of the triangles (a, b, c) (k, 2): > 0 counter-clockwise."""
-    return (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
-
-
 def _lifted_distance(a, b, c, d, scale: float) -> np.ndarray:
     """Signed distance of d above the plane through a, b, c (counter-clockwise) on the
     paraboloid z = ``scale`` (x² + y²), Qhull's measure of a Delaunay triangle's emptiness:
@@ -148,7 +145,7 @@ def _base_geometry(base: _Base) -> _Geometry:
     tri = base.tri
     pts = tri.points
     simp, nbr = tri.simplices.astype(np.int32), tri.neighbors.astype(np.int32)
-    cw = _orient(pts[simp[:, 0]], pts[simp[:, 1]], pts[simp[:, 2]]) < 0
+    cw = orient2d(pts[simp[:, 0]], pts[simp[:, 1]], pts[simp[:, 2]]) < 0
     simp[cw], nbr[cw] = simp[cw][:, [0, 2, 1]], nbr[cw][:, [0, 2, 1]]
     ht, hj = (a.astype(np.int32) for a in np.nonzero(nbr < 0))
     hull = np.zeros(len(pts), bool)
@@ -181,27 +178,6 @@ def _match(gid_old: np.ndarray, gid_new: np.ndarray, m: int) -> tuple[np.ndarray
     pos[gid_new] = -1
     pos[gid_old] = np.arange(len(gid_old))
     return new_of_old, pos[gid_new]
-
-
-def _walk(pts, simp, nbr, q, t):
-    """The old triangle holding each point q (k, 2), by visibility walks (Devillers, Pion &
-    Teillaud, *Walking in a triangulation*, 2002) from the triangles t; -1 outside the hull;
-    None where a walk does not end."""
-    t = np.asarray(t, np.int64).copy()
-    todo = np.arange(len(q))
-    for _ in range(_WALK_STEPS):
-        if len(todo) == 0:
-            return t
-        s = simp[t[todo]]
-        a, b, c = pts[s[:, 0]], pts[s[:, 1]], pts[s[:, 2]]
-        qq = q[todo]
-        o = np.column_stack([_orient(b, c, qq), _orient(c, a, qq), _orient(a, b, qq)])
-        j = o.argmin(1)
-        away = o[np.arange(len(todo)), j] < 0
-        todo, j = todo[away], j[away]
-        t[todo] = nbr[t[todo], j]
-        todo = todo[t[todo] >= 0]
-    return None
 
 
 def _incremental_edges(xyz, gid, pts, base: _Base, step: float):
@@ -259,14 +235,15 @@ def _retile(xy, geo: _Geometry, tri, cavity, new_of_old, old_of_new):
     if len(ds.coplanar):
         return None
     dsimp, dn = s[ds.simplices], ds.neighbors.astype(np.int64)
-    area = _orient(xy[dsimp[:, 0]], xy[dsimp[:, 1]], xy[dsimp[:, 2]])
+    area = orient2d(xy[dsimp[:, 0]], xy[dsimp[:, 1]], xy[dsimp[:, 2]])
     cw = area < 0
     dsimp[cw], dn[cw], area[cw] = dsimp[cw][:, [0, 2, 1]], dn[cw][:, [0, 2, 1]], -area[cw]
-    where = _walk(old, simp, nbr, xy[dsimp].mean(axis=1), tri.vertex_to_simplex[old_of_new[dsimp[:, 0]]])
-    if where is None:
+    where = walk_tin(old, simp, nbr, xy[dsimp].mean(axis=1), tri.vertex_to_simplex[old_of_new[dsimp[:, 0]]],
+                     _WALK_STEPS)
+    if (where == -2).any():  # a walk that did not end
         return None
     sel = (where >= 0) & cavity[np.maximum(where, 0)]
-    cav_area = np.abs(_orient(old[simp[cavity, 0]], old[simp[cavity, 1]], old[simp[cavity, 2]])).sum()
+    cav_area = np.abs(orient2d(old[simp[cavity, 0]], old[simp[cavity, 1]], old[simp[cavity, 2]])).sum()
     if sel.sum() != cavity.sum() - 2 * int((new_of_old < 0).sum()):
         return None
     if abs(area[sel].sum() - cav_area) > 1e-9 * cav_area:

@@ -748,18 +748,16 @@ def square_tiles(xy: np.ndarray, side: float, buffer: float):
     tile += np.minimum((xy[:, 1] / side).astype(np.int64), ny - 1)
     occupied = np.bincount(tile, minlength=nx * ny)
     for a in range(nx):
+        if not occupied[a * ny:(a + 1) * ny].any():
+            continue
+        x0, x1 = a * side - buffer, (a + 1) * side + buffer
+        strip = np.flatnonzero((xy[:, 0] >= x0) & (xy[:, 0] < x1))  # the column's buffered x range, once
+        ys = xy[strip, 1]
         for b in range(ny):
             if not occupied[a * ny + b]:
                 continue
-            core = tile == a * ny + b
-            rect = (a * side - buffer, (a + 1) * side + buffer, b * side - buffer, (b + 1) * side + buffer)
-            yield core, _in_rect(xy, rect), rect
-
-
-def _in_rect(xy: np.ndarray, rect) -> np.ndarray:
-    """Indices of the points of ``xy`` in ``[x0, x1) x [y0, y1)``."""
-    x0, x1, y0, y1 = rect
-    return np.flatnonzero((xy[:, 0] >= x0) & (xy[:, 0] < x1) & (xy[:, 1] >= y0) & (xy[:, 1] < y1))
+            y0, y1 = b * side - buffer, (b + 1) * side + buffer
+            yield tile == a * ny + b, strip[(ys >= y0) & (ys < y1)], (x0, x1, y0, y1)
 
 
 def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side: float) -> np.ndarray:

@@ -23,6 +23,7 @@ import numpy as np
 from workstation.core.log import get_logger
 from workstation.core.products import RegistrationResult
 
+from .planes import plane_registration
 from .preprocess import Prepared
 from .transforms import apply_transform, make_transform, umeyama
 
@@ -293,15 +294,7 @@ def scale_search(xs: np.ndarray, tgt: Prepared, params: CoarseParams = CoarsePar
                      "hypotheses": [{"scale": round(x[1], 6), "score": round(x[0], 4)} for x in cands]}
 
 
-def _planes(src: Prepared, tgt: Prepared, params: CoarseParams = CoarseParams()) -> RegistrationResult:
-    """Coarse registration from matched planes (:func:`~workstation.registration.planes.plane_registration`
-    with its own defaults, :class:`~workstation.registration.planes.PlaneCoarseParams`: this
-    stage's ``params`` do not apply), testing free space where the prepared clouds carry their
-    scanner positions (``Prepared.viewpoint``)."""
-    from .planes import plane_registration
-
-    return plane_registration(src, tgt)
-
-
-#: The coarse methods by name, each called as ``method(src, tgt, params)``.
-COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration, "planes": _planes}
+#: The coarse methods by name, each called as ``method(src, tgt, params)`` (``planes`` keeps its
+#: own :class:`~workstation.registration.planes.PlaneCoarseParams` defaults: this stage's
+#: ``params`` do not apply to it).
+COARSE_METHODS = {"fpfh_ransac": fpfh_ransac, "fgr": fgr, "clique": clique_registration, "planes": plane_registration}
