@@ -78,3 +78,26 @@ def test_few_candidates_and_empty_input():
     two = none.copy()
     two[:2] = True
     assert not nonplanar_roofs(xyz, two, hag).any()
+
+
+def test_vote_in_blocks_is_one_query_of_all():
+    """The vote looks its candidates up a block at a time on two threads: the decisions are
+    those of one KD-tree query of every candidate, on one thread or two."""
+    from scipy.spatial import cKDTree
+
+    from workstation.ml.roofs import RoofTest
+
+    rng = np.random.default_rng(5)
+    xyz = np.round(rng.uniform(0, 300, (90_000, 3)) * [1, 1, 0.05], 2) + [0, 0, 5]  # 1 cm grid: ties
+    cand = rng.random(len(xyz)) < 0.8
+    hag = xyz[:, 2]
+    for workers in (1, 2):
+        t = RoofTest(xyz, hag, workers=workers)
+        tested = (xyz[rng.random(len(xyz)) < 0.3] - t.origin).astype(np.float32)
+        bad = rng.random(len(tested)) < 0.5
+        got = t.vote(cand, tested, bad)
+        _, j = cKDTree(tested).query((xyz[cand] - t.origin).astype(np.float32), k=5)
+        want = np.zeros(len(xyz), bool)
+        want[cand] = bad[j].sum(axis=1) * 2 > 5
+        assert cand.sum() > 2 * 32768  # more than two blocks
+        assert np.array_equal(got, want)

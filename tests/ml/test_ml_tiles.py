@@ -87,3 +87,12 @@ def test_eigen_features_of_one_query_are_its_row_of_many():
     for i in (0, 7, 99):
         one, d1 = _eigen(pts[i:i + 1], pts, 16, 1)
         assert np.array_equal(one[0], many[i]) and d1[0] == d[i]
+
+
+def test_tiled_features_on_one_thread_are_the_same():
+    """``workers=1`` writes each tile's columns in turn, more threads while the next tile's
+    neighbours are found: the same features either way."""
+    c = scene(seed=2)
+    one = features_and_segments(c, FeatureParams(workers=1), tile_side=40.0)[0]
+    two = features_and_segments(c, FeatureParams(workers=2), tile_side=40.0)[0]
+    assert np.array_equal(one, two)

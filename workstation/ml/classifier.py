@@ -40,6 +40,7 @@ from workstation.core.cpu import available_cores
 from workstation.core.errors import InvalidInputError, NotFittedError, StageError
 from workstation.core.log import get_logger
 from workstation.ground.bridges import BridgeParams
+from workstation.ground.common import column_max
 from workstation.ground.refine import Refine, check_steps, declare, run_chain
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
@@ -542,7 +543,7 @@ class PointClassifier:
         the cloud's mean density over its bounding box."""
         if cloud.n <= self.tile_points:
             return None
-        ext = metric_xyz(cloud)[0][:, :2].max(axis=0)
+        ext = column_max(metric_xyz(cloud)[0][:, :2])
         area = max(float(ext[0] * ext[1]), 1.0)
         return max(float(np.sqrt(self.tile_points / (cloud.n / area))) * 0.8, 4 * knn_buffer(self.feature_params))
 

@@ -770,18 +770,37 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     dh = np.empty(len(xyz))
     lo, hi = column_min(xyz[:, :2]), column_max(xyz[:, :2])
     whole: dict = {}  # voxel -> the whole cloud's representatives and their tree, made when first needed
-    for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
-        keep = core[sel]
-        rows = sel[keep]
-        part = xyz[sel]
-        fine = _representatives(part, p.fine_voxel)
-        reps = (fine, _coarser_representatives(part, fine, p.fine_voxel, p.coarse_voxel))
-        scales = [_exact_scale(xyz, part, keep, r, rect, (lo, hi), v, k, p.workers, whole)
-                  for r, (v, k) in zip(reps, ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)))]
-        Ft = np.empty((len(rows), 24), np.float32, order="F")  # _eigen_columns writes columns 10-23
-        dh[rows] = _eigen_columns(Ft, xyz[rows, 2], *scales)
-        F[rows, 10:24] = Ft[:, 10:24]
+    # a tile's columns are written (one core: the takes, and the first touch of F's pages) while
+    # the next tile's neighbours are found; each tile writes its own rows of F and dh
+    writer = ThreadPoolExecutor(max_workers=1) if p.workers != 1 else None
+    written = []
+    try:
+        for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
+            keep = core[sel]
+            rows = sel[keep]
+            part = xyz[sel]
+            fine = _representatives(part, p.fine_voxel)
+            reps = (fine, _coarser_representatives(part, fine, p.fine_voxel, p.coarse_voxel))
+            scales = [_exact_scale(xyz, part, keep, r, rect, (lo, hi), v, k, p.workers, whole)
+                      for r, (v, k) in zip(reps, ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)))]
+            if writer is None:
+                _tile_columns(F, dh, xyz, rows, scales)
+            else:
+                written.append(writer.submit(_tile_columns, F, dh, xyz, rows, scales))
+        for w in written:
+            w.result()
+    finally:
+        if writer is not None:
+            writer.shutdown(cancel_futures=True)
     return dh
+
+
+def _tile_columns(F: np.ndarray, dh: np.ndarray, xyz: np.ndarray, rows: np.ndarray, scales) -> None:
+    """Columns 10-23 of ``F`` and the mean fine neighbour distance ``dh`` at the core points
+    ``rows`` of one tile, from its two :func:`_exact_scale` ``scales``."""
+    Ft = np.empty((len(rows), 24), np.float32, order="F")  # _eigen_columns writes columns 10-23
+    dh[rows] = _eigen_columns(Ft, xyz[rows, 2], *scales)
+    F[rows, 10:24] = Ft[:, 10:24]
 
 
 def _exact_scale(xyz, part, keep, reps, rect, extent, voxel: float, k: int, workers: int, whole: dict):

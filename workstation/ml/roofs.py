@@ -33,7 +33,6 @@ Terrasolid, TerraScan User Guide: Classify / Buildings.
 
 from __future__ import annotations
 
-import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -106,22 +105,33 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
     dk = np.empty(len(query))
     order = z_order(query)  # neighbouring queries in turn: the tree's nodes stay in the cache
     query = query[order]
+    step = 8192
 
     def block(s):  # one block of candidates: its query and its moments stay in the cache
         d, i = tree.query(query[s:s + step], k=k, workers=1)
         dk[order[s:s + step]] = d[:, -1]
         best[order[s:s + step]] = _min_plane_variance(np.take(ref, i, axis=0) - query[s:s + step, None, :], k)
 
-    step = 8192
-    starts = range(0, len(query), step)
-    threads = (os.cpu_count() or 1) if workers in (-1, None) else max(int(workers), 1)
-    if threads > 1 and len(query) > step:  # KD-tree queries and numpy release the GIL
+    in_blocks(block, len(query), step, workers)
+    return np.sqrt(np.maximum(best, 0.0)), dk
+
+
+def in_blocks(block, n: int, step: int, workers: int = -1) -> None:
+    """Call ``block(s)`` for the starts ``s`` of ``n`` rows in blocks of ``step``, on up to
+    ``workers`` threads (-1: the cores this process may use; KD-tree queries and numpy release
+    the GIL). Each block's KD-tree answers and temporaries stay small: they are reused from the
+    heap instead of being fresh pages the kernel must clear, and a block's rows are answered
+    as one query of the whole would answer them."""
+    from workstation.core.cpu import available_cores
+
+    starts = range(0, n, step)
+    threads = available_cores() if workers in (-1, None) else max(int(workers), 1)
+    if threads > 1 and n > step:
         with ThreadPoolExecutor(max_workers=threads) as pool:
             list(pool.map(block, starts))
     else:
         for s in starts:
             block(s)
-    return np.sqrt(np.maximum(best, 0.0)), dk
 
 
 def z_order(xyz: np.ndarray, cell: float = 4.0) -> np.ndarray:
@@ -138,7 +148,9 @@ def z_order(xyz: np.ndarray, cell: float = 4.0) -> np.ndarray:
     """
     if len(xyz) == 0:
         return np.zeros(0, np.intp)
-    c = np.floor((xyz[:, :2] - xyz[:, :2].min(axis=0)) / cell).astype(np.int64)
+    from workstation.ground.common import column_min
+
+    c = np.floor((xyz[:, :2] - column_min(xyz[:, :2])) / cell).astype(np.int64)
     c >>= max(int(c.max()).bit_length() - 8, 0)
     key = np.zeros(len(xyz), np.uint16)
     for b in range(8):  # interleave the bits of x and y
@@ -248,8 +260,16 @@ class RoofTest:
             return out
         vote = int(min(max(self.params.vote, 1), len(tested)))
         tree = tree if tree is not None else self.vote_tree(tested)
-        _, j = tree.query((self.xyz[q] - self.origin).astype(np.float32), k=vote, workers=self.workers)
-        out[q] = bad[j.reshape(len(q), vote)].sum(axis=1) * 2 > vote
+        fails = np.empty(len(q), bool)
+        step = 32768
+
+        def block(s):
+            pts = (self.xyz[q[s:s + step]] - self.origin).astype(np.float32)
+            _, j = tree.query(pts, k=vote, workers=1)
+            fails[s:s + step] = bad[j.reshape(len(pts), vote)].sum(axis=1) * 2 > vote
+
+        in_blocks(block, len(q), step, self.workers)
+        out[q] = fails
         return out
 
     @staticmethod
