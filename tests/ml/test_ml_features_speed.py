@@ -60,7 +60,9 @@ def test_bounded_queries_are_the_plain_ones(monkeypatch):
     xyz = np.round(np.vstack([rng.uniform(0, 80, (30000, 3)) * [1, 1, 0.1],
                               rng.uniform(0, 80, (40, 3)) + [0, 0, 50]]), 2)
     tree = cKDTree(xyz, balanced_tree=False, compact_nodes=False)
-    d, j = fx._bounded_query(tree, xyz, 11, 1)
+    bound = fx._query_bound(tree, xyz, 11, 1)
+    assert np.isfinite(bound)  # the bounded path
+    d, j = fx._bounded_query(tree, xyz, 11, 1, bound)
     d0, j0 = tree.query(xyz, k=11)
     assert np.array_equal(d, d0)
     assert np.isfinite(d).all()
@@ -102,3 +104,17 @@ def test_eigen_rows_in_blocks_are_the_whole_arrays(monkeypatch, block):
     mean_z = nb[:, :, 2].mean(axis=1)
     zc = nb[:, :, 2] - mean_z[:, None]
     assert np.array_equal(out[:, 7], np.minimum(zc.max(axis=1) - (q[:, 2] - mean_z), 30.0).astype(np.float32))
+
+
+def test_eigen_in_blocks_is_one_block_of_all(monkeypatch):
+    """The kNN scales query and compute a block of rows at a time on the cores: the features
+    are those of one block of every row, on one thread or two."""
+    rng = np.random.default_rng(8)
+    xyz = np.round(rng.uniform(0, 120, (40000, 3)) * [1, 1, 0.1], 2)  # 1 cm grid: ties
+    q = xyz[::1]
+    blocks = [fx._eigen(q, xyz, 10, w, reach=True) for w in (1, 2)]
+    monkeypatch.setattr(fx, "_QUERY_BLOCK", 10 ** 9)
+    whole = fx._eigen(q, xyz, 10, 1, reach=True)
+    assert len(q) > 2 * 16384
+    for got in blocks:
+        assert all(np.array_equal(a, b) for a, b in zip(got, whole))

@@ -17,3 +17,21 @@ def available_cores() -> int:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # not Linux
         return max(1, os.cpu_count() or 1)
+
+
+def in_blocks(block, n: int, step: int, workers: int = -1) -> None:
+    """Call ``block(s)`` for the starts ``s`` of ``n`` rows in blocks of ``step``, on up to
+    ``workers`` threads (-1: :func:`available_cores`; KD-tree queries and numpy release the
+    GIL). Each block's KD-tree answers and temporaries stay small, so they are reused from the
+    heap instead of being fresh pages the kernel must clear, and rows are answered one by one,
+    so a block's answers are those one call over all ``n`` rows gives."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    starts = range(0, n, step)
+    threads = available_cores() if workers in (-1, None) else max(int(workers), 1)
+    if threads > 1 and n > step:
+        with ThreadPoolExecutor(max_workers=threads) as pool:
+            list(pool.map(block, starts))
+    else:
+        for s in starts:
+            block(s)

@@ -53,6 +53,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from workstation.core.cloud import Cloud
+from workstation.core.cpu import in_blocks
 from workstation.core.errors import InvalidInputError
 from workstation.core.pca import sym3_eigen, sym3_eigenvalues, sym3_eigenvector_z  # noqa: F401 (sym3_eigen re-exported)
 from workstation.ground.common import fill_nearest
@@ -360,34 +361,40 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: 
     the distance of the farthest neighbour (m,). ``tree``: a cKDTree of ``xyz_ref`` (built
     here when None).
 
-    With ``workers`` other than 1 the rows after the KD-tree query are done in two halves on
-    two threads (numpy releases the GIL): the fine scale is the feature pass's longest task,
-    and without the split its second half ran on one core while the other one sat idle. The
-    rows are independent, so the values are the same either way.
+    The queries go in blocks of :data:`_QUERY_BLOCK` rows on ``workers`` threads
+    (:func:`workstation.core.cpu.in_blocks`), each block's neighbours found and used at once:
+    no neighbour list of the whole set is held, and the rows are independent, so the values
+    are those of one query of all.
     """
     from scipy.spatial import cKDTree
 
     k = int(min(k, len(xyz_ref)))
     if tree is None:
         tree = cKDTree(xyz_ref, balanced_tree=False, compact_nodes=False)
-    d, j = _knn(tree, xyz_q, k, workers)
     ref32 = np.ascontiguousarray(xyz_ref.T, dtype=np.float32)  # (3, r): x, y, z rows
     m = len(xyz_q)
     out = np.empty((m, 8), np.float32)
-    if workers == 1 or m < 50_000:
-        _eigen_rows(xyz_q, ref32, j, k, out)
-    else:
-        half = m // 2
-        with ThreadPoolExecutor(max_workers=1) as pool:
-            other = pool.submit(_eigen_rows, xyz_q[half:], ref32, j[half:], k, out[half:])
-            _eigen_rows(xyz_q[:half], ref32, j[:half], k, out[:half])
-            other.result()
+    mean, last = np.empty(m), np.empty(m)
+    bound = _query_bound(tree, xyz_q, min(k + 1, tree.n), workers)
+
+    def block(s):
+        rows = slice(s, s + _QUERY_BLOCK)
+        d, j = _knn(tree, xyz_q[rows], k, 1, bound)
+        _eigen_rows(xyz_q[rows], ref32, j, k, out[rows])
+        mean[rows] = d.mean(axis=1)
+        last[rows] = d[:, -1]
+
+    in_blocks(block, m, _QUERY_BLOCK, workers)
     if reach:
-        return out, d.mean(axis=1), d[:, -1]
-    return out, d.mean(axis=1)
+        return out, mean, last
+    return out, mean
 
 
-def _knn(tree, xyz_q: np.ndarray, k: int, workers: int) -> tuple[np.ndarray, np.ndarray]:
+#: Query rows per block of :func:`_eigen`.
+_QUERY_BLOCK = 16384
+
+
+def _knn(tree, xyz_q: np.ndarray, k: int, workers: int, bound: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The ``k`` nearest reference points (distances, indices; (m, k)) of each query, ties
     of equal distance taken in reference order, so that neighbours and their order do not
     depend on the tree: any set of reference points holding a query's neighbours, in the same
@@ -395,10 +402,13 @@ def _knn(tree, xyz_q: np.ndarray, k: int, workers: int) -> tuple[np.ndarray, np.
     at the k-th distance; the rare rows whose tie runs beyond are queried again, wider. Ties
     at distance 0 are left as the tree gives them: those neighbours share the query's
     coordinates, so their order changes no feature (and a cloud of many duplicates would
-    otherwise query every duplicate of every one)."""
+    otherwise query every duplicate of every one). ``bound``: the search bound of
+    :func:`_bounded_query` (None: :func:`_query_bound` of these queries)."""
     n = tree.n
     kq = min(k + 1, n)
-    d, j = _bounded_query(tree, xyz_q, kq, workers)
+    if bound is None:
+        bound = _query_bound(tree, xyz_q, kq, workers)
+    d, j = _bounded_query(tree, xyz_q, kq, workers, bound)
     if kq > 1:
         tie = np.flatnonzero(((d[:, 1:] == d[:, :-1]) & (d[:, 1:] > 0)).any(axis=1))
         if len(tie):
@@ -413,27 +423,30 @@ def _knn(tree, xyz_q: np.ndarray, k: int, workers: int) -> tuple[np.ndarray, np.
 _BOUND_SAMPLE, _BOUND_SHARE = 64, 0.99
 
 
-def _bounded_query(tree, q: np.ndarray, kq: int, workers: int) -> tuple[np.ndarray, np.ndarray]:
-    """``tree.query(q, k=kq)`` ((m, kq) distances, indices), searched within a distance bound:
-    the ``_BOUND_SHARE`` quantile of the kq-th neighbour distance of one query in
-    ``_BOUND_SAMPLE``. The bound prunes the search (a tenth to a fifth less time on lidar
-    representatives); the queries that find fewer than kq points within it are queried
-    again without, so every row holds its kq nearest points either way."""
-    m = len(q)
-    if m < 100 * _BOUND_SAMPLE:
-        d, j = tree.query(q, k=kq, workers=workers)
-        return d.reshape(m, kq), j.reshape(m, kq)
+def _query_bound(tree, q: np.ndarray, kq: int, workers: int) -> float:
+    """Search bound of :func:`_bounded_query` for the queries ``q``: the ``_BOUND_SHARE``
+    quantile of the kq-th neighbour distance of one query in ``_BOUND_SAMPLE`` (infinity, no
+    bound, for fewer than 100 samples, or where duplicates reach the kq-th neighbour)."""
+    if len(q) < 100 * _BOUND_SAMPLE:
+        return np.inf
     ds, _ = tree.query(q[::_BOUND_SAMPLE], k=kq, workers=workers)
     bound = float(np.quantile(ds.reshape(-1, kq)[:, -1], _BOUND_SHARE))
-    if not np.isfinite(bound) or bound <= 0:  # duplicates to the kq-th neighbour: no bound prunes
-        d, j = tree.query(q, k=kq, workers=workers)
-        return d.reshape(m, kq), j.reshape(m, kq)
+    return bound if np.isfinite(bound) and bound > 0 else np.inf
+
+
+def _bounded_query(tree, q: np.ndarray, kq: int, workers: int, bound: float) -> tuple[np.ndarray, np.ndarray]:
+    """``tree.query(q, k=kq)`` ((m, kq) distances, indices), searched within the distance
+    ``bound`` (:func:`_query_bound`). The bound prunes the search (a tenth to a fifth less
+    time on lidar representatives); the queries that find fewer than kq points within it are
+    queried again without, so every row holds its kq nearest points either way."""
+    m = len(q)
     d, j = tree.query(q, k=kq, workers=workers, distance_upper_bound=bound)
     d, j = d.reshape(m, kq), j.reshape(m, kq)
-    miss = np.flatnonzero(np.isinf(d[:, -1]))
-    if len(miss):
-        d2, j2 = tree.query(q[miss], k=kq, workers=workers)
-        d[miss], j[miss] = d2.reshape(-1, kq), j2.reshape(-1, kq)
+    if np.isfinite(bound):
+        miss = np.flatnonzero(np.isinf(d[:, -1]))
+        if len(miss):
+            d2, j2 = tree.query(q[miss], k=kq, workers=workers)
+            d[miss], j[miss] = d2.reshape(-1, kq), j2.reshape(-1, kq)
     return d, j
 
 

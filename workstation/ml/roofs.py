@@ -33,10 +33,11 @@ Terrasolid, TerraScan User Guide: Classify / Buildings.
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
+
+from workstation.core.cpu import in_blocks
 
 
 @dataclass(frozen=True)
@@ -114,24 +115,6 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
 
     in_blocks(block, len(query), step, workers)
     return np.sqrt(np.maximum(best, 0.0)), dk
-
-
-def in_blocks(block, n: int, step: int, workers: int = -1) -> None:
-    """Call ``block(s)`` for the starts ``s`` of ``n`` rows in blocks of ``step``, on up to
-    ``workers`` threads (-1: the cores this process may use; KD-tree queries and numpy release
-    the GIL). Each block's KD-tree answers and temporaries stay small: they are reused from the
-    heap instead of being fresh pages the kernel must clear, and a block's rows are answered
-    as one query of the whole would answer them."""
-    from workstation.core.cpu import available_cores
-
-    starts = range(0, n, step)
-    threads = available_cores() if workers in (-1, None) else max(int(workers), 1)
-    if threads > 1 and n > step:
-        with ThreadPoolExecutor(max_workers=threads) as pool:
-            list(pool.map(block, starts))
-    else:
-        for s in starts:
-            block(s)
 
 
 def z_order(xyz: np.ndarray, cell: float = 4.0) -> np.ndarray:
