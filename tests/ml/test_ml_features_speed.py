@@ -118,3 +118,17 @@ def test_eigen_in_blocks_is_one_block_of_all(monkeypatch):
     assert len(q) > 2 * 16384
     for got in blocks:
         assert all(np.array_equal(a, b) for a, b in zip(got, whole))
+
+
+def test_non_finite_features_are_replaced(monkeypatch):
+    """A NaN or infinite feature value (any column) becomes 0, 60 or -20 before the network."""
+    real = fx._density_column
+
+    def broken(F, dh):
+        real(F, dh)
+        F[:3, 31] = [np.nan, np.inf, -np.inf]
+
+    monkeypatch.setattr(fx, "_density_column", broken)
+    F, _ = features_and_segments(scene(3), FeatureParams())
+    assert np.isfinite(F).all()
+    assert F[:3, 31].tolist() == [0.0, 60.0, -20.0]

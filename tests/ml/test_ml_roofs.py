@@ -101,3 +101,13 @@ def test_vote_in_blocks_is_one_query_of_all():
         want[cand] = bad[j].sum(axis=1) * 2 > 5
         assert cand.sum() > 2 * 32768  # more than two blocks
         assert np.array_equal(got, want)
+
+
+def test_test_hands_its_tested_points_over_before_the_plane_fits():
+    from workstation.ml.roofs import RoofTest
+
+    xyz, label, hag = gabled_house_and_crown(seed=6)
+    t = RoofTest(xyz, hag)
+    seen = []
+    tested, bad = t.test(label != 2, with_tested=seen.append)
+    assert len(seen) == 1 and seen[0] is tested and len(bad) == len(tested)

@@ -127,10 +127,13 @@ class _Started:
 
 def _run_roof_job(tester, candidate):
     """The roof test of :class:`_RoofJob`: (tested points, their failures, the vote, the vote's
-    KD-tree of the tested points, None when the vote needed none)."""
+    KD-tree of the tested points, None when the vote needed none). The vote's tree is built
+    beside the plane fits."""
     t = tester.result()
-    tested, bad = t.test(candidate)
-    tree = t.vote_tree(tested) if bad.any() and not bad.all() else None
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        tree = []
+        tested, bad = t.test(candidate, with_tested=lambda pts: tree.append(pool.submit(t.vote_tree, pts)))
+        tree = tree[0].result() if tree and bad.any() and not bad.all() else None
     return tested, bad, t.vote(candidate, tested, bad, tree), tree
 
 

@@ -720,7 +720,9 @@ def features_and_segments(cloud: Cloud, params: FeatureParams = FeatureParams(),
     dh = done[0] if tile_side is not None else _eigen_columns(F, xyz[:, 2], *done)
     _density_column(F, dh)
     F[:, 32:34], segments = _object_areas(F[:, 7], F[:, 14], F[:, 12], r, c, shape, cell, p.object_height)
-    if not np.isfinite(F).all():  # one pass in the usual case; nan_to_num's inf tests are slow
+    with np.errstate(invalid="ignore", over="ignore"):  # finite only if every value is; no temporaries
+        finite = np.isfinite(F.sum())  # (an overflow would cost a pass that changes nothing)
+    if not finite:
         np.nan_to_num(F, copy=False, nan=0.0, posinf=60.0, neginf=-20.0)
     return F, segments
 

@@ -204,8 +204,10 @@ class RoofTest:
         """(n,) bool: the candidates whose neighbourhood is not planar within the tolerance."""
         return self.vote(candidate, *self.test(candidate))
 
-    def test(self, candidate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Plane test of one candidate per voxel (its first point).
+    def test(self, candidate: np.ndarray, with_tested=None) -> tuple[np.ndarray, np.ndarray]:
+        """Plane test of one candidate per voxel (its first point); ``with_tested``, if given,
+        is called with the tested points as soon as they are chosen (work that needs only
+        them, such as :meth:`vote_tree`, can run beside the plane fits).
 
         Returns
         -------
@@ -222,6 +224,8 @@ class RoofTest:
 
         first = voxel_ids(self.xyz[q], p.voxel)[0] if p.voxel > 0 else np.arange(len(q))
         tested = (self.xyz[q[first]] - self.origin).astype(np.float32)
+        if with_tested is not None:
+            with_tested(tested)
         resid, dk = plane_residuals(tested, self.ref, p.k, self.workers, tree=self.tree)
         bad = (resid > p.tolerance) & (dk <= p.max_radius)
         sparse = np.flatnonzero(dk > p.max_radius)
