@@ -132,3 +132,22 @@ def test_non_finite_features_are_replaced(monkeypatch):
     F, _ = features_and_segments(scene(3), FeatureParams())
     assert np.isfinite(F).all()
     assert F[:3, 31].tolist() == [0.0, 60.0, -20.0]
+
+
+def test_in_blocks_on_one_worker_runs_in_the_callers_thread():
+    import threading
+
+    from workstation.core.cpu import in_blocks
+
+    seen = []
+    in_blocks(lambda s: seen.append((s, threading.get_ident())), 10, 3, 1)
+    assert [s for s, _ in seen] == [0, 3, 6, 9] and {t for _, t in seen} == {threading.get_ident()}
+
+
+def test_a_failed_tile_write_is_raised(monkeypatch):
+    def broken(*a):
+        raise RuntimeError("tile write")
+
+    monkeypatch.setattr(fx, "_tile_columns", broken)
+    with pytest.raises(RuntimeError, match="tile write"):
+        features_and_segments(scene(2), FeatureParams(workers=2), tile_side=40.0)

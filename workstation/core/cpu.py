@@ -22,9 +22,11 @@ def available_cores() -> int:
 def in_blocks(block, n: int, step: int, workers: int = -1) -> None:
     """Call ``block(s)`` for the starts ``s`` of ``n`` rows in blocks of ``step``, on up to
     ``workers`` threads (-1: :func:`available_cores`; KD-tree queries and numpy release the
-    GIL). Each block's KD-tree answers and temporaries stay small, so they are reused from the
-    heap instead of being fresh pages the kernel must clear, and rows are answered one by one,
-    so a block's answers are those one call over all ``n`` rows gives."""
+    GIL); with one thread, or ``n <= step``, in the caller's thread. ``block`` must write only
+    its own rows and treat rows independently (as KD-tree queries and row-wise numpy do): the
+    result is then that of one call over all rows, whatever the threads, while each block's
+    answers and temporaries stay small, reused from the heap instead of being fresh pages the
+    kernel must clear."""
     from concurrent.futures import ThreadPoolExecutor
 
     starts = range(0, n, step)

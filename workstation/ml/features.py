@@ -104,7 +104,8 @@ class FeatureParams:
         Height above the provisional ground (m) from which a point belongs to a raised object
         (the object-area features).
     workers : int
-        Threads for KD-tree queries (-1 = all cores).
+        Threads of the kNN scales: their KD-tree queries, eigen rows and tile writes (1: one
+        thread; -1: all cores).
     """
 
     cell: float = 1.0
@@ -418,7 +419,7 @@ def _knn(tree, xyz_q: np.ndarray, k: int, workers: int, bound: float | None = No
     return d[:, :k], j[:, :k]
 
 
-#: Queries per sampled query of :func:`_bounded_query`, and the share of queries expected to
+#: Queries per sampled query of :func:`_query_bound`, and the share of queries expected to
 #: find their neighbours within its bound.
 _BOUND_SAMPLE, _BOUND_SHARE = 64, 0.99
 
@@ -426,7 +427,8 @@ _BOUND_SAMPLE, _BOUND_SHARE = 64, 0.99
 def _query_bound(tree, q: np.ndarray, kq: int, workers: int) -> float:
     """Search bound of :func:`_bounded_query` for the queries ``q``: the ``_BOUND_SHARE``
     quantile of the kq-th neighbour distance of one query in ``_BOUND_SAMPLE`` (infinity, no
-    bound, for fewer than 100 samples, or where duplicates reach the kq-th neighbour)."""
+    bound, for fewer than ``100 * _BOUND_SAMPLE`` queries, or where duplicates reach the kq-th
+    neighbour)."""
     if len(q) < 100 * _BOUND_SAMPLE:
         return np.inf
     ds, _ = tree.query(q[::_BOUND_SAMPLE], k=kq, workers=workers)
@@ -788,7 +790,7 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
     # a tile's columns are written (one core: the takes, and the first touch of F's pages) while
     # the next tile's neighbours are found; each tile writes its own rows of F and dh
     writer = ThreadPoolExecutor(max_workers=1) if p.workers != 1 else None
-    written = []
+    pending = None  # the last tile's write: one tile's scales held at a time
     try:
         for core, sel, rect in square_tiles(xyz[:, :2], side, knn_buffer(p)):
             keep = core[sel]
@@ -800,10 +802,12 @@ def _tiled_eigen_columns(F: np.ndarray, xyz: np.ndarray, p: FeatureParams, side:
                       for r, (v, k) in zip(reps, ((p.fine_voxel, p.k_fine), (p.coarse_voxel, p.k_coarse)))]
             if writer is None:
                 _tile_columns(F, dh, xyz, rows, scales)
-            else:
-                written.append(writer.submit(_tile_columns, F, dh, xyz, rows, scales))
-        for w in written:
-            w.result()
+                continue
+            if pending is not None:
+                pending.result()  # (its error, if any, raised here)
+            pending = writer.submit(_tile_columns, F, dh, xyz, rows, scales)
+        if pending is not None:
+            pending.result()
     finally:
         if writer is not None:
             writer.shutdown(cancel_futures=True)

@@ -88,7 +88,8 @@ def plane_residuals(query: np.ndarray, ref: np.ndarray, k: int, workers: int = -
     ref : (r, 3) float
     k : int
     workers : int
-        Threads of the KD-tree query (-1 = all cores).
+        Threads of the queries and plane fits, a block of candidates each (1: one thread;
+        -1: all cores).
     tree : scipy.spatial.cKDTree, optional
         A tree of ``ref`` built beforehand.
 
@@ -184,7 +185,8 @@ class RoofTest:
         Height above the provisional ground (m).
     params : RoofParams
     workers : int
-        Threads of the KD-tree queries (-1 = all cores).
+        Threads of the plane tests and the vote, a block of candidates each (1: one thread;
+        -1: all cores).
     """
 
     def __init__(self, xyz: np.ndarray, hag: np.ndarray, params: RoofParams = RoofParams(), workers: int = -1):
