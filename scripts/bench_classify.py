@@ -63,8 +63,9 @@ def phases(model=None, points=None):
     ``classify`` on :func:`speed`'s cloud, each phase timed by wrapping its function: the
     feature pass and, inside it, the grid columns and the tiled kNN scales (which run side by
     side), the network, the refine chain's ground steps (started beside the roof test), the
-    raised-patch test inside them, the wait for the roof test, and the bridge step. Phases that
-    overlap each other add up to more than the total."""
+    raised-patch test inside them, the wait for the roof test, and the bridge step (searched
+    beside the roof test's end, then updated for the noise it made). Phases that overlap each
+    other add up to more than the total."""
     import functools
 
     import workstation.ground.bridges as bridges
@@ -93,7 +94,8 @@ def phases(model=None, points=None):
                                (features, "_tiled_eigen_columns", "knn_scales_tiled"), (features, "_voxel_eigen", "knn_scales_whole"),
                                (PointClassifier, "predict_proba_features", "network"), (PointClassifier, "_ground_chain", "ground_steps"),
                                (patches, "raised_patches", "raised_patches"), (PointClassifier, "_nonplanar", "roof_test_wait"),
-                               (bridges, "bridge_decks", "bridges"), (PointClassifier, "_codes", "codes")):
+                               (classifier, "deck_search", "bridges_beside_roof_test"),
+                               (bridges.DeckSearch, "without", "bridges_after_roof_test"), (PointClassifier, "_codes", "codes")):
         timed(owner, name, label)
     clf = PointClassifier.load(model, device="cpu")
     cloud = _tiles_cloud(points)

@@ -411,3 +411,63 @@ def test_drops_follow_the_walked_rays(seed, shape):
         want = _walked_drops(z, x, y, p, 1.0)
         assert np.isfinite(want).any()
         np.testing.assert_array_equal(_drops(z, x, y, p, 1.0), want)
+
+
+@pytest.mark.parametrize("drop", ["random", "lowest", "cells"])
+def test_a_search_without_some_surface_points_is_a_new_search(scene, drop):
+    """:meth:`DeckSearch.without` (the classifier's deck search made before its roof test, less
+    the noise that test made) finds what a new search on the smaller surface finds: its grids
+    and its deck points, where the points left out include cells' lowest points and whole
+    cells, on and off the decks."""
+    from workstation.ground.bridges import deck_search
+    from workstation.ground.common import grid_index, grid_min
+
+    cloud, _, is_deck, _ = scene
+    xyz = cloud.xyz - cloud.xyz.min(axis=0)
+    rng = np.random.default_rng(3)
+    p = BridgeParams()
+    before = rng.random(len(xyz)) > 0.01
+    ground = ~is_deck & (rng.random(len(xyz)) > 0.5)
+    r, c, shape, _ = grid_index(xyz[:, :2], p.cell)
+    if drop == "random":
+        left = np.flatnonzero(before & (rng.random(len(xyz)) < 0.03))
+    else:
+        _, low = grid_min(np.where(before, xyz[:, 2], np.inf), r, c, shape)
+        cells = rng.choice(np.flatnonzero(low.ravel() >= 0), 400, replace=False)
+        cells = np.r_[cells, np.ravel_multi_index((r[is_deck][:50], c[is_deck][:50]), shape)]  # deck cells too
+        if drop == "lowest":
+            left = np.unique(low.ravel()[cells])
+        else:
+            left = np.flatnonzero(before & np.isin(r * shape[1] + c, cells))
+    after = before.copy()
+    after[left] = False
+    got = deck_search(xyz, p, before, ground).without(xyz, p, after, left, ground)
+    want = deck_search(xyz, p, after, ground)
+    assert want.deck.sum() > 1000  # the decks are found: their ends read the surface points
+    assert np.array_equal(got.deck, want.deck)
+    for a, b in zip(got.grids[:3], want.grids[:3]):
+        assert np.array_equal(a, b, equal_nan=True)
+
+
+def test_the_classifier_keeps_its_early_deck_search_only_where_it_stands(scene):
+    """The classifier searches decks on its classes before the roof test, then updates that
+    search for the noise the test made: the deck points are a new search's; a search made on
+    other ground is not used."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from workstation.ground.bridges import deck_search
+    from workstation.ml.classifier import PointClassifier
+
+    cloud, _, is_deck, _ = scene
+    xyz = cloud.xyz - cloud.xyz.min(axis=0)
+    rng = np.random.default_rng(4)
+    before = np.where(is_deck, 2, np.where(rng.random(len(xyz)) < 0.6, 0, 1))
+    after = before.copy()
+    after[np.flatnonzero(before == 2)[::7]] = 5  # noise the roof test made, on the decks' lowest points too
+    decks = (BridgeParams(),)
+    fresh = PointClassifier._decks(xyz, after, decks)
+    assert fresh.sum() > 1000
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        for made_on in (before, np.where(before == 1, 0, before)):  # the second: other ground
+            early = (made_on, pool.submit(deck_search, xyz, decks[0], made_on != 5, made_on == 0))
+            assert np.array_equal(PointClassifier._decks(xyz, after, decks, early), fresh)

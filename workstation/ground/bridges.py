@@ -710,18 +710,81 @@ def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.
     >>> bool((found == deck).all())
     True
     """
-    from scipy import ndimage
+    return deck_search(xyz, p, surface, ground).deck
 
+
+@dataclass(frozen=True)
+class DeckSearch:
+    """One search of :func:`deck_search`: its deck points and the grids it searched, so that a
+    search on fewer surface points need not build them again (:meth:`without`).
+
+    Attributes
+    ----------
+    deck : (m,) bool
+        The deck points (:func:`bridge_decks`).
+    grids : tuple or None
+        (z, x, y, row, col, shape, cell) of :func:`_surface` and the cell; None when there
+        were too few surface points to search.
+    """
+
+    deck: np.ndarray
+    grids: tuple | None = None
+
+    def without(self, xyz: np.ndarray, p: BridgeParams, surface: np.ndarray, left: np.ndarray,
+                ground: np.ndarray | None = None) -> "DeckSearch":
+        """:func:`deck_search` of ``xyz`` on the ``surface`` points, the searched ones less the
+        points ``left`` (indices): the grids are this search's but in the cells that lost
+        their lowest point, whose lowest remaining point is found again (the lowest index
+        among equally low ones, as :func:`workstation.ground.common.grid_min` keeps)."""
+        count = int(surface.sum())
+        if self.grids is None or count < 3:
+            return deck_search(xyz, p, surface, ground)
+        z, x, y, r, c, shape, cell = self.grids
+        if _cell(xyz, surface, count, p.cell) != cell:
+            return deck_search(xyz, p, surface, ground)
+        with np.errstate(invalid="ignore"):
+            lost = left[xyz[left, 2] <= z[r[left], c[left]]]  # each was its cell's lowest
+        if len(lost):
+            from .common import grid_min
+
+            cells = np.zeros(shape, bool)
+            cells[r[lost], c[lost]] = True
+            pts = np.flatnonzero(cells[r, c] & surface)
+            z2, low = grid_min(xyz[pts, 2], r[pts], c[pts], shape)
+            z, x, y = z.copy(), x.copy(), y.copy()
+            z[cells] = z2[cells]
+            low = low[cells]
+            ok = low >= 0  # (False: the cell lost every surface point)
+            for grid, axis in ((x, 0), (y, 1)):
+                v = np.full(len(low), np.nan)
+                v[ok] = xyz[pts[low[ok]], axis]
+                grid[cells] = v
+        return _decks_on(xyz, p, surface, ground, (z, x, y, r, c, shape, cell))
+
+
+def deck_search(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.ndarray | None = None,
+                ground: np.ndarray | None = None) -> DeckSearch:
+    """:func:`bridge_decks`, with the grids it searched (:class:`DeckSearch`)."""
     m = xyz.shape[0]
     surface = np.ones(m, bool) if surface is None else np.asarray(surface, bool)
     count = int(surface.sum())
     if count < 3:
-        return np.zeros(m, bool)
+        return DeckSearch(np.zeros(m, bool))
     cell = _cell(xyz, surface, count, p.cell)
     z, x, y, r, c, shape, _ = _surface(xyz, surface, cell)
+    return _decks_on(xyz, p, surface, ground, (z, x, y, r, c, shape, cell))
+
+
+def _decks_on(xyz: np.ndarray, p: BridgeParams, surface: np.ndarray, ground: np.ndarray | None,
+              grids: tuple) -> DeckSearch:
+    """The decks of :func:`deck_search` found on its ``grids`` (:attr:`DeckSearch.grids`)."""
+    from scipy import ndimage
+
+    z, x, y, r, c, shape, cell = grids
+    none = DeckSearch(np.zeros(xyz.shape[0], bool), grids)
     candidates = _candidates(z, x, y, p, cell)
     if not candidates:
-        return np.zeros(m, bool)
+        return none
     terrain = None
     if ground is not None:
         g = np.flatnonzero(np.asarray(ground, bool))
@@ -729,7 +792,7 @@ def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.
         terrain[r[g], c[g]] = True
     comps = [(full, along) for full, along in candidates if _continues(z, full, along, p, cell, terrain)]
     if not comps:
-        return np.zeros(m, bool)
+        return none
     core = np.logical_or.reduce([comp for comp, _ in comps])
     deck = ndimage.binary_fill_holes(core)
     # the deck's level: its own in its cells, the nearest one in filled holes and beside it
@@ -745,7 +808,7 @@ def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.
     on = where[r, c] & (zz >= hz - 0.5 * p.step) & (zz <= hz + p.structure)
     for comp, along in comps:  # the ends over sloping abutments, where the cells see no drop
         on |= _ends(xyz, surface, on & comp[r, c], along, p)
-    return on
+    return DeckSearch(on, grids)
 
 
 def _robust_keep(res: np.ndarray) -> np.ndarray:

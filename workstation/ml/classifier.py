@@ -39,7 +39,7 @@ from workstation.core.cloud import Cloud
 from workstation.core.cpu import available_cores
 from workstation.core.errors import InvalidInputError, NotFittedError, StageError
 from workstation.core.log import get_logger
-from workstation.ground.bridges import BridgeParams
+from workstation.ground.bridges import BridgeParams, deck_search
 from workstation.ground.common import column_max
 from workstation.ground.refine import Refine, check_steps, declare, run_chain
 
@@ -128,12 +128,12 @@ class _Started:
 def _run_roof_job(tester, candidate):
     """The roof test of :class:`_RoofJob`: (tested points, their failures, the vote, the vote's
     KD-tree of the tested points, None when the vote needed none). The vote's tree is built
-    beside the plane fits."""
+    beside the plane fits, whether or not the vote will need it."""
     t = tester.result()
     with ThreadPoolExecutor(max_workers=1) as pool:
-        tree = []
-        tested, bad = t.test(candidate, with_tested=lambda pts: tree.append(pool.submit(t.vote_tree, pts)))
-        tree = tree[0].result() if tree and bad.any() and not bad.all() else None
+        pending = []
+        tested, bad = t.test(candidate, with_tested=lambda pts: pending.append(pool.submit(t.vote_tree, pts)))
+        tree = pending[0].result() if pending and bad.any() and not bad.all() else None
     return tested, bad, t.vote(candidate, tested, bad, tree), tree
 
 
@@ -686,15 +686,35 @@ class PointClassifier:
             k = P.argmax(axis=1)
             conf = P[np.arange(len(P)), k].astype(np.float32)
             gate = k == 0
+        decks = tuple(p for p in chain if isinstance(p, BridgeParams))
+        early = None
         if on["roof_test"]:
             nr = None if cloud is None else cloud.attrs.get("number_of_returns")
-            k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, started.roof),
-                                         None if nr is None else np.asarray(nr) > 1)
+            with ThreadPoolExecutor(max_workers=1) as pool:
+                if len(decks) == 1 and started.roof is not None:  # searched while the roof test ends
+                    early = (k, pool.submit(deck_search, xyz, decks[0], k != 5, k == 0))
+                k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, started.roof),
+                                             None if nr is None else np.asarray(nr) > 1)
         codes = self._asprs(k, hag)
-        decks = tuple(p for p in chain if isinstance(p, BridgeParams))
         if decks:
-            codes[run_chain(Refine(xyz, k == 0, surface=k != 5), decks).deck] = C.BRIDGE_DECK
+            codes[self._decks(xyz, k, decks, early)] = C.BRIDGE_DECK
         return codes, conf, gate
+
+    @staticmethod
+    def _decks(xyz: np.ndarray, k: np.ndarray, decks: tuple, early=None) -> np.ndarray:
+        """(n,) bool: the points of the bridge decks the chain's bridge steps ``decks`` find on
+        the model classes ``k`` (ground class 0; noise, class 5, is no deck's surface).
+        ``early``: (classes, future of a :func:`workstation.ground.bridges.deck_search` on them)
+        made before the roof test, used where it stands for ``k``: the roof test turns building
+        points into other classes, never into ground, so the ground is the same and only the
+        noise it made leaves the surface (:meth:`workstation.ground.bridges.DeckSearch.without`)."""
+        surface, ground = k != 5, k == 0
+        if early is not None:
+            found = early[1].result()
+            moved = np.flatnonzero((early[0] != 5) != surface)
+            if not surface[moved].any() and np.array_equal(early[0] == 0, ground):
+                return found.deck if len(moved) == 0 else found.without(xyz, decks[0], surface, moved, ground).deck
+        return run_chain(Refine(xyz, ground, surface=surface), decks).deck
 
     def _ground_chain(self, ground: np.ndarray, cloud: Cloud, chain) -> Refine:
         """The refine chain's ground steps ``chain`` run on the gate's ground ``ground``."""
