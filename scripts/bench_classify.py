@@ -64,8 +64,8 @@ def phases(model=None, points=None):
     feature pass and, inside it, the grid columns and the tiled kNN scales (which run side by
     side), the network, the refine chain's ground steps (started beside the roof test), the
     raised-patch test inside them, the wait for the roof test, and the bridge step (searched
-    beside the roof test's end, then updated for the noise it made). Phases that overlap each
-    other add up to more than the total."""
+    beside the roof test's end, then updated for the noise it made; searched afresh where that
+    search does not stand). Phases that overlap each other add up to more than the total."""
     import functools
 
     import workstation.ground.bridges as bridges
@@ -95,7 +95,8 @@ def phases(model=None, points=None):
                                (PointClassifier, "predict_proba_features", "network"), (PointClassifier, "_ground_chain", "ground_steps"),
                                (patches, "raised_patches", "raised_patches"), (PointClassifier, "_nonplanar", "roof_test_wait"),
                                (classifier, "deck_search", "bridges_beside_roof_test"),
-                               (bridges.DeckSearch, "without", "bridges_after_roof_test"), (PointClassifier, "_codes", "codes")):
+                               (bridges.DeckSearch, "without", "bridges_after_roof_test"),
+                               (bridges, "bridge_decks", "bridges_fresh"), (PointClassifier, "_codes", "codes")):
         timed(owner, name, label)
     clf = PointClassifier.load(model, device="cpu")
     cloud = _tiles_cloud(points)

@@ -413,7 +413,7 @@ def test_drops_follow_the_walked_rays(seed, shape):
         np.testing.assert_array_equal(_drops(z, x, y, p, 1.0), want)
 
 
-@pytest.mark.parametrize("drop", ["random", "lowest", "cells"])
+@pytest.mark.parametrize("drop", ["random", "lowest", "cells", "ties"])
 def test_a_search_without_some_surface_points_is_a_new_search(scene, drop):
     """:meth:`DeckSearch.without` (the classifier's deck search made before its roof test, less
     the noise that test made) finds what a new search on the smaller surface finds: its grids
@@ -424,6 +424,8 @@ def test_a_search_without_some_surface_points_is_a_new_search(scene, drop):
 
     cloud, _, is_deck, _ = scene
     xyz = cloud.xyz - cloud.xyz.min(axis=0)
+    if drop == "ties":  # heights on a 0.1 m grid: cells with several equally low points
+        xyz[:, 2] = np.round(xyz[:, 2], 1)
     rng = np.random.default_rng(3)
     p = BridgeParams()
     before = rng.random(len(xyz)) > 0.01
@@ -435,7 +437,7 @@ def test_a_search_without_some_surface_points_is_a_new_search(scene, drop):
         _, low = grid_min(np.where(before, xyz[:, 2], np.inf), r, c, shape)
         cells = rng.choice(np.flatnonzero(low.ravel() >= 0), 400, replace=False)
         cells = np.r_[cells, np.ravel_multi_index((r[is_deck][:50], c[is_deck][:50]), shape)]  # deck cells too
-        if drop == "lowest":
+        if drop in ("lowest", "ties"):
             left = np.unique(low.ravel()[cells])
         else:
             left = np.flatnonzero(before & np.isin(r * shape[1] + c, cells))
@@ -449,25 +451,56 @@ def test_a_search_without_some_surface_points_is_a_new_search(scene, drop):
         assert np.array_equal(a, b, equal_nan=True)
 
 
-def test_the_classifier_keeps_its_early_deck_search_only_where_it_stands(scene):
+def test_the_classifier_keeps_its_early_deck_search_only_where_it_stands(scene, monkeypatch):
     """The classifier searches decks on its classes before the roof test, then updates that
-    search for the noise the test made: the deck points are a new search's; a search made on
-    other ground is not used."""
+    search for the noise the test made (here on the lowest building point of every cell, so
+    the decks change): the deck points are a new search's; a search made on other ground is
+    not updated but made again."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from workstation.ground.bridges import deck_search
+    from workstation.ground.bridges import DeckSearch, deck_search
+    from workstation.ground.common import grid_index, grid_min
     from workstation.ml.classifier import PointClassifier
 
     cloud, _, is_deck, _ = scene
     xyz = cloud.xyz - cloud.xyz.min(axis=0)
     rng = np.random.default_rng(4)
     before = np.where(is_deck, 2, np.where(rng.random(len(xyz)) < 0.6, 0, 1))
-    after = before.copy()
-    after[np.flatnonzero(before == 2)[::7]] = 5  # noise the roof test made, on the decks' lowest points too
     decks = (BridgeParams(),)
+    r, c, shape, _ = grid_index(xyz[:, :2], decks[0].cell)
+    _, low = grid_min(np.where(before == 2, xyz[:, 2], np.inf), r, c, shape)
+    low = low[low >= 0]
+    after = before.copy()
+    after[low[before[low] == 2]] = 5  # noise the roof test made
     fresh = PointClassifier._decks(xyz, after, decks)
     assert fresh.sum() > 1000
+    assert not np.array_equal(deck_search(xyz, decks[0], before != 5, before == 0).deck, fresh)
+    used, real = [], DeckSearch.without
+    monkeypatch.setattr(DeckSearch, "without", lambda self, *a, **kw: used.append(1) or real(self, *a, **kw))
     with ThreadPoolExecutor(max_workers=1) as pool:
-        for made_on in (before, np.where(before == 1, 0, before)):  # the second: other ground
+        for made_on, kept in ((before, True), (np.where(before == 1, 0, before), False)):  # the second: other ground
+            used.clear()
             early = (made_on, pool.submit(deck_search, xyz, decks[0], made_on != 5, made_on == 0))
             assert np.array_equal(PointClassifier._decks(xyz, after, decks, early), fresh)
+            assert bool(used) == kept
+
+
+def test_a_search_without_most_of_a_sparse_surface_is_a_new_search():
+    """Few points over kilometres: the grid's cell follows the surface's count, so dropping
+    most of it coarsens the cell and the search is made again; its result is a new search's."""
+    from workstation.ground.bridges import deck_search
+
+    rng = np.random.default_rng(7)
+    xyz = np.column_stack([rng.uniform(0, 6000, (30000, 2)), np.round(rng.normal(0, 2, 30000), 1)])
+    p = BridgeParams()
+    before = np.ones(len(xyz), bool)
+    for share in (0.95, 0.01):
+        left = np.flatnonzero(rng.random(len(xyz)) < share)
+        after = before.copy()
+        after[left] = False
+        first = deck_search(xyz, p, before)
+        got, want = first.without(xyz, p, after, left), deck_search(xyz, p, after)
+        assert np.array_equal(got.deck, want.deck)
+        for a, b in zip(got.grids[:3], want.grids[:3]):
+            assert np.array_equal(a, b, equal_nan=True)
+        assert (want.grids[6] != first.grids[6]) == (share > 0.5)  # the cell changed, or did not

@@ -713,7 +713,7 @@ def bridge_decks(xyz: np.ndarray, p: BridgeParams = BridgeParams(), surface: np.
     return deck_search(xyz, p, surface, ground).deck
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DeckSearch:
     """One search of :func:`deck_search`: its deck points and the grids it searched, so that a
     search on fewer surface points need not build them again (:meth:`without`).
@@ -733,17 +733,20 @@ class DeckSearch:
     def without(self, xyz: np.ndarray, p: BridgeParams, surface: np.ndarray, left: np.ndarray,
                 ground: np.ndarray | None = None) -> "DeckSearch":
         """:func:`deck_search` of ``xyz`` on the ``surface`` points, the searched ones less the
-        points ``left`` (indices): the grids are this search's but in the cells that lost
-        their lowest point, whose lowest remaining point is found again (the lowest index
-        among equally low ones, as :func:`workstation.ground.common.grid_min` keeps)."""
+        points ``left`` (indices; every searched point not in ``surface``, and no other): the
+        grids are this search's but in the cells that lost their lowest point, whose lowest
+        remaining point is found again (the lowest index among equally low ones, as
+        :func:`workstation.ground.common.grid_min` keeps). The deck tests then run again on
+        these grids with ``surface`` and ``ground``."""
+        surface = np.asarray(surface, bool)
         count = int(surface.sum())
         if self.grids is None or count < 3:
             return deck_search(xyz, p, surface, ground)
         z, x, y, r, c, shape, cell = self.grids
         if _cell(xyz, surface, count, p.cell) != cell:
             return deck_search(xyz, p, surface, ground)
-        with np.errstate(invalid="ignore"):
-            lost = left[xyz[left, 2] <= z[r[left], c[left]]]  # each was its cell's lowest
+        with np.errstate(invalid="ignore"):  # (NaN heights: lost too, the cell made again)
+            lost = left[~(xyz[left, 2] > z[r[left], c[left]])]  # each was, or tied, its cell's lowest
         if len(lost):
             from .common import grid_min
 
