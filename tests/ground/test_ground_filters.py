@@ -245,3 +245,22 @@ def test_hag_needs_ground(scene):
     cloud, _ = scene
     with pytest.raises(StageError):
         height_above_ground(cloud.with_attrs(classification=np.ones(cloud.n, np.uint8)))
+
+
+def test_noise_tests_in_blocks_are_one_query_of_all():
+    """The statistical and isolated-low tests look their points up a block at a time on the
+    cores: the flags are those of one KD-tree query of every point (a 1 cm grid: ties)."""
+    from scipy.spatial import cKDTree
+
+    from workstation.ground.noise import isolated_low_points, statistical_outliers
+
+    rng = np.random.default_rng(9)
+    xyz = np.round(np.column_stack([rng.uniform(0, 150, (80_000, 2)), rng.normal(0, 0.3, 80_000)]), 2)
+    xyz[::997, 2] -= 5  # low noise
+    xyz[::1499, 2] += 30  # high
+    d, _ = cKDTree(xyz).query(xyz, k=9)
+    md = d[:, 1:].mean(axis=1)
+    assert np.array_equal(statistical_outliers(xyz), md > md.mean() + 3.0 * md.std())
+    _, j = cKDTree(xyz[:, :2]).query(xyz[:, :2], k=11)
+    low = xyz[:, 2] < np.partition(xyz[j[:, 1:], 2], 1, axis=1)[:, 1] - 1.5
+    assert low.sum() >= 70 and np.array_equal(isolated_low_points(xyz), low)

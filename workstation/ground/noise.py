@@ -28,6 +28,7 @@ import numpy as np
 
 from workstation.core.classes import ASPRSClass
 from workstation.core.cloud import Cloud
+from workstation.core.cpu import in_blocks
 from workstation.core.errors import InvalidInputError
 from workstation.core.log import get_logger
 
@@ -69,6 +70,11 @@ class NoiseParams:
     low_k: int = 10
 
 
+#: Points per block of the neighbour queries: each block's neighbour lists are reused from
+#: the heap (:func:`workstation.core.cpu.in_blocks`).
+_BLOCK = 32768
+
+
 def isolated_low_points(xyz: np.ndarray, depth: float = 1.5, k: int = 10) -> np.ndarray:
     """(m,) bool: points more than ``depth`` below the 2nd-lowest of their ``k`` xy-neighbours.
 
@@ -82,13 +88,21 @@ def isolated_low_points(xyz: np.ndarray, depth: float = 1.5, k: int = 10) -> np.
     if m < 3 or depth <= 0:
         return np.zeros(m, dtype=bool)
     kk = min(k + 1, m)
-    _, j = cKDTree(xyz[:, :2]).query(xyz[:, :2], k=kk, workers=-1)
-    nz = xyz[j[:, 1:], 2]
-    if nz.shape[1] > 1:
-        ref = np.partition(nz, 1, axis=1)[:, 1]  # 2nd-lowest neighbour, O(k) per point
-    else:
-        ref = nz[:, 0]
-    return xyz[:, 2] < ref - depth
+    tree = cKDTree(xyz[:, :2])
+    out = np.empty(m, bool)
+
+    def block(s):  # a block of points at a time: no neighbour list of the whole cloud
+        q = xyz[s:s + _BLOCK]
+        _, j = tree.query(q[:, :2], k=kk, workers=1)
+        nz = xyz[j[:, 1:], 2]
+        if nz.shape[1] > 1:
+            ref = np.partition(nz, 1, axis=1)[:, 1]  # 2nd-lowest neighbour, O(k) per point
+        else:
+            ref = nz[:, 0]
+        out[s:s + _BLOCK] = q[:, 2] < ref - depth
+
+    in_blocks(block, m, _BLOCK)
+    return out
 
 
 def statistical_outliers(xyz: np.ndarray, k: int = 8, std_ratio: float = 3.0) -> np.ndarray:
@@ -98,8 +112,14 @@ def statistical_outliers(xyz: np.ndarray, k: int = 8, std_ratio: float = 3.0) ->
     m = xyz.shape[0]
     if m <= k:
         return np.zeros(m, dtype=bool)
-    d, _ = cKDTree(xyz).query(xyz, k=k + 1)
-    md = d[:, 1:].mean(axis=1)
+    tree = cKDTree(xyz)
+    md = np.empty(m)
+
+    def block(s):
+        d, _ = tree.query(xyz[s:s + _BLOCK], k=k + 1)
+        md[s:s + _BLOCK] = d[:, 1:].mean(axis=1)
+
+    in_blocks(block, m, _BLOCK)
     return md > md.mean() + std_ratio * md.std()
 
 
