@@ -12,6 +12,8 @@
   python scripts/bench_ground.py bridges [--methods ...] [--with-ml] [--seeds 0,1]  bridge decks on the simulated gallery
                                         (tests/ground/gallery_scenes.py): deck points in ground (%), deck F1 as
                                         class 17, class-17 points on the earthworks; --with-ml adds ws classify
+  python scripts/bench_ground.py ridges [--methods ...] [--with-ml] [--seeds 0,1]   a steep ridge's top kept as ground
+                                        and the total error on the gallery's ridge scene (samp61's failure mode)
   python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
                                         flags (and the point classifier's, --with-ml) could reach on the six ISPRS
                                         samples when the rule is picked with the reference labels
@@ -313,6 +315,34 @@ def bench_bridges(methods, with_ml: bool, seeds=(0,)):
             _bridge_rows(name, seed, make(seed), runs)
 
 
+def bench_ridges(methods, with_ml: bool, seeds=(0,)):
+    """The share of a steep ridge's top each method keeps as ground, and its total error against
+    the true terrain (points within 0.3 m of it), on the gallery's ridge scene
+    (:func:`gallery_scenes.ridges`: the failure mode of ISPRS samp61's crests, sparse old ALS);
+    at 0.16 and 4 points/m² and with 1:1 and 1:2 faces."""
+    sys.path.insert(0, str(REPO / "tests" / "ground"))
+    from gallery_scenes import ridges
+
+    from workstation.ground.evaluate import ground_errors
+
+    runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
+    if with_ml:
+        from workstation.ml.classifier import PointClassifier
+
+        clf = PointClassifier.load(device="cpu")
+        runs.append(("classify", clf.predict))
+    for seed in seeds:
+        for pulses, side in ((0.16, 1.0), (0.16, 2.0), (4.0, 1.0)):
+            cloud, terrain, top, _ = ridges(seed=seed, pulses=pulses, side=side)
+            truth = np.abs(cloud.xyz[:, 2] - terrain(cloud.xyz[:, :2])) < 0.3
+            for m, run in runs:
+                cls, wall, cpu = timed(lambda: run(cloud))
+                g = cls == 2
+                emit({"bench": "ridges", "seed": seed, "pulses_per_m2": pulses, "side": side, "method": m,
+                      "top_points": int(top.sum()), "top_kept": float(np.mean(g[top])),
+                      "total_error_pct": 100.0 * ground_errors(truth, g).total_error, "seconds": wall, "cpu_seconds": cpu})
+
+
 def _bridge_rows(name: str, seed: int, scene, runs):
     """One JSON line per run (method name, cloud -> classes) on one gallery scene."""
     cloud, _, is_deck, _ = scene
@@ -329,15 +359,15 @@ def _bridge_rows(name: str, seed: int, scene, runs):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds", "bridges", "memory", "_memchild"])
+    ap.add_argument("what", choices=["isprs", "tiles", "speed", "sim", "bounds", "bridges", "ridges", "memory", "_memchild"])
     ap.add_argument("--sim-dir", default="sim")
     ap.add_argument("--data", default=os.environ.get("WS_SHARED_DATA", str(REPO.parent / "shared" / "data")))
     ap.add_argument("--methods", default="smrf,csf,pmf,ptd,auto,lowest,local_min")
     ap.add_argument("--points", type=int, default=5_000_000)
     ap.add_argument("--sizes", default="1000000,2000000,4000000", help="memory: tile sizes (points)")
     ap.add_argument("--tile-points", type=int, default=0, help="memory: filter tile by tile (ws ground --tile-points); 0 = whole")
-    ap.add_argument("--seeds", default="0", help="bridges: the scenes' seeds, e.g. 0,1,2,3")
-    ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag; bridges: add ws classify")
+    ap.add_argument("--seeds", default="0", help="bridges, ridges: the scenes' seeds, e.g. 0,1,2,3")
+    ap.add_argument("--with-ml", action="store_true", help="bounds: the point classifier's ground as a sixth flag; bridges, ridges: add ws classify")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter of every method (isprs, tiles, sim), e.g. threshold=0.3")
     a = ap.parse_args(argv)
@@ -356,6 +386,8 @@ def main(argv=None):
         bench_bounds(data, a.with_ml)
     elif a.what == "bridges":
         bench_bridges(methods, a.with_ml, [int(k) for k in a.seeds.split(",")])
+    elif a.what == "ridges":
+        bench_ridges(methods, a.with_ml, [int(k) for k in a.seeds.split(",")])
     elif a.what == "memory":
         bench_memory(data, methods, [int(x) for x in a.sizes.split(",")], a.tile_points)
     elif a.what == "_memchild":

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from gallery_scenes import dense_canopy, low_outliers
+from gallery_scenes import ORIGIN, dense_canopy, low_outliers, ridges
 from workstation.core.classes import ASPRSClass
 from workstation.ground.common import tin_interpolate
 from workstation.ground.methods import METHOD_NAMES, ground_filter
@@ -115,3 +115,15 @@ def test_noise_step_is_a_declared_default_and_can_be_switched_off(outliers):
     cloud, _, out = outliers
     off = np.asarray(ground_filter(cloud, "pmf", noise=False).attrs["classification"])
     assert not (off == ASPRSClass.LOW_POINT).any()
+
+
+def test_the_ridge_scene_is_what_it_says():
+    """The steep ridge of sparse old ALS (samp61's failure mode, ``bench_ground.py ridges``):
+    0.16 points/m², a top 9 m over the low side and 5 m over the high one, 1:1 faces."""
+    cloud, terrain, top, decks = ridges(seed=0)
+    assert 0.15 < cloud.n / (240.0 * 200.0) < 0.2 and not decks and top.sum() > 300
+    y = np.linspace(70.0, 130.0, 601)
+    z = terrain(np.column_stack([np.full(601, 120.0), y]) + ORIGIN[:2])
+    low, crest, high = z[y < 85].mean(), z[np.abs(y - 100.3) < 3].mean(), z[y > 115].mean()
+    assert crest - low == pytest.approx(9.0, abs=0.5) and high - low == pytest.approx(4.0, abs=0.5)
+    assert np.max(np.abs(np.diff(z) / np.diff(y))) == pytest.approx(1.0, abs=0.05)  # the faces
