@@ -41,11 +41,7 @@ def speed(model=None, points=None):
     """Inference rate (`ws classify`'s whole path) on bcts_1 + bcts_2 (1.36 M points), or with
     ``points`` on the ground benchmark's synthetic tile of that many points (bcts_2 repeated on
     a grid of shifted copies with jitter: ``bench_ground.py speed``'s tile)."""
-    from workstation.ml.classifier import PointClassifier
-
-    clf = PointClassifier.load(model, device="cpu")
-    cloud = _tiles_cloud(points)
-    clf.classify(cloud[:20000])  # warm-up (imports)
+    clf, cloud = _warmed(model, points)
     best = None
     for _ in range(2):
         t0, c0 = time.perf_counter(), time.process_time()
@@ -98,15 +94,23 @@ def phases(model=None, points=None):
                                (bridges.DeckSearch, "without", "bridges_after_roof_test"),
                                (bridges, "bridge_decks", "bridges_fresh"), (PointClassifier, "_codes", "codes")):
         timed(owner, name, label)
-    clf = PointClassifier.load(model, device="cpu")
-    cloud = _tiles_cloud(points)
-    clf.classify(cloud[:20000])
+    clf, cloud = _warmed(model, points)
     spent.clear()
     t0, c0 = time.perf_counter(), time.process_time()
     clf.classify(cloud)
     emit(bench="classify_phases", points=cloud.n, seconds=time.perf_counter() - t0, cpu_seconds=time.process_time() - c0,
          phases={k: {"seconds": round(w, 2), "cpu_seconds": round(c, 2)} for k, (w, c) in spent.items()},
          load_avg=os.getloadavg()[0])
+
+
+def _warmed(model, points):
+    """The classifier and :func:`speed`'s cloud, after one classify of 20,000 points (imports)."""
+    from workstation.ml.classifier import PointClassifier
+
+    clf = PointClassifier.load(model, device="cpu")
+    cloud = _tiles_cloud(points)
+    clf.classify(cloud[:20000])
+    return clf, cloud
 
 
 def _tiles_cloud(points=None):

@@ -304,12 +304,7 @@ def bench_bridges(methods, with_ml: bool, seeds=(0,)):
               "spill_dev": lambda k: spill_through(seed=k, preset="dev"),
               "spill_held": lambda k: spill_through(seed=k, preset="held"),
               "spill_held2": lambda k: spill_through(seed=k, preset="held2"), "earthworks": lambda k: earthworks(seed=k)}
-    runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
-    if with_ml:
-        from workstation.ml.classifier import PointClassifier
-
-        clf = PointClassifier.load(device="cpu")
-        runs.append(("classify", clf.predict))
+    runs = _runs(methods, with_ml)
     for seed in seeds:
         for name, make in scenes.items():
             _bridge_rows(name, seed, make(seed), runs)
@@ -325,12 +320,7 @@ def bench_ridges(methods, with_ml: bool, seeds=(0,)):
 
     from workstation.ground.evaluate import ground_errors
 
-    runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
-    if with_ml:
-        from workstation.ml.classifier import PointClassifier
-
-        clf = PointClassifier.load(device="cpu")
-        runs.append(("classify", clf.predict))
+    runs = _runs(methods, with_ml)
     for seed in seeds:
         for pulses, side in ((0.16, 1.0), (0.16, 2.0), (4.0, 1.0)):
             cloud, terrain, top, _ = ridges(seed=seed, pulses=pulses, side=side)
@@ -341,6 +331,16 @@ def bench_ridges(methods, with_ml: bool, seeds=(0,)):
                 emit({"bench": "ridges", "seed": seed, "pulses_per_m2": pulses, "side": side, "method": m,
                       "top_points": int(top.sum()), "top_kept": float(np.mean(g[top])),
                       "total_error_pct": 100.0 * ground_errors(truth, g).total_error, "seconds": wall, "cpu_seconds": cpu})
+
+
+def _runs(methods, with_ml: bool) -> list:
+    """(name, cloud -> classes) of each ground method, and ``ws classify`` with ``with_ml``."""
+    runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
+    if with_ml:
+        from workstation.ml.classifier import PointClassifier
+
+        runs.append(("classify", PointClassifier.load(device="cpu").predict))
+    return runs
 
 
 def _bridge_rows(name: str, seed: int, scene, runs):

@@ -148,12 +148,16 @@ def _surface(xyz: np.ndarray, surface: np.ndarray, cell: float):
         g = np.flatnonzero(surface)
         z, low = grid_min(xyz[g, 2], r[g], c[g], shape)
         low[low >= 0] = g[low[low >= 0]]
-    x = np.full(shape, np.nan)
-    y = np.full(shape, np.nan)
-    ok = low >= 0
-    x[ok] = xyz[low[ok], 0]
-    y[ok] = xyz[low[ok], 1]
+    x, y = _plan_at(xyz, low)
     return z, x, y, r, c, shape, origin
+
+
+def _plan_at(xyz: np.ndarray, low: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """x and y (shaped as ``low``) of the points ``low`` indexes, NaN where it is -1 (none)."""
+    x, y = np.full(low.shape, np.nan), np.full(low.shape, np.nan)
+    ok = low >= 0
+    x[ok], y[ok] = xyz[low[ok], 0], xyz[low[ok], 1]
+    return x, y
 
 
 def _cell(xyz: np.ndarray, surface: np.ndarray, count: int, cell: float) -> float:
@@ -756,12 +760,9 @@ class DeckSearch:
             z2, low = grid_min(xyz[pts, 2], r[pts], c[pts], shape)
             z, x, y = z.copy(), x.copy(), y.copy()
             z[cells] = z2[cells]
-            low = low[cells]
-            ok = low >= 0  # (False: the cell lost every surface point)
-            for grid, axis in ((x, 0), (y, 1)):
-                v = np.full(len(low), np.nan)
-                v[ok] = xyz[pts[low[ok]], axis]
-                grid[cells] = v
+            low = low[cells]  # (-1: the cell lost every surface point)
+            low[low >= 0] = pts[low[low >= 0]]
+            x[cells], y[cells] = _plan_at(xyz, low)
         return _decks_on(xyz, p, surface, ground, (z, x, y, r, c, shape, cell))
 
 

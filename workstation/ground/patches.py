@@ -132,7 +132,7 @@ def raised_patches(xyz: np.ndarray, ground: np.ndarray, p: PatchParams = PatchPa
     return g
 
 
-def _raised(pts: np.ndarray, src: np.ndarray, dst: np.ndarray, p: PatchParams, exact: bool = True):
+def _raised(pts: np.ndarray, src: np.ndarray, dst: np.ndarray, p: PatchParams, exact: bool):
     """(raised, patch, safe): per patch of the TIN edges ``src -> dst`` whether it is raised,
     and each representative's patch (None, None when there is a single patch). With ``exact``
     False (edges not in scipy's order) ``safe`` is False, and nothing else returned, when a

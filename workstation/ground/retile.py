@@ -109,7 +109,10 @@ def pass_edges(xyz, gid, pts, base, tins, step: float):
     if base is not None:
         try:
             made = _incremental_edges(xyz, gid, pts, base, step)
-        except (QhullError, ValueError, IndexError):  # anything unforeseen: the full triangulation
+        except (QhullError, ValueError, IndexError) as e:  # anything unforeseen: the full triangulation
+            from workstation.core.log import get_logger
+
+            get_logger(__name__).debug("raised patches: re-tiling failed (%s), triangulating in full", e)
             made = None
         if made is not None:
             if tins is not None:

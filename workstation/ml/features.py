@@ -391,10 +391,6 @@ def _eigen(xyz_q: np.ndarray, xyz_ref: np.ndarray, k: int, workers: int, reach: 
     return out, mean
 
 
-#: Query rows per block of :func:`_eigen`.
-_QUERY_BLOCK = 16384
-
-
 def _knn(tree, xyz_q: np.ndarray, k: int, workers: int, bound: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The ``k`` nearest reference points (distances, indices; (m, k)) of each query, ties
     of equal distance taken in reference order, so that neighbours and their order do not
@@ -484,6 +480,10 @@ def _transposed(a: np.ndarray, block: int = 32768) -> np.ndarray:
 #: Query rows per block of :func:`_eigen_rows`: a block's (k, rows) neighbour coordinates and
 #: the eigen solver's temporaries stay in the core's cache.
 _ROW_BLOCK = 16384
+
+
+#: Query rows per block of :func:`_eigen`: one row block of :func:`_eigen_rows` each.
+_QUERY_BLOCK = _ROW_BLOCK
 
 
 def _eigen_rows(xyz_q: np.ndarray, ref32: np.ndarray, j: np.ndarray, k: int, out: np.ndarray) -> None:
