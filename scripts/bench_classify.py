@@ -5,7 +5,8 @@ Prints one JSON line per result. Usage::
     PYTHONPATH=. python scripts/bench_classify.py speed [--points N] # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py phases [--points N] # where speed's time goes (wall / CPU per phase)
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
-    PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto] [--without-patches]  # per-sample ISPRS, both paths
+    PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto] [--without-patches] [--with-crests]  # per-sample ISPRS, the paths
+    PYTHONPATH=. python scripts/bench_classify.py crests [--model M]  # what ws classify --crests moves on real data, and why
     PYTHONPATH=. python scripts/bench_classify.py gatediag [--model M] [--samples samp11,...]  # ISPRS Type I: gate or chain
     PYTHONPATH=. python scripts/bench_classify.py baseline           # RF on the same simulated rows
     PYTHONPATH=. python scripts/bench_classify.py sim                # sim test scenes (sim-to-real gap)
@@ -228,13 +229,13 @@ def goals(clf, label):
         emit(bench="real_tile", model=label, file=f, seconds=time.perf_counter() - t0, **r)
 
 
-def isprs(model=None, with_auto=False, without_patches=False):
+def isprs(model=None, with_auto=False, without_patches=False, with_crests=False):
     """Per-sample ISPRS Type I / Type II / total error (%) of the classifier's ground paths:
     ``ws classify`` (:meth:`PointClassifier.predict`, the model's own step switches), ``ws
     ground --method ml`` (:func:`workstation.ml.ground.ml_ground`) and the same with
     ``member_vote`` (the gate as a sixth voter of ``auto``'s members), with ``with_auto``
     ``ws ground --method auto`` beside them, with ``without_patches`` ``ws classify
-    --no-raised-patches``; then each path's mean."""
+    --no-raised-patches``, with ``with_crests`` ``ws classify --crests``; then each path's mean."""
     from workstation.core.classes import ASPRSClass as C
     from workstation.core.cloud import Cloud
     from workstation.ml.classifier import PointClassifier
@@ -252,6 +253,10 @@ def isprs(model=None, with_auto=False, without_patches=False):
         plain = PointClassifier.load(model, device="cpu")
         plain.raised_patches = False
         paths["classify_no_raised_patches"] = lambda c: plain.predict(c) == C.GROUND
+    if with_crests:
+        crests = PointClassifier.load(model, device="cpu")
+        crests.crests = True
+        paths["classify_crests"] = lambda c: crests.predict(c) == C.GROUND
     if with_auto:
         from workstation.ground.methods import ground_filter
 
@@ -273,6 +278,67 @@ def isprs(model=None, with_auto=False, without_patches=False):
                  total=round(e["total"], 2), seconds=wall, cpu_seconds=cpu)
         emit(bench="isprs_mean", path=k, samples=len(samples),
              mean_total=round(float(scores["mean_total"]), 3) if samples else None)
+
+
+def crests(model=None, tiles=("bcts_1.laz", "MixedConifer.laz", "autzen_trim.las", "bcts_2.laz", "Topography.laz",
+                                "lidarhd_extra_bytes.laz", "warsaw_small.las", "sample_c.las", "vegetation_1_3.las")):
+    """What ``ws classify --crests`` moves on the six ISPRS samples and the real tiles (the
+    reference: ISPRS labels, the vendors' class 2): the points it puts in the ground and how
+    many of them the reference calls ground; on the ISPRS samples also the total error off and
+    on, and why
+    it leaves Type I points out: those that are candidates of a tall cut feature, how many of
+    them a steeper-than-terrain point vetoes, and the steepest slope of those points, split by
+    the reference (:func:`workstation.ground.crests.crest_test`)."""
+    from workstation.ground.crests import CrestParams, crest_test
+    from workstation.ground.evaluate import ground_errors, read_isprs_text
+    from workstation.ground.refine import Refine, run_chain
+    from workstation.io import read_cloud
+    from workstation.ml.classifier import PointClassifier, StepSwitches
+    from workstation.ml.features import metric_xyz
+
+    clf = PointClassifier.load(model, device="cpu")
+    on = StepSwitches(crests=True)
+    head = []  # the chain's steps before the crest step
+    for q in clf.chain(on):
+        if isinstance(q, CrestParams):
+            break
+        head.append(q)
+    for name in ["samp11", "samp21", "samp31", "samp42", "samp51", "samp61", *tiles]:
+        isprs = not name.endswith((".las", ".laz"))
+        if isprs:
+            ref = read_isprs_text(DATA / "isprs" / f"{name}.txt")
+            truth = np.asarray(ref.attrs["label"]) == 0
+            cloud = ref.without_attrs("label", "classification")
+        else:
+            ref = read_cloud(DATA / "lidar" / name)
+            truth = np.asarray(ref.attrs["classification"]) == 2
+            cloud = ref.without_attrs("classification")
+        pred = clf.predict_codes(cloud)
+        with_crests = clf.predict_codes(cloud, on).codes == 2
+        off = pred.codes == 2
+        added = with_crests & ~off
+        row = {"bench": "crests", "sample": name, "joined": int(added.sum()),
+               "joined_reference_ground": int((added & truth).sum())}
+        if isprs:
+            row.update(total_error_off_pct=100 * ground_errors(truth, off).total_error,
+                       total_error_on_pct=100 * ground_errors(truth, with_crests).total_error)
+            xyz = metric_xyz(cloud)[0]
+            before = run_chain(Refine(xyz, pred.gate), tuple(head)).ground
+            test = crest_test(xyz, before)
+            missed = truth & ~off
+            if test is not None:
+                tall = test.tall[test.feature]
+                steep = tall & test.steep
+                vetoed = tall & ~test.crests[test.feature]
+                row.update(type1=int(missed.sum()), type1_tall_candidates=int((missed[test.candidates] & tall).sum()),
+                           type1_vetoed=int((missed[test.candidates] & vetoed).sum()))
+                for label, m in (("reference_ground", truth[test.candidates]), ("reference_object", ~truth[test.candidates])):
+                    if (steep & m).any():
+                        row[f"steep_{label}"] = int((steep & m).sum())
+                        near = steep & m & np.isfinite(test.slope) & (test.slope > test.max_slope)
+                        if near.any():  # the steepest slope of those found steep near them
+                            row[f"steep_{label}_slope_q10_50_90"] = np.quantile(test.slope[near], [0.1, 0.5, 0.9]).round(2).tolist()
+        emit(**row)
 
 
 def gatediag(model=None, samples=("samp11", "samp31", "samp51"), heights=(1.5, 3.0, 5.0)):
@@ -496,7 +562,10 @@ if __name__ == "__main__":
 
         goals(PointClassifier.load(model, device="cpu"), "mlp")
     elif what == "isprs":
-        isprs(model, with_auto="--with-auto" in sys.argv, without_patches="--without-patches" in sys.argv)
+        isprs(model, with_auto="--with-auto" in sys.argv, without_patches="--without-patches" in sys.argv,
+              with_crests="--with-crests" in sys.argv)
+    elif what == "crests":
+        crests(model)
     elif what == "gatediag":
         given = sys.argv[sys.argv.index("--samples") + 1].split(",") if "--samples" in sys.argv else None
         gatediag(model, *([given] if given else []))

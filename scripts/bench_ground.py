@@ -12,6 +12,7 @@
   python scripts/bench_ground.py bridges [--methods ...] [--with-ml] [--seeds 0,1]  bridge decks on the simulated gallery
                                         (tests/ground/gallery_scenes.py): deck points in ground (%), deck F1 as
                                         class 17, class-17 points on the earthworks; --with-ml adds ws classify
+                                        and ws classify --crests (classify_crests)
   python scripts/bench_ground.py ridges [--methods ...] [--with-ml] [--seeds 0,1]   a steep ridge's top kept as ground
                                         and the total error on the gallery's ridge scene (samp61's failure mode)
   python scripts/bench_ground.py bounds [--data DIR] [--with-ml]              what any rule over auto's five member
@@ -334,12 +335,16 @@ def bench_ridges(methods, with_ml: bool, seeds=(0,)):
 
 
 def _runs(methods, with_ml: bool) -> list:
-    """(name, cloud -> classes) of each ground method, and ``ws classify`` with ``with_ml``."""
+    """(name, cloud -> classes) of each ground method, and ``ws classify`` and ``ws classify
+    --crests`` with ``with_ml``."""
     runs = [(m, lambda c, m=m: np.asarray(ground_filter(c, m, **OVERRIDES).attrs["classification"])) for m in methods]
     if with_ml:
         from workstation.ml.classifier import PointClassifier
 
         runs.append(("classify", PointClassifier.load(device="cpu").predict))
+        crests = PointClassifier.load(device="cpu")
+        crests.crests = True
+        runs.append(("classify_crests", crests.predict))
     return runs
 
 

@@ -11,6 +11,7 @@ from workstation.core.cloud import Cloud
 from workstation.core.errors import InvalidInputError
 from workstation.ground.auto import AutoParams, refine_vote
 from workstation.ground.bridges import BridgeParams
+from workstation.ground.crests import CrestParams
 from workstation.ground.patches import PatchParams, raised_patches
 from workstation.ground.refine import Refine, declare, run_chain
 from workstation.ground.risers import RiserParams, riser_fill
@@ -66,16 +67,18 @@ def state():
 
 def test_the_declared_chains():
     """auto: raised patches, risers, understorey; the classifier: understorey, raised patches,
-    water, bridges; a switch drops its step and keeps the order."""
+    crests (off unless asked for), water, bridges; a switch drops its step and keeps the order."""
     assert AutoParams().steps == ("raised_patches", "risers", "understorey")
     assert [type(p) for p in AutoParams().chain()] == [PatchParams, RiserParams, UnderstoreyParams]
     assert [type(p) for p in AutoParams(risers=False).chain()] == [PatchParams, UnderstoreyParams]
     p = AutoParams(riser_params=RiserParams(min_votes=2), steps=("risers", "raised_patches"))
     assert p.chain() == (RiserParams(min_votes=2), PatchParams())
     clf = PointClassifier()
-    assert clf.steps == ("understorey", "raised_patches", "water", "bridges")
+    assert clf.steps == ("understorey", "raised_patches", "crests", "water", "bridges")
     assert [type(p) for p in clf.chain()] == [UnderstoreyParams, PatchParams, WaterParams, BridgeParams]
     assert [type(p) for p in clf.chain(StepSwitches(raised_patches=True, water=False))] == [UnderstoreyParams, PatchParams, BridgeParams]
+    assert [type(p) for p in clf.chain(StepSwitches(crests=True))] == [UnderstoreyParams, PatchParams, CrestParams,
+                                                                        WaterParams, BridgeParams]
     assert clf.config()["steps"] == list(clf.steps)
 
 
@@ -84,8 +87,9 @@ def test_the_shipped_model_loads_with_the_default_chain(tmp_path):
     """The shipped model's config predates ``steps``: it loads with the default chain, and a
     model saved with another chain loads with it."""
     clf = PointClassifier.load(device="cpu")
-    assert clf.steps == ("understorey", "raised_patches", "water", "bridges")
+    assert clf.steps == ("understorey", "raised_patches", "crests", "water", "bridges")
     assert (clf.understorey, clf.raised_patches, clf.water, clf.bridges, clf.roof_test) == (True, True, True, True, True)
+    assert not clf.crests
     clf.steps = ("raised_patches", "understorey", "bridges")
     assert PointClassifier.load(clf.save(tmp_path / "m.pt"), device="cpu").steps == clf.steps
 

@@ -29,6 +29,11 @@ from .options import RegistryChoice, field_option, positive_float
               help="Take out of the ground the patches that drop by 1 m or more on all sides (roofs, decks the "
                    "ground gate let in; as ws ground --method ml does); default on; off saves about 15 % of "
                    "the time.")
+@click.option("--crests", is_flag=True,
+              help="Give the ground back the crests of dykes and narrow ridges that the provisional surface cut "
+                   "off: raised terrain 2 m or more high whose every point stands no steeper than 45° over the "
+                   "points below it (off by default: real crests often have steeper parts, and then it takes "
+                   "nothing).")
 @click.option("--no-water", is_flag=True,
               help="Leave still water as ground (by default, level single-echo surfaces of 150 m2 or more whose "
                    "banks rise from them become water, class 9).")
@@ -38,7 +43,7 @@ from .options import RegistryChoice, field_option, positive_float
 @overwrite_option
 @read_options
 @json_option
-def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, no_water,
+def classify(src, output, model_path, device, tile_points, roof_tolerance, no_roof_test, raised_patches, crests, no_water,
              no_bridges, overwrite, read_opts, as_json):
     """Classify IN into ground, vegetation (3/4/5), building, water, other (1) and noise (7/18);
     writes `classification` and a `confidence` (0-1) to OUT, keeping every other attribute."""
@@ -61,6 +66,8 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
         clf.roof_test = False
     if raised_patches is not None:
         clf.raised_patches = raised_patches
+    if crests:
+        clf.crests = True
     if no_water:
         clf.water = False
     if no_bridges:

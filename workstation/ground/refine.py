@@ -14,6 +14,10 @@ name               what it does                                              par
 ``risers``         rejected points on terrain steps the ground's TIN spans  :class:`RiserParams`
                    join it (:func:`workstation.ground.risers.riser_fill`;
                    guarded by ``votes`` when given)
+``crests``         terrain the ground filter cut off as an object (the      :class:`CrestParams`
+                   crests of dykes and ridges, whose sides are no steeper
+                   than terrain) joins the ground
+                   (:func:`workstation.ground.crests.crest_fill`)
 ``understorey``    under canopy (read from the echoes), ground above the    :class:`UnderstoreyParams`
                    ground's lower envelope leaves it
                    (:func:`workstation.ground.understorey.refine_understorey`;
@@ -55,12 +59,14 @@ import numpy as np
 from workstation.core.errors import InvalidInputError
 
 from . import bridges as _bridges
+from . import crests as _crests
 from . import patches as _patches
 from . import risers as _risers
 from . import understorey as _understorey
 from . import water as _water
 from .bridges import BridgeParams
 from .common import TinHandoff
+from .crests import CrestParams
 from .patches import PatchParams
 from .risers import RiserParams
 from .understorey import UnderstoreyParams
@@ -122,6 +128,12 @@ def risers(state: Refine, p: RiserParams) -> Refine:
     return replace(state, ground=_risers.riser_fill(state.xyz, state.ground, state.votes, p, state.tins))
 
 
+def crests(state: Refine, p: CrestParams) -> Refine:
+    """The crests the ground lacked into it, of the ``surface`` points when given
+    (:func:`workstation.ground.crests.crest_fill`)."""
+    return replace(state, ground=_crests.crest_fill(state.xyz, state.ground, p, state.surface))
+
+
 def understorey(state: Refine, p: UnderstoreyParams) -> Refine:
     """The understorey out of the ground under canopy, the canopy being the share of multi-echo
     pulses per ``p.canopy_cell`` (:func:`workstation.ground.understorey.canopy_share`); the
@@ -160,6 +172,7 @@ class Step:
 STEPS: dict[str, Step] = {
     "raised_patches": Step(raised_patches, PatchParams),
     "risers": Step(risers, RiserParams),
+    "crests": Step(crests, CrestParams),
     "understorey": Step(understorey, UnderstoreyParams),
     "water": Step(water, WaterParams),
     "bridges": Step(bridges, BridgeParams),

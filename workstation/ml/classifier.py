@@ -61,9 +61,9 @@ FORMAT = "workstation-point-classifier/1"
 SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifier.pt"
 #: The refine steps the classifier can declare (:mod:`workstation.ground.refine`); ``bridges``,
 #: when declared, is last: it runs on the classes.
-STEPS = ("understorey", "raised_patches", "water", "bridges")
+STEPS = ("understorey", "raised_patches", "crests", "water", "bridges")
 #: The step switches: a boolean attribute each, overridable per call (:class:`StepSwitches`).
-SWITCHES = ("understorey", "raised_patches", "water", "roof_test", "bridges")
+SWITCHES = ("understorey", "raised_patches", "crests", "water", "roof_test", "bridges")
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
 _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
 
@@ -149,7 +149,7 @@ class StepSwitches:
 
     Attributes
     ----------
-    understorey, raised_patches, water, bridges : bool or None
+    understorey, raised_patches, crests, water, bridges : bool or None
         The refine steps of those names (see :class:`PointClassifier`).
     roof_test : bool or None
         The roof planarity test.
@@ -157,6 +157,7 @@ class StepSwitches:
 
     understorey: bool | None = None
     raised_patches: bool | None = None
+    crests: bool | None = None
     water: bool | None = None
     roof_test: bool | None = None
     bridges: bool | None = None
@@ -274,7 +275,7 @@ class PointClassifier:
     steps : tuple of str
         The refine chain after the gate, in order (:mod:`workstation.ground.refine`; names
         from :data:`STEPS`, each run when its switch below is on): ``("understorey",
-        "raised_patches", "water", "bridges")``. The ground the steps take out takes the
+        "raised_patches", "crests", "water", "bridges")``. The ground the steps take out takes the
         network's best non-ground class. The roof test runs between the ground steps and
         ``bridges``, which, when declared, is last and runs on the classes. Without the gate
         only ``bridges`` runs.
@@ -302,6 +303,15 @@ class PointClassifier:
         rule, not learned; it costs about 15 % of the inference time. Not read from a model
         file: a loaded model has it on unless the caller turns it off (models saved while it
         was off by default stored it off).
+    crests : bool
+        The ``crests`` step, off by default: where the provisional surface cut off raised
+        terrain (a dyke's or a narrow ridge's crest, 2 m or more high, with sides no steeper
+        than 45°), the points the gate refused there join the ground when none of them stands
+        steeper than 45° over a lower point nearby
+        (:func:`workstation.ground.crests.crest_fill`); roofs and crowns do, at their walls and
+        over the ground beneath. It gives back the gallery's ridge of sparse old ALS, but not
+        the crests of ISPRS samp61, whose faces are steeper than 45° in places and carry
+        objects as steep (docs/benchmarks.md), so it is not on unless asked for.
     water : bool
         The ``water`` step: ground points on still water (level, single-echo surfaces of
         150 m² or more whose banks rise from them,
@@ -327,7 +337,7 @@ class PointClassifier:
                  gate_min_probability: float = 0.002, gate_promote_probability: float = 0.9,
                  gate_promote_height: float = 1.5, segment_weight: float = 0.8, understorey: bool = True,
                  roof_test: bool = True, roof_tolerance: float = 0.08, raised_patches: bool = True,
-                 water: bool = True, bridges: bool = True, steps=STEPS):
+                 crests: bool = False, water: bool = True, bridges: bool = True, steps=STEPS):
         if model not in ("mlp", "rf"):
             raise InvalidInputError(f"unknown model {model!r}", "use 'mlp' or 'rf'", field="model")
         self.model = model
@@ -362,6 +372,7 @@ class PointClassifier:
         self.roof_test = bool(roof_test)
         self.roof_tolerance = float(roof_tolerance)
         self.raised_patches = bool(raised_patches)
+        self.crests = bool(crests)
         self.water = bool(water)
         self.bridges = bool(bridges)
         self.steps = check_steps(steps, "steps", STEPS)
@@ -813,7 +824,7 @@ class PointClassifier:
                 "gate_promote_probability": self.gate_promote_probability, "gate_promote_height": self.gate_promote_height,
                 "segment_weight": self.segment_weight, "understorey": self.understorey,
                 "roof_test": self.roof_test, "roof_tolerance": self.roof_tolerance,
-                "raised_patches": self.raised_patches, "water": self.water, "bridges": self.bridges,
+                "raised_patches": self.raised_patches, "crests": self.crests, "water": self.water, "bridges": self.bridges,
                 "steps": list(self.steps)}
 
     def save(self, path, overwrite: bool = False) -> Path:
