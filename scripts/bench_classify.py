@@ -2,7 +2,7 @@
 
 Prints one JSON line per result. Usage::
 
-    PYTHONPATH=. python scripts/bench_classify.py speed [--points N] # inference points/s
+    PYTHONPATH=. python scripts/bench_classify.py speed [--points N] [--crests] # inference points/s
     PYTHONPATH=. python scripts/bench_classify.py phases [--points N] # where speed's time goes (wall / CPU per phase)
     PYTHONPATH=. python scripts/bench_classify.py goals [--model M]  # ISPRS + real tiles
     PYTHONPATH=. python scripts/bench_classify.py isprs [--model M] [--with-auto] [--without-patches] [--with-crests]  # per-sample ISPRS, the paths
@@ -38,11 +38,13 @@ def emit(**kw):
     print(json.dumps(kw, default=float), flush=True)
 
 
-def speed(model=None, points=None):
+def speed(model=None, points=None, crests=False):
     """Inference rate (`ws classify`'s whole path) on bcts_1 + bcts_2 (1.36 M points), or with
     ``points`` on the ground benchmark's synthetic tile of that many points (bcts_2 repeated on
-    a grid of shifted copies with jitter: ``bench_ground.py speed``'s tile)."""
+    a grid of shifted copies with jitter: ``bench_ground.py speed``'s tile); with ``crests``
+    that of ``ws classify --crests``."""
     clf, cloud = _warmed(model, points)
+    clf.crests = crests
     best = None
     for _ in range(2):
         t0, c0 = time.perf_counter(), time.process_time()
@@ -51,7 +53,7 @@ def speed(model=None, points=None):
         if best is None or wall < best[0]:
             best = (wall, cpu)
     wall, cpu = best
-    emit(bench="classify_speed", points=cloud.n, seconds=wall, points_per_s=cloud.n / wall, cpu_seconds=cpu,
+    emit(bench="classify_speed", points=cloud.n, crests=crests, seconds=wall, points_per_s=cloud.n / wall, cpu_seconds=cpu,
          cpu_points_per_core_s=cloud.n / cpu, load_avg=os.getloadavg()[0], cores=os.cpu_count())
 
 
@@ -556,7 +558,8 @@ if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "speed"
     model = sys.argv[sys.argv.index("--model") + 1] if "--model" in sys.argv else None
     if what in ("speed", "phases"):
-        (speed if what == "speed" else phases)(model, int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else None)
+        n = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else None
+        speed(model, n, "--crests" in sys.argv) if what == "speed" else phases(model, n)
     elif what == "goals":
         from workstation.ml.classifier import PointClassifier
 

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from gallery_scenes import ridges
+from workstation.core.cloud import Cloud
 from workstation.ground.crests import CrestParams, crest_fill, crest_test
 from workstation.ground.refine import Refine, declare, run_chain
 
@@ -52,8 +53,9 @@ def test_the_crest_comes_back_and_no_object_joins(pulses):
 
 
 def test_a_crest_steeper_than_terrain_or_too_low_stays_out():
-    xyz, _, crest, _, ground = dyke_scene(seed=1, side=0.4)  # 68° faces: a wall, not terrain
-    assert not crest_fill(xyz, ground)[crest].any()
+    for side in (0.4, 0.7):  # 68° and 55° faces: steeper than terrain
+        xyz, _, crest, _, ground = dyke_scene(seed=1, side=side)
+        assert not crest_fill(xyz, ground)[crest].any()
     xyz, _, crest, _, ground = dyke_scene(seed=1)
     assert not crest_fill(xyz, ground, CrestParams(min_rise=7.0))[crest].any()  # the dyke is 6 m high
     assert crest_fill(xyz, ground, CrestParams(max_slope=1.2))[crest].mean() > 0.9
@@ -61,12 +63,17 @@ def test_a_crest_steeper_than_terrain_or_too_low_stays_out():
 
 def test_a_point_steeper_than_terrain_keeps_its_whole_feature_out_unless_it_cannot_be_terrain():
     xyz, _, crest, _, ground = dyke_scene(seed=2)
-    low = np.array([[60.0, 50.0, xyz[:, 2].min() - 5.0]])  # a multipath echo under the crest
-    xyz2 = np.vstack([xyz, low])
+    pit = (np.abs(xyz[:, 0] - 60.0) < 1.5) & (np.abs(xyz[:, 1] - 45.0) < 1.5)  # 5 m deep, on the face
+    xyz[pit, 2] -= 5.0
+    assert pit.sum() >= 5 and not crest_fill(xyz, ground)[crest].any()
+    out = crest_fill(xyz, ground, surface=~pit)  # the pit left out, as noise would be
+    assert out[crest].mean() > 0.9 and not out[pit].any()
+    # so does a lone multipath echo, far under the terrain 30 m away, unless left out as noise
+    xyz, _, crest, _, ground = dyke_scene(seed=2)
+    xyz2 = np.vstack([xyz, [[60.0, 20.0, xyz[:, 2].min() - 40.0]]])
     ground2 = np.append(ground, False)
     assert not crest_fill(xyz2, ground2)[:-1][crest].any()
-    surface = np.append(np.ones(len(xyz), bool), False)  # the noise left out
-    out = crest_fill(xyz2, ground2, surface=surface)
+    out = crest_fill(xyz2, ground2, surface=np.arange(len(xyz2)) < len(xyz))
     assert out[:-1][crest].mean() > 0.9 and not out[-1]
 
 
@@ -89,6 +96,21 @@ def test_a_roof_whose_walls_and_nearby_ground_were_not_sampled_stays_out():
     assert test.beyond[roof].any()
     out = crest_fill(xyz, ground, p)
     assert not out[tower].any() and out[crest].mean() > 0.9
+
+
+def test_a_roof_a_few_metres_from_the_nearest_lower_point_stays_out():
+    """A 4.5 m platform with no point within 3.5 m of its edge: too steep over the ground
+    beyond the gap by the exact test within ``radius``, not by the grid's coarser far test."""
+    xyz, _, crest, _, ground = dyke_scene(seed=7, pulses=2.0)
+    d = np.abs(xyz[:, :2] - [40.0, 85.0]).max(axis=1)
+    keep = (d < 8.0) | (d > 11.5)
+    xyz, crest, ground, d = xyz[keep], crest[keep], ground[keep], d[keep]
+    roof = d < 8.0
+    xyz[roof, 2] += 4.5
+    ground &= ~roof
+    p = CrestParams(window=5.0)  # the roof wider than the openings, as a large one is
+    assert not crest_fill(xyz, ground, p)[roof].any()
+    assert crest_fill(xyz, ground, CrestParams(window=5.0, radius=2.0))[roof].mean() > 0.9  # the gap hides it
 
 
 def test_a_tree_on_the_crest_stays_out_and_the_crest_comes_back():
@@ -127,6 +149,10 @@ def test_classify_keeps_the_ridge_of_sparse_old_als():
     ground = clf.predict_codes(cloud, StepSwitches(crests=True)).codes == 2
     assert ground[top].mean() > 0.9 and not ground[~on_terrain].any()
     assert (clf.predict_codes(cloud).codes[top] == 2).mean() < 0.1
+    # a multipath echo 40 m under the terrain near the ridge: noise to the network, no veto
+    echo = Cloud(np.vstack([cloud.xyz, cloud.xyz[top][:1] + [0.0, 30.0, -50.0]]))
+    codes = clf.predict_codes(echo, StepSwitches(crests=True)).codes
+    assert codes[-1] == 7 and (codes[:-1][top] == 2).mean() > 0.9
 
 
 def test_ws_classify_crests_option(tmp_path):

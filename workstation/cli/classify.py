@@ -29,11 +29,12 @@ from .options import RegistryChoice, field_option, positive_float
               help="Take out of the ground the patches that drop by 1 m or more on all sides (roofs, decks the "
                    "ground gate let in; as ws ground --method ml does); default on; off saves about 15 % of "
                    "the time.")
-@click.option("--crests", is_flag=True,
+@click.option("--crests/--no-crests", default=None,
               help="Give the ground back the crests of dykes and narrow ridges that the provisional surface cut "
-                   "off: raised terrain 2 m or more high whose every point stands no steeper than 45° over the "
-                   "points below it (off by default: real crests often have steeper parts, and then it takes "
-                   "nothing).")
+                   "off: raised terrain 2 m or more high none of whose points stands steeper than 45° (plus "
+                   "0.5 m) over any lower point, near or far; one such point (an object, a steep spot) keeps "
+                   "the whole feature out. Default: the model's setting, off in the shipped model (real crests "
+                   "often have steeper parts, and then it takes nothing).")
 @click.option("--no-water", is_flag=True,
               help="Leave still water as ground (by default, level single-echo surfaces of 150 m2 or more whose "
                    "banks rise from them become water, class 9).")
@@ -66,8 +67,8 @@ def classify(src, output, model_path, device, tile_points, roof_tolerance, no_ro
         clf.roof_test = False
     if raised_patches is not None:
         clf.raised_patches = raised_patches
-    if crests:
-        clf.crests = True
+    if crests is not None:
+        clf.crests = crests
     if no_water:
         clf.water = False
     if no_bridges:

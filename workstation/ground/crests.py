@@ -101,8 +101,9 @@ class CrestTest:
         (index 0, no feature, is False).
     slope : (k,) float64
         The steepest ``(rise - tolerance) / distance`` of each candidate of a tall feature over
-        the lowest point of a cell within ``radius`` (inf straight above one; -inf where none is
-        lower, and for candidates of other features, which are not tested).
+        the lowest point of a cell within ``radius`` (negative where every such point is
+        higher; inf straight above one; -inf where there is none but the candidate itself, and
+        for the candidates of other features, which are not tested).
     beyond : (k,) bool
         Candidates of a tall feature steeper than ``max_slope`` over a lower point farther
         away (a roof whose walls and nearby ground were not sampled), found on the grid.
@@ -188,7 +189,7 @@ def crest_test(xyz: np.ndarray, ground: np.ndarray, p: CrestParams = CrestParams
     if len(tested):
         pts = cand[tested]
         slope[tested] = _steepest(xyz, pts, r[pts], c[pts], imin, cell, p)
-        floor = _slope_floor(np.where(alone, np.inf, zmin), cell, p.max_slope, float(xyz[pts, 2].max()))
+        floor = _slope_floor(np.where(alone, np.inf, zmin), cell, p.max_slope)
         beyond[tested] = xyz[pts, 2] - p.tolerance - p.max_slope * cell * np.sqrt(2.0) > floor[r[pts], c[pts]]
     return CrestTest(cand, feature, tall, slope, beyond, p.max_slope)
 
@@ -243,23 +244,30 @@ def _cut_features(xyz, open_: np.ndarray, flat, origin, cell: float, steep, belo
     return cand, comp[cand], n
 
 
-def _slope_floor(zmin: np.ndarray, cell: float, slope: float, top: float) -> np.ndarray:
-    """The lowest height a point of each cell may have and stand no steeper than ``slope``
-    over any lowest point of a cell (+inf where empty): ``min over q (z_q + slope · d)``, the
-    grey erosion of the grid with a cone (Vosselman's slope-based filter is such an erosion),
-    by 3 x 3 erosions with chamfer distances (within 8 % of Euclidean, never shorter) until
-    nothing changes or the cone has grown above ``top``."""
-    from scipy import ndimage
-
-    cone = -slope * cell * np.hypot(*np.mgrid[-1:2, -1:2])
-    low = float(np.min(zmin))
-    floor = zmin
-    for _ in range(int(np.ceil((top - low) / (slope * cell))) + 1):
-        nxt = ndimage.grey_erosion(floor, structure=cone, mode="constant", cval=np.inf)
-        if np.array_equal(nxt, floor):
-            break
-        floor = nxt
-    return floor
+def _slope_floor(zmin: np.ndarray, cell: float, slope: float) -> np.ndarray:
+    """The height over which a point of each cell stands steeper than ``slope`` over the lowest
+    point of some cell: ``min over q (z_q + slope · d)``, the grey erosion of the grid ``zmin``
+    (+inf where empty) with a cone, which is what Vosselman's slope-based filter computes. Done
+    as a chamfer distance transform with initial values: one raster pass down and one up, each
+    row taking its neighbours in the row before, then a running minimum along it (Borgefors
+    1986); exact for the 3 x 3 chamfer distance, within 8 % of the Euclidean and never shorter.
+    A loop over rows, not points: O(cells)."""
+    a, b = slope * cell, slope * cell * np.sqrt(2.0)
+    f = np.array(zmin, dtype=np.float64)
+    ramp = a * np.arange(f.shape[1])
+    for rows, step in ((range(f.shape[0]), -1), (range(f.shape[0] - 1, -1, -1), 1)):
+        for i in rows:
+            row = f[i]
+            if 0 <= i + step < f.shape[0]:  # from the row already done: straight, then diagonal
+                done = f[i + step]
+                row = np.minimum(row, done + a)
+                row[1:] = np.minimum(row[1:], done[:-1] + b)
+                row[:-1] = np.minimum(row[:-1], done[1:] + b)
+            if step < 0:  # down the grid: along the row left to right
+                f[i] = np.minimum.accumulate(row - ramp) + ramp
+            else:  # up the grid: right to left
+                f[i] = np.minimum.accumulate((row + ramp)[::-1])[::-1] - ramp
+    return f
 
 
 def _steepest(xyz, pts, rc, cc, imin, cell: float, p: CrestParams) -> np.ndarray:

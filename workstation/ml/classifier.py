@@ -41,6 +41,7 @@ from workstation.core.errors import InvalidInputError, NotFittedError, StageErro
 from workstation.core.log import get_logger
 from workstation.ground.bridges import BridgeParams, deck_search
 from workstation.ground.common import column_max
+from workstation.ground.crests import CrestParams
 from workstation.ground.refine import Refine, check_steps, declare, run_chain
 
 from .dataset import MODEL_CLASSES, asprs_to_model, sample_balanced
@@ -64,6 +65,7 @@ SHIPPED_MODEL = Path(__file__).resolve().parents[2] / "models" / "point_classifi
 STEPS = ("understorey", "raised_patches", "crests", "water", "bridges")
 #: The step switches: a boolean attribute each, overridable per call (:class:`StepSwitches`).
 SWITCHES = ("understorey", "raised_patches", "crests", "water", "roof_test", "bridges")
+_NOISE = MODEL_CLASSES.index("noise")
 _HAG_COL = FEATURE_NAMES.index("hag_prov")
 _SLOPE_COL = FEATURE_NAMES.index("ground_slope")
 
@@ -113,16 +115,33 @@ class _Started:
     chain: Future | None = None
     ground: np.ndarray | None = None  # the gate's ground the chain started on
     steps: tuple = ()  # and its steps
+    surface: np.ndarray | None = None  # and the points that could be terrain (None: all)
 
-    def chain_for(self, ground: np.ndarray, steps: tuple) -> Future | None:
-        """The started chain's future when it ran ``steps`` on ``ground``, else None (and the
-        started one, of no use, is cancelled if it has not begun)."""
+    def chain_for(self, ground: np.ndarray, steps: tuple, surface: np.ndarray | None = None) -> Future | None:
+        """The started chain's future when it ran ``steps`` on ``ground`` and ``surface``, else
+        None (and the started one, of no use, is cancelled if it has not begun)."""
         if self.chain is None:
             return None
-        if self.steps == steps and np.array_equal(self.ground, ground):
+        same_surface = (self.surface is None) == (surface is None) and (surface is None or np.array_equal(self.surface, surface))
+        if self.steps == steps and np.array_equal(self.ground, ground) and same_surface:
             return self.chain
         self.chain.cancel()
         return None
+
+
+def _reads_noise(chain) -> bool:
+    """Whether a ground step of ``chain`` reads the points that could be terrain (the crest
+    step's ``surface``)."""
+    return any(isinstance(q, CrestParams) for q in chain)
+
+
+def _surface(P: np.ndarray, gate: np.ndarray, chain) -> np.ndarray | None:
+    """The points that could be terrain, for a chain with the crest step (None otherwise, as
+    no other ground step reads them): all but those the network calls noise outside the gate's
+    ground, so that a multipath echo does not look like terrain far below the crest beside it."""
+    if not _reads_noise(chain):
+        return None
+    return gate | (P[:, 1:].argmax(axis=1) + 1 != _NOISE)
 
 
 def _run_roof_job(tester, candidate):
@@ -307,9 +326,9 @@ class PointClassifier:
         The ``crests`` step, off by default: where the provisional surface cut off raised
         terrain (a dyke's or a narrow ridge's crest, 2 m or more high, with sides no steeper
         than 45°), the points the gate refused there join the ground when none of them stands
-        steeper than 45° over a lower point nearby
+        steeper than 45° (plus 0.5 m) over any lower point, near or far
         (:func:`workstation.ground.crests.crest_fill`); roofs and crowns do, at their walls and
-        over the ground beneath. It gives back the gallery's ridge of sparse old ALS, but not
+        over the ground beneath, and one such point keeps its whole feature out. It gives back the gallery's ridge of sparse old ALS, but not
         the crests of ISPRS samp61, whose faces are steeper than 45° in places and carry
         objects as steep (docs/benchmarks.md), so it is not on unless asked for.
     water : bool
@@ -609,11 +628,16 @@ class PointClassifier:
             tester = tester[0] if tester else None
             p = self.predict_proba_features(F)
             hs = F[:, [_HAG_COL, _SLOPE_COL]]
-            if chain and self.ground_gate:
+            late = chain and self.ground_gate and _reads_noise(chain)
+            if chain and self.ground_gate and not late:  # ground steps that read the gate only
                 started.ground, started.steps = self._gate(p, hs), tuple(chain)
                 started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps)
             if self.segment_weight > 0:
                 p = _segment_mean(p, segments, self.segment_weight)
+            if late:  # a step reads the noise, after the segment step as in _codes
+                started.ground, started.steps = self._gate(p, hs), tuple(chain)
+                started.surface = _surface(p, started.ground, chain)
+                started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps, started.surface)
             if tester is not None:  # the candidates _codes will have, but the refine chain's
                 cand = self._building_candidates(p, hs)
                 started.roof = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
@@ -692,7 +716,8 @@ class PointClassifier:
         if self.ground_gate:  # (the roof test started by _infer runs on meanwhile)
             gate = self._gate(P, hs)
             steps = _ground_steps(chain)
-            k, conf = self._gated(P, gate, cloud, steps, started.chain_for(gate, steps))
+            surface = _surface(P, gate, steps)
+            k, conf = self._gated(P, gate, cloud, steps, started.chain_for(gate, steps, surface), surface)
         else:
             k = P.argmax(axis=1)
             conf = P[np.arange(len(P)), k].astype(np.float32)
@@ -727,19 +752,21 @@ class PointClassifier:
                 return found.deck if len(moved) == 0 else found.without(xyz, decks[0], surface, moved, ground).deck
         return run_chain(Refine(xyz, ground, surface=surface), decks).deck
 
-    def _ground_chain(self, ground: np.ndarray, cloud: Cloud, chain) -> Refine:
-        """The refine chain's ground steps ``chain`` run on the gate's ground ``ground``."""
+    def _ground_chain(self, ground: np.ndarray, cloud: Cloud, chain, surface: np.ndarray | None = None) -> Refine:
+        """The refine chain's ground steps ``chain`` run on the gate's ground ``ground``
+        (``surface``: the points that could be terrain, see :func:`_surface`)."""
         return run_chain(Refine(metric_xyz(cloud)[0], ground, return_number=cloud.attrs.get("return_number"),
-                                number_of_returns=cloud.attrs.get("number_of_returns")), chain)
+                                number_of_returns=cloud.attrs.get("number_of_returns"), surface=surface), chain)
 
-    def _gated(self, P: np.ndarray, ground: np.ndarray, cloud: Cloud | None, chain, done=None) -> tuple[np.ndarray, np.ndarray]:
+    def _gated(self, P: np.ndarray, ground: np.ndarray, cloud: Cloud | None, chain, done=None,
+               surface: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
         """Model classes (n,) and confidences of the gate: its ground ``ground`` refined by
-        ``chain`` (``done``: the future of :meth:`_ground_chain`'s state, when started) is
-        class 0 (its water class 3), every other point takes the network's best non-ground
-        class."""
+        ``chain`` (``done``: the future of :meth:`_ground_chain`'s state, when started;
+        ``surface`` as there) is class 0 (its water class 3), every other point takes the
+        network's best non-ground class."""
         water = None
         if chain:
-            state = done.result() if done is not None else self._ground_chain(ground, cloud, chain)
+            state = done.result() if done is not None else self._ground_chain(ground, cloud, chain, surface)
             ground, water = state.ground, state.water
         rest = P[:, 1:]
         k2 = rest.argmax(axis=1) + 1
