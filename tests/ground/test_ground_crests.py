@@ -156,16 +156,24 @@ def test_classify_keeps_the_ridge_of_sparse_old_als():
 
 
 def test_ws_classify_crests_option(tmp_path):
-    """``ws classify --crests`` gives the gallery ridge's top back; the default leaves it out."""
+    """``ws classify --crests`` gives the gallery ridge's top back; the default (the shipped
+    model's setting) leaves it out; a model saved with it on runs it unless ``--no-crests``."""
     from workstation.cli.main import main
     from workstation.io import read_cloud, write_cloud
 
     cloud, _, top, _ = ridges(seed=0)
     src = tmp_path / "ridge.laz"
     write_cloud(cloud, src)
+    from workstation.ml.classifier import PointClassifier
+
+    on = PointClassifier.load(device="cpu")
+    on.crests = True
+    model = on.save(tmp_path / "with_crests.pt")  # a model saved with the step on keeps it on
     kept = {}
-    for name, extra in (("default", []), ("crests", ["--crests"])):
+    for name, extra in (("default", []), ("crests", ["--crests"]), ("model", ["--model", str(model)]),
+                        ("model_off", ["--model", str(model), "--no-crests"])):
         out = tmp_path / f"{name}.laz"
         assert main(["classify", str(src), "-o", str(out), *extra]) == 0
         kept[name] = float(np.mean(np.asarray(read_cloud(out).attrs["classification"])[top] == 2))
-    assert kept["default"] < 0.1 and kept["crests"] > 0.9
+    assert kept["default"] < 0.1 and kept["model_off"] < 0.1
+    assert kept["crests"] > 0.9 and kept["model"] > 0.9

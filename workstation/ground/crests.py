@@ -272,9 +272,8 @@ def _slope_floor(zmin: np.ndarray, cell: float, slope: float) -> np.ndarray:
 
 def _steepest(xyz, pts, rc, cc, imin, cell: float, p: CrestParams) -> np.ndarray:
     """(k,) the steepest ``(rise - tolerance) / distance`` of the points ``pts`` over the
-    lowest point of each cell within ``radius`` (inf straight above one, -inf where none is
-    lower); one pass per cell offset, each over all the points (no per-point loop, the memory
-    of a few arrays of k)."""
+    lowest point of each cell within ``radius`` (as :attr:`CrestTest.slope`); one pass per cell
+    offset, each over all the points (no per-point loop, the memory of a few arrays of k)."""
     reach = int(np.ceil(p.radius / cell)) + 1
     pad = np.pad(imin, reach, constant_values=-1)
     x, y, z = xyz[pts, 0], xyz[pts, 1], xyz[pts, 2]

@@ -89,7 +89,8 @@ class Refine:
         Echo numbers (the understorey step reads the canopy from them; the water step keeps
         water to single echoes); None when the cloud has none.
     surface : (m,) bool or None
-        Points that can carry a bridge deck (noise left out); None: all.
+        Points that could be terrain (the crest step) or carry a bridge deck (noise left
+        out); None: all.
     water : (m,) bool or None
         Points the water step took out of the ground (None until it runs).
     water_confidence : (m,) float64 or None

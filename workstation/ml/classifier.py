@@ -605,7 +605,8 @@ class PointClassifier:
 
         The roof test's KD-tree is built beside the kNN scales and the network; the ground
         steps start on the gate's ground as soon as the network has run (the segment step
-        leaves the ground probability, all the gate reads, as it is), and the roof test's
+        leaves the ground probability, all the gate reads, as it is; after the segment step
+        when a step reads the noise, :func:`_reads_noise`), and the roof test's
         queries on the building points after the segment step and the gate, while the
         ground steps run on; those may add a few building points (tested in :meth:`_codes`).
         Above ``tile_points`` points only the feature pass's kNN scales go tile by tile: every
