@@ -333,6 +333,16 @@ def fill_nearest(grid: np.ndarray, empty: np.ndarray | None = None) -> np.ndarra
     return grid[tuple(idx)]
 
 
+def fill_cut(surface: np.ndarray, cut: np.ndarray) -> np.ndarray:
+    """``surface`` with its ``cut`` cells filled from the nearest kept cell and smoothed over
+    3 cells, the kept cells as measured: the surface a morphological filter leaves (the point
+    classifier's provisional ground, the crest step's steep surface)."""
+    from scipy import ndimage
+
+    kept = fill_nearest(surface, cut)
+    return np.where(cut, ndimage.uniform_filter(kept, size=3, mode="nearest"), kept)
+
+
 @lru_cache(maxsize=1)
 def _blas_controller():
     """threadpoolctl's view of the loaded BLAS libraries, made once (finding them reads every

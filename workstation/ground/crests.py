@@ -175,7 +175,7 @@ def crest_test(xyz: np.ndarray, ground: np.ndarray, p: CrestParams = CrestParams
     alone = ~np.isfinite(zmin)  # empty, or of points that cannot be terrain only
     zmin[alone], imin[alone] = np.nan, -1
     steep = _steep_surface(zmin, cell, p)
-    below = _ground_surface(xyz[:, 2], g, flat, shape)
+    below = _ground_surface(xyz[:, 2], g, r, c, shape)
     if steep is None or below is None:
         return None
     cand, feature, n = _cut_features(xyz, ~g & usable, flat, origin, cell, steep, below, p)
@@ -196,11 +196,9 @@ def crest_test(xyz: np.ndarray, ground: np.ndarray, p: CrestParams = CrestParams
 
 def _steep_surface(zmin: np.ndarray, cell: float, p: CrestParams) -> np.ndarray | None:
     """The lowest points' grid (NaN where empty) opened progressively, cells stepping down by
-    more than ``max_slope`` and empty ones filled from the nearest kept cell, the filled ones
-    smoothed over 3 cells (as the classifier's provisional ground); None when no cell is kept."""
-    from scipy import ndimage
-
-    from .common import fill_nearest, open_square, opening_steps
+    more than ``max_slope`` and empty ones filled (:func:`workstation.ground.common.fill_cut`);
+    None when no cell is kept."""
+    from .common import fill_cut, fill_nearest, open_square, opening_steps
 
     empty = np.isnan(zmin)
     if empty.all():
@@ -208,20 +206,15 @@ def _steep_surface(zmin: np.ndarray, cell: float, p: CrestParams) -> np.ndarray 
     z0 = fill_nearest(zmin, empty)
     (steps,) = opening_steps(z0, cell, (p.window,), open_square)
     cut = (steps > p.max_slope) | empty
-    if cut.all():
-        return None
-    kept = fill_nearest(z0, cut)
-    return np.where(cut, ndimage.uniform_filter(kept, size=3, mode="nearest"), kept)
+    return None if cut.all() else fill_cut(z0, cut)
 
 
-def _ground_surface(z: np.ndarray, ground: np.ndarray, flat: np.ndarray, shape) -> np.ndarray | None:
+def _ground_surface(z: np.ndarray, ground: np.ndarray, r, c, shape) -> np.ndarray | None:
     """The lowest ground point's height per cell, empty cells filled from the nearest."""
-    from .common import fill_nearest
+    from .common import fill_nearest, grid_min
 
-    zg = np.full(shape[0] * shape[1], np.inf)
-    np.fmin.at(zg, flat[ground], z[ground])
-    zg = zg.reshape(shape)
-    empty = ~np.isfinite(zg)
+    zg = grid_min(z[ground], r[ground], c[ground], shape)[0]
+    empty = np.isnan(zg)
     return None if empty.all() else fill_nearest(zg, empty)
 
 

@@ -122,11 +122,15 @@ class _Started:
         None (and the started one, of no use, is cancelled if it has not begun)."""
         if self.chain is None:
             return None
-        same_surface = (self.surface is None) == (surface is None) and (surface is None or np.array_equal(self.surface, surface))
-        if self.steps == steps and np.array_equal(self.ground, ground) and same_surface:
+        if self.steps == steps and np.array_equal(self.ground, ground) and _same(self.surface, surface):
             return self.chain
         self.chain.cancel()
         return None
+
+
+def _same(a: np.ndarray | None, b: np.ndarray | None) -> bool:
+    """Both None, or equal arrays."""
+    return a is b or (a is not None and b is not None and np.array_equal(a, b))
 
 
 def _reads_noise(chain) -> bool:
@@ -328,9 +332,10 @@ class PointClassifier:
         than 45°), the points the gate refused there join the ground when none of them stands
         steeper than 45° (plus 0.5 m) over any lower point, near or far
         (:func:`workstation.ground.crests.crest_fill`); roofs and crowns do, at their walls and
-        over the ground beneath, and one such point keeps its whole feature out. It gives back the gallery's ridge of sparse old ALS, but not
-        the crests of ISPRS samp61, whose faces are steeper than 45° in places and carry
-        objects as steep (docs/benchmarks.md), so it is not on unless asked for.
+        over the ground beneath, and one such point keeps its whole feature out. It gives back
+        the gallery's ridge of sparse old ALS, but not the crests of ISPRS samp61, whose faces
+        are steeper than 45° in places and carry objects as steep (docs/benchmarks.md), so it
+        is not on unless asked for.
     water : bool
         The ``water`` step: ground points on still water (level, single-echo surfaces of
         150 m² or more whose banks rise from them,
@@ -629,22 +634,27 @@ class PointClassifier:
             tester = tester[0] if tester else None
             p = self.predict_proba_features(F)
             hs = F[:, [_HAG_COL, _SLOPE_COL]]
-            late = chain and self.ground_gate and _reads_noise(chain)
-            if chain and self.ground_gate and not late:  # ground steps that read the gate only
-                started.ground, started.steps = self._gate(p, hs), tuple(chain)
-                started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps)
+            gated = bool(chain) and self.ground_gate
+            late = gated and _reads_noise(chain)  # a step reads the noise: after the segment step
+            if gated and not late:
+                self._start_chain(started, pool, p, hs, cloud, chain)
             if self.segment_weight > 0:
                 p = _segment_mean(p, segments, self.segment_weight)
-            if late:  # a step reads the noise, after the segment step as in _codes
-                started.ground, started.steps = self._gate(p, hs), tuple(chain)
-                started.surface = _surface(p, started.ground, chain)
-                started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps, started.surface)
+            if late:
+                self._start_chain(started, pool, p, hs, cloud, chain)
             if tester is not None:  # the candidates _codes will have, but the refine chain's
                 cand = self._building_candidates(p, hs)
                 started.roof = _RoofJob(tester, cand, pool.submit(_run_roof_job, tester, cand))
         finally:
             pool.shutdown(wait=False)  # the roof job and the ground steps run on
         return p, hs, started
+
+    def _start_chain(self, started: _Started, pool, P: np.ndarray, hs: np.ndarray, cloud: Cloud, chain) -> None:
+        """Start the ground steps ``chain`` on the gate's ground in ``pool``, as :meth:`_codes`
+        will run them (its gate, :func:`_surface`), recording their inputs in ``started``."""
+        started.ground, started.steps = self._gate(P, hs), tuple(chain)
+        started.surface = _surface(P, started.ground, chain)
+        started.chain = pool.submit(self._ground_chain, started.ground, cloud, started.steps, started.surface)
 
     def predict_proba(self, cloud: Cloud) -> np.ndarray:
         """Probabilities (n, len(MODEL_CLASSES)) float32 of the model classes
@@ -729,7 +739,7 @@ class PointClassifier:
             nr = None if cloud is None else cloud.attrs.get("number_of_returns")
             with ThreadPoolExecutor(max_workers=1) as pool:
                 if len(decks) == 1 and started.roof is not None:  # searched while the roof test ends
-                    early = (k, pool.submit(deck_search, xyz, decks[0], k != 5, k == 0))
+                    early = (k, pool.submit(deck_search, xyz, decks[0], k != _NOISE, k == 0))
                 k, conf = self._roof_classes(P, k, conf, self._nonplanar(k == 2, hag, cloud, started.roof),
                                              None if nr is None else np.asarray(nr) > 1)
         codes = self._asprs(k, hag)
@@ -745,10 +755,10 @@ class PointClassifier:
         made before the roof test, used where it stands for ``k``: the roof test turns building
         points into other classes, never into ground, so the ground is the same and only the
         noise it made leaves the surface (:meth:`workstation.ground.bridges.DeckSearch.without`)."""
-        surface, ground = k != 5, k == 0
+        surface, ground = k != _NOISE, k == 0
         if early is not None:
             found = early[1].result()
-            moved = np.flatnonzero((early[0] != 5) != surface)
+            moved = np.flatnonzero((early[0] != _NOISE) != surface)
             if not surface[moved].any() and np.array_equal(early[0] == 0, ground):
                 return found.deck if len(moved) == 0 else found.without(xyz, decks[0], surface, moved, ground).deck
         return run_chain(Refine(xyz, ground, surface=surface), decks).deck

@@ -56,7 +56,7 @@ from workstation.core.cloud import Cloud
 from workstation.core.cpu import in_blocks
 from workstation.core.errors import InvalidInputError
 from workstation.core.pca import sym3_eigen, sym3_eigenvalues, sym3_eigenvector_z  # noqa: F401 (sym3_eigen re-exported)
-from workstation.ground.common import fill_nearest
+from workstation.ground.common import fill_cut, fill_nearest
 
 #: Names of the feature columns, in order.
 FEATURE_NAMES: tuple[str, ...] = (
@@ -225,8 +225,6 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
     (rows, cols) float64
         Ground elevation per cell (m, local), cell-centred, origin (0, 0).
     """
-    from scipy import ndimage
-
     if rc is None:
         r, c, shape = _grid(xyz[:, :2], cell)
     else:
@@ -244,10 +242,7 @@ def provisional_ground(xyz: np.ndarray, cell: float, window: float, slope: float
         from workstation.ground.common import trend_tolerance
 
         bad = (steps > trend_tolerance(fill_nearest(z0, bad), cell, slope, trend_slope, trend_window)) | empty
-    g = fill_nearest(z0, bad)
-    # smooth the filled cells a little (3 cells), keeping ground cells as measured
-    sm = ndimage.uniform_filter(g, size=3, mode="nearest")
-    return np.where(bad, sm, g)
+    return fill_cut(z0, bad)
 
 
 def _despike_low(zmin: np.ndarray, threshold: float = 1.5) -> np.ndarray:
