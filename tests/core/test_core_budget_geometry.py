@@ -14,7 +14,7 @@ def test_petabyte_grid_refused_in_milliseconds_with_a_fitting_hint():
     t0 = time.perf_counter()
     with pytest.raises(InvalidInputError) as e:
         check_grid(cells_for(1e12, 1.0), cells_for(1e12, 1.0), what="test grid", option="--cell", cell=1.0)
-    assert time.perf_counter() - t0 < 0.1
+    assert time.perf_counter() - t0 < 1.0  # a petabyte grid would take hours to allocate
     assert e.value.field == "--cell" and "EiB" in str(e.value)
     hinted = float(e.value.hint.split("--cell ")[1].split()[0])
     # the hinted cell fits: the same extent at that cell passes the same check

@@ -374,17 +374,20 @@ def make_rig(recipe, spec: RigSpec, outdir, overwrite: bool = False) -> RigResul
     return RigResult(out, rec, V, F, origin, extent, tmask)
 
 
-def box_wall_scene() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """A compact test scene: a 16 × 12 m textured wall at y = 12 m and a 2 m box in front of it
-    (y 8-10 m), z up. Returns (vertices (n, 3), faces (m, 3), albedo (m, 3) in 0-1)."""
+def box_wall_scene(boxes: tuple[float, ...] = (0.0,)) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A compact test scene: a 16 × 12 m textured wall at y = 12 m and 2 m boxes in front of it
+    (y 8-10 m), centred at x = ``boxes`` (one, at 0, by default), z up. Returns (vertices
+    (n, 3), faces (m, 3), albedo (m, 3) in 0-1)."""
     V = [[-8, 12, -5], [8, 12, -5], [8, 12, 7], [-8, 12, 7]]
     F = [[0, 1, 2], [0, 2, 3]]
-    b = np.array([[x, y, z] for z in (-1, 1) for y in (8, 10) for x in (-1, 1)], float)
-    V = np.vstack([V, b])
-    for a, bb, c, dd in [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]:
-        F += [[4 + a, 4 + bb, 4 + c], [4 + a, 4 + c, 4 + dd]]
+    corners = np.array([[x, y, z] for z in (-1, 1) for y in (8, 10) for x in (-1, 1)], float)
+    for cx in boxes:
+        o = len(V)
+        V = np.vstack([V, corners + [cx, 0.0, 0.0]])
+        for a, bb, c, dd in [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]:
+            F += [[o + a, o + bb, o + c], [o + a, o + c, o + dd]]
     F = np.asarray(F, np.int64)
-    return V, F, np.full((len(F), 3), 0.8)
+    return np.asarray(V, float), F, np.full((len(F), 3), 0.8)
 
 
 def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_px: float = 150.0,
