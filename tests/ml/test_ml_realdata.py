@@ -59,7 +59,7 @@ def test_lidarhd_vegetation_and_house(shipped, shared_data):
     from workstation.ml.realdata import tile_scores
 
     r = tile_scores(shipped.predict, shared_data / "lidar" / "lidarhd_extra_bytes.laz")
-    # measured vegetation 0.909 (goal 0.85), building 0.854 (goal 0.85; 0.703 without the
+    # measured vegetation 0.909 (goal 0.85), building 0.863 (goal 0.85; 0.703 without the
     # roof planarity test: a crown of single returns over a shed), ground 0.997
     assert r["vegetation_f1"] >= 0.85, r
     assert r["building_f1"] >= 0.85, r
