@@ -25,12 +25,18 @@ Parts (``--part``, repeatable; default all):
   ``--matcher`` picks another pairing than ``auto``; ``--shuffled N`` runs instead ``N`` evenly
   spaced photos of the rig linked under random names (out of name order, as photos of several
   passes or renamed files are), where name-order pairing fails and retrieval pairs are needed.
+* ``repeat``: ``run_sfm`` ``--runs`` times (default 8) with ``--matcher`` (default
+  retrieval, as above 60 images) and ``--threads`` (default all cores) on a 30-photo strip
+  that ends on a flat wall (``box_wall_scene``, 256x192 px, 23° field of view, known
+  camera withheld), each run extracting afresh: registered images, camera-centre errors
+  after a 7-DoF similarity, and how many distinct models the runs gave.
 
 Usage::
 
     PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
     PYTHONPATH=$PWD python scripts/bench_sfm.py --part rig --images 200 --work /tmp/bench_sfm_rig [--reuse]
         [--matcher sequential] [--shuffled 80]
+    PYTHONPATH=$PWD python scripts/bench_sfm.py --part repeat [--runs 8] [--threads 1]
 """
 
 from __future__ import annotations
@@ -462,10 +468,16 @@ def _centre_errors(model_dir: Path, centres: dict) -> dict:
     of the true frame; the rig's ring is 50 m from the church)."""
     import pycolmap
 
+    rec = pycolmap.Reconstruction(str(model_dir))
+    return _errors_of({im.name: np.asarray(im.projection_center()) for im in rec.images.values() if im.has_pose},
+                      centres)
+
+
+def _errors_of(got: dict, centres: dict) -> dict:
+    """Errors of the camera centres ``got`` against ``centres`` (both by name), as
+    :func:`_centre_errors`."""
     from workstation.photogrammetry.georef import fit_similarity
 
-    rec = pycolmap.Reconstruction(str(model_dir))
-    got = {im.name: np.asarray(im.projection_center()) for im in rec.images.values() if im.has_pose}
     names = sorted(set(got) & set(centres))
     if len(names) < 3:  # a similarity needs 3 centres
         return {"median_centre_err_m": None, "max_centre_err_m": None, "rms_centre_err_m": None}
@@ -526,24 +538,77 @@ def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: boo
           "timings_s": {k: round(v, 1) for k, v in doc["timings_s"].items()}})
 
 
+def _flat_strip(folder: Path, n: int = 30) -> dict:
+    """Render ``n`` views along a 12 m strip facing the wall of :func:`box_wall_scene` 12 m
+    away (its one box in the middle, so the views at either end see only the flat wall) into
+    ``folder``; returns the true camera centres by name."""
+    import cv2
+
+    from workstation.core.products import Camera
+    from workstation.photogrammetry.collinearity import camera_rays
+    from workstation.photogrammetry.rigs import box_wall_scene, look_at, render
+
+    V, F, alb = box_wall_scene()
+    cam = Camera(256, 192, 640.0, 640.0, 127.5, 95.5, 0.0, (0.0,) * 5, "PINHOLE")
+    rays = camera_rays(cam, 1)
+    folder.mkdir(parents=True, exist_ok=True)
+    centres = {}
+    for k, x in enumerate(np.linspace(-6.0, 6.0, n)):
+        c = np.array([x, 0.0, 0.4 * (k % 2)])
+        name = f"photo_{k:02d}.png"
+        cv2.imwrite(str(folder / name), render(V, F, alb, cam, look_at(c, c + [0.0, 12.0, 0.0]), 1, rays=rays)[:, :, ::-1])
+        centres[name] = c
+    return centres
+
+
+def part_repeat(data: Path, runs: int = 8, matcher: str = "retrieval", threads: int = -1):
+    import hashlib
+
+    from workstation.photogrammetry.sfm import SfMParams, run_sfm
+
+    tmp = Path(tempfile.mkdtemp(prefix="bench_sfm_repeat_"))
+    try:
+        centres = _flat_strip(tmp / "images")
+        params = SfMParams(matcher=matcher, num_threads=threads)
+        errs, models = [], set()
+        for k in range(runs):
+            res = run_sfm(tmp / "images", tmp / f"work{k}", params=params)
+            got = {im.name: np.asarray(im.pose.center) for im in res.reconstruction.images.values()
+                   if im.pose is not None}
+            e = _errors_of(got, centres)
+            models.add(hashlib.sha1(np.round([got[n] for n in sorted(got)], 9).tobytes()).hexdigest())
+            errs.append(e["max_centre_err_m"])
+            emit({"bench": "repeat_run", "run": k, "registered": res.summary["registered"],
+                  "matched_pairs": res.summary["matched_pairs"], **e})
+            shutil.rmtree(tmp / f"work{k}")
+        emit({"bench": "repeat", "matcher": matcher, "threads": threads, "runs": runs, "distinct_models": len(models),
+              "max_centre_err_m": [min(errs), max(errs)], "strip_m": 12.0})
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", type=Path, default=REPO.parent / "shared" / "data")
-    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig"])
+    ap.add_argument("--part", action="append", choices=["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig", "repeat"])
     ap.add_argument("--fountain-mode", action="append", choices=["self", "camera"])
     ap.add_argument("--images", type=int, default=200, help="rig: photos in the simulated rig")
     ap.add_argument("--work", type=Path, help="rig: folder for the rendered rig and the work folder (default: a temporary one)")
     ap.add_argument("--reuse", action="store_true", help="rig: reuse a rig rendered earlier in --work")
-    ap.add_argument("--matcher", default="auto", help="rig: ws sfm --matcher (default auto)")
+    ap.add_argument("--matcher", help="rig: ws sfm --matcher (default auto); repeat: the matcher (default retrieval)")
+    ap.add_argument("--runs", type=int, default=8, help="repeat: runs of the same photos")
+    ap.add_argument("--threads", type=int, default=-1, help="repeat: threads (-1: all cores)")
     ap.add_argument("--shuffled", type=int, default=0,
                     help="rig: run this many evenly spaced photos of the rig under random names instead")
     a = ap.parse_args(argv)
-    parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig"]
+    parts = a.part or ["zhang", "dlt", "gcp", "fountain", "sacre_coeur", "rig", "repeat"]
     for p in parts:
         if p == "fountain":
             part_fountain(a.data, tuple(a.fountain_mode or ("self", "camera")))
         elif p == "rig":
-            part_rig(a.data, a.images, a.work, a.reuse, a.matcher, a.shuffled)
+            part_rig(a.data, a.images, a.work, a.reuse, a.matcher or "auto", a.shuffled)
+        elif p == "repeat":
+            part_repeat(a.data, a.runs, a.matcher or "retrieval", a.threads)
         else:
             globals()[f"part_{p}"](a.data)
 

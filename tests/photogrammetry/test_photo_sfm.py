@@ -148,3 +148,25 @@ def test_global_mapper_self_calibrated_keeps_principal_point_sane(shared_data, t
     # six narrow views barely constrain the principal point: it stays within 10 % of the centre
     assert np.hypot(cam.cx - 319.5, cam.cy - 239.5) <= 0.1 * 640 + 1e-6
     assert res.cloud.n == res.summary["points"] > 100
+
+
+@pytest.mark.slow
+def test_sfm_on_one_thread_repeats_itself(tmp_path, capsys):
+    """`ws sfm --threads 1` twice on the same 8 photos: the same model, camera for camera, and
+    the thread count in the work folder's record."""
+    import pycolmap
+
+    from workstation.cli.main import main
+    from workstation.photogrammetry.rigs import box_wall_rig
+
+    box_wall_rig(tmp_path / "rig", n=8, width=200, height=150, focal_px=190.0)
+    centres = []
+    for k in range(2):
+        work = tmp_path / f"work{k}"
+        assert main(["sfm", str(tmp_path / "rig" / "images"), "-o", str(work), "--threads", "1"]) == 0
+        rec = pycolmap.Reconstruction(str(work / "sparse" / "0"))
+        centres.append({im.name: np.asarray(im.projection_center()) for im in rec.images.values()})
+    capsys.readouterr()
+    assert len(centres[0]) == 8 and centres[0].keys() == centres[1].keys()
+    assert all(np.array_equal(centres[0][n], centres[1][n]) for n in centres[0])
+    assert json.loads((tmp_path / "work0" / "summary.json").read_text())["params"]["num_threads"] == 1

@@ -16,6 +16,7 @@ from workstation.photogrammetry.sfm import (
     _match,
     _match_at_once,
     _reader_options,
+    _verification_options,
     choose_matcher,
     run_sfm,
 )
@@ -87,12 +88,10 @@ def test_extraction_and_matching_in_steps_equal_one_call(shared_data, tmp_path, 
     assert _match(pycolmap, tmp_path / "blocks.db", n, params) == ("exhaustive", n * (n - 1) // 2)
     mopt = pycolmap.FeatureMatchingOptions()
     mopt.num_threads = 1
-    _match_at_once(pycolmap, stepped, "exhaustive", mopt, params, pycolmap.Device.cpu)
+    _match_at_once(pycolmap, stepped, "exhaustive", mopt, _verification_options(pycolmap, params), params,
+                   pycolmap.Device.cpu)
     blocks, one = _verified_pairs(pycolmap, tmp_path / "blocks.db"), _verified_pairs(pycolmap, stepped)
-    assert len(one) >= n // 2 and blocks.keys() == one.keys()
-    # RANSAC draws from per-thread generators, so a pair's inliers can move by a few matches
-    counts = np.array([[blocks[k], one[k]] for k in one])
-    assert (np.abs(counts[:, 0] - counts[:, 1]) <= np.maximum(3, 0.1 * counts[:, 1])).all(), counts
+    assert len(one) >= n // 2 and blocks == one  # each pair's RANSAC starts from the seed
 
 
 @pytest.mark.slow

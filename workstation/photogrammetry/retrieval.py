@@ -112,13 +112,15 @@ def nearest_images(vectors: np.ndarray, k: int) -> np.ndarray:
 
 
 def database_vectors(db: Path, pycolmap, words: int, seed: int = 0) -> tuple[list[int], np.ndarray]:
-    """Image ids and VLAD vectors (:func:`vlad`) of the images of a COLMAP database, on a
-    codebook of ``words`` learned by :func:`kmeans` from up to :data:`SAMPLE_PER_IMAGE`
-    descriptors drawn from each image (:data:`SAMPLE_MAX` in all). Each image's descriptors are
-    read twice (for the sample, then for its vector), so only one image's are held at a time."""
+    """Image ids and VLAD vectors (:func:`vlad`) of the images of a COLMAP database, in image
+    name order, on a codebook of ``words`` learned by :func:`kmeans` from up to
+    :data:`SAMPLE_PER_IMAGE` descriptors drawn from each image (:data:`SAMPLE_MAX` in all).
+    Each image's descriptors are read twice (for the sample, then for its vector), so only one
+    image's are held at a time. Name order, not id order, makes the codebook the same in every
+    run with the same seed: threaded feature extraction numbers images as they finish."""
     rng = np.random.default_rng(seed if seed >= 0 else None)
     with pycolmap.Database.open(str(db)) as d:
-        ids = sorted(int(im.image_id) for im in d.read_all_images())
+        ids = [int(im.image_id) for im in sorted(d.read_all_images(), key=lambda im: im.name)]
         per = _per_image(len(ids))
         descs = (unit_rows(d.read_descriptors(i).data) for i in ids)
         codebook = kmeans([_draw(x, per, rng) for x in descs if len(x)], words, rng)
@@ -127,8 +129,9 @@ def database_vectors(db: Path, pycolmap, words: int, seed: int = 0) -> tuple[lis
 
 
 def retrieval_pairs(db: Path, pycolmap, k: int, words: int, seed: int = 0) -> list[tuple[int, int]]:
-    """Image-id pairs ``(a, b)``, ``a < b``, joining each image of the database to its ``k``
-    most similar images by VLAD retrieval (:func:`database_vectors`), without repeats."""
+    """Image-id pairs ``(a, b)``, ``a``'s name before ``b``'s, joining each image of the
+    database to its ``k`` most similar images by VLAD retrieval (:func:`database_vectors`),
+    without repeats."""
     ids, vectors = database_vectors(db, pycolmap, words, seed)
     nn = nearest_images(vectors, k)
     a = np.repeat(np.arange(len(ids)), nn.shape[1])

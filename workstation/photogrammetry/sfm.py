@@ -93,7 +93,12 @@ class SfMParams:
         adjustment, as a fraction of the longer image side; beyond it the geometry is too weak
         (few or narrow views) and the adjustment is repeated with the principal point fixed.
     seed : int
-        Random seed (RANSAC, initial pair choice) for repeatable runs; -1 leaves it random.
+        Random seed of the pairs' RANSAC, the retrieval codebook and the mapper; -1 leaves it
+        random. With one thread a run repeats exactly. With more, COLMAP numbers the images in
+        the order their features are done, and the mapper follows those numbers, so two runs
+        can differ a little: 24 runs of a 30-photo, 12 m strip on two threads gave 18
+        different models, their largest camera error 4.4-6.0 cm (``scripts/bench_sfm.py
+        --part repeat``).
     num_threads : int
         -1 for all cores.
     """
@@ -379,8 +384,8 @@ def _threads(params: SfMParams) -> int:
 def _pairs(pycolmap, db: Path, matcher: str, params: SfMParams) -> tuple[list, dict]:
     """The image pairs COLMAP's ``matcher`` would match (its own pair generator) and the image
     names by id; "retrieval" adds to the sequential pairs each image's
-    ``params.retrieval_neighbors`` most similar images (:func:`retrieval.retrieval_pairs`)
-    that are not already paired."""
+    ``params.retrieval_neighbors`` most similar images (:func:`retrieval.retrieval_pairs`).
+    Each pair once, in name order (:func:`_in_name_order`)."""
     with pycolmap.Database.open(str(db)) as d:
         names = {int(im.image_id): im.name for im in d.read_all_images()}
         if matcher == "exhaustive":
@@ -396,10 +401,16 @@ def _pairs(pycolmap, db: Path, matcher: str, params: SfMParams) -> tuple[list, d
     if matcher == "retrieval" and len(names) > 1:
         from .retrieval import retrieval_pairs
 
-        seen = {(min(a, b), max(a, b)) for a, b in pairs}
-        found = retrieval_pairs(db, pycolmap, params.retrieval_neighbors, params.retrieval_words, params.seed)
-        pairs += [p for p in found if p not in seen]
-    return pairs, names
+        pairs += retrieval_pairs(db, pycolmap, params.retrieval_neighbors, params.retrieval_words, params.seed)
+    return _in_name_order(pairs, names), names
+
+
+def _in_name_order(pairs: list, names: dict) -> list:
+    """The distinct pairs, each image of a pair and the pairs in name order. Threaded feature
+    extraction numbers the images in the order they finish, so ids differ between runs;
+    names do not, and COLMAP matches a pair in the order it is given."""
+    ordered = {tuple(sorted((a, b), key=names.__getitem__)) for a, b in pairs if a != b}
+    return sorted(ordered, key=lambda p: (names[p[0]], names[p[1]]))
 
 
 def _sequential_options(pycolmap, params: SfMParams):
@@ -426,12 +437,13 @@ def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, i
     matcher = choose_matcher(n_images, _has_gps(db, pycolmap) if params.matcher == "auto" else False, params)
     mopt = pycolmap.FeatureMatchingOptions()
     mopt.num_threads = int(params.num_threads)
+    vopt = _verification_options(pycolmap, params)
     dev = _device(pycolmap)
     pairs, names = _pairs(pycolmap, db, matcher, params)
     log.info("matching (%s, %d pairs)", matcher, len(pairs))
     if any(c.isspace() for n in names.values() for c in n):
         matcher = "sequential" if matcher == "retrieval" else matcher  # _pairs left the retrieval pairs out
-        _match_at_once(pycolmap, db, matcher, mopt, params, dev)
+        _match_at_once(pycolmap, db, matcher, mopt, vopt, params, dev)
         return matcher, len(pairs)
     with tempfile.TemporaryDirectory(prefix="ws_sfm_pairs_") as tmp, \
             progress_bar(f"matching ({matcher})", len(pairs), unit="pairs") as advance:
@@ -439,20 +451,32 @@ def _match(pycolmap, db: Path, n_images: int, params: SfMParams) -> tuple[str, i
         opt.match_list_path = listing
         for block in _chunks(pairs, 4 * _threads(params)):
             listing.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in block))
-            pycolmap.match_image_pairs(db, matching_options=mopt, pairing_options=opt, device=dev)
+            pycolmap.match_image_pairs(db, matching_options=mopt, pairing_options=opt, verification_options=vopt,
+                                       device=dev)
             advance(len(block))
     return matcher, len(pairs)
 
 
-def _match_at_once(pycolmap, db: Path, matcher: str, mopt, params: SfMParams, dev) -> None:
+def _verification_options(pycolmap, params: SfMParams):
+    """COLMAP's two-view geometric verification with its RANSAC seeded by ``params.seed``, so
+    that each pair's estimate starts from the seed whichever thread takes the pair. Unseeded,
+    a pair's draws depend on the pairs its thread took before it, which changes from run to
+    run."""
+    vopt = pycolmap.TwoViewGeometryOptions()
+    if params.seed >= 0:
+        vopt.ransac.random_seed = int(params.seed)
+    return vopt
+
+
+def _match_at_once(pycolmap, db: Path, matcher: str, mopt, vopt, params: SfMParams, dev) -> None:
     """One call of COLMAP's ``matcher`` over the database."""
     if matcher == "exhaustive":
-        pycolmap.match_exhaustive(db, matching_options=mopt, device=dev)
+        pycolmap.match_exhaustive(db, matching_options=mopt, verification_options=vopt, device=dev)
     elif matcher == "sequential":
         pycolmap.match_sequential(db, matching_options=mopt, pairing_options=_sequential_options(pycolmap, params),
-                                  device=dev)
+                                  verification_options=vopt, device=dev)
     else:
-        pycolmap.match_spatial(db, matching_options=mopt, device=dev)
+        pycolmap.match_spatial(db, matching_options=mopt, verification_options=vopt, device=dev)
 
 
 def _map(pycolmap, db: Path, image_dir: Path, sparse: Path, n_images: int, fixed: bool, params: SfMParams) -> dict:
