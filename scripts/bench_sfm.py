@@ -27,8 +27,8 @@ Parts (``--part``, repeatable; default all):
   passes or renamed files are), where name-order pairing fails and retrieval pairs are needed.
 * ``repeat``: ``run_sfm`` ``--runs`` times (default 8) with ``--matcher`` (default
   retrieval, as above 60 images) and ``--threads`` (default all cores) on a 30-photo strip
-  that ends on a flat wall (``box_wall_scene``, 256x192 px, 23° field of view, known
-  camera withheld), each run extracting afresh: registered images, camera-centre errors
+  that ends on a flat wall (``rigs.wall_strip``, 256x192 px, 23° field of view, the
+  camera left to self-calibration), each run extracting afresh: registered images, camera-centre errors
   after a 7-DoF similarity, and how many distinct models the runs gave.
 
 Usage::
@@ -36,7 +36,7 @@ Usage::
     PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
     PYTHONPATH=$PWD python scripts/bench_sfm.py --part rig --images 200 --work /tmp/bench_sfm_rig [--reuse]
         [--matcher sequential] [--shuffled 80]
-    PYTHONPATH=$PWD python scripts/bench_sfm.py --part repeat [--runs 8] [--threads 1]
+    PYTHONPATH=$PWD python scripts/bench_sfm.py --part repeat [--runs 8] [--threads 2]
 """
 
 from __future__ import annotations
@@ -538,37 +538,19 @@ def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: boo
           "timings_s": {k: round(v, 1) for k, v in doc["timings_s"].items()}})
 
 
-def _flat_strip(folder: Path, n: int = 30) -> dict:
-    """Render ``n`` views along a 12 m strip facing the wall of :func:`box_wall_scene` 12 m
-    away (its one box in the middle, so the views at either end see only the flat wall) into
-    ``folder``; returns the true camera centres by name."""
-    import cv2
-
-    from workstation.core.products import Camera
-    from workstation.photogrammetry.collinearity import camera_rays
-    from workstation.photogrammetry.rigs import box_wall_scene, look_at, render
-
-    V, F, alb = box_wall_scene()
-    cam = Camera(256, 192, 640.0, 640.0, 127.5, 95.5, 0.0, (0.0,) * 5, "PINHOLE")
-    rays = camera_rays(cam, 1)
-    folder.mkdir(parents=True, exist_ok=True)
-    centres = {}
-    for k, x in enumerate(np.linspace(-6.0, 6.0, n)):
-        c = np.array([x, 0.0, 0.4 * (k % 2)])
-        name = f"photo_{k:02d}.png"
-        cv2.imwrite(str(folder / name), render(V, F, alb, cam, look_at(c, c + [0.0, 12.0, 0.0]), 1, rays=rays)[:, :, ::-1])
-        centres[name] = c
-    return centres
-
-
-def part_repeat(data: Path, runs: int = 8, matcher: str = "retrieval", threads: int = -1):
+def part_repeat(runs: int = 8, matcher: str = "retrieval", threads: int = -1):
+    """``run_sfm`` ``runs`` times on the same 30 photos of a 12 m strip ending on a flat wall
+    (:func:`rigs.wall_strip`, one central box), each run from a fresh work folder: one line a
+    run (registered, pairs, centre errors) and one for the whole (distinct models, the range
+    of the largest centre error)."""
     import hashlib
 
+    from workstation.photogrammetry.rigs import wall_strip
     from workstation.photogrammetry.sfm import SfMParams, run_sfm
 
     tmp = Path(tempfile.mkdtemp(prefix="bench_sfm_repeat_"))
     try:
-        centres = _flat_strip(tmp / "images")
+        _, centres = wall_strip(tmp / "images", [f"photo_{k:02d}.png" for k in range(30)])
         params = SfMParams(matcher=matcher, num_threads=threads)
         errs, models = [], set()
         for k in range(runs):
@@ -608,7 +590,7 @@ def main(argv=None):
         elif p == "rig":
             part_rig(a.data, a.images, a.work, a.reuse, a.matcher or "auto", a.shuffled)
         elif p == "repeat":
-            part_repeat(a.data, a.runs, a.matcher or "retrieval", a.threads)
+            part_repeat(a.runs, a.matcher or "retrieval", a.threads)
         else:
             globals()[f"part_{p}"](a.data)
 

@@ -10,7 +10,8 @@ import pytest
 from hypothesis import settings
 
 # Property tests draw the same examples every run, so that a CI run repeats the last one; to
-# look for new failing examples, run with --hypothesis-profile explore.
+# look for new failing examples, run with --hypothesis-profile explore (tests that set
+# derandomize in their own settings, as the I/O fuzz tests, keep theirs).
 settings.register_profile("repeatable", derandomize=True, database=None)
 settings.register_profile("explore", derandomize=False)
 settings.load_profile("repeatable")

@@ -18,40 +18,22 @@ N = 30
 
 @pytest.fixture(scope="module")
 def shuffled_strip(tmp_path_factory):
-    """30 views (256x192 px, 23° field of view, known camera) of the box-and-wall scene with a
-    box every 3 m from a 12 m strip, the cameras looking straight at the wall 12 m away (4.8 m
-    of wall in a view), so that views more than 11 places apart on the strip see no common
-    wall; the files are named in a random order. Returns the database with their features, the
-    image folder, the camera and each name's place on the strip.
-
-    Every view sees a box edge: with the one central box, the views at the strip's ends saw
-    the flat wall only, where a narrow view cannot tell a sideways step from a turn, and
-    COLMAP (two threads, so not repeatable) registered the last ten of them bunched together
-    in about 1 run in 14."""
-    import cv2
+    """30 views of a wall from a 12 m strip (:func:`rigs.wall_strip`; views more than 11 places
+    apart see no common wall) with a box every 3 m, so that every view sees depth; the files
+    are named in a random order. Returns the database with their features, the image folder,
+    the camera and each name's place on the strip."""
     import pycolmap
 
-    from workstation.core.products import Camera
-    from workstation.photogrammetry.collinearity import camera_rays
-    from workstation.photogrammetry.rigs import box_wall_scene, look_at, render
+    from workstation.photogrammetry.rigs import wall_strip
 
     root = tmp_path_factory.mktemp("strip")
     imgs = root / "images"
-    imgs.mkdir()
-    V, F, alb = box_wall_scene(boxes=(-6.0, -3.0, 0.0, 3.0, 6.0))
-    cam = Camera(256, 192, 640.0, 640.0, 127.5, 95.5, 0.0, (0.0,) * 5, "PINHOLE")
-    rays = camera_rays(cam, 1)
-    order = np.random.default_rng(3).permutation(N)
-    place = {}
-    for k, x in enumerate(np.linspace(-6.0, 6.0, N)):
-        c = np.array([x, 0.0, 0.4 * (k % 2)])
-        name = f"photo_{order[k]:02d}.png"
-        cv2.imwrite(str(imgs / name), render(V, F, alb, cam, look_at(c, c + [0.0, 12.0, 0.0]), 1, rays=rays)[:, :, ::-1])
-        place[name] = k
+    names = [f"photo_{k:02d}.png" for k in np.random.default_rng(3).permutation(N)]
+    cam, _ = wall_strip(imgs, names, boxes=(-6.0, -3.0, 0.0, 3.0, 6.0))
     db = root / "database.db"
     pycolmap.set_random_seed(0)
     _extract_features(pycolmap, db, imgs, sorted(imgs.iterdir()), cam, SfMParams(max_features=2000))
-    return db, imgs, cam, place
+    return db, imgs, cam, {name: k for k, name in enumerate(names)}
 
 
 def _places(pycolmap, db, place) -> tuple[list, np.ndarray]:
@@ -144,10 +126,10 @@ def test_pairs_are_listed_once_each_in_name_order():
 
 @pytest.mark.slow
 def test_matching_on_two_threads_repeats_itself(shuffled_strip, tmp_path):
-    """The retrieval pairs of the strip matched twice on two threads: the same verified pairs,
-    all but at most 1 in 50 with the same inliers (each pair's RANSAC starts from the seed,
-    whichever thread takes it; measured 0 or 1 of 246 differing, against about half of them
-    with an unseeded RANSAC: COLMAP's matching itself still differs on a pair now and then)."""
+    """The retrieval pairs of the strip matched twice on two threads: all but at most 1 in 20
+    verified pairs the same, with the same inliers. Each pair's RANSAC starts from the seed
+    whichever thread takes it; COLMAP's threaded nearest-neighbour matching still changes a
+    pair now and then (0-2 of 144 in 45 runs; unseeded, about half of them differ)."""
     import pycolmap
 
     db = shuffled_strip[0]
@@ -158,5 +140,5 @@ def test_matching_on_two_threads_repeats_itself(shuffled_strip, tmp_path):
         with pycolmap.Database.open(str(tmp_path / f"{k}.db")) as d:
             ids, geoms = d.read_two_view_geometries()
         got.append({int(p): np.asarray(g.inlier_matches).tobytes() for p, g in zip(ids, geoms)})
-    assert len(got[0]) > N and got[0].keys() == got[1].keys()
-    assert sum(got[0][p] != got[1][p] for p in got[0]) <= len(got[0]) / 50
+    pairs = got[0].keys() | got[1].keys()
+    assert len(pairs) > N and sum(got[0].get(p) != got[1].get(p) for p in pairs) <= len(pairs) / 20

@@ -63,7 +63,8 @@ def test_extraction_and_matching_in_steps_equal_one_call(shared_data, tmp_path, 
     """A shared camera (temple: one 640x480 camera, extracted in 4 runs of 2 images; the later
     runs reuse the first run's camera) and one camera per image (Sacré-Cœur): same images, ids,
     cameras and keypoints as one extraction call; then the blocks of pairs give the verified
-    pairs of one exhaustive matching call, with their inlier counts within RANSAC's spread."""
+    pairs of one exhaustive matching call with the same inlier counts (one thread, RANSAC
+    seeded per pair)."""
     import pycolmap
 
     imgs, files = _folder(shared_data, tmp_path, sorted((shared_data / source).glob("*.[jp]*g"))[:n])

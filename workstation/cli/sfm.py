@@ -54,8 +54,8 @@ from workstation.core.jsonutil import json_clean
     bound(SfMParams, "seed", "--seed", type=SentinelIntRange(-1, min=0), show_default=True,
           help="Random seed (-1 = random)."),
     bound(SfMParams, "num_threads", "--threads", type=SentinelIntRange(-1, min=1), show_default=True,
-          help="COLMAP threads (-1 = all cores). With one thread a run repeats exactly; with more, "
-               "two runs can differ a little (COLMAP numbers the photos as their features are done)."),
+          help="COLMAP threads (-1 = all cores). With one thread on the CPU a run repeats exactly; with "
+               "more, two runs can differ a little (photo numbering and matching follow the threads)."),
 )
 @click.option("--upright/--no-upright", default=True, show_default=True, help="Turn the model upright: z up (from the photos' up direction and horizontal image rows, as COLMAP's model_orientation_aligner) and the main façade facing -y; a rotation about the cameras' centroid, no scale change.")
 @click.option("--scale-bar", "scale_bars", multiple=True, metavar="'END ; END = LENGTH [UNIT]'", help="A known length between two points seen in the photos; each END is two or more IMAGE:x,y pixels (column, row), e.g. 'A.JPG:1520,1006 B.JPG:1498,1010 ; A.JPG:2210,1003 B.JPG:2187,1009 = 1.000 m'. Units m (default), cm, mm, km, in, ft, us-ft, yd. Repeatable (weighted mean; each bar's residual is reported).")

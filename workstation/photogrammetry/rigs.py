@@ -390,6 +390,30 @@ def box_wall_scene(boxes: tuple[float, ...] = (0.0,)) -> tuple[np.ndarray, np.nd
     return np.asarray(V, float), F, np.full((len(F), 3), 0.8)
 
 
+def wall_strip(folder, names: list[str], boxes: tuple[float, ...] = (0.0,)) -> tuple[Camera, dict]:
+    """Render :func:`box_wall_scene` (boxes at x = ``boxes``) from ``len(names)`` cameras
+    evenly spaced along a 12 m strip (x -6 to 6 m, every other one 0.4 m higher), each looking
+    straight at the wall 12 m away through a 256x192 px, 23° view (4.8 m of wall), into
+    ``folder/NAME``, the k-th camera of the strip under ``names[k]``. Views more than 11 places
+    apart see no common wall; with the one central box the views at either end see only the
+    flat wall, where a narrow view barely tells a sideways step from a turn. Returns the
+    camera and each name's true centre."""
+    import cv2
+
+    V, F, alb = box_wall_scene(boxes)
+    cam = Camera(256, 192, 640.0, 640.0, 127.5, 95.5, 0.0, (0.0,) * 5, "PINHOLE")
+    rays = camera_rays(cam, 1)
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    centres = {}
+    for k, (x, name) in enumerate(zip(np.linspace(-6.0, 6.0, len(names)), names)):
+        c = np.array([x, 0.0, 0.4 * (k % 2)])
+        image = render(V, F, alb, cam, look_at(c, c + [0.0, 12.0, 0.0]), 1, rays=rays)
+        cv2.imwrite(str(folder / name), image[:, :, ::-1])
+        centres[name] = c
+    return cam, centres
+
+
 def box_wall_rig(folder, n: int = 5, width: int = 160, height: int = 120, focal_px: float = 150.0,
                  dist=(0.0, 0.0, 0.0, 0.0, 0.0)) -> Reconstruction:
     """Render :func:`box_wall_scene` from ``n`` cameras on a 5 m baseline looking at the box into
@@ -427,6 +451,7 @@ __all__ = [
     "RigSpec",
     "box_wall_rig",
     "box_wall_scene",
+    "wall_strip",
     "load_rig",
     "load_truth",
     "look_at",

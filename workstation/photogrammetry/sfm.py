@@ -94,13 +94,14 @@ class SfMParams:
         (few or narrow views) and the adjustment is repeated with the principal point fixed.
     seed : int
         Random seed of the pairs' RANSAC, the retrieval codebook and the mapper; -1 leaves it
-        random. With one thread a run repeats exactly. With more, COLMAP numbers the images in
-        the order their features are done, and the mapper follows those numbers, so two runs
-        can differ a little: 24 runs of a 30-photo, 12 m strip on two threads gave 18
-        different models, their largest camera error 4.4-6.0 cm (``scripts/bench_sfm.py
-        --part repeat``).
+        random. With one thread on the CPU a run repeats exactly. With more, two runs can
+        differ a little: COLMAP numbers the images in the order their features are done, the
+        mapper follows those numbers, and its threaded nearest-neighbour matching changes a
+        pair now and then. 24 runs of a 30-photo, 12 m strip on two threads gave 18 different
+        models, their largest camera error 4.4-6.0 cm (``scripts/bench_sfm.py --part
+        repeat``).
     num_threads : int
-        -1 for all cores.
+        Threads of every COLMAP step (-1: all cores).
     """
 
     matcher: str = "auto"
@@ -511,6 +512,7 @@ def _final_bundle_adjustment(pycolmap, best, fixed: bool, params: SfMParams, not
     its principal point: a shift of it is, to first order, a rotation of that one view.
     Returns the adjusted model."""
     bopt = pycolmap.BundleAdjustmentOptions()
+    bopt.ceres.solver_options.num_threads = int(params.num_threads)
     bopt.refine_focal_length = not fixed
     bopt.refine_extra_params = not fixed
     bopt.refine_principal_point = (not fixed) and params.refine_principal_point
