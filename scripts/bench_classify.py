@@ -287,16 +287,11 @@ def crests(model=None, tiles=("bcts_1.laz", "MixedConifer.laz", "autzen_trim.las
     """What ``ws classify --crests`` moves on the six ISPRS samples and the real tiles (the
     reference: ISPRS labels, the vendors' class 2): the points it puts in the ground and how
     many of them the reference calls ground; on the ISPRS samples also the total error off and
-    on, and why
-    it leaves Type I points out: those that are candidates of a tall cut feature, how many of
-    them a steeper-than-terrain point vetoes, and the steepest slope of those points, split by
-    the reference (:func:`workstation.ground.crests.crest_test`)."""
-    from workstation.ground.crests import CrestParams, crest_test
+    on, and why it leaves Type I points out (:func:`_crest_diagnosis`)."""
+    from workstation.ground.crests import CrestParams
     from workstation.ground.evaluate import ground_errors, read_isprs_text
-    from workstation.ground.refine import Refine, run_chain
     from workstation.io import read_cloud
     from workstation.ml.classifier import PointClassifier, StepSwitches
-    from workstation.ml.features import metric_xyz
 
     clf = PointClassifier.load(model, device="cpu")
     on = StepSwitches(crests=True)
@@ -324,23 +319,37 @@ def crests(model=None, tiles=("bcts_1.laz", "MixedConifer.laz", "autzen_trim.las
         if isprs:
             row.update(total_error_off_pct=100 * ground_errors(truth, off).total_error,
                        total_error_on_pct=100 * ground_errors(truth, with_crests).total_error)
-            xyz = metric_xyz(cloud)[0]
-            before = run_chain(Refine(xyz, pred.gate), tuple(head)).ground
-            test = crest_test(xyz, before)
-            missed = truth & ~off
-            if test is not None:
-                tall = test.tall[test.feature]
-                steep = tall & test.steep
-                vetoed = tall & ~test.crests[test.feature]
-                row.update(type1=int(missed.sum()), type1_tall_candidates=int((missed[test.candidates] & tall).sum()),
-                           type1_vetoed=int((missed[test.candidates] & vetoed).sum()))
-                for label, m in (("reference_ground", truth[test.candidates]), ("reference_object", ~truth[test.candidates])):
-                    if (steep & m).any():
-                        row[f"steep_{label}"] = int((steep & m).sum())
-                        near = steep & m & np.isfinite(test.slope) & (test.slope > test.max_slope)
-                        if near.any():  # the steepest slope of those found steep near them
-                            row[f"steep_{label}_slope_q10_50_90"] = np.quantile(test.slope[near], [0.1, 0.5, 0.9]).round(2).tolist()
+            row.update(_crest_diagnosis(head, cloud, pred.gate, truth, off))
         emit(**row)
+
+
+def _crest_diagnosis(head, cloud, gate, truth, off) -> dict:
+    """Why the crest step leaves Type I points (reference ground ``truth`` not in the ground
+    ``off``) out: how many are candidates of a tall cut feature, how many of those a
+    steeper-than-terrain point vetoes, and the steepest slope of the points found steep, split
+    by the reference. The test runs on the gate's ground after the chain's steps ``head``,
+    every point taken as possible terrain (the classifier leaves its noise out)."""
+    from workstation.ground.crests import crest_test
+    from workstation.ground.refine import Refine, run_chain
+    from workstation.ml.features import metric_xyz
+
+    xyz = metric_xyz(cloud)[0]
+    test = crest_test(xyz, run_chain(Refine(xyz, gate), tuple(head)).ground)
+    if test is None:
+        return {}
+    missed = truth & ~off
+    tall = test.tall[test.feature]
+    steep = tall & test.steep
+    vetoed = tall & ~test.crests[test.feature]
+    row = {"type1": int(missed.sum()), "type1_tall_candidates": int((missed[test.candidates] & tall).sum()),
+           "type1_vetoed": int((missed[test.candidates] & vetoed).sum())}
+    for label, m in (("reference_ground", truth[test.candidates]), ("reference_object", ~truth[test.candidates])):
+        if (steep & m).any():
+            row[f"steep_{label}"] = int((steep & m).sum())
+            near = steep & m & np.isfinite(test.slope) & (test.slope > test.max_slope)
+            if near.any():  # the steepest slope of those found steep near them
+                row[f"steep_{label}_slope_q10_50_90"] = np.quantile(test.slope[near], [0.1, 0.5, 0.9]).round(2).tolist()
+    return row
 
 
 def gatediag(model=None, samples=("samp11", "samp31", "samp51"), heights=(1.5, 3.0, 5.0)):

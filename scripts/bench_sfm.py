@@ -28,15 +28,17 @@ Parts (``--part``, repeatable; default all):
 * ``repeat``: ``run_sfm`` ``--runs`` times (default 8) with ``--matcher`` (default
   retrieval, as above 60 images) and ``--threads`` (default all cores) on a 30-photo strip
   that ends on a flat wall (``rigs.wall_strip``, 256x192 px, 23° field of view, the
-  camera left to self-calibration), each run extracting afresh: registered images, camera-centre errors
-  after a 7-DoF similarity, and how many distinct models the runs gave.
+  camera left to self-calibration), or on the photos of ``--photos DIR``, each run
+  extracting afresh: registered images, camera-centre errors after a 7-DoF similarity (to
+  the true centres; to the first run's with ``--photos``), and how many distinct models the
+  runs gave.
 
 Usage::
 
     PYTHONPATH=$PWD python scripts/bench_sfm.py [--data ../shared/data] [--part zhang ...]
     PYTHONPATH=$PWD python scripts/bench_sfm.py --part rig --images 200 --work /tmp/bench_sfm_rig [--reuse]
         [--matcher sequential] [--shuffled 80]
-    PYTHONPATH=$PWD python scripts/bench_sfm.py --part repeat [--runs 8] [--threads 2]
+    PYTHONPATH=$PWD python scripts/bench_sfm.py --part repeat [--runs 8] [--threads 2] [--photos DIR --matcher auto]
 """
 
 from __future__ import annotations
@@ -538,11 +540,12 @@ def part_rig(data: Path, images: int = 200, work: Path | None = None, reuse: boo
           "timings_s": {k: round(v, 1) for k, v in doc["timings_s"].items()}})
 
 
-def part_repeat(runs: int = 8, matcher: str = "retrieval", threads: int = -1):
-    """``run_sfm`` ``runs`` times on the same 30 photos of a 12 m strip ending on a flat wall
-    (:func:`rigs.wall_strip`, one central box), each run from a fresh work folder: one line a
-    run (registered, pairs, centre errors) and one for the whole (distinct models, the range
-    of the largest centre error)."""
+def part_repeat(runs: int = 8, matcher: str = "retrieval", threads: int = -1, images: Path | None = None):
+    """``run_sfm`` ``runs`` times on the same photos, each run from a fresh work folder: 30
+    photos of a 12 m strip ending on a flat wall (:func:`rigs.wall_strip`, one central box),
+    errors against the true centres; or the photos in ``images``, errors against the first
+    run's centres. One line a run (registered, pairs, centre errors) and one for the whole
+    (distinct models, the range of the largest centre error)."""
     import hashlib
 
     from workstation.photogrammetry.rigs import wall_strip
@@ -550,21 +553,29 @@ def part_repeat(runs: int = 8, matcher: str = "retrieval", threads: int = -1):
 
     tmp = Path(tempfile.mkdtemp(prefix="bench_sfm_repeat_"))
     try:
-        _, centres = wall_strip(tmp / "images", [f"photo_{k:02d}.png" for k in range(30)])
+        if images is None:
+            images = tmp / "images"
+            _, centres = wall_strip(images, [f"photo_{k:02d}.png" for k in range(30)])
+        else:
+            centres = None  # the first run's
         params = SfMParams(matcher=matcher, num_threads=threads)
         errs, models = [], set()
         for k in range(runs):
-            res = run_sfm(tmp / "images", tmp / f"work{k}", params=params)
+            res = run_sfm(images, tmp / f"work{k}", params=params)
             got = {im.name: np.asarray(im.pose.center) for im in res.reconstruction.images.values()
                    if im.pose is not None}
+            centres = got if centres is None else centres
             e = _errors_of(got, centres)
             models.add(hashlib.sha1(np.round([got[n] for n in sorted(got)], 9).tobytes()).hexdigest())
             errs.append(e["max_centre_err_m"])
             emit({"bench": "repeat_run", "run": k, "registered": res.summary["registered"],
                   "matched_pairs": res.summary["matched_pairs"], **e})
             shutil.rmtree(tmp / f"work{k}")
-        emit({"bench": "repeat", "matcher": matcher, "threads": threads, "runs": runs, "distinct_models": len(models),
-              "max_centre_err_m": [min(errs), max(errs)], "strip_m": 12.0})
+        c = np.array(list(centres.values()))
+        emit({"bench": "repeat", "images": str(images) if images.parent != tmp else "wall_strip", "matcher": matcher,
+              "threads": threads, "runs": runs, "distinct_models": len(models), "max_centre_err_m": [min(errs), max(errs)],
+              "reference": "truth" if images.parent == tmp else "run 0",
+              "reference_extent": round(float(np.linalg.norm(c.max(axis=0) - c.min(axis=0))), 3)})
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
@@ -580,6 +591,7 @@ def main(argv=None):
     ap.add_argument("--matcher", help="rig: ws sfm --matcher (default auto); repeat: the matcher (default retrieval)")
     ap.add_argument("--runs", type=int, default=8, help="repeat: runs of the same photos")
     ap.add_argument("--threads", type=int, default=-1, help="repeat: threads (-1: all cores)")
+    ap.add_argument("--photos", type=Path, help="repeat: this folder of photos instead of the strip (errors against the first run)")
     ap.add_argument("--shuffled", type=int, default=0,
                     help="rig: run this many evenly spaced photos of the rig under random names instead")
     a = ap.parse_args(argv)
@@ -590,7 +602,7 @@ def main(argv=None):
         elif p == "rig":
             part_rig(a.data, a.images, a.work, a.reuse, a.matcher or "auto", a.shuffled)
         elif p == "repeat":
-            part_repeat(a.runs, a.matcher or "retrieval", a.threads)
+            part_repeat(a.runs, a.matcher or "retrieval", a.threads, a.photos)
         else:
             globals()[f"part_{p}"](a.data)
 

@@ -371,8 +371,8 @@ def spill_through(seed: int = 0, preset: str = "dev", pulses: float = 4.0, water
 # * :func:`ridges`: a steep-sided ridge (a dyke or levee along a terrace edge) across sparse old
 #   ALS. Its shape follows what ISPRS samp61's refused crests show (a rise of 7-9 m over
 #   the low side, 8-16 m wide, sides of about 1:1, the terrain a few metres higher on one side,
-#   0.16 points/m²); samp61 is a validation sample, so this scene is where a fix is developed
-#   and samp61 stays the check.
+#   0.16 points/m²). The crest step (ws classify --crests) was developed on this scene, with
+#   samp61 as its one check; samp61 has been development data since.
 
 
 def ridges(seed: int = 0, pulses: float = 0.16, crest: float = 8.0, height: float = 9.0, side: float = 1.0,

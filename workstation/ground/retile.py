@@ -13,7 +13,11 @@ from typing import NamedTuple
 
 import numpy as np
 
+from workstation.core.log import get_logger
+
 from .common import orient2d, walk_tin
+
+log = get_logger(__name__)
 
 
 def full_edges(xy: np.ndarray, tins=None):
@@ -110,9 +114,7 @@ def pass_edges(xyz, gid, pts, base, tins, step: float):
         try:
             made = _incremental_edges(xyz, gid, pts, base, step)
         except (QhullError, ValueError, IndexError) as e:  # anything unforeseen: the full triangulation
-            from workstation.core.log import get_logger
-
-            get_logger(__name__).debug("raised patches: re-tiling failed (%s), triangulating in full", e)
+            log.debug("raised patches: re-tiling failed (%s), triangulating in full", e)
             made = None
         if made is not None:
             if tins is not None:

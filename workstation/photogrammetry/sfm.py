@@ -96,8 +96,8 @@ class SfMParams:
         Random seed of the pairs' RANSAC, the retrieval codebook and the mapper; -1 leaves it
         random. With one thread on the CPU a run repeats exactly. With more, two runs can
         differ a little: COLMAP numbers the images in the order their features are done, the
-        mapper follows those numbers, and its threaded nearest-neighbour matching changes a
-        pair now and then. 24 runs of a 30-photo, 12 m strip on two threads gave 18 different
+        mapper follows those numbers, and COLMAP's threaded nearest-neighbour matching changes
+        a pair now and then. 24 runs of a 30-photo, 12 m strip on two threads gave 18 different
         models, their largest camera error 4.4-6.0 cm (``scripts/bench_sfm.py --part
         repeat``).
     num_threads : int
